@@ -1,0 +1,1 @@
+//! vams: a compiler and simulator for a practical subset of VHDL-AMS (IEEE 1076.1).
