@@ -1,0 +1,660 @@
+//! The abstract syntax tree of VHDL-AMS design files.
+//!
+//! Produced by `parser`, consumed by `analysis`. Every node carries the byte [`Span`] it came
+//! from. Architecture invariant: the AST holds no semantic information (no resolved names, no
+//! types); it is exactly what the source says, with identifiers normalised to lower case
+//! (extended identifiers keep their spelling) and the user's spelling recoverable from the span.
+
+use crate::source::Span;
+
+/// An identifier; `name` is lower case for basic identifiers, verbatim for `\extended\` ones.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Ident {
+    pub name: String,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct DesignFile {
+    pub units: Vec<DesignUnit>,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct DesignUnit {
+    pub context: Vec<ContextItem>,
+    pub unit: LibraryUnit,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum ContextItem {
+    Library(Vec<Ident>, Span),
+    Use(Vec<Expr>, Span),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum LibraryUnit {
+    Entity(Entity),
+    Architecture(Architecture),
+    Package(Package),
+    PackageBody(PackageBody),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Entity {
+    pub name: Ident,
+    pub generics: Vec<InterfaceDecl>,
+    pub ports: Vec<InterfaceDecl>,
+    pub decls: Vec<Decl>,
+    pub stmts: Vec<ConcStmt>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Architecture {
+    pub name: Ident,
+    pub entity: Ident,
+    pub decls: Vec<Decl>,
+    pub stmts: Vec<ConcStmt>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Package {
+    pub name: Ident,
+    pub decls: Vec<Decl>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct PackageBody {
+    pub name: Ident,
+    pub decls: Vec<Decl>,
+    pub span: Span,
+}
+
+// ---------------------------------------------------------------------------------------------
+// Interfaces and declarations
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ObjectClass {
+    Constant,
+    Signal,
+    Variable,
+    File,
+    Quantity,
+    Terminal,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mode {
+    In,
+    Out,
+    Inout,
+    Buffer,
+    Linkage,
+}
+
+/// A generic, port or subprogram parameter.
+#[derive(Clone, Debug, PartialEq)]
+pub struct InterfaceDecl {
+    /// The explicit class keyword, if written.
+    pub class: Option<ObjectClass>,
+    pub names: Vec<Ident>,
+    pub mode: Option<Mode>,
+    /// For terminals, the nature (`electrical`); otherwise the subtype.
+    pub subtype: SubtypeIndication,
+    pub default: Option<Expr>,
+    pub span: Span,
+}
+
+/// `[resolution] type_mark [constraint] [tolerance "group"]`. An index constraint
+/// (`real_vector(1 to 3)`) arrives inside `type_mark` as an [`ExprKind::Apply`]; `analysis`
+/// separates it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SubtypeIndication {
+    pub resolution: Option<Expr>,
+    pub type_mark: Expr,
+    pub range: Option<Range>,
+    pub tolerance: Option<Expr>,
+    pub span: Span,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Direction {
+    To,
+    Downto,
+}
+
+/// A range: `a to b`, `b downto a`, or a range attribute name (`x'range`).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Range {
+    Explicit {
+        left: Box<Expr>,
+        dir: Direction,
+        right: Box<Expr>,
+        span: Span,
+    },
+    Attribute(Box<Expr>),
+}
+
+/// A discrete range: a range or a subtype (`natural`, `natural range 0 to 3`, `t'range`).
+#[derive(Clone, Debug, PartialEq)]
+pub enum DiscreteRange {
+    Range(Range),
+    Subtype(SubtypeIndication),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Decl {
+    pub kind: DeclKind,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum DeclKind {
+    Constant {
+        names: Vec<Ident>,
+        subtype: SubtypeIndication,
+        value: Option<Expr>,
+    },
+    Signal {
+        names: Vec<Ident>,
+        subtype: SubtypeIndication,
+        value: Option<Expr>,
+    },
+    Variable {
+        shared: bool,
+        names: Vec<Ident>,
+        subtype: SubtypeIndication,
+        value: Option<Expr>,
+    },
+    File {
+        names: Vec<Ident>,
+        subtype: SubtypeIndication,
+        open_kind: Option<Expr>,
+        logical_name: Option<Expr>,
+    },
+    Type {
+        name: Ident,
+        /// `None` for an incomplete type declaration.
+        def: Option<TypeDef>,
+    },
+    Subtype {
+        name: Ident,
+        subtype: SubtypeIndication,
+    },
+    Nature {
+        name: Ident,
+        def: NatureDef,
+    },
+    Subnature {
+        name: Ident,
+        nature: SubtypeIndication,
+    },
+    Terminal {
+        names: Vec<Ident>,
+        nature: SubtypeIndication,
+    },
+    Quantity(QuantityDecl),
+    Alias {
+        name: Ident,
+        subtype: Option<SubtypeIndication>,
+        target: Expr,
+    },
+    Attribute {
+        name: Ident,
+        type_mark: Expr,
+    },
+    AttributeSpec {
+        attribute: Ident,
+        entities: EntityNames,
+        class: Ident,
+        value: Expr,
+    },
+    Component {
+        name: Ident,
+        generics: Vec<InterfaceDecl>,
+        ports: Vec<InterfaceDecl>,
+    },
+    Subprogram(SubprogramSpec),
+    SubprogramBody {
+        spec: SubprogramSpec,
+        decls: Vec<Decl>,
+        stmts: Vec<SeqStmt>,
+    },
+    /// `limit q1, q2 : real with 1.0e-3;`
+    Limit {
+        quantities: EntityNames,
+        type_mark: Expr,
+        value: Expr,
+    },
+    Use(Vec<Expr>),
+}
+
+/// `a, b`, `all` or `others` in attribute and limit specifications.
+#[derive(Clone, Debug, PartialEq)]
+pub enum EntityNames {
+    List(Vec<Expr>),
+    All,
+    Others,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum TypeDef {
+    Enumeration(Vec<EnumLiteral>),
+    /// Integer or floating type: `range 0 to 10`, `range -1.0e308 to 1.0e308`.
+    Range(Range),
+    Physical {
+        range: Range,
+        primary: Ident,
+        secondary: Vec<(Ident, Expr)>,
+    },
+    Array {
+        indexes: Vec<IndexDef>,
+        element: SubtypeIndication,
+    },
+    Record(Vec<RecordField>),
+    Access(SubtypeIndication),
+    File(Expr),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum EnumLiteral {
+    Ident(Ident),
+    Char(char, Span),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum IndexDef {
+    /// `natural range <>`
+    Unconstrained(Expr),
+    Constrained(DiscreteRange),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct RecordField {
+    pub names: Vec<Ident>,
+    pub subtype: SubtypeIndication,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum NatureDef {
+    /// `voltage across current through electrical_ref reference`
+    Scalar {
+        across: Expr,
+        through: Expr,
+        reference: Ident,
+    },
+    Array {
+        indexes: Vec<IndexDef>,
+        element: SubtypeIndication,
+    },
+    Record(Vec<RecordField>),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum QuantityDecl {
+    /// `quantity q : real [tolerance "g"] [:= init];`
+    Free {
+        names: Vec<Ident>,
+        subtype: SubtypeIndication,
+        value: Option<Expr>,
+    },
+    /// `quantity v across i through p to n;`
+    Branch {
+        across: Vec<BranchName>,
+        through: Vec<BranchName>,
+        plus: Option<Expr>,
+        minus: Option<Expr>,
+    },
+    /// `quantity n : real spectrum mag, phase;` / `noise psd;`
+    Source {
+        names: Vec<Ident>,
+        subtype: SubtypeIndication,
+        spectrum: Option<(Expr, Expr)>,
+        noise: Option<Expr>,
+    },
+}
+
+/// One name in a branch quantity declaration, with its own tolerance and initial value.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BranchName {
+    pub names: Vec<Ident>,
+    pub tolerance: Option<Expr>,
+    pub value: Option<Expr>,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum Designator {
+    Ident(Ident),
+    /// An operator symbol: `"+"`, `"and"` (lower case).
+    Operator(String, Span),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct SubprogramSpec {
+    pub designator: Designator,
+    pub is_function: bool,
+    pub pure: bool,
+    pub params: Vec<InterfaceDecl>,
+    pub return_type: Option<Expr>,
+    pub span: Span,
+}
+
+// ---------------------------------------------------------------------------------------------
+// Concurrent and simultaneous statements
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct ConcStmt {
+    pub label: Option<Ident>,
+    pub postponed: bool,
+    pub kind: ConcKind,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum Sensitivity {
+    All,
+    List(Vec<Expr>),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum ConcKind {
+    Process {
+        sensitivity: Option<Sensitivity>,
+        decls: Vec<Decl>,
+        stmts: Vec<SeqStmt>,
+    },
+    /// `target <= [delay] wave when c else wave;` (a simple assignment has one branch, no condition)
+    ConditionalAssign {
+        target: Expr,
+        delay: DelayMechanism,
+        branches: Vec<(Waveform, Option<Expr>)>,
+    },
+    SelectedAssign {
+        selector: Expr,
+        target: Expr,
+        delay: DelayMechanism,
+        alternatives: Vec<(Waveform, Vec<Choice>)>,
+    },
+    Instance {
+        unit: InstantiatedUnit,
+        generic_map: Vec<Assoc>,
+        port_map: Vec<Assoc>,
+    },
+    ForGenerate {
+        param: Ident,
+        range: DiscreteRange,
+        decls: Vec<Decl>,
+        stmts: Vec<ConcStmt>,
+    },
+    IfGenerate {
+        condition: Expr,
+        decls: Vec<Decl>,
+        stmts: Vec<ConcStmt>,
+    },
+    Block {
+        guard: Option<Expr>,
+        decls: Vec<Decl>,
+        stmts: Vec<ConcStmt>,
+    },
+    Assert(Assertion),
+    ProcedureCall(Expr),
+    Break(BreakStmt),
+    Simultaneous(SimKind),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum InstantiatedUnit {
+    Component(Expr),
+    Entity {
+        name: Expr,
+        architecture: Option<Ident>,
+    },
+    Configuration(Expr),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum SimKind {
+    /// `lhs == rhs [tolerance "g"];`
+    Simple {
+        lhs: Expr,
+        rhs: Expr,
+        tolerance: Option<Expr>,
+    },
+    /// `if c use ... elsif c use ... else ... end use;`
+    If {
+        branches: Vec<(Expr, Vec<ConcStmt>)>,
+        otherwise: Option<Vec<ConcStmt>>,
+    },
+    Case {
+        selector: Expr,
+        alternatives: Vec<(Vec<Choice>, Vec<ConcStmt>)>,
+    },
+    Procedural {
+        decls: Vec<Decl>,
+        stmts: Vec<SeqStmt>,
+    },
+    Null,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Assertion {
+    pub condition: Expr,
+    pub report: Option<Expr>,
+    pub severity: Option<Expr>,
+}
+
+/// `break [for q1 use] q2 => e, ... [on s1, s2] [when cond]`
+#[derive(Clone, Debug, PartialEq)]
+pub struct BreakStmt {
+    pub elements: Vec<BreakElement>,
+    pub sensitivity: Vec<Expr>,
+    pub condition: Option<Expr>,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct BreakElement {
+    pub selector: Option<Expr>,
+    pub quantity: Expr,
+    pub value: Expr,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum DelayMechanism {
+    Default,
+    Transport,
+    Inertial { reject: Option<Expr> },
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum Waveform {
+    Elements(Vec<WaveElement>),
+    Unaffected(Span),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct WaveElement {
+    /// `None` for `null` (driver disconnection).
+    pub value: Option<Expr>,
+    pub after: Option<Expr>,
+    pub span: Span,
+}
+
+// ---------------------------------------------------------------------------------------------
+// Sequential statements
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct SeqStmt {
+    pub label: Option<Ident>,
+    pub kind: SeqKind,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum SeqKind {
+    Wait {
+        on: Vec<Expr>,
+        until: Option<Expr>,
+        timeout: Option<Expr>,
+    },
+    SignalAssign {
+        target: Expr,
+        delay: DelayMechanism,
+        waveform: Waveform,
+    },
+    VariableAssign {
+        target: Expr,
+        value: Expr,
+    },
+    If {
+        branches: Vec<(Expr, Vec<SeqStmt>)>,
+        otherwise: Option<Vec<SeqStmt>>,
+    },
+    Case {
+        selector: Expr,
+        alternatives: Vec<(Vec<Choice>, Vec<SeqStmt>)>,
+    },
+    Loop {
+        scheme: LoopScheme,
+        body: Vec<SeqStmt>,
+    },
+    Next {
+        label: Option<Ident>,
+        condition: Option<Expr>,
+    },
+    Exit {
+        label: Option<Ident>,
+        condition: Option<Expr>,
+    },
+    Return(Option<Expr>),
+    Null,
+    Assert(Assertion),
+    Report {
+        message: Expr,
+        severity: Option<Expr>,
+    },
+    ProcedureCall(Expr),
+    Break(BreakStmt),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum LoopScheme {
+    Forever,
+    While(Expr),
+    For(Ident, DiscreteRange),
+}
+
+// ---------------------------------------------------------------------------------------------
+// Expressions and names
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Expr {
+    pub kind: ExprKind,
+    pub span: Span,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BinaryOp {
+    And,
+    Or,
+    Nand,
+    Nor,
+    Xor,
+    Xnor,
+    Eq,
+    Ne,
+    Lt,
+    Le,
+    Gt,
+    Ge,
+    Sll,
+    Srl,
+    Sla,
+    Sra,
+    Rol,
+    Ror,
+    Add,
+    Sub,
+    Concat,
+    Mul,
+    Div,
+    Mod,
+    Rem,
+    Pow,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum UnaryOp {
+    Plus,
+    Minus,
+    Abs,
+    Not,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum Literal {
+    Integer(i64),
+    Real(f64),
+    /// `10 ms`: an abstract literal with a unit name.
+    Physical(Box<Literal>, Ident),
+    Char(char),
+    String(String),
+    /// A bit-string literal expanded to its bits (`X"F"` is `"1111"`).
+    BitString(String),
+    Null,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum ExprKind {
+    Name(Ident),
+    Literal(Literal),
+    /// `prefix.suffix`; the suffix may be `all` (name `"all"`), a character or an operator symbol.
+    Selected(Box<Expr>, Ident),
+    /// `prefix(args)`: a function call, index, slice or type conversion (decided by `analysis`).
+    Apply(Box<Expr>, Vec<Assoc>),
+    /// `prefix'attribute` (arguments, if any, arrive as an enclosing `Apply`).
+    Attribute(Box<Expr>, Ident),
+    /// `type_mark'(expr)` or `type_mark'(aggregate)`.
+    Qualified(Box<Expr>, Box<Expr>),
+    Aggregate(Vec<ElementAssoc>),
+    Paren(Box<Expr>),
+    Unary(UnaryOp, Box<Expr>),
+    Binary(BinaryOp, Box<Expr>, Box<Expr>),
+    /// `new subtype` or `new qualified_expression`.
+    New(Box<Expr>),
+}
+
+/// An association in a call, index, generic or port map: `[formal =>] actual`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Assoc {
+    pub formal: Option<Expr>,
+    pub actual: Actual,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum Actual {
+    Expr(Expr),
+    /// A slice or index range: `a(7 downto 0)`.
+    Range(Range),
+    Open(Span),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct ElementAssoc {
+    /// Empty for a positional element.
+    pub choices: Vec<Choice>,
+    pub value: Expr,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum Choice {
+    Expr(Expr),
+    Range(Range),
+    Others(Span),
+}
