@@ -1,0 +1,388 @@
+//! LU factorisation of the Newton matrix, given as values in the system's pattern order.
+//!
+//! Two paths behind one type. Small systems use faer's dense LU with partial pivoting; large
+//! ones use faer's simplicial sparse LU (left-looking, partial pivoting, COLAMD column order),
+//! which suits circuit matrices: they are very sparse and produce little fill, so supernodes
+//! would not pay (the same choice KLU makes). The column ordering is computed once per pattern;
+//! each `factor` scatters the values into preallocated CSC storage and refactors numerically.
+//! Scratch space for factor and solve is a `MemBuffer` sized at construction, so the steady state
+//! does not allocate (the simplicial factor's `Vec`s keep their capacity between refactorisations
+//! and only grow if a different pivot sequence produces more fill).
+
+use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
+use faer::linalg::lu::partial_pivoting::{factor as dense_factor, solve as dense_solve};
+use faer::perm::PermRef;
+use faer::sparse::linalg::lu::{
+    LuSymbolicParams, SymbolicLu, factorize_symbolic_lu, simplicial, simplicial::SimplicialLu,
+};
+use faer::sparse::linalg::{LuError, SupernodalThreshold};
+use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
+use faer::{Conj, Mat, MatMut, Par};
+
+use super::SolveError;
+
+/// Crossover between the dense and the sparse path: systems with at most this many unknowns
+/// are factored densely.
+///
+/// Measured with `cargo bench --bench solver -- crossover` (tridiagonal RC-ladder matrices,
+/// factor + solve, 2-core x86-64 box, see the bench for the figures): dense and sparse cost
+/// about the same at N ~= 25 (dense 3.1 us vs sparse 3.3 us at N = 16; dense 8.6 us vs sparse
+/// 5.9 us at N = 32), and dense loses quickly after that (O(N^3) against O(nnz)).
+pub const DEFAULT_DENSE_MAX: usize = 24;
+
+/// Tuning of the linear solver.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LinearOptions {
+    /// Systems with at most this many unknowns use the dense path.
+    pub dense_max: usize,
+    /// A pivot smaller than `pivot_tol` times the largest magnitude in its column of the
+    /// assembled matrix counts as zero (the matrix is reported singular).
+    pub pivot_tol: f64,
+}
+
+impl Default for LinearOptions {
+    fn default() -> Self {
+        Self {
+            dense_max: DEFAULT_DENSE_MAX,
+            pivot_tol: 1e-13,
+        }
+    }
+}
+
+/// A reusable LU solver for one sparsity pattern.
+pub struct LinearSolver {
+    n: usize,
+    pattern: Vec<(usize, usize)>,
+    pivot_tol: f64,
+    /// Largest magnitude per row and per column of the last assembled matrix.
+    row_max: Vec<f64>,
+    col_max: Vec<f64>,
+    factored: bool,
+    backend: Backend,
+    mem: MemBuffer,
+}
+
+enum Backend {
+    Dense(Dense),
+    Sparse(Box<Sparse>),
+}
+
+struct Dense {
+    a: Mat<f64>,
+    perm: Vec<usize>,
+    perm_inv: Vec<usize>,
+}
+
+struct Sparse {
+    col_ptr: Vec<usize>,
+    row_idx: Vec<usize>,
+    values: Vec<f64>,
+    /// CSC slot of each pattern entry, in pattern order.
+    slot: Vec<usize>,
+    /// CSC slot of each diagonal entry (the structure always holds the diagonal, for gmin).
+    diag_slot: Vec<usize>,
+    symbolic: SymbolicLu<usize>,
+    lu: SimplicialLu<usize, f64>,
+    row_perm: Vec<usize>,
+    row_perm_inv: Vec<usize>,
+}
+
+impl LinearSolver {
+    /// Prepares a solver for `n` unknowns and the given structural nonzeros (duplicates are
+    /// summed; the diagonal is always part of the structure).
+    pub fn new(
+        n: usize,
+        pattern: &[(usize, usize)],
+        options: LinearOptions,
+    ) -> Result<Self, SolveError> {
+        if let Some(k) = pattern.iter().position(|&(r, c)| r >= n || c >= n) {
+            return Err(SolveError::InvalidSystem {
+                reason: "pattern entry out of range",
+                index: k,
+            });
+        }
+        let par = Par::Seq;
+        let (backend, req) = if n <= options.dense_max {
+            let req = StackReq::any_of(&[
+                dense_factor::lu_in_place_scratch::<usize, f64>(n, n, par, Default::default()),
+                dense_solve::solve_in_place_scratch::<usize, f64>(n, 1, par),
+            ]);
+            let dense = Dense {
+                a: Mat::zeros(n, n),
+                perm: vec![0; n],
+                perm_inv: vec![0; n],
+            };
+            (Backend::Dense(dense), req)
+        } else {
+            let sparse = Sparse::new(n, pattern)?;
+            let req = StackReq::any_of(&[
+                simplicial::factorize_simplicial_numeric_lu_scratch::<usize, f64>(n, n),
+                simplicial::solve_in_place_scratch::<usize, f64>(n, 1, par),
+            ]);
+            (Backend::Sparse(Box::new(sparse)), req)
+        };
+        let mem = MemBuffer::try_new(req).map_err(|_| SolveError::InvalidSystem {
+            reason: "out of memory for the linear solver's scratch space",
+            index: n,
+        })?;
+        Ok(Self {
+            n,
+            pattern: pattern.to_vec(),
+            pivot_tol: options.pivot_tol,
+            row_max: vec![0.0; n],
+            col_max: vec![0.0; n],
+            factored: false,
+            backend,
+            mem,
+        })
+    }
+
+    /// Number of unknowns.
+    pub fn len(&self) -> usize {
+        self.n
+    }
+
+    /// True for a system without unknowns.
+    pub fn is_empty(&self) -> bool {
+        self.n == 0
+    }
+
+    /// True when this solver uses the dense path.
+    pub fn is_dense(&self) -> bool {
+        matches!(self.backend, Backend::Dense(_))
+    }
+
+    /// Factors the matrix whose entries are `values` (pattern order) plus `diag_shift` on the
+    /// diagonal. Errors carry `t = 0`; callers restamp them with [`SolveError::at`].
+    pub fn factor(&mut self, values: &[f64], diag_shift: f64) -> Result<(), SolveError> {
+        self.factored = false;
+        if values.len() != self.pattern.len() {
+            return Err(SolveError::InvalidSystem {
+                reason: "Jacobian value count differs from the pattern length",
+                index: values.len(),
+            });
+        }
+        if let Some(k) = values.iter().position(|v| !v.is_finite()) {
+            let (row, column) = self.pattern[k];
+            return Err(SolveError::NonFiniteJacobian {
+                t: 0.0,
+                row,
+                column,
+            });
+        }
+        self.row_max.fill(0.0);
+        self.col_max.fill(0.0);
+        let stack = MemStack::new(&mut self.mem);
+        match &mut self.backend {
+            Backend::Dense(d) => {
+                d.a.fill(0.0);
+                for (&(r, c), &v) in self.pattern.iter().zip(values) {
+                    d.a[(r, c)] += v;
+                }
+                for i in 0..self.n {
+                    d.a[(i, i)] += diag_shift;
+                }
+                for c in 0..self.n {
+                    for r in 0..self.n {
+                        let v = d.a[(r, c)].abs();
+                        self.row_max[r] = self.row_max[r].max(v);
+                        self.col_max[c] = self.col_max[c].max(v);
+                    }
+                }
+                check_empty(&self.row_max, &self.col_max)?;
+                dense_factor::lu_in_place(
+                    d.a.as_mut(),
+                    &mut d.perm,
+                    &mut d.perm_inv,
+                    Par::Seq,
+                    stack,
+                    Default::default(),
+                );
+                for j in 0..self.n {
+                    let pivot = d.a[(j, j)].abs();
+                    if pivot.is_nan() || pivot <= self.pivot_tol * self.col_max[j] {
+                        return Err(singular(d.perm[j], j));
+                    }
+                }
+            }
+            Backend::Sparse(s) => {
+                s.assemble(values, diag_shift, &mut self.row_max, &mut self.col_max);
+                check_empty(&self.row_max, &self.col_max)?;
+                s.factor(stack, self.pivot_tol, &self.col_max)?;
+            }
+        }
+        self.factored = true;
+        Ok(())
+    }
+
+    /// Solves `A x = rhs` in place with the last factorisation.
+    pub fn solve_in_place(&mut self, rhs: &mut [f64]) -> Result<(), SolveError> {
+        if !self.factored || rhs.len() != self.n {
+            return Err(SolveError::InvalidSystem {
+                reason: "solve without a valid factorisation or with a wrong-sized right side",
+                index: rhs.len(),
+            });
+        }
+        let n = self.n;
+        let stack = MemStack::new(&mut self.mem);
+        let x = MatMut::from_column_major_slice_mut(rhs, n, 1);
+        match &self.backend {
+            Backend::Dense(d) => {
+                let perm = PermRef::new_checked(&d.perm, &d.perm_inv, n);
+                let a = d.a.as_ref();
+                dense_solve::solve_in_place_with_conj(a, a, perm, Conj::No, x, Par::Seq, stack);
+            }
+            Backend::Sparse(s) => {
+                let row_perm = PermRef::new_checked(&s.row_perm, &s.row_perm_inv, n);
+                let col_perm = s.symbolic.col_perm();
+                s.lu.solve_in_place_with_conj(row_perm, col_perm, Conj::No, x, Par::Seq, stack);
+            }
+        }
+        Ok(())
+    }
+}
+
+fn singular(row: usize, column: usize) -> SolveError {
+    SolveError::SingularJacobian {
+        t: 0.0,
+        row: Some(row),
+        column: Some(column),
+    }
+}
+
+/// An all-zero row or column names the culprit exactly; report it before elimination blurs it.
+fn check_empty(row_max: &[f64], col_max: &[f64]) -> Result<(), SolveError> {
+    if let Some(r) = row_max.iter().position(|&v| v == 0.0) {
+        return Err(SolveError::SingularJacobian {
+            t: 0.0,
+            row: Some(r),
+            column: None,
+        });
+    }
+    if let Some(c) = col_max.iter().position(|&v| v == 0.0) {
+        return Err(SolveError::SingularJacobian {
+            t: 0.0,
+            row: None,
+            column: Some(c),
+        });
+    }
+    Ok(())
+}
+
+impl Sparse {
+    fn new(n: usize, pattern: &[(usize, usize)]) -> Result<Self, SolveError> {
+        // Column-major order of the distinct entries of pattern + diagonal.
+        let mut entries: Vec<(usize, usize)> = pattern
+            .iter()
+            .map(|&(r, c)| (c, r))
+            .chain((0..n).map(|i| (i, i)))
+            .collect();
+        entries.sort_unstable();
+        entries.dedup();
+        let mut col_ptr = vec![0usize; n + 1];
+        for &(c, _) in &entries {
+            col_ptr[c + 1] += 1;
+        }
+        for c in 0..n {
+            col_ptr[c + 1] += col_ptr[c];
+        }
+        let row_idx: Vec<usize> = entries.iter().map(|&(_, r)| r).collect();
+        let find = |r: usize, c: usize| -> usize {
+            // Present by construction: every pattern entry and diagonal went into `entries`.
+            let col = &row_idx[col_ptr[c]..col_ptr[c + 1]];
+            col_ptr[c] + col.binary_search(&r).unwrap_or(0)
+        };
+        let slot = pattern.iter().map(|&(r, c)| find(r, c)).collect();
+        let diag_slot = (0..n).map(|i| find(i, i)).collect();
+        let symbolic_a = SymbolicSparseColMatRef::new_checked(n, n, &col_ptr, None, &row_idx);
+        let params = LuSymbolicParams {
+            supernodal_flop_ratio_threshold: SupernodalThreshold::FORCE_SIMPLICIAL,
+            ..Default::default()
+        };
+        let symbolic =
+            factorize_symbolic_lu(symbolic_a, params).map_err(|_| SolveError::InvalidSystem {
+                reason: "sparse symbolic analysis failed (out of memory)",
+                index: n,
+            })?;
+        Ok(Self {
+            values: vec![0.0; row_idx.len()],
+            col_ptr,
+            row_idx,
+            slot,
+            diag_slot,
+            symbolic,
+            lu: SimplicialLu::new(),
+            row_perm: vec![0; n],
+            row_perm_inv: vec![0; n],
+        })
+    }
+
+    fn assemble(&mut self, values: &[f64], shift: f64, row_max: &mut [f64], col_max: &mut [f64]) {
+        self.values.fill(0.0);
+        for (&k, &v) in self.slot.iter().zip(values) {
+            self.values[k] += v;
+        }
+        for &k in &self.diag_slot {
+            self.values[k] += shift;
+        }
+        for (c, cm) in col_max.iter_mut().enumerate() {
+            for k in self.col_ptr[c]..self.col_ptr[c + 1] {
+                let (r, v) = (self.row_idx[k], self.values[k].abs());
+                row_max[r] = row_max[r].max(v);
+                *cm = cm.max(v);
+            }
+        }
+    }
+
+    fn factor(
+        &mut self,
+        stack: &mut MemStack,
+        pivot_tol: f64,
+        col_max: &[f64],
+    ) -> Result<(), SolveError> {
+        let n = self.row_perm.len();
+        let sym = SymbolicSparseColMatRef::new_checked(n, n, &self.col_ptr, None, &self.row_idx);
+        let a = SparseColMatRef::new(sym, &self.values);
+        let col_perm = self.symbolic.col_perm();
+        let (col_fwd, _) = col_perm.arrays();
+        let result = simplicial::factorize_simplicial_numeric_lu(
+            &mut self.row_perm,
+            &mut self.row_perm_inv,
+            &mut self.lu,
+            a,
+            col_perm,
+            stack,
+        );
+        match result {
+            Ok(()) => {}
+            Err(LuError::SymbolicSingular { index }) => {
+                return Err(SolveError::SingularJacobian {
+                    t: 0.0,
+                    row: None,
+                    column: col_fwd.get(index).copied(),
+                });
+            }
+            Err(LuError::Generic(_)) => {
+                return Err(SolveError::InvalidSystem {
+                    reason: "sparse LU failed (out of memory)",
+                    index: n,
+                });
+            }
+        }
+        // The pivot of step j is the last entry of U's column j (row index j).
+        let u = self.lu.u_factor_unsorted();
+        for (j, &c) in col_fwd.iter().enumerate() {
+            let rows = u.row_idx_of_col_raw(j);
+            let vals = u.val_of_col(j);
+            let pivot = rows
+                .iter()
+                .zip(vals)
+                .find(|&(&r, _)| r == j)
+                .map_or(0.0, |(_, v)| v.abs());
+            if pivot.is_nan() || pivot <= pivot_tol * col_max[c] {
+                return Err(singular(self.row_perm[j], c));
+            }
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,7 @@
+//! Tests of the numerical core against closed forms, with stated tolerances.
+
+mod linear;
+mod newton;
+mod op;
+mod systems;
+mod transient;

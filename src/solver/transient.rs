@@ -1,0 +1,468 @@
+//! Variable-step, variable-order (1 and 2) BDF integration of a [`DaeSystem`].
+//!
+//! **Method.** Variable-coefficient BDF: the corrector's `x'_{n+1}` is the derivative at
+//! `t_{n+1}` of the polynomial through the new point and the last `k` accepted points (no
+//! interpolation onto a fixed grid, so step changes cost nothing). The predictor extrapolates
+//! the last `k + 1` accepted points (or `x_n + h x'_n` right after a (re)start). The local
+//! truncation error comes from Milne's device with the exact variable-step constants:
+//! `LTE = (P_c/a) / (P_p + P_c/a) * (x_corr - x_pred)`, `P_c = prod_{j<k} (t_{n+1} - t_{n-j})`,
+//! `P_p = prod_{j<=k} (t_{n+1} - t_{n-j})`, `a` the corrector's leading coefficient (fixed-step:
+//! 1/3 for BDF1, 2/11 for BDF2). A step is accepted when `||LTE||_w <= 1`. Order 2 is tried once
+//! four points are known, comparing step sizes predicted from divided differences. Growth is at
+//! most 2x per step (BDF2 stays zero-stable below 2.41x).
+//!
+//! **Events.** Breakpoints and `t_out` are landed on exactly (the step is stretched or split so
+//! no sliver remains). After each accepted step the root functions are evaluated; a sign change
+//! is located by the Illinois method on the cubic Hermite interpolant of the step, and the
+//! integrator is rewound to the crossing. After a breakpoint or a root, BDF history restarts at
+//! order 1.
+//!
+//! **Memory.** Every vector is allocated in [`Transient::new`]; `advance` does not allocate.
+
+mod init;
+mod roots;
+mod step;
+
+use super::newton::{Newton, NewtonOptions, Tolerances, wrms};
+use super::{DaeSystem, LinearOptions, SolveError};
+use init::InitProblem;
+
+/// Integrator settings.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TransientOptions {
+    pub reltol: f64,
+    /// Absolute tolerance for every unknown, unless `abstol_per_unknown` is non-empty.
+    pub abstol: f64,
+    pub abstol_per_unknown: Vec<f64>,
+    pub max_step: f64,
+    /// Smallest step before giving up (never below 16 ulp of `t`).
+    pub min_step: f64,
+    /// First step; `None` picks one from `x'_0` and the first `t_out`.
+    pub initial_step: Option<f64>,
+    /// 1 or 2.
+    pub max_order: usize,
+    pub linear: LinearOptions,
+}
+
+impl Default for TransientOptions {
+    fn default() -> Self {
+        Self {
+            reltol: 1e-4,
+            abstol: 1e-9,
+            abstol_per_unknown: Vec::new(),
+            max_step: f64::INFINITY,
+            min_step: 0.0,
+            initial_step: None,
+            max_order: 2,
+            linear: LinearOptions::default(),
+        }
+    }
+}
+
+/// What one call to [`Transient::advance`] achieved.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Advance {
+    /// The integrator stands exactly on the requested `t_out`.
+    Reached(f64),
+    /// Root function `index` changes sign at `t`; the integrator stands at `t`. `rising` is
+    /// true for a crossing from negative to positive.
+    Root { t: f64, index: usize, rising: bool },
+    /// One step was accepted, ending at this time (before `t_out`).
+    StepAccepted(f64),
+}
+
+/// Work counters since construction.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Stats {
+    pub accepted_steps: usize,
+    /// Steps rejected by the error test.
+    pub rejected_steps: usize,
+    /// Steps abandoned because the corrector did not converge.
+    pub newton_failures: usize,
+    pub newton_iterations: usize,
+    pub factorizations: usize,
+    pub residual_evals: usize,
+    pub root_evals: usize,
+}
+
+/// The BDF integrator's state. See the module documentation for the method.
+pub struct Transient {
+    n: usize,
+    tol: Tolerances,
+    opts: TransientOptions,
+    newton_opts: NewtonOptions,
+    newton: Newton,
+    diff: Vec<bool>,
+    cols: Vec<usize>,
+    t: f64,
+    /// Step to try next; 0 until the first `advance` picks one.
+    h: f64,
+    order: usize,
+    /// Accepted points, newest first; `hist_x[0]` is the current state.
+    hist_t: [f64; 4],
+    hist_x: [Vec<f64>; 4],
+    nhist: usize,
+    /// `x'` at `t` and at the start of the last step.
+    xdot: Vec<f64>,
+    xdot_prev: Vec<f64>,
+    /// The last step `[int_t0, t]` for dense output; `x(int_t0) = hist_x[1]`.
+    int_t0: f64,
+    int_valid: bool,
+    /// False when algebraic `x'` at `int_t0` is unknown (first step after a (re)start).
+    xdot_alg_known: bool,
+    /// `xdot_alg_known` as it was at the start of the last step.
+    int_alg_known: bool,
+    /// Upper bound for the first step after a restart (the last step taken).
+    h_cap: f64,
+    c0_factored: f64,
+    x_pred: Vec<f64>,
+    x_new: Vec<f64>,
+    xdot_new: Vec<f64>,
+    beta: Vec<f64>,
+    w: Vec<f64>,
+    scratch: Vec<f64>,
+    jac0: Vec<f64>,
+    g_prev: Vec<f64>,
+    g_new: Vec<f64>,
+    g_tmp: Vec<f64>,
+    /// Roots found at `t` still to be reported, last to report first.
+    pending: Vec<(usize, bool)>,
+    /// Breakpoints ahead, sorted descending (the next one is last).
+    breakpoints: Vec<f64>,
+    stats: Stats,
+}
+
+impl Transient {
+    /// Sets up the integrator at `(t0, x0)` and computes consistent initial values: algebraic
+    /// unknowns and `x'` of the differential ones, with the differential unknowns held.
+    pub fn new<S: DaeSystem + ?Sized>(
+        sys: &mut S,
+        t0: f64,
+        x0: &[f64],
+        options: TransientOptions,
+    ) -> Result<Self, SolveError> {
+        let n = sys.len();
+        let check = |ok: bool, reason: &'static str, index: usize| {
+            if ok {
+                Ok(())
+            } else {
+                Err(SolveError::InvalidSystem { reason, index })
+            }
+        };
+        check(
+            x0.len() == n,
+            "initial state length differs from the system size",
+            x0.len(),
+        )?;
+        check(
+            sys.differential().len() == n,
+            "differential flags length differs",
+            n,
+        )?;
+        check(t0.is_finite(), "initial time is not finite", 0)?;
+        let per = &options.abstol_per_unknown;
+        check(
+            per.is_empty() || per.len() == n,
+            "abstol_per_unknown length differs",
+            n,
+        )?;
+        check(
+            options.reltol >= 0.0 && (options.abstol > 0.0 || !per.is_empty()),
+            "tolerances must be positive",
+            0,
+        )?;
+        let tol = if per.is_empty() {
+            Tolerances::uniform(n, options.reltol, options.abstol)
+        } else {
+            Tolerances {
+                reltol: options.reltol,
+                abstol: per.clone(),
+            }
+        };
+        let pattern = sys.pattern();
+        let newton = Newton::new(n, pattern, options.linear)?;
+        let cols = pattern.iter().map(|&(_, c)| c).collect();
+        let jac0 = vec![0.0; pattern.len()];
+        let m = sys.root_count();
+        let v = || vec![0.0; n];
+        let mut this = Self {
+            n,
+            tol,
+            newton_opts: NewtonOptions {
+                max_iter: 4,
+                tol: 0.33,
+                residual_tol: None,
+                line_search: false,
+                reuse_jacobian: true,
+                max_rate: 0.9,
+                stale_scale: 1.0,
+            },
+            newton,
+            diff: sys.differential().to_vec(),
+            cols,
+            t: t0,
+            h: 0.0,
+            order: 1,
+            hist_t: [t0; 4],
+            hist_x: [x0.to_vec(), v(), v(), v()],
+            nhist: 1,
+            xdot: v(),
+            xdot_prev: v(),
+            int_t0: t0,
+            int_valid: false,
+            xdot_alg_known: false,
+            int_alg_known: false,
+            h_cap: f64::INFINITY,
+            c0_factored: 0.0,
+            x_pred: v(),
+            x_new: v(),
+            xdot_new: v(),
+            beta: v(),
+            w: v(),
+            scratch: v(),
+            jac0,
+            g_prev: vec![0.0; m],
+            g_new: vec![0.0; m],
+            g_tmp: vec![0.0; m],
+            pending: Vec::with_capacity(m),
+            breakpoints: Vec::new(),
+            stats: Stats::default(),
+            opts: options,
+        };
+        this.consistent(sys)?;
+        Ok(this)
+    }
+
+    /// Restarts after a discontinuity at `t` with state `x` (differential unknowns are held,
+    /// the rest recomputed): order 1, a fresh small step, history forgotten.
+    pub fn restart<S: DaeSystem + ?Sized>(
+        &mut self,
+        sys: &mut S,
+        t: f64,
+        x: &[f64],
+    ) -> Result<(), SolveError> {
+        if x.len() != self.n {
+            return Err(SolveError::InvalidSystem {
+                reason: "restart state length differs from the system size",
+                index: x.len(),
+            });
+        }
+        if !t.is_finite() {
+            return Err(SolveError::InvalidTime {
+                t: self.t,
+                requested: t,
+            });
+        }
+        self.t = t;
+        self.hist_t = [t; 4];
+        self.hist_x[0].copy_from_slice(x);
+        self.pending.clear();
+        self.consistent(sys)?;
+        // A small step: the heuristic again, never more than the last step taken.
+        if self.h > 0.0 {
+            self.h_cap = self.h;
+        }
+        self.h = 0.0;
+        Ok(())
+    }
+
+    fn consistent<S: DaeSystem + ?Sized>(&mut self, sys: &mut S) -> Result<(), SolveError> {
+        let t = self.t;
+        self.xdot.fill(0.0);
+        // Unknowns appearing nowhere differentiated keep x' = 0.
+        let mut p = InitProblem {
+            sys,
+            t,
+            diff: &self.diff,
+            x: &mut self.hist_x[0],
+            xdot: &mut self.xdot,
+            cols: &self.cols,
+            jac0: &mut self.jac0,
+        };
+        p.z_from(&mut self.scratch);
+        let opts = NewtonOptions {
+            residual_tol: Some(1e-12),
+            ..NewtonOptions::default()
+        };
+        self.newton.invalidate_jacobian();
+        let rep = self
+            .newton
+            .solve(&mut p, &mut self.scratch, &self.tol, &opts, t)?;
+        // Spread the converged z (the last residual may have been at an earlier iterate).
+        for i in 0..self.n {
+            if self.diff[i] {
+                self.xdot[i] = self.scratch[i];
+            } else {
+                self.hist_x[0][i] = self.scratch[i];
+                self.xdot[i] = 0.0;
+            }
+        }
+        self.stats.newton_iterations += rep.iterations;
+        self.stats.factorizations += rep.factorizations;
+        self.stats.residual_evals += rep.residual_evals;
+        self.newton.invalidate_jacobian();
+        self.c0_factored = 0.0;
+        self.order = 1;
+        self.nhist = 1;
+        self.int_valid = false;
+        self.xdot_alg_known = false;
+        if !self.g_prev.is_empty() {
+            sys.roots(t, &self.hist_x[0], &mut self.g_prev);
+            self.stats.root_evals += 1;
+        }
+        Ok(())
+    }
+
+    /// Demands that a step end exactly at `t` (ignored if `t` is not ahead).
+    pub fn add_breakpoint(&mut self, t: f64) {
+        if t.is_finite() && t > self.t && !self.breakpoints.contains(&t) {
+            let at = self.breakpoints.partition_point(|&b| b > t);
+            self.breakpoints.insert(at, t);
+        }
+    }
+
+    pub fn time(&self) -> f64 {
+        self.t
+    }
+
+    /// The state `x` at [`Self::time`].
+    pub fn state(&self) -> &[f64] {
+        &self.hist_x[0]
+    }
+
+    /// `x'` at [`Self::time`] (zero for algebraic unknowns right after a (re)start).
+    pub fn derivative(&self) -> &[f64] {
+        &self.xdot
+    }
+
+    /// The step the integrator will try next (0 before the first `advance`).
+    pub fn step_size(&self) -> f64 {
+        self.h
+    }
+
+    pub fn order(&self) -> usize {
+        self.order
+    }
+
+    pub fn stats(&self) -> Stats {
+        self.stats
+    }
+
+    /// First step: `0.001 * (t_out - t)`, shrunk so that `||h x'||_w <= 0.5` (IDA's heuristic).
+    fn initial_step(&mut self, t_out: f64) -> f64 {
+        if let Some(h) = self.opts.initial_step {
+            return h;
+        }
+        let mut h = 1e-3 * (t_out - self.t);
+        self.tol.weights(&self.hist_x[0], &mut self.w);
+        let nd = wrms(&self.xdot, &self.w);
+        if h * nd > 0.5 {
+            h = 0.5 / nd;
+        }
+        h
+    }
+
+    fn min_step(&self) -> f64 {
+        self.opts.min_step.max(16.0 * f64::EPSILON * self.t.abs())
+    }
+
+    /// Takes at most one step towards `t_out` (landing on it exactly) and reports the outcome.
+    pub fn advance<S: DaeSystem + ?Sized>(
+        &mut self,
+        sys: &mut S,
+        t_out: f64,
+    ) -> Result<Advance, SolveError> {
+        if let Some((index, rising)) = self.pending.pop() {
+            return Ok(Advance::Root {
+                t: self.t,
+                index,
+                rising,
+            });
+        }
+        if t_out.is_nan() || t_out < self.t {
+            return Err(SolveError::InvalidTime {
+                t: self.t,
+                requested: t_out,
+            });
+        }
+        if t_out == self.t {
+            return Ok(Advance::Reached(self.t));
+        }
+        while self.breakpoints.last().is_some_and(|&b| b <= self.t) {
+            self.breakpoints.pop();
+        }
+        if self.h.is_nan() || self.h <= 0.0 {
+            let h0 = self.initial_step(t_out);
+            self.h = h0.min(self.opts.max_step).min(self.h_cap);
+        }
+        let mut last_err: Option<SolveError> = None;
+        let mut failures = 0usize;
+        loop {
+            let bp = self.breakpoints.last().copied().unwrap_or(f64::INFINITY);
+            let stop = t_out.min(bp);
+            let mut h = self.h.min(self.opts.max_step);
+            let t_new = if self.t + h >= stop {
+                h = stop - self.t;
+                stop
+            } else if self.t + 1.5 * h > stop {
+                h = 0.5 * (stop - self.t);
+                self.t + h
+            } else {
+                self.t + h
+            };
+            if h.is_nan() || h < self.min_step() || t_new <= self.t {
+                return Err(last_err.unwrap_or(SolveError::StepTooSmall {
+                    t: self.t,
+                    step: h,
+                    worst_unknown: 0,
+                }));
+            }
+            match self.try_step(sys, t_new)? {
+                step::Attempt::Accepted { err } => {
+                    self.accept(sys, t_new, h, err, failures > 0);
+                    break;
+                }
+                step::Attempt::ErrorTest { err, worst } => {
+                    self.stats.rejected_steps += 1;
+                    failures += 1;
+                    let k = self.order as f64;
+                    let fac = (0.8 * err.powf(-1.0 / (k + 1.0))).clamp(0.1, 0.9);
+                    self.h = h * fac;
+                    last_err = Some(SolveError::StepTooSmall {
+                        t: self.t,
+                        step: self.h,
+                        worst_unknown: worst,
+                    });
+                }
+                step::Attempt::NewtonFailed(e) => {
+                    self.stats.newton_failures += 1;
+                    failures += 1;
+                    self.newton.invalidate_jacobian();
+                    self.c0_factored = 0.0;
+                    self.h = 0.25 * h;
+                    last_err = Some(e);
+                }
+            }
+            if failures >= 2 {
+                self.order = 1;
+            }
+        }
+        if let Some((index, rising)) = self.locate_roots(sys) {
+            return Ok(Advance::Root {
+                t: self.t,
+                index,
+                rising,
+            });
+        }
+        if self.breakpoints.last() == Some(&self.t) {
+            self.breakpoints.pop();
+            self.order = 1;
+            self.nhist = 1;
+        }
+        if self.t == t_out {
+            Ok(Advance::Reached(self.t))
+        } else {
+            Ok(Advance::StepAccepted(self.t))
+        }
+    }
+}
