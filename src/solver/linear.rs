@@ -24,11 +24,13 @@ use super::SolveError;
 /// Crossover between the dense and the sparse path: systems with at most this many unknowns
 /// are factored densely.
 ///
-/// Measured with `cargo bench --bench solver -- crossover` (tridiagonal RC-ladder matrices,
-/// factor + solve, 2-core x86-64 box, see the bench for the figures): dense and sparse cost
-/// about the same at N ~= 25 (dense 3.1 us vs sparse 3.3 us at N = 16; dense 8.6 us vs sparse
-/// 5.9 us at N = 32), and dense loses quickly after that (O(N^3) against O(nnz)).
-pub const DEFAULT_DENSE_MAX: usize = 24;
+/// Measured with `cargo bench --bench solver -- crossover` (factor + solve of tridiagonal
+/// N-node ladder matrices, release build, shared 2-core x86-64 box): N = 4: dense 0.30 us,
+/// sparse 0.50 us; N = 8: 0.88 / 1.01 us; N = 10: 0.94 / 0.78 us; N = 12: 1.28 / 0.94 us;
+/// N = 16: 2.4 / 1.4 us; N = 32: 8.7 / 2.6 us; N = 128: 131 / 9.1 us. The paths cross between
+/// 8 and 10 unknowns. A tridiagonal matrix is the sparse path's best case; denser circuit
+/// matrices move the point up somewhat.
+pub const DEFAULT_DENSE_MAX: usize = 8;
 
 /// Tuning of the linear solver.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -22,68 +22,12 @@
 mod init;
 mod roots;
 mod step;
+mod types;
 
 use super::newton::{Newton, NewtonOptions, Tolerances, wrms};
-use super::{DaeSystem, LinearOptions, SolveError};
+use super::{DaeSystem, SolveError};
 use init::InitProblem;
-
-/// Integrator settings.
-#[derive(Debug, Clone, PartialEq)]
-pub struct TransientOptions {
-    pub reltol: f64,
-    /// Absolute tolerance for every unknown, unless `abstol_per_unknown` is non-empty.
-    pub abstol: f64,
-    pub abstol_per_unknown: Vec<f64>,
-    pub max_step: f64,
-    /// Smallest step before giving up (never below 16 ulp of `t`).
-    pub min_step: f64,
-    /// First step; `None` picks one from `x'_0` and the first `t_out`.
-    pub initial_step: Option<f64>,
-    /// 1 or 2.
-    pub max_order: usize,
-    pub linear: LinearOptions,
-}
-
-impl Default for TransientOptions {
-    fn default() -> Self {
-        Self {
-            reltol: 1e-4,
-            abstol: 1e-9,
-            abstol_per_unknown: Vec::new(),
-            max_step: f64::INFINITY,
-            min_step: 0.0,
-            initial_step: None,
-            max_order: 2,
-            linear: LinearOptions::default(),
-        }
-    }
-}
-
-/// What one call to [`Transient::advance`] achieved.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Advance {
-    /// The integrator stands exactly on the requested `t_out`.
-    Reached(f64),
-    /// Root function `index` changes sign at `t`; the integrator stands at `t`. `rising` is
-    /// true for a crossing from negative to positive.
-    Root { t: f64, index: usize, rising: bool },
-    /// One step was accepted, ending at this time (before `t_out`).
-    StepAccepted(f64),
-}
-
-/// Work counters since construction.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct Stats {
-    pub accepted_steps: usize,
-    /// Steps rejected by the error test.
-    pub rejected_steps: usize,
-    /// Steps abandoned because the corrector did not converge.
-    pub newton_failures: usize,
-    pub newton_iterations: usize,
-    pub factorizations: usize,
-    pub residual_evals: usize,
-    pub root_evals: usize,
-}
+pub use types::{Advance, Stats, TransientOptions};
 
 /// The BDF integrator's state. See the module documentation for the method.
 pub struct Transient {
@@ -362,8 +306,13 @@ impl Transient {
         h
     }
 
-    fn min_step(&self) -> f64 {
-        self.opts.min_step.max(16.0 * f64::EPSILON * self.t.abs())
+    /// The step floor: the option, but never below 16 ulp of the time span in play.
+    fn min_step(&self, t_out: f64) -> f64 {
+        let scale = self
+            .t
+            .abs()
+            .max(if t_out.is_finite() { t_out.abs() } else { 0.0 });
+        self.opts.min_step.max(16.0 * f64::EPSILON * scale)
     }
 
     /// Takes at most one step towards `t_out` (landing on it exactly) and reports the outcome.
@@ -410,7 +359,7 @@ impl Transient {
             } else {
                 self.t + h
             };
-            if h.is_nan() || h < self.min_step() || t_new <= self.t {
+            if h.is_nan() || h < self.min_step(t_out) || t_new <= self.t {
                 return Err(last_err.unwrap_or(SolveError::StepTooSmall {
                     t: self.t,
                     step: h,
