@@ -52,11 +52,16 @@ pub enum SolveError {
         worst_unknown: usize,
     },
 
-    /// The Jacobian is (numerically) singular. `row` is the equation and `column` the unknown
-    /// at which elimination broke down, when they can be told.
+    /// The Jacobian is singular. `row` is the equation and `column` the unknown at which
+    /// elimination broke down, when they can be told. `structural` is true when the pattern
+    /// itself is deficient (an equation with no entries, an unknown in no equation): no value
+    /// of the unknowns can fix that.
     ///
     /// Example: two equations that both say `v = 1` leave one unknown undetermined.
-    #[error("singular Jacobian at t = {t:e} (equation {row:?}, unknown {column:?})")]
+    #[error(
+        "singular Jacobian at t = {t:e} (equation {row:?}, unknown {column:?}{})",
+        if *structural { ", structurally" } else { "" }
+    )]
     #[diagnostic(
         code(vams::solve::E403),
         help(
@@ -69,6 +74,7 @@ pub enum SolveError {
         t: f64,
         row: Option<usize>,
         column: Option<usize>,
+        structural: bool,
     },
 
     /// The model returned NaN or infinity in its residual.

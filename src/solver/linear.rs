@@ -56,6 +56,9 @@ pub struct LinearSolver {
     n: usize,
     pattern: Vec<(usize, usize)>,
     pivot_tol: f64,
+    /// Whether the pattern has any entry in each row / column.
+    row_used: Vec<bool>,
+    col_used: Vec<bool>,
     /// Largest magnitude per row and per column of the last assembled matrix.
     row_max: Vec<f64>,
     col_max: Vec<f64>,
@@ -127,8 +130,15 @@ impl LinearSolver {
             reason: "out of memory for the linear solver's scratch space",
             index: n,
         })?;
+        let (mut row_used, mut col_used) = (vec![false; n], vec![false; n]);
+        for &(r, c) in pattern {
+            row_used[r] = true;
+            col_used[c] = true;
+        }
         Ok(Self {
             n,
+            row_used,
+            col_used,
             pattern: pattern.to_vec(),
             pivot_tol: options.pivot_tol,
             row_max: vec![0.0; n],
@@ -191,7 +201,7 @@ impl LinearSolver {
                         self.col_max[c] = self.col_max[c].max(v);
                     }
                 }
-                check_empty(&self.row_max, &self.col_max)?;
+                check_empty(&self.row_max, &self.col_max, &self.row_used, &self.col_used)?;
                 dense_factor::lu_in_place(
                     d.a.as_mut(),
                     &mut d.perm,
@@ -209,7 +219,7 @@ impl LinearSolver {
             }
             Backend::Sparse(s) => {
                 s.assemble(values, diag_shift, &mut self.row_max, &mut self.col_max);
-                check_empty(&self.row_max, &self.col_max)?;
+                check_empty(&self.row_max, &self.col_max, &self.row_used, &self.col_used)?;
                 s.factor(stack, self.pivot_tol, &self.col_max)?;
             }
         }
@@ -249,16 +259,24 @@ fn singular(row: usize, column: usize) -> SolveError {
         t: 0.0,
         row: Some(row),
         column: Some(column),
+        structural: false,
     }
 }
 
-/// An all-zero row or column names the culprit exactly; report it before elimination blurs it.
-fn check_empty(row_max: &[f64], col_max: &[f64]) -> Result<(), SolveError> {
+/// An all-zero row or column names the culprit exactly; report it before elimination blurs
+/// it. `*_used` tell a structural hole (nothing in the pattern) from a numerical zero.
+fn check_empty(
+    row_max: &[f64],
+    col_max: &[f64],
+    row_used: &[bool],
+    col_used: &[bool],
+) -> Result<(), SolveError> {
     if let Some(r) = row_max.iter().position(|&v| v == 0.0) {
         return Err(SolveError::SingularJacobian {
             t: 0.0,
             row: Some(r),
             column: None,
+            structural: !row_used[r],
         });
     }
     if let Some(c) = col_max.iter().position(|&v| v == 0.0) {
@@ -266,6 +284,7 @@ fn check_empty(row_max: &[f64], col_max: &[f64]) -> Result<(), SolveError> {
             t: 0.0,
             row: None,
             column: Some(c),
+            structural: !col_used[c],
         });
     }
     Ok(())
@@ -362,6 +381,7 @@ impl Sparse {
                     t: 0.0,
                     row: None,
                     column: col_fwd.get(index).copied(),
+                    structural: true,
                 });
             }
             Err(LuError::Generic(_)) => {

@@ -116,8 +116,11 @@ pub fn operating_point<S: DaeSystem + ?Sized>(
     match attempt(&mut p, x, &mut report) {
         Ok(()) => return Ok(report),
         // A structurally singular system will not be rescued by continuation.
-        Err(e @ SolveError::SingularJacobian { column: None, .. })
-        | Err(e @ SolveError::SingularJacobian { row: None, .. })
+        Err(
+            e @ SolveError::SingularJacobian {
+                structural: true, ..
+            },
+        )
         | Err(e @ SolveError::InvalidSystem { .. }) => return Err(e),
         Err(_) => {}
     }

@@ -59,6 +59,7 @@ fn singular_matrices_are_errors_with_indices() {
         let SolveError::SingularJacobian {
             row: Some(r),
             column: Some(c),
+            structural: false,
             ..
         } = err
         else {
@@ -81,6 +82,7 @@ fn singular_matrices_are_errors_with_indices() {
             SolveError::SingularJacobian {
                 row: None,
                 column: Some(1),
+                structural: true,
                 ..
             }
         ));
@@ -95,6 +97,7 @@ fn singular_matrices_are_errors_with_indices() {
             SolveError::SingularJacobian {
                 row: Some(2),
                 column: None,
+                structural: true,
                 ..
             }
         ));

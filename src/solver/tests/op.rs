@@ -35,8 +35,8 @@ fn diode_resistor_operating_point() {
     assert_eq!(rep.strategy, OpStrategy::Newton);
 }
 
-/// With Newton starved of iterations from a far start, the continuation fallbacks still land
-/// on the bisection answer (1e-9 V) and leave the source scale at 1.
+/// With Newton starved of iterations (4), plain Newton and gmin stepping fail from a cold
+/// start; source stepping lands on the bisection answer (1e-9 V) and leaves the scale at 1.
 #[test]
 fn fallbacks_rescue_a_hard_start() {
     let mut d = diode();
@@ -46,7 +46,7 @@ fn fallbacks_rescue_a_hard_start() {
     opts.newton.max_iter = 4;
     let mut x = [0.0, 0.0];
     let rep = operating_point(&mut d, 0.0, &mut x, &tol, &opts).expect("rescued");
-    assert_ne!(rep.strategy, OpStrategy::Newton);
+    assert_eq!(rep.strategy, OpStrategy::SourceStepping);
     assert!((x[1] - expected).abs() < 1e-9, "{} vs {expected}", x[1]);
     assert_eq!(d.scale, 1.0);
 }
@@ -107,4 +107,22 @@ fn singular_system_is_reported() {
             ..
         }
     ));
+}
+
+/// `x^3 = 1` from x = 0: the Jacobian is singular at the start, so plain Newton fails; the
+/// gmin conductance makes it regular and gmin stepping walks to x = 1 (to 1e-12).
+#[test]
+fn gmin_stepping_rescues_a_singular_start() {
+    let mut s = Algebraic {
+        n: 1,
+        pattern: vec![(0, 0)],
+        diff: vec![false],
+        f: |x: &[f64], out: &mut [f64]| out[0] = x[0] * x[0] * x[0] - 1.0,
+        j: |x: &[f64], out: &mut [f64]| out[0] = 3.0 * x[0] * x[0],
+    };
+    let tol = Tolerances::uniform(1, 1e-12, 1e-14);
+    let mut x = [0.0];
+    let rep = operating_point(&mut s, 0.0, &mut x, &tol, &OpOptions::default()).expect("op");
+    assert_eq!(rep.strategy, OpStrategy::GminStepping);
+    assert!((x[0] - 1.0).abs() < 1e-12, "{}", x[0]);
 }

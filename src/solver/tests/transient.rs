@@ -346,3 +346,42 @@ impl<S: DaeSystem> DaeSystem for XdotPlus<'_, S> {
         out[0] += alpha;
     }
 }
+
+/// Two root functions crossing at the same instant are both reported there, lowest index
+/// first, and the integrator stays put between the two reports.
+#[test]
+fn simultaneous_roots_are_queued() {
+    let mut s = LinearDae::rc(1.0, 0.0);
+    s.roots = vec![(0, 0.5), (0, 0.5)];
+    let (mut tr, t, index, _) = first_root(&mut s, &[1.0], opts(1e-8, 1e-12));
+    assert_eq!(index, 0);
+    let second = tr.advance(&mut s, 2.0).expect("queued root");
+    assert_eq!(
+        second,
+        Advance::Root {
+            t,
+            index: 1,
+            rising: false
+        }
+    );
+    assert_eq!(tr.time(), t);
+}
+
+/// Nonlinear: x' = -x^2, x(0) = 1, x = 1/(1 + t). At reltol 1e-6 the error over [0, 10] is
+/// <= 5e-5 (measured 2.8e-5), and the corrector reuses its factorisation across steps.
+#[test]
+fn nonlinear_decay() {
+    let mut s = Algebraic {
+        n: 1,
+        pattern: vec![(0, 0)],
+        diff: vec![true],
+        f: |x: &[f64], out: &mut [f64]| out[0] = x[0] * x[0],
+        j: |x: &[f64], out: &mut [f64]| out[0] = 2.0 * x[0],
+    };
+    let mut sys = XdotPlus(&mut s);
+    let (tr, pts) = run(&mut sys, &[1.0], opts(1e-6, 1e-9), 10.0);
+    let err = max_error(&pts, 0, |t| 1.0 / (1.0 + t));
+    let st = tr.stats();
+    assert!(err <= 5e-5, "max error {err:e}");
+    assert!(st.factorizations * 3 < st.accepted_steps, "{st:?}");
+}
