@@ -1,13 +1,17 @@
-//! Solver benchmarks: transient of an RC ladder (N = 100, 1000, 10000 sections) and the
-//! dense/sparse LU crossover on N-node ladder matrices.
+//! Solver benchmarks: transient of an RC ladder (N = 100, 1000, 10000 sections), the
+//! operating point (damped Newton) of a diode-loaded resistor ladder, and the dense/sparse LU
+//! crossover on N-node ladder matrices.
 //!
-//! Run: `cargo bench --bench solver` (or `-- crossover`, `-- ladder`).
+//! Run: `cargo bench --bench solver` (or `-- crossover`, `-- ladder`, `-- diode`).
 
 use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use vams::solver::{Advance, DaeSystem, LinearOptions, LinearSolver, Transient, TransientOptions};
+use vams::solver::{
+    Advance, DaeSystem, LinearOptions, LinearSolver, OpOptions, Tolerances, Transient,
+    TransientOptions, operating_point,
+};
 
 /// RC ladder: a unit step source drives node 1 through R; node k has C to ground and R to
 /// node k+1. `C v_k' + (v_k - v_{k-1})/R + (v_k - v_{k+1})/R = 0`, all unknowns differential.
@@ -72,6 +76,60 @@ impl DaeSystem for RcLadder {
             };
         }
     }
+}
+
+/// The same ladder at DC with a diode (Is = 1e-14 A, Vt = 25.85 mV) from every node to
+/// ground and a 5 V source: a nonlinear operating point solved from zero.
+struct DiodeLadder(RcLadder);
+
+impl DaeSystem for DiodeLadder {
+    fn len(&self) -> usize {
+        self.0.n
+    }
+    fn differential(&self) -> &[bool] {
+        &self.0.diff
+    }
+    fn pattern(&self) -> &[(usize, usize)] {
+        &self.0.pattern
+    }
+    fn residual(&mut self, t: f64, x: &[f64], xdot: &[f64], out: &mut [f64]) {
+        self.0.residual(t, x, xdot, out);
+        out[0] -= 4.0 * self.0.g; // 5 V source instead of 1 V
+        for (o, &v) in out.iter_mut().zip(x) {
+            *o += 1e-14 * ((v / 0.02585).exp() - 1.0);
+        }
+    }
+    fn jacobian(&mut self, t: f64, x: &[f64], xdot: &[f64], alpha: f64, out: &mut [f64]) {
+        self.0.jacobian(t, x, xdot, alpha, out);
+        for (o, &(r, c)) in out.iter_mut().zip(&self.0.pattern) {
+            if r == c {
+                *o += 1e-14 / 0.02585 * (x[r] / 0.02585).exp();
+            }
+        }
+    }
+}
+
+fn diode_op(n: usize) -> usize {
+    let mut sys = DiodeLadder(RcLadder::new(n));
+    let tol = Tolerances::uniform(n, 1e-6, 1e-12);
+    let mut x = vec![0.0; n];
+    operating_point(&mut sys, 0.0, &mut x, &tol, &OpOptions::default())
+        .map_or(0, |r| r.newton_iterations)
+}
+
+fn diode(c: &mut Criterion) {
+    let mut group = c.benchmark_group("diode_ladder_op");
+    group
+        .sample_size(10)
+        .measurement_time(Duration::from_secs(3));
+    for n in [100usize, 1000, 10000] {
+        eprintln!("diode ladder N = {n}: {} Newton iterations", diode_op(n));
+        group.throughput(Throughput::Elements(n as u64));
+        group.bench_with_input(BenchmarkId::from_parameter(n), &n, |b, &n| {
+            b.iter(|| black_box(diode_op(n)))
+        });
+    }
+    group.finish();
 }
 
 /// Integrates the ladder over 20 RC from rest; returns the accepted step count.
@@ -142,5 +200,5 @@ fn crossover(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, crossover, transient);
+criterion_group!(benches, crossover, diode, transient);
 criterion_main!(benches);

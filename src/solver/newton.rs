@@ -115,6 +115,7 @@ pub struct Newton {
     r_trial: Vec<f64>,
     w: Vec<f64>,
     jac_valid: bool,
+    totals: NewtonReport,
 }
 
 impl Newton {
@@ -132,6 +133,7 @@ impl Newton {
             r_trial: vec![0.0; n],
             w: vec![0.0; n],
             jac_valid: false,
+            totals: NewtonReport::default(),
         })
     }
 
@@ -187,6 +189,11 @@ impl Newton {
         }
     }
 
+    /// Work done by every `solve` since construction, failed ones included.
+    pub fn totals(&self) -> NewtonReport {
+        self.totals
+    }
+
     /// Solves `p(x) = 0` starting from `x`; on success `x` holds the solution. On failure `x`
     /// holds the last iterate. `t` only stamps errors.
     pub fn solve<P: NonlinearProblem>(
@@ -197,6 +204,23 @@ impl Newton {
         opts: &NewtonOptions,
         t: f64,
     ) -> Result<NewtonReport, SolveError> {
+        let mut rep = NewtonReport::default();
+        let result = self.solve_counted(p, x, tol, opts, t, &mut rep);
+        self.totals.iterations += rep.iterations;
+        self.totals.factorizations += rep.factorizations;
+        self.totals.residual_evals += rep.residual_evals;
+        result.map(|()| rep)
+    }
+
+    fn solve_counted<P: NonlinearProblem>(
+        &mut self,
+        p: &mut P,
+        x: &mut [f64],
+        tol: &Tolerances,
+        opts: &NewtonOptions,
+        t: f64,
+        rep: &mut NewtonReport,
+    ) -> Result<(), SolveError> {
         let n = self.r.len();
         if x.len() != n || tol.abstol.len() != n {
             return Err(SolveError::InvalidSystem {
@@ -204,19 +228,18 @@ impl Newton {
                 index: x.len(),
             });
         }
-        let mut rep = NewtonReport::default();
-        Self::eval(p, x, &mut self.r, t, &mut rep)?;
+        Self::eval(p, x, &mut self.r, t, rep)?;
         let mut prev_norm = f64::INFINITY;
         for iter in 1..=opts.max_iter {
             if !self.jac_valid || !opts.reuse_jacobian {
-                self.refactor(p, x, t, &mut rep)?;
+                self.refactor(p, x, t, rep)?;
             }
             let stale = rep.factorizations == 0;
             let scale = if stale { opts.stale_scale } else { 1.0 };
             let mut norm = self.step(x, tol, t, scale)?;
             if norm > opts.max_rate * prev_norm && stale {
                 // Slow on a stale matrix: refresh before judging the iteration.
-                self.refactor(p, x, t, &mut rep)?;
+                self.refactor(p, x, t, rep)?;
                 norm = self.step(x, tol, t, 1.0)?;
             }
             rep.iterations = iter;
@@ -252,14 +275,14 @@ impl Newton {
                     *x += d;
                 }
                 if norm <= opts.tol {
-                    return Ok(rep);
+                    return Ok(());
                 }
-                Self::eval(p, x, &mut self.r, t, &mut rep)?;
+                Self::eval(p, x, &mut self.r, t, rep)?;
             }
             if let Some(rt) = opts.residual_tol
                 && worst(&self.r).1 <= rt
             {
-                return Ok(rep);
+                return Ok(());
             }
             prev_norm = norm;
         }

@@ -42,7 +42,7 @@ impl Default for OpOptions {
     }
 }
 
-/// How an operating point was reached and what it cost in total.
+/// How an operating point was reached and what it cost in total (failed attempts included).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct OpReport {
     pub strategy: OpStrategy,
@@ -106,10 +106,9 @@ pub fn operating_point<S: DaeSystem + ?Sized>(
     let mut attempt = |p: &mut OpProblem<'_, S>, x: &mut [f64], report: &mut OpReport| {
         newton.invalidate_jacobian();
         let r = newton.solve(p, x, tol, &options.newton, t);
-        if let Ok(r) = &r {
-            report.newton_iterations += r.iterations;
-            report.factorizations += r.factorizations;
-        }
+        let totals = newton.totals();
+        report.newton_iterations = totals.iterations;
+        report.factorizations = totals.factorizations;
         r.map(|_| ())
     };
 

@@ -229,8 +229,7 @@ impl Transient {
             ..NewtonOptions::default()
         };
         self.newton.invalidate_jacobian();
-        let rep = self
-            .newton
+        self.newton
             .solve(&mut p, &mut self.scratch, &self.tol, &opts, t)?;
         // Spread the converged z (the last residual may have been at an earlier iterate).
         for i in 0..self.n {
@@ -241,9 +240,6 @@ impl Transient {
                 self.xdot[i] = 0.0;
             }
         }
-        self.stats.newton_iterations += rep.iterations;
-        self.stats.factorizations += rep.factorizations;
-        self.stats.residual_evals += rep.residual_evals;
         self.newton.invalidate_jacobian();
         self.c0_factored = 0.0;
         self.order = 1;
@@ -288,8 +284,15 @@ impl Transient {
         self.order
     }
 
+    /// Work counters; the Newton figures include failed corrector attempts.
     pub fn stats(&self) -> Stats {
-        self.stats
+        let newton = self.newton.totals();
+        Stats {
+            newton_iterations: newton.iterations,
+            factorizations: newton.factorizations,
+            residual_evals: newton.residual_evals,
+            ..self.stats
+        }
     }
 
     /// First step: `0.001 * (t_out - t)`, shrunk so that `||h x'||_w <= 0.5` (IDA's heuristic).

@@ -385,3 +385,18 @@ fn nonlinear_decay() {
     assert!(err <= 5e-5, "max error {err:e}");
     assert!(st.factorizations * 3 < st.accepted_steps, "{st:?}");
 }
+
+/// A system without unknowns is legal: the integrator walks to t_out and the OP is trivial.
+#[test]
+fn empty_system() {
+    let mut s = LinearDae::new(vec![], vec![], vec![]);
+    let mut tr = Transient::new(&mut s, 0.0, &[], TransientOptions::default()).expect("start");
+    let mut steps = 0;
+    while tr.advance(&mut s, 1.0).expect("step") != Advance::Reached(1.0) {
+        steps += 1;
+        assert!(steps < 1000, "no progress");
+    }
+    let tol = crate::solver::Tolerances::uniform(0, 1e-6, 1e-9);
+    let op = crate::solver::operating_point(&mut s, 0.0, &mut [], &tol, &Default::default());
+    assert!(op.is_ok());
+}

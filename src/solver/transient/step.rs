@@ -147,9 +147,6 @@ impl Transient {
             Err(e) => return Ok(Attempt::NewtonFailed(e)),
         };
         corr.derivative(&self.x_new);
-        self.stats.newton_iterations += rep.iterations;
-        self.stats.factorizations += rep.factorizations;
-        self.stats.residual_evals += rep.residual_evals;
         if rep.factorizations > 0 {
             self.c0_factored = c0;
         }
