@@ -1,6 +1,7 @@
 //! Damped Newton-Raphson on `G(x) = 0` with a weighted RMS convergence test.
 //!
-//! Convergence: the update is small in the weighted norm `||dx||_w <= tol`, where
+//! Convergence: the update is small in the weighted norm `||dx||_w <= tol` (RMS or max, see
+//! [`ErrorNorm`]), where
 //! `w_i = 1 / (reltol * |x_i| + abstol_i)` (the IDA/SPICE test `|dx_i| <= reltol*|x_i| + abstol_i`
 //! at `tol = 1`), or, when `residual_tol` is set, `max_i |G_i(x)| <= residual_tol` after an update.
 //! Modified Newton: with `reuse_jacobian` the last factorisation is kept while the contraction
@@ -11,19 +12,32 @@
 use super::SolveError;
 use super::linear::{LinearOptions, LinearSolver};
 
+/// How per-unknown weighted errors combine into one number that must stay below 1.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ErrorNorm {
+    /// `sqrt(mean((e_i w_i)^2))`, as IDA: smooth, but in a large system one unknown may carry
+    /// up to `sqrt(n)` times its tolerance.
+    #[default]
+    Rms,
+    /// `max |e_i w_i|`, as SPICE: every unknown within its own tolerance.
+    Max,
+}
+
 /// Per-unknown error weights: `|e_i| <= reltol * |x_i| + abstol_i` is "within tolerance".
 #[derive(Debug, Clone, PartialEq)]
 pub struct Tolerances {
     pub reltol: f64,
     pub abstol: Vec<f64>,
+    pub norm: ErrorNorm,
 }
 
 impl Tolerances {
-    /// The same absolute tolerance for all `n` unknowns.
+    /// The same absolute tolerance for all `n` unknowns, RMS norm.
     pub fn uniform(n: usize, reltol: f64, abstol: f64) -> Self {
         Self {
             reltol,
             abstol: vec![abstol; n],
+            norm: ErrorNorm::Rms,
         }
     }
 
@@ -33,10 +47,22 @@ impl Tolerances {
             *w = 1.0 / (self.reltol * x.abs() + a);
         }
     }
+
+    /// The weighted norm of `v` (0 for an empty vector).
+    pub fn norm(&self, v: &[f64], w: &[f64]) -> f64 {
+        match self.norm {
+            ErrorNorm::Rms => wrms(v, w),
+            ErrorNorm::Max => v
+                .iter()
+                .zip(w)
+                .map(|(v, w)| (v * w).abs())
+                .fold(0.0, |m, e| if e > m || e.is_nan() { e } else { m }),
+        }
+    }
 }
 
 /// Weighted root-mean-square norm `sqrt(mean((v_i w_i)^2))`; 0 for empty vectors.
-pub(crate) fn wrms(v: &[f64], w: &[f64]) -> f64 {
+fn wrms(v: &[f64], w: &[f64]) -> f64 {
     if v.is_empty() {
         return 0.0;
     }
@@ -171,7 +197,7 @@ impl Newton {
         }
         self.lin.solve_in_place(&mut self.dx).map_err(|e| e.at(t))?;
         tol.weights(x, &mut self.w);
-        Ok(wrms(&self.dx, &self.w))
+        Ok(tol.norm(&self.dx, &self.w))
     }
 
     fn eval<P: NonlinearProblem>(

@@ -24,7 +24,7 @@ mod roots;
 mod step;
 mod types;
 
-use super::newton::{Newton, NewtonOptions, Tolerances, wrms};
+use super::newton::{Newton, NewtonOptions, Tolerances};
 use super::{DaeSystem, SolveError};
 use init::InitProblem;
 pub use types::{Advance, Stats, TransientOptions};
@@ -115,13 +115,14 @@ impl Transient {
             "tolerances must be positive",
             0,
         )?;
-        let tol = if per.is_empty() {
-            Tolerances::uniform(n, options.reltol, options.abstol)
-        } else {
-            Tolerances {
-                reltol: options.reltol,
-                abstol: per.clone(),
-            }
+        let tol = Tolerances {
+            reltol: options.reltol,
+            abstol: if per.is_empty() {
+                vec![options.abstol; n]
+            } else {
+                per.clone()
+            },
+            norm: options.norm,
         };
         let pattern = sys.pattern();
         let newton = Newton::new(n, pattern, options.linear)?;
@@ -302,7 +303,7 @@ impl Transient {
         }
         let mut h = 1e-3 * (t_out - self.t);
         self.tol.weights(&self.hist_x[0], &mut self.w);
-        let nd = wrms(&self.xdot, &self.w);
+        let nd = self.tol.norm(&self.xdot, &self.w);
         if h * nd > 0.5 {
             h = 0.5 / nd;
         }

@@ -400,3 +400,34 @@ fn empty_system() {
     let op = crate::solver::operating_point(&mut s, 0.0, &mut [], &tol, &Default::default());
     assert!(op.is_ok());
 }
+
+/// One RC among 99 idle unknowns: the RMS norm dilutes the active unknown's error (it may
+/// carry up to 10x its tolerance), the max norm holds it to the single-unknown figure
+/// (<= 5e-5 at reltol 1e-6, as `rc_step_response`).
+#[test]
+fn max_norm_is_not_diluted() {
+    let n = 100;
+    let tau = 1e-3;
+    let mut m = vec![vec![0.0; n]; n];
+    let mut k = vec![vec![0.0; n]; n];
+    for (i, row) in m.iter_mut().enumerate() {
+        row[i] = if i == 0 { tau } else { 1.0 };
+    }
+    k[0][0] = 1.0;
+    let mut b = vec![0.0; n];
+    b[0] = 1.0;
+    let mut errors = Vec::new();
+    for norm in [crate::solver::ErrorNorm::Rms, crate::solver::ErrorNorm::Max] {
+        let mut s = LinearDae::new(m.clone(), k.clone(), b.clone());
+        let o = TransientOptions {
+            norm,
+            ..opts(1e-6, 1e-9)
+        };
+        let (_, pts) = run(&mut s, &vec![0.0; n], o, 10.0 * tau);
+        errors.push(max_error(&pts, 0, |t| 1.0 - (-t / tau).exp()));
+    }
+    assert!(
+        errors[1] <= 5e-5 && errors[0] > 2.0 * errors[1],
+        "rms, max: {errors:?}"
+    );
+}

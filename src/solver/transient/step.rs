@@ -1,7 +1,7 @@
 //! One BDF step: predictor, corrector, error test; and the bookkeeping after acceptance.
 
 use super::Transient;
-use crate::solver::newton::{NonlinearProblem, wrms};
+use crate::solver::newton::NonlinearProblem;
 use crate::solver::{DaeSystem, SolveError};
 
 pub(super) enum Attempt {
@@ -159,7 +159,7 @@ impl Transient {
             let e = ratio * (self.x_new[i] - self.x_pred[i]);
             self.scratch[i] = if skip_alg && !self.diff[i] { 0.0 } else { e };
         }
-        let err = wrms(&self.scratch, &self.w);
+        let err = self.tol.norm(&self.scratch, &self.w);
         if err <= 1.0 {
             return Ok(Attempt::Accepted { err });
         }
@@ -254,6 +254,6 @@ impl Transient {
             self.scratch[i] = f[0];
         }
         self.tol.weights(&self.hist_x[0], &mut self.w);
-        wrms(&self.scratch, &self.w)
+        self.tol.norm(&self.scratch, &self.w)
     }
 }

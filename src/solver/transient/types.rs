@@ -1,6 +1,6 @@
 //! The integrator's options, outcomes and counters.
 
-use crate::solver::LinearOptions;
+use crate::solver::{ErrorNorm, LinearOptions};
 
 /// Integrator settings.
 #[derive(Debug, Clone, PartialEq)]
@@ -9,6 +9,8 @@ pub struct TransientOptions {
     /// Absolute tolerance for every unknown, unless `abstol_per_unknown` is non-empty.
     pub abstol: f64,
     pub abstol_per_unknown: Vec<f64>,
+    /// How the error test and Newton combine per-unknown errors.
+    pub norm: ErrorNorm,
     pub max_step: f64,
     /// Smallest step before giving up (never below 16 ulp of `max(|t|, |t_out|)`).
     pub min_step: f64,
@@ -25,6 +27,7 @@ impl Default for TransientOptions {
             reltol: 1e-4,
             abstol: 1e-9,
             abstol_per_unknown: Vec::new(),
+            norm: ErrorNorm::Rms,
             max_step: f64::INFINITY,
             min_step: 0.0,
             initial_step: None,
