@@ -338,10 +338,14 @@ impl Transient {
                 requested: t_out,
             });
         }
-        if t_out == self.t {
+        // Targets closer than a few ulp cannot be stepped to: they count as reached.
+        let ulps = 16.0 * f64::EPSILON * self.t.abs().max(t_out.abs());
+        if t_out - self.t <= ulps {
+            self.t = t_out;
+            self.hist_t[0] = t_out;
             return Ok(Advance::Reached(self.t));
         }
-        while self.breakpoints.last().is_some_and(|&b| b <= self.t) {
+        while self.breakpoints.last().is_some_and(|&b| b <= self.t + ulps) {
             self.breakpoints.pop();
         }
         if self.h.is_nan() || self.h <= 0.0 {

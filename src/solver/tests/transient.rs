@@ -431,3 +431,61 @@ fn max_norm_is_not_diluted() {
         "rms, max: {errors:?}"
     );
 }
+
+/// A t_out or breakpoint within a few ulp of the current time is reached, not an error.
+#[test]
+fn targets_within_ulps_are_reached() {
+    let mut s = LinearDae::rc(1.0, 1.0);
+    let mut tr = Transient::new(&mut s, 1.0, &[0.0], TransientOptions::default()).expect("ok");
+    let near = 1.0 + 2.0 * f64::EPSILON;
+    tr.add_breakpoint(near);
+    assert_eq!(
+        tr.advance(&mut s, near).expect("reached"),
+        Advance::Reached(near)
+    );
+    tr.add_breakpoint(near * (1.0 + f64::EPSILON));
+    assert!(matches!(
+        tr.advance(&mut s, 2.0).expect("step"),
+        Advance::StepAccepted(_)
+    ));
+}
+
+mod never_panics {
+    use proptest::prelude::*;
+
+    use super::super::systems::LinearDae;
+    use crate::solver::{Advance, Transient, TransientOptions};
+
+    fn matrix(n: usize) -> impl Strategy<Value = Vec<Vec<f64>>> {
+        proptest::collection::vec(
+            proptest::collection::vec(prop_oneof![Just(0.0), -10.0f64..10.0], n),
+            n,
+        )
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+        /// Random (often singular or unstable) linear DAEs: construction and integration end
+        /// in a value or a typed error within bounded work, never in a panic.
+        #[test]
+        fn random_linear_daes((m, k, b, x0) in (1usize..5).prop_flat_map(|n| (
+            matrix(n),
+            matrix(n),
+            proptest::collection::vec(-1.0f64..1.0, n),
+            proptest::collection::vec(-1.0f64..1.0, n),
+        ))) {
+            let mut s = LinearDae::new(m, k, b);
+            s.roots = vec![(0, 0.1)];
+            let opts = TransientOptions { max_step: 0.05, ..TransientOptions::default() };
+            if let Ok(mut tr) = Transient::new(&mut s, 0.0, &x0, opts) {
+                for _ in 0..2000 {
+                    match tr.advance(&mut s, 1.0) {
+                        Ok(Advance::Reached(_)) | Err(_) => break,
+                        Ok(_) => {}
+                    }
+                }
+                prop_assert!(tr.time() <= 1.0);
+            }
+        }
+    }
+}
