@@ -1,5 +1,6 @@
 //! Tests of the numerical core against closed forms, with stated tolerances.
 
+mod events;
 mod linear;
 mod newton;
 mod op;
