@@ -6,10 +6,11 @@
 //! `dF/dx'` is taken as `J(alpha = 1) - J(alpha = 0)` (exact up to rounding when the model sums
 //! the two parts, which is how the interface is defined).
 
-use crate::solver::DaeSystem;
-use crate::solver::newton::NonlinearProblem;
+use super::Transient;
+use crate::solver::newton::{NewtonOptions, NonlinearProblem};
+use crate::solver::{DaeSystem, SolveError};
 
-pub(super) struct InitProblem<'a, S: ?Sized> {
+struct InitProblem<'a, S: ?Sized> {
     pub sys: &'a mut S,
     pub t: f64,
     pub diff: &'a [bool],
@@ -63,5 +64,86 @@ impl<S: DaeSystem + ?Sized> NonlinearProblem for InitProblem<'_, S> {
                 *o -= j0;
             }
         }
+    }
+}
+
+impl Transient {
+    /// Restarts after a discontinuity at `t` with state `x` (differential unknowns are held,
+    /// the rest recomputed): order 1, a fresh small step, history forgotten.
+    pub fn restart<S: DaeSystem + ?Sized>(
+        &mut self,
+        sys: &mut S,
+        t: f64,
+        x: &[f64],
+    ) -> Result<(), SolveError> {
+        if x.len() != self.n {
+            return Err(SolveError::InvalidSystem {
+                reason: "restart state length differs from the system size",
+                index: x.len(),
+            });
+        }
+        if !t.is_finite() {
+            return Err(SolveError::InvalidTime {
+                t: self.t,
+                requested: t,
+            });
+        }
+        self.t = t;
+        self.hist_t = [t; 4];
+        self.hist_x[0].copy_from_slice(x);
+        self.pending.clear();
+        self.consistent(sys)?;
+        // A small step: the heuristic again, never more than the last step taken.
+        if self.h > 0.0 {
+            self.h_cap = self.h;
+        }
+        self.h = 0.0;
+        Ok(())
+    }
+
+    pub(super) fn consistent<S: DaeSystem + ?Sized>(
+        &mut self,
+        sys: &mut S,
+    ) -> Result<(), SolveError> {
+        let t = self.t;
+        self.xdot.fill(0.0);
+        // Unknowns appearing nowhere differentiated keep x' = 0.
+        let mut p = InitProblem {
+            sys,
+            t,
+            diff: &self.diff,
+            x: &mut self.hist_x[0],
+            xdot: &mut self.xdot,
+            cols: &self.cols,
+            jac0: &mut self.jac0,
+        };
+        p.z_from(&mut self.scratch);
+        let opts = NewtonOptions {
+            residual_tol: Some(1e-12),
+            ..NewtonOptions::default()
+        };
+        self.newton.invalidate_jacobian();
+        self.newton
+            .solve(&mut p, &mut self.scratch, &self.tol, &opts, t)?;
+        // Spread the converged z (the last residual may have been at an earlier iterate).
+        for i in 0..self.n {
+            if self.diff[i] {
+                self.xdot[i] = self.scratch[i];
+            } else {
+                self.hist_x[0][i] = self.scratch[i];
+                self.xdot[i] = 0.0;
+            }
+        }
+        self.newton.invalidate_jacobian();
+        self.c0_factored = 0.0;
+        self.order = 1;
+        self.nhist = 1;
+        self.int_valid = false;
+        self.xdot_alg_known = false;
+        if !self.g_prev.is_empty() {
+            sys.roots(t, &self.hist_x[0], &mut self.g_prev);
+            self.stats.root_evals += 1;
+        }
+        Ok(())
     }
 }
