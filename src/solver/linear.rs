@@ -24,11 +24,12 @@ mod sparse;
 /// are factored densely.
 ///
 /// Measured with `cargo bench --bench solver -- crossover` (factor + solve of tridiagonal
-/// N-node ladder matrices, release build, shared 2-core x86-64 box): N = 4: dense 0.30 us,
-/// sparse 0.50 us; N = 8: 0.88 / 1.01 us; N = 10: 0.94 / 0.78 us; N = 12: 1.28 / 0.94 us;
-/// N = 16: 2.4 / 1.4 us; N = 32: 8.7 / 2.6 us; N = 128: 131 / 9.1 us. The paths cross between
-/// 8 and 10 unknowns. A tridiagonal matrix is the sparse path's best case; denser circuit
-/// matrices move the point up somewhat.
+/// N-node ladder matrices, release build, shared 2-core x86-64 box; two runs, dense / sparse):
+/// N = 4: 0.25-0.30 / 0.38-0.50 us; N = 8: 0.72-0.88 / 0.65-1.01 us; N = 10: 0.94-1.05 /
+/// 0.78-0.79 us; N = 12: 1.28-1.30 / 0.91-0.94 us; N = 16: 2.2-2.4 / 1.3-1.4 us; N = 32:
+/// 8.7-10.6 / 2.4-2.6 us; N = 128: 131-141 / 9.1-9.6 us. The paths cross between 6 and 10
+/// unknowns (at 8 they tie within noise). A tridiagonal matrix is the sparse path's best case;
+/// denser circuit matrices move the point up somewhat.
 pub const DEFAULT_DENSE_MAX: usize = 8;
 
 /// Tuning of the linear solver.

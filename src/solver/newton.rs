@@ -80,6 +80,7 @@ pub(crate) fn worst(v: &[f64]) -> (usize, f64) {
 
 /// A square nonlinear system `G(x) = 0` on the pattern given to [`Newton::new`].
 pub trait NonlinearProblem {
+    /// `out = G(x)`.
     fn residual(&mut self, x: &[f64], out: &mut [f64]);
     /// `dG/dx` at each pattern entry, in pattern order.
     fn jacobian(&mut self, x: &[f64], out: &mut [f64]);

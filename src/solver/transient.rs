@@ -9,7 +9,10 @@
 //! `P_p = prod_{j<=k} (t_{n+1} - t_{n-j})`, `a` the corrector's leading coefficient (fixed-step:
 //! 1/3 for BDF1, 2/11 for BDF2). A step is accepted when `||LTE||_w <= 1`. Order 2 is tried once
 //! four points are known, comparing step sizes predicted from divided differences. Growth is at
-//! most 2x per step (BDF2 stays zero-stable below 2.41x).
+//! most 2x per step at order 2 (BDF2 stays zero-stable below 2.41x), 10x at order 1.
+//! Jacobians are reused across steps while `alpha` stays within 25% (updates scaled by IDA's
+//! `2 / (1 + alpha/alpha_old)`); a corrector failure on a stale matrix retries the same step
+//! with a fresh one before the step is cut by 4.
 //!
 //! **Events.** Breakpoints and `t_out` are landed on exactly (the step is stretched or split so
 //! no sliver remains). After each accepted step the root functions are evaluated; a sign change
@@ -314,13 +317,15 @@ impl Transient {
                         worst_unknown: worst,
                     });
                 }
-                step::Attempt::NewtonFailed(e) => {
+                step::Attempt::NewtonFailed { err, stale } => {
                     self.stats.newton_failures += 1;
-                    failures += 1;
                     self.newton.invalidate_jacobian();
                     self.c0_factored = 0.0;
-                    self.h = 0.25 * h;
-                    last_err = Some(e);
+                    if !stale {
+                        failures += 1;
+                        self.h = 0.25 * h;
+                    }
+                    last_err = Some(err);
                 }
             }
             if failures >= 2 {

@@ -36,7 +36,7 @@ impl<S: DaeSystem + ?Sized> InitProblem<'_, S> {
     }
 
     /// The starting `z` for the given state.
-    pub fn z_from(&self, z: &mut [f64]) {
+    fn z_from(&self, z: &mut [f64]) {
         for (i, zi) in z.iter_mut().enumerate() {
             *zi = if self.diff[i] {
                 self.xdot[i]

@@ -5,9 +5,19 @@ use crate::solver::newton::NonlinearProblem;
 use crate::solver::{DaeSystem, SolveError};
 
 pub(super) enum Attempt {
-    Accepted { err: f64 },
-    ErrorTest { err: f64, worst: usize },
-    NewtonFailed(SolveError),
+    Accepted {
+        err: f64,
+    },
+    ErrorTest {
+        err: f64,
+        worst: usize,
+    },
+    /// `stale`: the corrector ran on a factorisation from an earlier step, so a retry with a
+    /// fresh Jacobian at the same step size comes before shrinking the step.
+    NewtonFailed {
+        err: SolveError,
+        stale: bool,
+    },
 }
 
 /// `G(x) = F(t, x, c0 x + beta)`, Jacobian `dF/dx + c0 dF/dx'`.
@@ -126,6 +136,7 @@ impl Transient {
         } else {
             1.0
         };
+        let f0 = self.newton.totals().factorizations;
         self.x_new.copy_from_slice(&self.x_pred);
         let mut corr = Corrector {
             sys,
@@ -144,7 +155,10 @@ impl Transient {
         let rep = match solved {
             Ok(rep) => rep,
             Err(e @ SolveError::InvalidSystem { .. }) => return Err(e),
-            Err(e) => return Ok(Attempt::NewtonFailed(e)),
+            Err(err) => {
+                let stale = self.c0_factored != 0.0 && self.newton.totals().factorizations == f0;
+                return Ok(Attempt::NewtonFailed { err, stale });
+            }
         };
         corr.derivative(&self.x_new);
         if rep.factorizations > 0 {
