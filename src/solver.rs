@@ -22,7 +22,7 @@ mod tests;
 
 pub use error::SolveError;
 pub use linear::{DEFAULT_DENSE_MAX, LinearOptions, LinearSolver};
-pub use newton::{Newton, NewtonOptions, NewtonReport, NonlinearProblem, Tolerances};
+pub use newton::{ErrorNorm, Newton, NewtonOptions, NewtonReport, NonlinearProblem, Tolerances};
 pub use op::{OpOptions, OpReport, OpStrategy, operating_point};
 pub use transient::{Advance, Stats, Transient, TransientOptions};
 
