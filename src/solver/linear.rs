@@ -1,0 +1,275 @@
+//! LU factorisation of the Newton matrix, given as values in the system's pattern order.
+//!
+//! Two paths behind one type. Small systems use faer's dense LU with partial pivoting; large
+//! ones use faer's simplicial sparse LU (left-looking, partial pivoting, COLAMD column order),
+//! which suits circuit matrices: they are very sparse and produce little fill, so supernodes
+//! would not pay (the same choice KLU makes). The column ordering is computed once per pattern;
+//! each `factor` scatters the values into preallocated CSC storage and refactors numerically.
+//! Scratch space for factor and solve is a `MemBuffer` sized at construction, so the steady state
+//! does not allocate (the simplicial factor's `Vec`s keep their capacity between refactorisations
+//! and only grow if a different pivot sequence produces more fill).
+
+use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
+use faer::linalg::lu::partial_pivoting::{factor as dense_factor, solve as dense_solve};
+use faer::perm::PermRef;
+use faer::sparse::linalg::lu::simplicial;
+use faer::{Conj, Mat, MatMut, Par};
+
+use super::SolveError;
+use sparse::Sparse;
+
+mod sparse;
+
+/// Crossover between the dense and the sparse path: systems with at most this many unknowns
+/// are factored densely.
+///
+/// Measured with `cargo bench --bench solver -- crossover` (factor + solve of tridiagonal
+/// N-node ladder matrices, release build, shared 2-core x86-64 box; two runs, dense / sparse):
+/// N = 4: 0.25-0.30 / 0.38-0.50 us; N = 8: 0.72-0.88 / 0.65-1.01 us; N = 10: 0.94-1.05 /
+/// 0.78-0.79 us; N = 12: 1.28-1.30 / 0.91-0.94 us; N = 16: 2.2-2.4 / 1.3-1.4 us; N = 32:
+/// 8.7-10.6 / 2.4-2.6 us; N = 128: 131-141 / 9.1-9.6 us. The paths cross between 6 and 10
+/// unknowns (at 8 they tie within noise). A tridiagonal matrix is the sparse path's best case;
+/// denser circuit matrices move the point up somewhat.
+pub const DEFAULT_DENSE_MAX: usize = 8;
+
+/// Tuning of the linear solver.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LinearOptions {
+    /// Systems with at most this many unknowns use the dense path.
+    pub dense_max: usize,
+    /// A pivot smaller than `pivot_tol` times the largest magnitude in its column of the
+    /// assembled matrix counts as zero (the matrix is reported singular).
+    pub pivot_tol: f64,
+}
+
+impl Default for LinearOptions {
+    fn default() -> Self {
+        Self {
+            dense_max: DEFAULT_DENSE_MAX,
+            pivot_tol: 1e-13,
+        }
+    }
+}
+
+/// A reusable LU solver for one sparsity pattern.
+pub struct LinearSolver {
+    n: usize,
+    pattern: Vec<(usize, usize)>,
+    pivot_tol: f64,
+    /// Whether the pattern has any entry in each row / column.
+    row_used: Vec<bool>,
+    col_used: Vec<bool>,
+    /// Largest magnitude per row and per column of the last assembled matrix.
+    row_max: Vec<f64>,
+    col_max: Vec<f64>,
+    factored: bool,
+    backend: Backend,
+    mem: MemBuffer,
+}
+
+enum Backend {
+    Dense(Dense),
+    Sparse(Box<Sparse>),
+}
+
+struct Dense {
+    a: Mat<f64>,
+    perm: Vec<usize>,
+    perm_inv: Vec<usize>,
+}
+
+impl LinearSolver {
+    /// Prepares a solver for `n` unknowns and the given structural nonzeros (duplicates are
+    /// summed; the diagonal is always part of the structure).
+    pub fn new(
+        n: usize,
+        pattern: &[(usize, usize)],
+        options: LinearOptions,
+    ) -> Result<Self, SolveError> {
+        if let Some(k) = pattern.iter().position(|&(r, c)| r >= n || c >= n) {
+            return Err(SolveError::InvalidSystem {
+                reason: "pattern entry out of range",
+                index: k,
+            });
+        }
+        let par = Par::Seq;
+        let (backend, req) = if n <= options.dense_max {
+            let req = StackReq::any_of(&[
+                dense_factor::lu_in_place_scratch::<usize, f64>(n, n, par, Default::default()),
+                dense_solve::solve_in_place_scratch::<usize, f64>(n, 1, par),
+            ]);
+            let dense = Dense {
+                a: Mat::zeros(n, n),
+                perm: vec![0; n],
+                perm_inv: vec![0; n],
+            };
+            (Backend::Dense(dense), req)
+        } else {
+            let sparse = Sparse::new(n, pattern)?;
+            let req = StackReq::any_of(&[
+                simplicial::factorize_simplicial_numeric_lu_scratch::<usize, f64>(n, n),
+                simplicial::solve_in_place_scratch::<usize, f64>(n, 1, par),
+            ]);
+            (Backend::Sparse(Box::new(sparse)), req)
+        };
+        let mem = MemBuffer::try_new(req).map_err(|_| SolveError::InvalidSystem {
+            reason: "out of memory for the linear solver's scratch space",
+            index: n,
+        })?;
+        let (mut row_used, mut col_used) = (vec![false; n], vec![false; n]);
+        for &(r, c) in pattern {
+            row_used[r] = true;
+            col_used[c] = true;
+        }
+        Ok(Self {
+            n,
+            row_used,
+            col_used,
+            pattern: pattern.to_vec(),
+            pivot_tol: options.pivot_tol,
+            row_max: vec![0.0; n],
+            col_max: vec![0.0; n],
+            factored: false,
+            backend,
+            mem,
+        })
+    }
+
+    /// Number of unknowns.
+    pub fn len(&self) -> usize {
+        self.n
+    }
+
+    /// True for a system without unknowns.
+    pub fn is_empty(&self) -> bool {
+        self.n == 0
+    }
+
+    /// True when this solver uses the dense path.
+    pub fn is_dense(&self) -> bool {
+        matches!(self.backend, Backend::Dense(_))
+    }
+
+    /// Factors the matrix whose entries are `values` (pattern order) plus `diag_shift` on the
+    /// diagonal. Errors carry `t = 0`; callers restamp them with [`SolveError::at`].
+    pub fn factor(&mut self, values: &[f64], diag_shift: f64) -> Result<(), SolveError> {
+        self.factored = false;
+        if values.len() != self.pattern.len() {
+            return Err(SolveError::InvalidSystem {
+                reason: "Jacobian value count differs from the pattern length",
+                index: values.len(),
+            });
+        }
+        if let Some(k) = values.iter().position(|v| !v.is_finite()) {
+            let (row, column) = self.pattern[k];
+            return Err(SolveError::NonFiniteJacobian {
+                t: 0.0,
+                row,
+                column,
+            });
+        }
+        self.row_max.fill(0.0);
+        self.col_max.fill(0.0);
+        let stack = MemStack::new(&mut self.mem);
+        match &mut self.backend {
+            Backend::Dense(d) => {
+                d.a.fill(0.0);
+                for (&(r, c), &v) in self.pattern.iter().zip(values) {
+                    d.a[(r, c)] += v;
+                }
+                for i in 0..self.n {
+                    d.a[(i, i)] += diag_shift;
+                }
+                for c in 0..self.n {
+                    for r in 0..self.n {
+                        let v = d.a[(r, c)].abs();
+                        self.row_max[r] = self.row_max[r].max(v);
+                        self.col_max[c] = self.col_max[c].max(v);
+                    }
+                }
+                check_empty(&self.row_max, &self.col_max, &self.row_used, &self.col_used)?;
+                dense_factor::lu_in_place(
+                    d.a.as_mut(),
+                    &mut d.perm,
+                    &mut d.perm_inv,
+                    Par::Seq,
+                    stack,
+                    Default::default(),
+                );
+                for j in 0..self.n {
+                    let pivot = d.a[(j, j)].abs();
+                    if pivot.is_nan() || pivot <= self.pivot_tol * self.col_max[j] {
+                        return Err(singular(d.perm[j], j));
+                    }
+                }
+            }
+            Backend::Sparse(s) => {
+                s.assemble(values, diag_shift, &mut self.row_max, &mut self.col_max);
+                check_empty(&self.row_max, &self.col_max, &self.row_used, &self.col_used)?;
+                s.factor(stack, self.pivot_tol, &self.col_max)?;
+            }
+        }
+        self.factored = true;
+        Ok(())
+    }
+
+    /// Solves `A x = rhs` in place with the last factorisation.
+    pub fn solve_in_place(&mut self, rhs: &mut [f64]) -> Result<(), SolveError> {
+        if !self.factored || rhs.len() != self.n {
+            return Err(SolveError::InvalidSystem {
+                reason: "solve without a valid factorisation or with a wrong-sized right side",
+                index: rhs.len(),
+            });
+        }
+        let n = self.n;
+        let stack = MemStack::new(&mut self.mem);
+        let x = MatMut::from_column_major_slice_mut(rhs, n, 1);
+        match &self.backend {
+            Backend::Dense(d) => {
+                let perm = PermRef::new_checked(&d.perm, &d.perm_inv, n);
+                let a = d.a.as_ref();
+                dense_solve::solve_in_place_with_conj(a, a, perm, Conj::No, x, Par::Seq, stack);
+            }
+            Backend::Sparse(s) => {
+                s.solve(x, stack);
+            }
+        }
+        Ok(())
+    }
+}
+
+pub(super) fn singular(row: usize, column: usize) -> SolveError {
+    SolveError::SingularJacobian {
+        t: 0.0,
+        row: Some(row),
+        column: Some(column),
+        structural: false,
+    }
+}
+
+/// An all-zero row or column names the culprit exactly; report it before elimination blurs
+/// it. `*_used` tell a structural hole (nothing in the pattern) from a numerical zero.
+fn check_empty(
+    row_max: &[f64],
+    col_max: &[f64],
+    row_used: &[bool],
+    col_used: &[bool],
+) -> Result<(), SolveError> {
+    if let Some(r) = row_max.iter().position(|&v| v == 0.0) {
+        return Err(SolveError::SingularJacobian {
+            t: 0.0,
+            row: Some(r),
+            column: None,
+            structural: !row_used[r],
+        });
+    }
+    if let Some(c) = col_max.iter().position(|&v| v == 0.0) {
+        return Err(SolveError::SingularJacobian {
+            t: 0.0,
+            row: None,
+            column: Some(c),
+            structural: !col_used[c],
+        });
+    }
+    Ok(())
+}

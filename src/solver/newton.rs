@@ -1,0 +1,328 @@
+//! Damped Newton-Raphson on `G(x) = 0` with a weighted RMS convergence test.
+//!
+//! Convergence: the update is small in the weighted norm `||dx||_w <= tol` (RMS or max, see
+//! [`ErrorNorm`]), where
+//! `w_i = 1 / (reltol * |x_i| + abstol_i)` (the IDA/SPICE test `|dx_i| <= reltol*|x_i| + abstol_i`
+//! at `tol = 1`), or, when `residual_tol` is set, `max_i |G_i(x)| <= residual_tol` after an update.
+//! Modified Newton: with `reuse_jacobian` the last factorisation is kept while the contraction
+//! rate `||dx_k|| / ||dx_{k-1}||` stays below `max_rate`; a slow or diverging iteration on a stale
+//! matrix refactors before anything else. Damping is an Armijo backtracking line search on the
+//! residual's 2-norm (halving, at most 6 times).
+
+use super::SolveError;
+use super::linear::{LinearOptions, LinearSolver};
+
+/// How per-unknown weighted errors combine into one number that must stay below 1.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ErrorNorm {
+    /// `sqrt(mean((e_i w_i)^2))`, as IDA: smooth, but in a large system one unknown may carry
+    /// up to `sqrt(n)` times its tolerance.
+    #[default]
+    Rms,
+    /// `max |e_i w_i|`, as SPICE: every unknown within its own tolerance.
+    Max,
+}
+
+/// Per-unknown error weights: `|e_i| <= reltol * |x_i| + abstol_i` is "within tolerance".
+#[derive(Debug, Clone, PartialEq)]
+pub struct Tolerances {
+    pub reltol: f64,
+    pub abstol: Vec<f64>,
+    pub norm: ErrorNorm,
+}
+
+impl Tolerances {
+    /// The same absolute tolerance for all `n` unknowns, RMS norm.
+    pub fn uniform(n: usize, reltol: f64, abstol: f64) -> Self {
+        Self {
+            reltol,
+            abstol: vec![abstol; n],
+            norm: ErrorNorm::Rms,
+        }
+    }
+
+    /// `w_i = 1 / (reltol * |x_i| + abstol_i)`.
+    pub fn weights(&self, x: &[f64], w: &mut [f64]) {
+        for ((w, &x), &a) in w.iter_mut().zip(x).zip(&self.abstol) {
+            *w = 1.0 / (self.reltol * x.abs() + a);
+        }
+    }
+
+    /// The weighted norm of `v` (0 for an empty vector).
+    pub fn norm(&self, v: &[f64], w: &[f64]) -> f64 {
+        match self.norm {
+            ErrorNorm::Rms => wrms(v, w),
+            ErrorNorm::Max => v
+                .iter()
+                .zip(w)
+                .map(|(v, w)| (v * w).abs())
+                .fold(0.0, |m, e| if e > m || e.is_nan() { e } else { m }),
+        }
+    }
+}
+
+/// Weighted root-mean-square norm `sqrt(mean((v_i w_i)^2))`; 0 for empty vectors.
+fn wrms(v: &[f64], w: &[f64]) -> f64 {
+    if v.is_empty() {
+        return 0.0;
+    }
+    let s: f64 = v.iter().zip(w).map(|(v, w)| (v * w) * (v * w)).sum();
+    (s / v.len() as f64).sqrt()
+}
+
+/// Index and magnitude of the largest `|v_i|`.
+pub(crate) fn worst(v: &[f64]) -> (usize, f64) {
+    v.iter()
+        .map(|v| v.abs())
+        .enumerate()
+        .fold((0, 0.0), |a, b| if b.1 > a.1 { b } else { a })
+}
+
+/// A square nonlinear system `G(x) = 0` on the pattern given to [`Newton::new`].
+pub trait NonlinearProblem {
+    /// `out = G(x)`.
+    fn residual(&mut self, x: &[f64], out: &mut [f64]);
+    /// `dG/dx` at each pattern entry, in pattern order.
+    fn jacobian(&mut self, x: &[f64], out: &mut [f64]);
+    /// A conductance added to every diagonal entry of the Jacobian (gmin stepping).
+    fn diagonal_shift(&self) -> f64 {
+        0.0
+    }
+}
+
+/// Newton's knobs. The defaults suit an operating point; the transient corrector uses
+/// `max_iter = 4`, `tol = 0.33`, no line search and Jacobian reuse (as IDA does).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NewtonOptions {
+    pub max_iter: usize,
+    /// Bound on `||dx||_w`.
+    pub tol: f64,
+    /// Optional absolute bound on `max |G_i|` that also counts as converged.
+    pub residual_tol: Option<f64>,
+    pub line_search: bool,
+    /// Keep the factorisation across iterations and calls while convergence is fast.
+    pub reuse_jacobian: bool,
+    /// Contraction rate above which a stale Jacobian is refreshed (and, for a fresh one without
+    /// line search, the iteration is declared divergent).
+    pub max_rate: f64,
+    /// Factor applied to updates computed with a factorisation from an earlier call (the
+    /// integrator passes IDA's `2 / (1 + c/c_old)` to make up for a stale `alpha`).
+    pub stale_scale: f64,
+}
+
+impl Default for NewtonOptions {
+    fn default() -> Self {
+        Self {
+            max_iter: 50,
+            tol: 1.0,
+            residual_tol: None,
+            line_search: true,
+            reuse_jacobian: false,
+            max_rate: 0.9,
+            stale_scale: 1.0,
+        }
+    }
+}
+
+/// What one successful [`Newton::solve`] cost.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct NewtonReport {
+    pub iterations: usize,
+    pub factorizations: usize,
+    pub residual_evals: usize,
+}
+
+/// Newton's workspace: the linear solver and every vector it needs, allocated once.
+pub struct Newton {
+    lin: LinearSolver,
+    jac: Vec<f64>,
+    r: Vec<f64>,
+    dx: Vec<f64>,
+    x_trial: Vec<f64>,
+    r_trial: Vec<f64>,
+    w: Vec<f64>,
+    jac_valid: bool,
+    totals: NewtonReport,
+}
+
+impl Newton {
+    pub fn new(
+        n: usize,
+        pattern: &[(usize, usize)],
+        linear: LinearOptions,
+    ) -> Result<Self, SolveError> {
+        Ok(Self {
+            lin: LinearSolver::new(n, pattern, linear)?,
+            jac: vec![0.0; pattern.len()],
+            r: vec![0.0; n],
+            dx: vec![0.0; n],
+            x_trial: vec![0.0; n],
+            r_trial: vec![0.0; n],
+            w: vec![0.0; n],
+            jac_valid: false,
+            totals: NewtonReport::default(),
+        })
+    }
+
+    /// Forces a fresh Jacobian at the next iteration.
+    pub fn invalidate_jacobian(&mut self) {
+        self.jac_valid = false;
+    }
+
+    /// The residual at the last point Newton evaluated.
+    pub fn last_residual(&self) -> &[f64] {
+        &self.r
+    }
+
+    fn refactor<P: NonlinearProblem>(
+        &mut self,
+        p: &mut P,
+        x: &[f64],
+        t: f64,
+        rep: &mut NewtonReport,
+    ) -> Result<(), SolveError> {
+        self.jac_valid = false;
+        p.jacobian(x, &mut self.jac);
+        self.lin
+            .factor(&self.jac, p.diagonal_shift())
+            .map_err(|e| e.at(t))?;
+        rep.factorizations += 1;
+        self.jac_valid = true;
+        Ok(())
+    }
+
+    /// `dx = -scale J^{-1} r`, returning `||dx||_w` at `x`.
+    fn step(&mut self, x: &[f64], tol: &Tolerances, t: f64, scale: f64) -> Result<f64, SolveError> {
+        for (d, r) in self.dx.iter_mut().zip(&self.r) {
+            *d = -scale * r;
+        }
+        self.lin.solve_in_place(&mut self.dx).map_err(|e| e.at(t))?;
+        tol.weights(x, &mut self.w);
+        Ok(tol.norm(&self.dx, &self.w))
+    }
+
+    fn eval<P: NonlinearProblem>(
+        p: &mut P,
+        x: &[f64],
+        out: &mut [f64],
+        t: f64,
+        rep: &mut NewtonReport,
+    ) -> Result<(), SolveError> {
+        p.residual(x, out);
+        rep.residual_evals += 1;
+        match out.iter().position(|v| !v.is_finite()) {
+            Some(equation) => Err(SolveError::NonFiniteResidual { t, equation }),
+            None => Ok(()),
+        }
+    }
+
+    /// Work done by every `solve` since construction, failed ones included.
+    pub fn totals(&self) -> NewtonReport {
+        self.totals
+    }
+
+    /// Solves `p(x) = 0` starting from `x`; on success `x` holds the solution. On failure `x`
+    /// holds the last iterate. `t` only stamps errors.
+    pub fn solve<P: NonlinearProblem>(
+        &mut self,
+        p: &mut P,
+        x: &mut [f64],
+        tol: &Tolerances,
+        opts: &NewtonOptions,
+        t: f64,
+    ) -> Result<NewtonReport, SolveError> {
+        let mut rep = NewtonReport::default();
+        let result = self.solve_counted(p, x, tol, opts, t, &mut rep);
+        self.totals.iterations += rep.iterations;
+        self.totals.factorizations += rep.factorizations;
+        self.totals.residual_evals += rep.residual_evals;
+        result.map(|()| rep)
+    }
+
+    fn solve_counted<P: NonlinearProblem>(
+        &mut self,
+        p: &mut P,
+        x: &mut [f64],
+        tol: &Tolerances,
+        opts: &NewtonOptions,
+        t: f64,
+        rep: &mut NewtonReport,
+    ) -> Result<(), SolveError> {
+        let n = self.r.len();
+        if x.len() != n || tol.abstol.len() != n {
+            return Err(SolveError::InvalidSystem {
+                reason: "state or tolerance vector length differs from the system size",
+                index: x.len(),
+            });
+        }
+        Self::eval(p, x, &mut self.r, t, rep)?;
+        let mut prev_norm = f64::INFINITY;
+        for iter in 1..=opts.max_iter {
+            if !self.jac_valid || !opts.reuse_jacobian {
+                self.refactor(p, x, t, rep)?;
+            }
+            let stale = rep.factorizations == 0;
+            let scale = if stale { opts.stale_scale } else { 1.0 };
+            let mut norm = self.step(x, tol, t, scale)?;
+            if norm > opts.max_rate * prev_norm && stale {
+                // Slow on a stale matrix: refresh before judging the iteration.
+                self.refactor(p, x, t, rep)?;
+                norm = self.step(x, tol, t, 1.0)?;
+            }
+            rep.iterations = iter;
+            // Without damping, a fresh Jacobian that does not contract means divergence: give
+            // up early so the integrator can shrink the step (IDA's rate test).
+            if !norm.is_finite() || (!opts.line_search && norm > opts.max_rate * prev_norm) {
+                break;
+            }
+            let mut lambda = 1.0;
+            // A step already within tolerance needs no damping (and rounding would defeat the
+            // sufficient-decrease test there).
+            if opts.line_search && norm > opts.tol {
+                let f0 = norm2(&self.r);
+                loop {
+                    for ((xt, &x), &d) in self.x_trial.iter_mut().zip(x.iter()).zip(&self.dx) {
+                        *xt = x + lambda * d;
+                    }
+                    p.residual(&self.x_trial, &mut self.r_trial);
+                    rep.residual_evals += 1;
+                    let f1 = norm2(&self.r_trial);
+                    if (f1.is_finite() && f1 <= (1.0 - 1e-4 * lambda) * f0) || lambda < 0.03 {
+                        break;
+                    }
+                    lambda *= 0.5;
+                }
+                x.copy_from_slice(&self.x_trial);
+                std::mem::swap(&mut self.r, &mut self.r_trial);
+                if let Some(equation) = self.r.iter().position(|v| !v.is_finite()) {
+                    return Err(SolveError::NonFiniteResidual { t, equation });
+                }
+            } else {
+                for (x, d) in x.iter_mut().zip(&self.dx) {
+                    *x += d;
+                }
+                if norm <= opts.tol {
+                    return Ok(());
+                }
+                Self::eval(p, x, &mut self.r, t, rep)?;
+            }
+            if let Some(rt) = opts.residual_tol
+                && worst(&self.r).1 <= rt
+            {
+                return Ok(());
+            }
+            prev_norm = norm;
+        }
+        let (worst_equation, residual) = worst(&self.r);
+        Err(SolveError::NewtonDiverged {
+            t,
+            iterations: rep.iterations,
+            worst_equation,
+            residual,
+        })
+    }
+}
+
+fn norm2(v: &[f64]) -> f64 {
+    v.iter().map(|v| v * v).sum::<f64>().sqrt()
+}

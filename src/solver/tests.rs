@@ -1,0 +1,8 @@
+//! Tests of the numerical core against closed forms, with stated tolerances.
+
+mod events;
+mod linear;
+mod newton;
+mod op;
+mod systems;
+mod transient;

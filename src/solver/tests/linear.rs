@@ -1,0 +1,187 @@
+use proptest::prelude::*;
+
+use crate::solver::{LinearOptions, LinearSolver, SolveError};
+
+fn dense() -> LinearOptions {
+    LinearOptions {
+        dense_max: usize::MAX,
+        ..LinearOptions::default()
+    }
+}
+
+fn sparse() -> LinearOptions {
+    LinearOptions {
+        dense_max: 0,
+        ..LinearOptions::default()
+    }
+}
+
+/// Solves a 3x3 system on both paths; exact to 1e-14.
+#[test]
+fn small_system_both_paths() {
+    let pattern = [
+        (0, 0),
+        (0, 1),
+        (1, 0),
+        (1, 1),
+        (1, 2),
+        (2, 1),
+        (2, 2),
+        (2, 2),
+    ];
+    // The duplicate (2, 2) entries are summed: A[2][2] = 3 + 1.
+    let values = [4.0, 1.0, 1.0, 5.0, 2.0, 2.0, 3.0, 1.0];
+    let x_true = [1.0, -2.0, 0.5];
+    let b = [4.0 - 2.0, 1.0 - 10.0 + 1.0, -4.0 + 2.0];
+    for opts in [dense(), sparse()] {
+        let mut lin = LinearSolver::new(3, &pattern, opts).expect("valid pattern");
+        lin.factor(&values, 0.0).expect("regular");
+        let mut x = b;
+        lin.solve_in_place(&mut x).expect("factored");
+        for (x, t) in x.iter().zip(x_true) {
+            assert!(
+                (x - t).abs() < 1e-14,
+                "{x} vs {t} (dense: {})",
+                lin.is_dense()
+            );
+        }
+    }
+}
+
+#[test]
+fn singular_matrices_are_errors_with_indices() {
+    // Rows 0 and 1 are equal: numerically singular.
+    let pattern = [(0, 0), (0, 1), (1, 0), (1, 1), (2, 2)];
+    let values = [1.0, 1.0, 1.0, 1.0, 1.0];
+    for opts in [dense(), sparse()] {
+        let mut lin = LinearSolver::new(3, &pattern, opts).expect("valid pattern");
+        let err = lin.factor(&values, 0.0).expect_err("singular");
+        let SolveError::SingularJacobian {
+            row: Some(r),
+            column: Some(c),
+            structural: false,
+            ..
+        } = err
+        else {
+            panic!("expected a singular Jacobian with indices, got {err:?}");
+        };
+        assert!(r < 2 && c < 2, "row {r}, column {c}");
+        let mut x = [1.0; 3];
+        assert!(
+            lin.solve_in_place(&mut x).is_err(),
+            "no solve after a failed factor"
+        );
+    }
+    // Unknown 1 appears in no equation: an empty column names it exactly.
+    let pattern = [(0, 0), (1, 0), (2, 2)];
+    for opts in [dense(), sparse()] {
+        let mut lin = LinearSolver::new(3, &pattern, opts).expect("valid pattern");
+        let err = lin.factor(&[1.0, 2.0, 1.0], 0.0).expect_err("singular");
+        assert!(matches!(
+            err,
+            SolveError::SingularJacobian {
+                row: None,
+                column: Some(1),
+                structural: true,
+                ..
+            }
+        ));
+    }
+    // Equation 2 is empty.
+    let pattern = [(0, 0), (1, 1), (0, 2)];
+    for opts in [dense(), sparse()] {
+        let mut lin = LinearSolver::new(3, &pattern, opts).expect("valid pattern");
+        let err = lin.factor(&[1.0, 2.0, 1.0], 0.0).expect_err("singular");
+        assert!(matches!(
+            err,
+            SolveError::SingularJacobian {
+                row: Some(2),
+                column: None,
+                structural: true,
+                ..
+            }
+        ));
+    }
+}
+
+#[test]
+fn bad_inputs_are_errors() {
+    assert!(matches!(
+        LinearSolver::new(2, &[(0, 0), (2, 1)], dense()),
+        Err(SolveError::InvalidSystem { index: 1, .. })
+    ));
+    let mut lin = LinearSolver::new(2, &[(0, 0), (1, 1)], sparse()).expect("valid");
+    assert!(matches!(
+        lin.factor(&[1.0, f64::NAN], 0.0),
+        Err(SolveError::NonFiniteJacobian {
+            row: 1,
+            column: 1,
+            ..
+        })
+    ));
+    assert!(lin.factor(&[1.0], 0.0).is_err(), "wrong value count");
+    let mut empty = LinearSolver::new(0, &[], sparse()).expect("empty is fine");
+    empty.factor(&[], 0.0).expect("nothing to factor");
+    empty.solve_in_place(&mut []).expect("nothing to solve");
+}
+
+/// gmin shift on the diagonal makes a floating unknown solvable.
+#[test]
+fn diagonal_shift_regularises() {
+    for opts in [dense(), sparse()] {
+        let mut lin = LinearSolver::new(2, &[(0, 0)], opts).expect("valid");
+        lin.factor(&[2.0], 1e-3).expect("shifted");
+        let mut x = [2.001, 1e-3];
+        lin.solve_in_place(&mut x).expect("factored");
+        assert!((x[0] - 1.0).abs() < 1e-14 && (x[1] - 1.0).abs() < 1e-12);
+    }
+}
+
+/// A random sparse, strictly diagonally dominant matrix as (pattern, values, n).
+/// `(n, pattern, values, rhs)`.
+type SparseCase = (usize, Vec<(usize, usize)>, Vec<f64>, Vec<f64>);
+
+fn sparse_system() -> impl Strategy<Value = SparseCase> {
+    (30usize..90).prop_flat_map(|n| {
+        (
+            Just(n),
+            proptest::collection::vec((0..n, 0..n, -1.0f64..1.0), n..4 * n),
+            proptest::collection::vec(-1.0f64..1.0, n),
+        )
+            .prop_map(|(n, off, b)| {
+                let mut pattern = Vec::new();
+                let mut values = Vec::new();
+                let mut row_sum = vec![0.0f64; n];
+                for (r, c, v) in off {
+                    pattern.push((r, c));
+                    values.push(v);
+                    row_sum[r] += v.abs();
+                }
+                for (i, s) in row_sum.iter().enumerate() {
+                    pattern.push((i, i));
+                    values.push(s + 1.0);
+                }
+                (n, pattern, values, b)
+            })
+    })
+}
+
+proptest! {
+    /// Dense and sparse LU agree to 1e-10 (relative to the largest component).
+    #[test]
+    fn sparse_and_dense_agree((n, pattern, values, b) in sparse_system()) {
+        let mut xs = b.clone();
+        let mut xd = b.clone();
+        let mut s = LinearSolver::new(n, &pattern, sparse()).expect("valid");
+        let mut d = LinearSolver::new(n, &pattern, dense()).expect("valid");
+        prop_assert!(!s.is_dense() && d.is_dense());
+        s.factor(&values, 0.0).expect("dominant");
+        d.factor(&values, 0.0).expect("dominant");
+        s.solve_in_place(&mut xs).expect("factored");
+        d.solve_in_place(&mut xd).expect("factored");
+        let scale = xd.iter().fold(1e-300f64, |m, v| m.max(v.abs()));
+        for (a, b) in xs.iter().zip(&xd) {
+            prop_assert!((a - b).abs() <= 1e-10 * scale, "{} vs {}", a, b);
+        }
+    }
+}

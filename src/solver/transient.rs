@@ -1,0 +1,353 @@
+//! Variable-step, variable-order (1 and 2) BDF integration of a [`DaeSystem`].
+//!
+//! **Method.** Variable-coefficient BDF: the corrector's `x'_{n+1}` is the derivative at
+//! `t_{n+1}` of the polynomial through the new point and the last `k` accepted points (no
+//! interpolation onto a fixed grid, so step changes cost nothing). The predictor extrapolates
+//! the last `k + 1` accepted points (or `x_n + h x'_n` right after a (re)start). The local
+//! truncation error comes from Milne's device with the exact variable-step constants:
+//! `LTE = (P_c/a) / (P_p + P_c/a) * (x_corr - x_pred)`, `P_c = prod_{j<k} (t_{n+1} - t_{n-j})`,
+//! `P_p = prod_{j<=k} (t_{n+1} - t_{n-j})`, `a` the corrector's leading coefficient (fixed-step:
+//! 1/3 for BDF1, 2/11 for BDF2). A step is accepted when `||LTE||_w <= 1`. Order 2 is tried once
+//! four points are known, comparing step sizes predicted from divided differences. Growth is at
+//! most 2x per step at order 2 (BDF2 stays zero-stable below 2.41x), 10x at order 1.
+//! Jacobians are reused across steps while `alpha` stays within 25% (updates scaled by IDA's
+//! `2 / (1 + alpha/alpha_old)`); a corrector failure on a stale matrix retries the same step
+//! with a fresh one before the step is cut by 4.
+//!
+//! **Events.** Breakpoints and `t_out` are landed on exactly (the step is stretched or split so
+//! no sliver remains). After each accepted step the root functions are evaluated; a sign change
+//! is located by the Illinois method on the cubic Hermite interpolant of the step, and the
+//! integrator is rewound to the crossing. After a breakpoint or a root, BDF history restarts at
+//! order 1.
+//!
+//! **Memory.** Every vector is allocated in [`Transient::new`]; `advance` does not allocate.
+
+mod init;
+mod roots;
+mod step;
+mod types;
+
+use super::newton::{Newton, NewtonOptions, Tolerances};
+use super::{DaeSystem, SolveError};
+pub use types::{Advance, Stats, TransientOptions};
+
+/// The BDF integrator's state. See the module documentation for the method.
+pub struct Transient {
+    n: usize,
+    tol: Tolerances,
+    opts: TransientOptions,
+    newton_opts: NewtonOptions,
+    newton: Newton,
+    diff: Vec<bool>,
+    cols: Vec<usize>,
+    t: f64,
+    /// Step to try next; 0 until the first `advance` picks one.
+    h: f64,
+    order: usize,
+    /// Accepted points, newest first; `hist_x[0]` is the current state.
+    hist_t: [f64; 4],
+    hist_x: [Vec<f64>; 4],
+    nhist: usize,
+    /// `x'` at `t` and at the start of the last step.
+    xdot: Vec<f64>,
+    xdot_prev: Vec<f64>,
+    /// The last step `[int_t0, t]` for dense output; `x(int_t0) = hist_x[1]`.
+    int_t0: f64,
+    int_valid: bool,
+    /// False when algebraic `x'` at `int_t0` is unknown (first step after a (re)start).
+    xdot_alg_known: bool,
+    /// `xdot_alg_known` as it was at the start of the last step.
+    int_alg_known: bool,
+    /// Upper bound for the first step after a restart (the last step taken).
+    h_cap: f64,
+    c0_factored: f64,
+    x_pred: Vec<f64>,
+    x_new: Vec<f64>,
+    xdot_new: Vec<f64>,
+    beta: Vec<f64>,
+    w: Vec<f64>,
+    scratch: Vec<f64>,
+    jac0: Vec<f64>,
+    g_prev: Vec<f64>,
+    g_new: Vec<f64>,
+    g_tmp: Vec<f64>,
+    /// Roots found at `t` still to be reported, last to report first.
+    pending: Vec<(usize, bool)>,
+    /// Breakpoints ahead, sorted descending (the next one is last).
+    breakpoints: Vec<f64>,
+    stats: Stats,
+}
+
+impl Transient {
+    /// Sets up the integrator at `(t0, x0)` and computes consistent initial values: algebraic
+    /// unknowns and `x'` of the differential ones, with the differential unknowns held.
+    pub fn new<S: DaeSystem + ?Sized>(
+        sys: &mut S,
+        t0: f64,
+        x0: &[f64],
+        options: TransientOptions,
+    ) -> Result<Self, SolveError> {
+        let n = sys.len();
+        let check = |ok: bool, reason: &'static str, index: usize| {
+            if ok {
+                Ok(())
+            } else {
+                Err(SolveError::InvalidSystem { reason, index })
+            }
+        };
+        check(
+            x0.len() == n,
+            "initial state length differs from the system size",
+            x0.len(),
+        )?;
+        check(
+            sys.differential().len() == n,
+            "differential flags length differs",
+            n,
+        )?;
+        check(t0.is_finite(), "initial time is not finite", 0)?;
+        let per = &options.abstol_per_unknown;
+        check(
+            per.is_empty() || per.len() == n,
+            "abstol_per_unknown length differs",
+            n,
+        )?;
+        check(
+            options.reltol >= 0.0 && (options.abstol > 0.0 || !per.is_empty()),
+            "tolerances must be positive",
+            0,
+        )?;
+        let tol = Tolerances {
+            reltol: options.reltol,
+            abstol: if per.is_empty() {
+                vec![options.abstol; n]
+            } else {
+                per.clone()
+            },
+            norm: options.norm,
+        };
+        let pattern = sys.pattern();
+        let newton = Newton::new(n, pattern, options.linear)?;
+        let cols = pattern.iter().map(|&(_, c)| c).collect();
+        let jac0 = vec![0.0; pattern.len()];
+        let m = sys.root_count();
+        let v = || vec![0.0; n];
+        let mut this = Self {
+            n,
+            tol,
+            newton_opts: NewtonOptions {
+                max_iter: 4,
+                tol: 0.33,
+                residual_tol: None,
+                line_search: false,
+                reuse_jacobian: true,
+                max_rate: 0.9,
+                stale_scale: 1.0,
+            },
+            newton,
+            diff: sys.differential().to_vec(),
+            cols,
+            t: t0,
+            h: 0.0,
+            order: 1,
+            hist_t: [t0; 4],
+            hist_x: [x0.to_vec(), v(), v(), v()],
+            nhist: 1,
+            xdot: v(),
+            xdot_prev: v(),
+            int_t0: t0,
+            int_valid: false,
+            xdot_alg_known: false,
+            int_alg_known: false,
+            h_cap: f64::INFINITY,
+            c0_factored: 0.0,
+            x_pred: v(),
+            x_new: v(),
+            xdot_new: v(),
+            beta: v(),
+            w: v(),
+            scratch: v(),
+            jac0,
+            g_prev: vec![0.0; m],
+            g_new: vec![0.0; m],
+            g_tmp: vec![0.0; m],
+            pending: Vec::with_capacity(m),
+            breakpoints: Vec::new(),
+            stats: Stats::default(),
+            opts: options,
+        };
+        this.consistent(sys)?;
+        Ok(this)
+    }
+
+    /// Demands that a step end exactly at `t` (ignored if `t` is not ahead).
+    pub fn add_breakpoint(&mut self, t: f64) {
+        if t.is_finite() && t > self.t && !self.breakpoints.contains(&t) {
+            let at = self.breakpoints.partition_point(|&b| b > t);
+            self.breakpoints.insert(at, t);
+        }
+    }
+
+    pub fn time(&self) -> f64 {
+        self.t
+    }
+
+    /// The state `x` at [`Self::time`].
+    pub fn state(&self) -> &[f64] {
+        &self.hist_x[0]
+    }
+
+    /// `x'` at [`Self::time`] (zero for algebraic unknowns right after a (re)start).
+    pub fn derivative(&self) -> &[f64] {
+        &self.xdot
+    }
+
+    /// The step the integrator will try next (0 before the first `advance`).
+    pub fn step_size(&self) -> f64 {
+        self.h
+    }
+
+    pub fn order(&self) -> usize {
+        self.order
+    }
+
+    /// Work counters; the Newton figures include failed corrector attempts.
+    pub fn stats(&self) -> Stats {
+        let newton = self.newton.totals();
+        Stats {
+            newton_iterations: newton.iterations,
+            factorizations: newton.factorizations,
+            residual_evals: newton.residual_evals,
+            ..self.stats
+        }
+    }
+
+    /// First step: `0.001 * (t_out - t)`, shrunk so that `||h x'||_w <= 0.5` (IDA's heuristic).
+    fn initial_step(&mut self, t_out: f64) -> f64 {
+        if let Some(h) = self.opts.initial_step {
+            return h;
+        }
+        let mut h = 1e-3 * (t_out - self.t);
+        self.tol.weights(&self.hist_x[0], &mut self.w);
+        let nd = self.tol.norm(&self.xdot, &self.w);
+        if h * nd > 0.5 {
+            h = 0.5 / nd;
+        }
+        h
+    }
+
+    /// The step floor: the option, but never below 16 ulp of the time span in play.
+    fn min_step(&self, t_out: f64) -> f64 {
+        let scale = self
+            .t
+            .abs()
+            .max(if t_out.is_finite() { t_out.abs() } else { 0.0 });
+        self.opts.min_step.max(16.0 * f64::EPSILON * scale)
+    }
+
+    /// Takes at most one step towards `t_out` (landing on it exactly) and reports the outcome.
+    pub fn advance<S: DaeSystem + ?Sized>(
+        &mut self,
+        sys: &mut S,
+        t_out: f64,
+    ) -> Result<Advance, SolveError> {
+        if let Some((index, rising)) = self.pending.pop() {
+            return Ok(Advance::Root {
+                t: self.t,
+                index,
+                rising,
+            });
+        }
+        if t_out.is_nan() || t_out < self.t {
+            return Err(SolveError::InvalidTime {
+                t: self.t,
+                requested: t_out,
+            });
+        }
+        // Targets closer than a few ulp cannot be stepped to: they count as reached.
+        let ulps = 16.0 * f64::EPSILON * self.t.abs().max(t_out.abs());
+        if t_out - self.t <= ulps {
+            self.t = t_out;
+            self.hist_t[0] = t_out;
+            return Ok(Advance::Reached(self.t));
+        }
+        while self.breakpoints.last().is_some_and(|&b| b <= self.t + ulps) {
+            self.breakpoints.pop();
+        }
+        if self.h.is_nan() || self.h <= 0.0 {
+            let h0 = self.initial_step(t_out);
+            self.h = h0.min(self.opts.max_step).min(self.h_cap);
+        }
+        let mut last_err: Option<SolveError> = None;
+        let mut failures = 0usize;
+        loop {
+            let bp = self.breakpoints.last().copied().unwrap_or(f64::INFINITY);
+            let stop = t_out.min(bp);
+            let mut h = self.h.min(self.opts.max_step);
+            let t_new = if self.t + h >= stop {
+                h = stop - self.t;
+                stop
+            } else if self.t + 1.5 * h > stop {
+                h = 0.5 * (stop - self.t);
+                self.t + h
+            } else {
+                self.t + h
+            };
+            if h.is_nan() || h < self.min_step(t_out) || t_new <= self.t {
+                return Err(last_err.unwrap_or(SolveError::StepTooSmall {
+                    t: self.t,
+                    step: h,
+                    worst_unknown: 0,
+                }));
+            }
+            match self.try_step(sys, t_new)? {
+                step::Attempt::Accepted { err } => {
+                    self.accept(sys, t_new, h, err, failures > 0);
+                    break;
+                }
+                step::Attempt::ErrorTest { err, worst } => {
+                    self.stats.rejected_steps += 1;
+                    failures += 1;
+                    let k = self.order as f64;
+                    let fac = (0.8 * err.powf(-1.0 / (k + 1.0))).clamp(0.1, 0.9);
+                    self.h = h * fac;
+                    last_err = Some(SolveError::StepTooSmall {
+                        t: self.t,
+                        step: self.h,
+                        worst_unknown: worst,
+                    });
+                }
+                step::Attempt::NewtonFailed { err, stale } => {
+                    self.stats.newton_failures += 1;
+                    self.newton.invalidate_jacobian();
+                    self.c0_factored = 0.0;
+                    if !stale {
+                        failures += 1;
+                        self.h = 0.25 * h;
+                    }
+                    last_err = Some(err);
+                }
+            }
+            if failures >= 2 {
+                self.order = 1;
+            }
+        }
+        if let Some((index, rising)) = self.locate_roots(sys) {
+            return Ok(Advance::Root {
+                t: self.t,
+                index,
+                rising,
+            });
+        }
+        if self.breakpoints.last() == Some(&self.t) {
+            self.breakpoints.pop();
+            self.order = 1;
+            self.nhist = 1;
+        }
+        if self.t == t_out {
+            Ok(Advance::Reached(self.t))
+        } else {
+            Ok(Advance::StepAccepted(self.t))
+        }
+    }
+}

@@ -1,0 +1,64 @@
+//! The integrator's options, outcomes and counters.
+
+use crate::solver::{ErrorNorm, LinearOptions};
+
+/// Integrator settings.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TransientOptions {
+    pub reltol: f64,
+    /// Absolute tolerance for every unknown, unless `abstol_per_unknown` is non-empty.
+    pub abstol: f64,
+    pub abstol_per_unknown: Vec<f64>,
+    /// How the error test and Newton combine per-unknown errors.
+    pub norm: ErrorNorm,
+    pub max_step: f64,
+    /// Smallest step before giving up (never below 16 ulp of `max(|t|, |t_out|)`).
+    pub min_step: f64,
+    /// First step; `None` picks one from `x'_0` and the first `t_out`.
+    pub initial_step: Option<f64>,
+    /// 1 or 2.
+    pub max_order: usize,
+    pub linear: LinearOptions,
+}
+
+impl Default for TransientOptions {
+    fn default() -> Self {
+        Self {
+            reltol: 1e-4,
+            abstol: 1e-9,
+            abstol_per_unknown: Vec::new(),
+            norm: ErrorNorm::Rms,
+            max_step: f64::INFINITY,
+            min_step: 0.0,
+            initial_step: None,
+            max_order: 2,
+            linear: LinearOptions::default(),
+        }
+    }
+}
+
+/// What one call to [`Transient::advance`] achieved.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Advance {
+    /// The integrator stands exactly on the requested `t_out`.
+    Reached(f64),
+    /// Root function `index` changes sign at `t`; the integrator stands at `t`. `rising` is
+    /// true for a crossing from negative to positive.
+    Root { t: f64, index: usize, rising: bool },
+    /// One step was accepted, ending at this time (before `t_out`).
+    StepAccepted(f64),
+}
+
+/// Work counters since construction.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Stats {
+    pub accepted_steps: usize,
+    /// Steps rejected by the error test.
+    pub rejected_steps: usize,
+    /// Steps abandoned because the corrector did not converge.
+    pub newton_failures: usize,
+    pub newton_iterations: usize,
+    pub factorizations: usize,
+    pub residual_evals: usize,
+    pub root_evals: usize,
+}
