@@ -1,1 +1,3 @@
 //! vams: a compiler and simulator for a practical subset of VHDL-AMS (IEEE 1076.1).
+
+pub mod extract;
