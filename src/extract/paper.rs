@@ -11,7 +11,7 @@ use super::capture::Capture;
 use super::error::ExtractError;
 use super::signal::{
     dominant_frequency, local_trend, mean, median, moving_average, moving_median, noise_sigma,
-    polyfit, sem, upward_crossings,
+    polyfit, sem, trimmed_mean, upward_crossings,
 };
 use std::f64::consts::PI;
 
@@ -103,7 +103,7 @@ fn zero_pre_trigger(c: &mut Capture, step: usize) {
         return;
     }
     let end = step - 3;
-    let (vo, io) = (median(&c.v[..end]), median(&c.i[..end]));
+    let (vo, io) = (trimmed_mean(&c.v[..end]), trimmed_mean(&c.i[..end]));
     c.v.iter_mut().for_each(|v| *v -= vo);
     c.i.iter_mut().for_each(|i| *i -= io);
 }
@@ -391,7 +391,7 @@ fn coast_landmarks(c: &mut Capture) -> Result<(usize, usize, f64), ExtractError>
     let n = c.len();
     let im = moving_median(&c.i, 2);
     let i_pre = median(&im[..(n / 50).max(3)]);
-    let i_post = median(&im[n / 2..]);
+    let i_post = trimmed_mean(&c.i[n / 2..]);
     let si = noise_sigma(&c.i);
     let kd = if i_pre - i_post > 5.0 * si.max(1e-9) {
         im.iter()
@@ -403,7 +403,7 @@ fn coast_landmarks(c: &mut Capture) -> Result<(usize, usize, f64), ExtractError>
     let guard = (n / 500).max(5);
     let k_s = (kd + guard).min(n - 1);
     let v_start = median(&c.v[k_s..(k_s + 20).min(n)]);
-    let tail = median(&c.v[n - n / 20..]);
+    let tail = trimmed_mean(&c.v[n - n / 20..]);
     if v_start <= 0.0 || tail > 0.05 * v_start {
         return Err(ExtractError::CoastNeverStops {
             path: c.path.clone(),

@@ -127,12 +127,10 @@ pub fn refine(prep: &Prepared, start: &MotorParams) -> Refined {
     let floor = |rms: [f64; 4]| rms.map(|v| v.max(1e-9));
     let first = lm(prep, x, &floor(rms_start));
     let (_, rms_first) = residuals(&first.0, prep, &[1.0; 4]);
-    let (x, jac, c, rows, iterations) = lm(prep, first.0, &floor(rms_first));
-    let m = x.len();
-    // Covariance of the log-parameters: s^2 (J^T J)^-1 with s^2 = cost / (rows - m).
-    let jtj = jac.transpose() * &jac;
-    let s2 = c / (rows.saturating_sub(m).max(1)) as f64;
+    let (x, jac, _, _, iterations) = lm(prep, first.0, &floor(rms_first));
     let params = to_params(&x);
+    let (r, _) = residuals(&x, prep, &floor(rms_first));
+    let fisher = fisher(&jac, &r, &block_lengths(prep));
     let vals = [
         params.r,
         params.l,
@@ -142,10 +140,10 @@ pub fn refine(prep: &Prepared, start: &MotorParams) -> Refined {
         params.tcst_motor,
     ];
     let mut se_fit = [f64::NAN; NP];
-    if let Ok(llt) = jtj.llt(faer::Side::Lower) {
+    if let Ok(llt) = fisher.llt(faer::Side::Lower) {
         let inv = llt.inverse();
         for d in 0..NP {
-            se_fit[d] = vals[d] * (s2 * inv[(d, d)]).max(0.0).sqrt();
+            se_fit[d] = vals[d] * inv[(d, d)].max(0.0).sqrt();
         }
     }
     let (_, rms) = residuals(&x, prep, &[1.0; 4]);
@@ -168,6 +166,63 @@ pub fn refine(prep: &Prepared, start: &MotorParams) -> Refined {
         iterations: first.4 + iterations,
         sim,
     }
+}
+
+/// The number of residual rows of each capture.
+fn block_lengths(prep: &Prepared) -> [usize; 4] {
+    let firsts = [
+        prep.inrush_step.saturating_sub(2),
+        prep.blocked_step.saturating_sub(2),
+        0,
+        prep.coast_start,
+    ];
+    std::array::from_fn(|k| prep.caps[k].len() - firsts[k])
+}
+
+/// Integrated autocorrelation time of a residual sequence, in samples (1 for white noise):
+/// `1 + 2 sum rho_l` up to the first lag where the autocorrelation falls below 0.05.
+fn correlation_time(r: &[f64]) -> f64 {
+    let r0: f64 = r.iter().map(|v| v * v).sum();
+    if r0 <= 0.0 {
+        return 1.0;
+    }
+    let mut tau = 1.0;
+    for lag in 1..(r.len() / 4).min(4000) {
+        let rho = r.iter().zip(&r[lag..]).map(|(a, b)| a * b).sum::<f64>() / r0;
+        if rho < 0.05 {
+            break;
+        }
+        tau += 2.0 * rho;
+    }
+    tau
+}
+
+/// The Fisher information of the log-parameters. The rows of capture k were weighted by
+/// 1/(sigma_k sqrt(n_k)); a capture's information is `J_k^T J_k / sigma_k^2` over its
+/// effective (uncorrelated) samples, `n_k / tau_k`, so its block is scaled by `n_k / tau_k`.
+fn fisher(jac: &Mat<f64>, r: &[f64], lengths: &[usize; 4]) -> Mat<f64> {
+    let m = jac.ncols();
+    let mut f = Mat::<f64>::zeros(m, m);
+    let mut start = 0;
+    let mut blocks: Vec<(usize, usize, f64)> = Vec::new();
+    for &n in lengths {
+        let end = (start + n).min(r.len());
+        let tau = correlation_time(&r[start..end]);
+        blocks.push((start, end, n as f64 / tau));
+        start = end;
+    }
+    // The ripple-speed row carries its own standard error.
+    blocks.push((start, r.len(), 1.0));
+    for (a, b, scale) in blocks {
+        for row in a..b {
+            for i in 0..m {
+                for j in 0..m {
+                    f[(i, j)] += scale * jac[(row, i)] * jac[(row, j)];
+                }
+            }
+        }
+    }
+    f
 }
 
 /// Levenberg-Marquardt from `x`; returns the solution, the last Jacobian, the cost, the

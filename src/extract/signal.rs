@@ -22,6 +22,15 @@ pub fn median(x: &[f64]) -> f64 {
     }
 }
 
+/// Mean of the middle 80 % of a slice: robust to spikes, and unlike the median it does
+/// not snap to a quantisation level of dithered 8-bit samples.
+pub fn trimmed_mean(x: &[f64]) -> f64 {
+    let mut v = x.to_vec();
+    v.sort_by(f64::total_cmp);
+    let cut = v.len() / 10;
+    mean(&v[cut..v.len() - cut])
+}
+
 /// Mean of a slice.
 pub fn mean(x: &[f64]) -> f64 {
     x.iter().sum::<f64>() / x.len().max(1) as f64
@@ -165,7 +174,8 @@ pub fn polyfit(x: &[f64], y: &[f64], degree: usize, x0: f64) -> Option<PolyFit> 
 }
 
 /// Local trend by a centred quadratic fit over `2*half(k)+1` samples at each sample (a
-/// Savitzky-Golay smoother whose window may vary along the record).
+/// Savitzky-Golay smoother whose window may vary along the record). A wide window is
+/// subsampled to at most 96 points, which keeps the cost linear in the record's length.
 pub fn local_trend(y: &[f64], half: impl Fn(usize) -> usize) -> Vec<f64> {
     let n = y.len();
     (0..n)
@@ -173,10 +183,40 @@ pub fn local_trend(y: &[f64], half: impl Fn(usize) -> usize) -> Vec<f64> {
             let h = half(k).max(2);
             let a = k.saturating_sub(h);
             let b = (k + h + 1).min(n);
-            let xs: Vec<f64> = (a..b).map(|j| j as f64).collect();
-            polyfit(&xs, &y[a..b], 2, k as f64).map_or(y[k], |f| f.coef[0])
+            let stride = ((b - a) / 96).max(1);
+            quadratic_at_centre(y, a, b, stride, k).unwrap_or(y[k])
         })
         .collect()
+}
+
+/// Value at `k` of the quadratic fitted to `y[a..b]` (every `stride`-th sample).
+fn quadratic_at_centre(y: &[f64], a: usize, b: usize, stride: usize, k: usize) -> Option<f64> {
+    let scale = (b - a).max(1) as f64;
+    let (mut s, mut t) = ([0.0f64; 5], [0.0f64; 3]);
+    for j in (a..b).step_by(stride) {
+        let u = (j as f64 - k as f64) / scale;
+        let mut p = 1.0;
+        for (e, acc) in s.iter_mut().enumerate() {
+            *acc += p;
+            if e < 3 {
+                t[e] += p * y[j];
+            }
+            p *= u;
+        }
+    }
+    // Normal equations [s0 s1 s2; s1 s2 s3; s2 s3 s4] c = t, solved for c0 by Cramer's rule.
+    let det3 = |m: [[f64; 3]; 3]| {
+        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
+    };
+    let m = [[s[0], s[1], s[2]], [s[1], s[2], s[3]], [s[2], s[3], s[4]]];
+    let det = det3(m);
+    if det.abs() < 1e-300 || s[0] < 4.0 {
+        return None;
+    }
+    let m0 = [[t[0], s[1], s[2]], [t[1], s[2], s[3]], [t[2], s[3], s[4]]];
+    Some(det3(m0) / det)
 }
 
 /// Power of the uniformly sampled `y` (spacing `dt`) at frequency `f`, by Goertzel.
@@ -220,7 +260,7 @@ fn peak_in(y: &[f64], dt: f64, fmin: f64, fmax: f64) -> Option<(f64, f64)> {
     let n = y.len();
     let span = n as f64 * dt;
     let yw = windowed(y);
-    let df = 0.25 / span;
+    let df = 0.5 / span;
     let steps = ((fmax - fmin) / df).ceil() as usize;
     if steps < 8 {
         return None;
@@ -338,6 +378,23 @@ mod tests {
         assert!((p.freq - 437.3).abs() < 0.2, "{p:?}");
         assert!(p.prominence > 100.0);
         assert!(p.se < 1.0);
+    }
+
+    #[test]
+    fn local_trend_follows_a_parabola_and_smooths_a_tone() {
+        let y: Vec<f64> = (0..2000)
+            .map(|k| {
+                1e-6 * (k as f64).powi(2) + (2.0 * std::f64::consts::PI * k as f64 / 200.0).sin()
+            })
+            .collect();
+        let tr = local_trend(&y, |_| 400);
+        for k in [500, 1000, 1500] {
+            assert!(
+                (tr[k] - 1e-6 * (k as f64).powi(2)).abs() < 0.1,
+                "{k}: {}",
+                tr[k]
+            );
+        }
     }
 
     #[test]
