@@ -305,6 +305,18 @@ pub fn parse_capture(
                 fields.len()
             )));
         }
+        // A last line without a line end and shorter than its predecessor was cut off.
+        let is_last = off + line.len() >= text.trim_end_matches(['\r', '\n']).len();
+        if is_last
+            && !text.ends_with('\n')
+            && k > first_data
+            && line.len() + 2 < lines[k - 1].1.len()
+        {
+            return Err(bad(
+                "the last line is shorter than the others and has no line end (truncated file?)"
+                    .into(),
+            ));
+        }
         let mut vals = [0.0; 3];
         for slot in 0..3 {
             vals[slot] = number(fields[idx[slot]], comma)
@@ -374,6 +386,44 @@ mod tests {
         };
         let c = parse_capture("speed", Path::new("a.csv"), &text, &cols).unwrap();
         assert_eq!(c.i[1], 0.25);
+    }
+
+    fn render(e: ExtractError) -> String {
+        let mut out = String::new();
+        let handler =
+            miette::GraphicalReportHandler::new_themed(miette::GraphicalTheme::unicode_nocolor())
+                .with_width(100);
+        handler.render_report(&mut out, &e).unwrap();
+        out
+    }
+
+    #[test]
+    fn missing_column_diagnostic_snapshot() {
+        let text = "Model,DS1054Z\nTime,CH1,CH2\ns,V,A\n0,1,2\n1,1,2\n";
+        let e = parse_capture(
+            "blocked",
+            Path::new("blocked.csv"),
+            text,
+            &Columns::default(),
+        )
+        .unwrap_err();
+        insta::assert_snapshot!(render(e));
+    }
+
+    #[test]
+    fn truncated_line_diagnostic_snapshot() {
+        let text = format!(
+            "time,voltage,current\n{}0.04,1.5,0",
+            rows(40, ",", false).replace(",,", "")
+        );
+        let e = parse_capture(
+            "inrush",
+            Path::new("inrush.csv"),
+            &text,
+            &Columns::default(),
+        )
+        .unwrap_err();
+        insta::assert_snapshot!(render(e));
     }
 
     #[test]
