@@ -65,7 +65,60 @@ pub fn extract_files(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::*;
     use synth::{SynthOptions, generate};
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+        /// Whatever the samples, extraction returns a value or a diagnostic, never panics.
+        #[test]
+        fn never_panics_on_arbitrary_samples(
+            data in proptest::collection::vec(proptest::collection::vec((-20.0f64..20.0, -2.0f64..2.0), 32..300), 4),
+            comm in 1u32..8,
+        ) {
+            let roles = ["inrush", "blocked", "speed", "coast"];
+            let caps: [Capture; 4] = std::array::from_fn(|k| Capture {
+                role: roles[k],
+                path: format!("{}.csv", roles[k]).into(),
+                t: (0..data[k].len()).map(|n| n as f64 * 1e-4).collect(),
+                v: data[k].iter().map(|p| p.0).collect(),
+                i: data[k].iter().map(|p| p.1).collect(),
+            });
+            let _ = extract(&caps, comm);
+        }
+
+        /// The reader never panics on arbitrary text.
+        #[test]
+        fn reader_never_panics(text in "(([a-z0-9.;, \t-]{0,20})\n){0,60}") {
+            let _ = capture::parse_capture("speed", Path::new("x.csv"), &text, &Columns::default());
+        }
+    }
+
+    #[test]
+    fn captures_in_the_wrong_places_are_diagnosed() {
+        let caps = generate(&MotorParams::example(), &SynthOptions::default());
+        for order in [
+            [1, 0, 2, 3],
+            [0, 2, 1, 3],
+            [3, 1, 2, 0],
+            [0, 1, 3, 2],
+            [2, 1, 0, 3],
+        ] {
+            let mut swapped: [Capture; 4] = std::array::from_fn(|k| caps[order[k]].clone());
+            for (k, c) in swapped.iter_mut().enumerate() {
+                c.role = ["inrush", "blocked", "speed", "coast"][k];
+            }
+            let result = extract(&swapped, 4);
+            eprintln!(
+                "{order:?}: {:?}",
+                result
+                    .as_ref()
+                    .map(|x| x.refined.params)
+                    .map_err(|e| e.to_string())
+            );
+            assert!(result.is_err(), "{order:?} was accepted");
+        }
+    }
 
     fn report(name: &str, truth: f64, e: f64) -> f64 {
         let err = (e - truth) / truth;

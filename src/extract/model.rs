@@ -77,6 +77,10 @@ impl MotorParams {
     }
 }
 
+/// Substeps per sample interval at most: bounds the work for absurd trial parameters (the
+/// fit then sees a poor or non-finite residual and rejects the step).
+const MAX_SUBSTEPS: usize = 256;
+
 /// The largest integration step for these parameters: a quarter of the fastest time constant.
 fn max_step(p: &MotorParams) -> f64 {
     let electrical = p.l / p.r;
@@ -116,7 +120,7 @@ pub fn simulate_driven(
     for k in 0..n {
         if k > 0 {
             let dt = t[k] - t[k - 1];
-            let steps = ((dt / hmax).ceil() as usize).max(1);
+            let steps = ((dt / hmax).ceil() as usize).clamp(1, MAX_SUBSTEPS);
             let h = dt / steps as f64;
             for s in 0..steps {
                 let (va, vb) = (v[k - 1], v[k]);
@@ -149,7 +153,7 @@ pub fn simulate_coast(p: &MotorParams, t: &[f64], w0: f64) -> Vec<f64> {
     for k in 0..t.len() {
         if k > 0 {
             let dt = t[k] - t[k - 1];
-            let steps = ((dt / hmax).ceil() as usize).max(1);
+            let steps = ((dt / hmax).ceil() as usize).clamp(1, MAX_SUBSTEPS);
             let h = dt / steps as f64;
             for _ in 0..steps {
                 x = rk4(x, h, |_, [_, w]| [0.0, -p.friction(w) / p.j]);

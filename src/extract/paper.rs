@@ -151,10 +151,11 @@ pub fn estimate(
     };
     zero_pre_trigger(&mut blocked, blocked_step);
     let mut coast = coast;
-    let (coast_start, coast_stop, i_off) = coast_landmarks(&mut coast)?;
+    let (coast_start, coast_stop, v_off, i_off) = coast_landmarks(&mut coast)?;
     let mut speed = speed;
-    // The constant-speed capture has no zero reference: take the current probe's offset from
-    // the coast (same probe and range in the bench procedure).
+    // The constant-speed capture has no zero reference: take the probes' offsets from the
+    // coast's standstill (same probes in the bench procedure).
+    speed.v.iter_mut().for_each(|v| *v -= v_off);
     speed.i.iter_mut().for_each(|i| *i -= i_off);
 
     // b. R = U/I at the blocked steady state (second half after the step).
@@ -174,6 +175,22 @@ pub fn estimate(
         um / im,
         um / im * ((sem(u) / um).powi(2) + (sem(i) / im).powi(2)).sqrt(),
     );
+
+    // The inrush current cannot exceed the stall current U/R by much (the back-EMF only
+    // lowers it): a blocked current far below the inrush peak means the rotor turned.
+    let inrush_peak = moving_average(&inrush.i, 2)
+        .into_iter()
+        .fold(f64::MIN, f64::max);
+    let inrush_u = median(&inrush.v[inrush_step..]);
+    if inrush_peak > 1.5 * inrush_u / r.value {
+        return Err(fail(
+            &blocked,
+            "R",
+            format!(
+                "the blocked current ({im:.3e} A at {um:.3} V) is far below the inrush peak ({inrush_peak:.3e} A at {inrush_u:.3} V); expected the stall current, with the rotor held"
+            ),
+        ));
+    }
 
     // a. L from the start of the inrush: integral of (v - R i) = L (i - i0), regressed.
     let l = inductance(&inrush, inrush_step, r.value)?;
@@ -249,15 +266,20 @@ fn inductance(c: &Capture, step: usize, r: f64) -> Result<Estimate, ExtractError
     let ismooth = moving_average(&c.i, 2);
     let ipk = ismooth[step..].iter().copied().fold(f64::MIN, f64::max);
     let start = step.saturating_sub(2);
-    let end = (step..c.len())
-        .find(|&k| ismooth[k] > 0.4 * ipk)
-        .unwrap_or(c.len());
+    // Up to 40 % of the peak (back-EMF still negligible), stretched to 8 samples after the
+    // step for slow sample rates as long as the current stays under 80 % of the peak.
+    let reach = |frac: f64| {
+        (step..c.len())
+            .find(|&k| ismooth[k] > frac * ipk)
+            .unwrap_or(c.len())
+    };
+    let end = reach(0.4).max((step + 8).min(reach(0.8)));
     if end < step + 6 {
         return Err(fail(
             c,
             "L",
             format!(
-                "the current reaches 40 % of its peak within {} samples of the step; expected a sample rate fast enough to see the rise (at least 6 samples)",
+                "the current reaches 80 % of its peak within {} samples of the step; expected a sample rate fast enough to see the rise (at least 6 samples)",
                 end - step
             ),
         ));
@@ -269,8 +291,12 @@ fn inductance(c: &Capture, step: usize, r: f64) -> Result<Estimate, ExtractError
             let dt = c.t[k] - c.t[k - 1];
             integral += 0.5 * dt * ((c.v[k] - r * c.i[k]) + (c.v[k - 1] - r * c.i[k - 1]));
         }
-        x.push(c.i[k] - c.i[start]);
-        y.push(integral);
+        // Points from the sample after the step on: where the step falls between two samples
+        // is unknown, which shifts every later integral by the same constant (the intercept).
+        if k > step {
+            x.push(c.i[k] - c.i[start]);
+            y.push(integral);
+        }
     }
     let fit = polyfit(&x, &y, 1, 0.0)
         .ok_or_else(|| fail(c, "L", "the rising current gives no regression"))?;
@@ -380,14 +406,23 @@ fn inertia(
     let t_end = *first.last().unwrap_or(&t0);
     let k_end = c.t.iter().position(|&t| t >= t_end).unwrap_or(c.len());
     let i_avg = mean(&c.i[step..k_end.max(step + 1)]);
+    if !(i_avg > 0.0) {
+        return Err(fail(
+            c,
+            "J",
+            format!(
+                "the mean current over the first revolution is {i_avg:.3e} A; expected a positive inrush current"
+            ),
+        ));
+    }
     let j = ke.value * i_avg / alpha;
     let se = j * ((alpha_se / alpha).powi(2) + ke.rel().powi(2)).sqrt();
     Ok((Estimate::new(j, se), first))
 }
 
 /// Finds disconnect, start and stop of the coast, removes the offsets; returns
-/// (start, stop, current offset).
-fn coast_landmarks(c: &mut Capture) -> Result<(usize, usize, f64), ExtractError> {
+/// (start, stop, voltage offset, current offset).
+fn coast_landmarks(c: &mut Capture) -> Result<(usize, usize, f64, f64), ExtractError> {
     let n = c.len();
     let im = moving_median(&c.i, 2);
     let i_pre = median(&im[..(n / 50).max(3)]);
@@ -423,7 +458,7 @@ fn coast_landmarks(c: &mut Capture) -> Result<(usize, usize, f64), ExtractError>
             what: "the rotor comes to rest only at the very end of the record; expected some samples at standstill".into(),
         });
     }
-    Ok((k_s, stop, i_post))
+    Ok((k_s, stop, tail, i_post))
 }
 
 fn coast_friction(
