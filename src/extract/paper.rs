@@ -406,7 +406,7 @@ fn inertia(
     let t_end = *first.last().unwrap_or(&t0);
     let k_end = c.t.iter().position(|&t| t >= t_end).unwrap_or(c.len());
     let i_avg = mean(&c.i[step..k_end.max(step + 1)]);
-    if !(i_avg > 0.0) {
+    if i_avg.is_nan() || i_avg <= 0.0 {
         return Err(fail(
             c,
             "J",
