@@ -8,6 +8,17 @@
 //! [`signal`]'s robust regression and spectral tools, [`refine`] fits [`model`]'s
 //! simulations by Levenberg-Marquardt. [`synth`] makes synthetic captures for tests and demos.
 //! It never prints and never writes files: the CLI does.
+//!
+//! ```
+//! use vams::extract::{MotorParams, extract, synth};
+//!
+//! let truth = MotorParams::example();
+//! let captures = synth::generate(&truth, &synth::SynthOptions::default());
+//! let x = extract(&captures, 4).expect("the synthetic captures are well-formed");
+//! let r = x.refined.params.r;
+//! assert!((r - truth.r).abs() / truth.r < 0.02);
+//! println!("paper R = {:.3} ohm, refined R = {r:.3} ohm", x.paper.r.value);
+//! ```
 
 pub mod capture;
 pub mod error;

@@ -10,7 +10,7 @@
 
 use super::model::{MotorParams, simulate_coast, simulate_driven};
 use super::paper::{Estimate, Prepared};
-use super::signal::{mean, median};
+use super::signal::{mean, median, moving_median};
 use faer::Mat;
 use faer::linalg::solvers::{DenseSolveCore, Solve};
 
@@ -107,6 +107,8 @@ fn cost(r: &[f64]) -> f64 {
 /// its RMS residual at the start, a second by its RMS residual after the first pass (each
 /// capture's noise, ripple included, estimated from its own fit).
 pub fn refine(prep: &Prepared, start: &MotorParams) -> Refined {
+    let driven = drive_inputs(prep);
+    let prep = &driven;
     let coast = &prep.caps[3];
     let w_coast = (median(&coast.v[prep.coast_start..(prep.coast_start + 20).min(coast.len())])
         / start.ke)
@@ -166,6 +168,20 @@ pub fn refine(prep: &Prepared, start: &MotorParams) -> Refined {
         iterations: first.4 + iterations,
         sim,
     }
+}
+
+/// The captures as simulation inputs: the driving voltages of the inrush and blocked
+/// captures through a 5-sample moving median (it keeps the step, drops the 8-bit chatter
+/// that would otherwise drive the simulated current), the constant-speed capture's voltage
+/// replaced by its mean (steady by definition). Currents and the coast stay as measured.
+fn drive_inputs(prep: &Prepared) -> Prepared {
+    let mut out = prep.clone();
+    for k in 0..2 {
+        out.caps[k].v = moving_median(&prep.caps[k].v, 2);
+    }
+    let m = mean(&prep.caps[2].v);
+    out.caps[2].v.iter_mut().for_each(|v| *v = m);
+    out
 }
 
 /// The number of residual rows of each capture.
