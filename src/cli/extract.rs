@@ -230,7 +230,7 @@ pub fn params_file(p: &MotorParams) -> String {
         .collect()
 }
 
-fn plots(x: &Extraction, dir: &Path, format: PlotFormat) -> Result<(), ExtractError> {
+fn plots(x: &Extraction, dir: &Path, format: PlotFormat) -> miette::Result<()> {
     std::fs::create_dir_all(dir).map_err(|e| ExtractError::Write {
         path: dir.to_path_buf(),
         what: e.to_string(),
@@ -291,10 +291,7 @@ fn plots(x: &Extraction, dir: &Path, format: PlotFormat) -> Result<(), ExtractEr
             ROLES[k],
             cap.path.display()
         );
-        plot_panels(&path, &title, &panels).map_err(|e| ExtractError::Write {
-            path: path.clone(),
-            what: e.to_string(),
-        })?;
+        plot_panels(&path, &title, &panels)?;
     }
     Ok(())
 }
