@@ -1,11 +1,15 @@
 //! vams: a compiler and simulator for a practical subset of VHDL-AMS (IEEE 1076.1).
 //!
 //! The pipeline, one module per stage (see ARCHITECTURE.md):
-//! source -> [`lexer`] -> [`parser`] ([`ast`]) -> analysis -> elaboration -> [`solver`].
+//! source -> [`lexer`] -> [`parser`] ([`ast`]) -> analysis -> elaboration -> [`solver`];
+//! beside it, [`extract`] (motor parameters from scope captures) and [`output`] (plots).
 
 pub mod ast;
+pub mod cli;
 pub mod diagnostics;
+pub mod extract;
 pub mod lexer;
+pub mod output;
 pub mod parser;
 pub mod solver;
 pub mod source;

@@ -1,3 +1,3 @@
-fn main() {
-    println!("vams");
+fn main() -> std::process::ExitCode {
+    vams::cli::run()
 }
