@@ -5,6 +5,9 @@
 //! types); it is exactly what the source says, with identifiers normalised to lower case
 //! (extended identifiers keep their spelling) and the user's spelling recoverable from the span.
 
+// Syntax nodes are built once and walked; boxing the larger variants would only add noise.
+#![allow(clippy::large_enum_variant)]
+
 use crate::source::Span;
 
 /// An identifier; `name` is lower case for basic identifiers, verbatim for `\extended\` ones.

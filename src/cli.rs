@@ -4,6 +4,7 @@
 //! graphical handler), 2 on a usage error (clap's). Each subcommand keeps its arguments and
 //! its run function in `cli/<name>.rs`; nothing here knows what a subcommand computes.
 
+pub mod check;
 pub mod extract;
 
 use clap::{Parser, Subcommand};
@@ -20,7 +21,10 @@ pub struct Cli {
 
 /// The subcommands.
 #[derive(Debug, Subcommand)]
+#[allow(clippy::large_enum_variant)] // built once per run
 pub enum Command {
+    /// Check VHDL-AMS sources (files or directories) and report every error found.
+    Check(check::CheckArgs),
     /// Extract DC motor parameters from four oscilloscope captures (inrush, blocked rotor,
     /// constant speed, coast), the paper's way and refined by a joint fit.
     Extract(extract::ExtractArgs),
@@ -30,6 +34,7 @@ pub enum Command {
 pub fn run() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
+        Command::Check(args) => check::run(&args),
         Command::Extract(args) => extract::run(&args),
     };
     match result {

@@ -7,7 +7,7 @@
 //!
 //! The one context-sensitive rule, character literal versus attribute tick (`'a'` vs `x'dot` vs
 //! `t'('a')`), is decided here from the previous token, as the LRM's lexical rules imply: after
-//! an identifier, `)`, `]` or `all` an apostrophe is a tick.
+//! an identifier, `)` or `]` an apostrophe is a tick.
 
 mod keyword;
 mod literal;
@@ -253,10 +253,6 @@ pub fn lex(file: FileId, text: &str) -> Lexed<'_> {
                     Some((
                         _,
                         Tok::Ident(_) | Tok::ExtIdent(_) | Tok::RParen | Tok::RBracket,
-                        _
-                    )) | Some((
-                        _,
-                        Tok::Kw(Kw::All | Kw::Range | Kw::Across | Kw::Through),
                         _
                     ))
                 );

@@ -13,3 +13,4 @@ pub mod output;
 pub mod parser;
 pub mod solver;
 pub mod source;
+pub mod stdlib;

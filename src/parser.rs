@@ -41,6 +41,9 @@ pub fn parse(file: FileId, text: &str) -> (DesignFile, Vec<SyntaxError>) {
     diagnostics.extend(recovered.into_iter().map(|r| convert(file, text, r)));
     let ast = match result {
         Ok(ast) => ast,
+        // A file that ends inside a unit after an error was recovered is that error's
+        // cascade (recovery skipped the unit's `end`): reporting it again would only be noise.
+        Err(ParseError::UnrecognizedEof { .. }) if !diagnostics.is_empty() => DesignFile::default(),
         Err(error) => {
             diagnostics.push(convert(
                 file,
@@ -96,12 +99,14 @@ fn unexpected(file: FileId, l: usize, tok: &Tok<'_>, r: usize, expected: &[Strin
              procedural, break, limit, spectrum, noise, subnature are reserved in VHDL-AMS)",
             kw.as_str()
         ))
+    } else if matches!(tok, Tok::Eq) && (wants(";") || wants("==") || wants(":=")) {
+        Some(
+            "`=` compares; a simultaneous statement is written `lhs == rhs;`, a signal \
+             assignment `s <= value;`, a variable assignment `v := value;`"
+                .into(),
+        )
     } else if wants(";") {
         Some("a `;` may be missing at the end of the previous declaration or statement".into())
-    } else if matches!(tok, Tok::Eq) && wants("==") {
-        Some("a simultaneous statement is written `lhs == rhs;` (two equals signs)".into())
-    } else if matches!(tok, Tok::Eq) && wants(":=") {
-        Some("assignments are written `:=` (variables) or `<=` (signals)".into())
     } else {
         None
     };

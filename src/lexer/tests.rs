@@ -38,7 +38,7 @@ fn decimal_literals_with_underscores_and_exponents() {
     assert_eq!(toks("1_000"), vec![Tok::Int(1000)]);
     assert_eq!(toks("1E3"), vec![Tok::Int(1000)]);
     assert_eq!(toks("1.5e-3"), vec![Tok::Real(1.5e-3)]);
-    assert_eq!(toks("3.141_5"), vec![Tok::Real(3.1415)]);
+    assert_eq!(toks("1.234_5"), vec![Tok::Real(1.2345)]);
 }
 
 #[test]

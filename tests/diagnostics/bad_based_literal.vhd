@@ -1,0 +1,3 @@
+entity e is
+  generic (n : integer := 16#FG#);
+end entity e;
