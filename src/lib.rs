@@ -4,13 +4,18 @@
 //! source -> [`lexer`] -> [`parser`] ([`ast`]) -> analysis -> elaboration -> [`solver`];
 //! beside it, [`extract`] (motor parameters from scope captures) and [`output`] (plots).
 
+pub mod analog;
 pub mod ast;
 pub mod cli;
+pub mod design;
 pub mod diagnostics;
+pub mod elaborate;
 pub mod extract;
+pub mod kernel;
 pub mod lexer;
 pub mod output;
 pub mod parser;
 pub mod solver;
 pub mod source;
 pub mod stdlib;
+pub mod waveform;

@@ -1,0 +1,427 @@
+//! The elaborated design: the plain data that elaboration produces and simulation consumes.
+//!
+//! **Owns** the flattened model: terminals (nodes, one reference terminal per nature),
+//! quantities (across, through and free unknowns), simultaneous equations as residual
+//! expression trees, signals (including the implicit `Q'above(E)` signals), and processes lowered
+//! to a flat instruction list with jumps. Every name is resolved to an index; every constant and
+//! generic is folded to a number; no AST node and no scope survives here.
+//!
+//! **Invariants** (established by `elaborate`, relied on by `analog` and `kernel`):
+//! * every `QuantityId`, `TerminalId`, `SignalId`, `NatureId`, `VarId` inside an expression or
+//!   instruction indexes the corresponding vector of the same [`Design`] (or the process's
+//!   `vars`);
+//! * a quantity port is the same `QuantityId` as its actual, a terminal port the same
+//!   `TerminalId`, a signal port the same `SignalId` (ports are aliases, never copies);
+//! * jump targets are valid indices into the process's `code`, and every path through `code`
+//!   reaches a `Wait` or `Halt` (a process never runs off the end: elaboration appends
+//!   `Jump(0)`);
+//! * equation residuals only use the analog subset of [`Expr`] (see [`Expr::is_analog`]).
+//!
+//! Names are hierarchical paths relative to the top, lower case, dot separated: `vref`,
+//! `dut.u_motor.i`, `dut.u_ic.up`.
+
+use crate::source::Span;
+
+macro_rules! id_type {
+    ($($(#[$doc:meta])* $name:ident),* $(,)?) => {$(
+        $(#[$doc])*
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+        pub struct $name(pub u32);
+
+        impl $name {
+            pub fn index(self) -> usize {
+                self.0 as usize
+            }
+        }
+    )*};
+}
+
+id_type! {
+    /// Index into [`Design::quantities`].
+    QuantityId,
+    /// Index into [`Design::terminals`].
+    TerminalId,
+    /// Index into [`Design::natures`].
+    NatureId,
+    /// Index into [`Design::signals`].
+    SignalId,
+    /// Index into [`Process::vars`] of the process that uses it.
+    VarId,
+}
+
+/// A whole elaborated model.
+#[derive(Clone, Debug, Default)]
+pub struct Design {
+    /// Name of the top entity (lower case).
+    pub top: String,
+    pub natures: Vec<Nature>,
+    pub terminals: Vec<Terminal>,
+    pub quantities: Vec<Quantity>,
+    pub equations: Vec<Equation>,
+    pub signals: Vec<Signal>,
+    pub processes: Vec<Process>,
+    /// `limit` specifications: the largest step for the quantities listed.
+    pub limits: Vec<Limit>,
+}
+
+/// A scalar nature, e.g. `electrical is voltage across current through electrical_ref reference`.
+#[derive(Clone, Debug)]
+pub struct Nature {
+    pub name: String,
+    /// Tolerance group of the across type (`"DEFAULT_VOLTAGE"`), if its subtype declares one.
+    pub across_tolerance: Option<String>,
+    /// Tolerance group of the through type.
+    pub through_tolerance: Option<String>,
+    /// The nature's reference terminal (potential 0).
+    pub reference: TerminalId,
+}
+
+/// A terminal: a node of its nature's graph. Scalar only (array terminals are expanded).
+#[derive(Clone, Debug)]
+pub struct Terminal {
+    pub name: String,
+    pub nature: NatureId,
+    /// True for the nature's reference terminal (`electrical_ref`).
+    pub is_reference: bool,
+    pub span: Span,
+}
+
+/// An analog unknown.
+#[derive(Clone, Debug)]
+pub struct Quantity {
+    pub name: String,
+    pub kind: QuantityKind,
+    /// Tolerance group from the quantity's subtype (`"DEFAULT_CURRENT"`), if any.
+    pub tolerance: Option<String>,
+    /// Name of the quantity's subtype (`voltage`, `angular_velocity`, `real`).
+    pub subtype: String,
+    /// Unit symbol from the subtype's `symbol` attribute (`"V"`, `"rad/s"`), if declared.
+    pub unit: Option<String>,
+    /// The `:= expr` default, used as the Newton starting guess (not an initial condition).
+    pub initial_guess: Option<f64>,
+    pub span: Span,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum QuantityKind {
+    /// `q = potential(plus) - potential(minus)`.
+    Across { plus: TerminalId, minus: TerminalId },
+    /// A current-like flow from `plus` through the branch to `minus`: it leaves `plus` and
+    /// enters `minus` in the conservation law of each terminal.
+    Through { plus: TerminalId, minus: TerminalId },
+    /// A free quantity (including quantity ports, which are aliases of their actual).
+    Free,
+}
+
+/// One simultaneous equation `residual = 0` (from `lhs == rhs`: `lhs - rhs`). A simultaneous
+/// if or case becomes one equation per position whose residual is an [`Expr::If`] chain.
+#[derive(Clone, Debug)]
+pub struct Equation {
+    pub residual: Expr,
+    /// The statement it came from (the branch's statement for simultaneous if/case: the span of
+    /// the first branch).
+    pub span: Span,
+    /// Instance path of the architecture it came from (`""` for the top).
+    pub instance: String,
+    /// The source text of the statement, whitespace collapsed, for `vams dae` listings.
+    pub text: String,
+}
+
+/// A signal, including implicit ones.
+#[derive(Clone, Debug)]
+pub struct Signal {
+    pub name: String,
+    pub ty: Type,
+    pub init: Value,
+    pub kind: SignalKind,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum SignalKind {
+    /// A declared signal or signal port.
+    Explicit,
+    /// `Q'above(level)`: true while `quantity > level`; its events are threshold crossings located
+    /// by the analog solver. `quantity` and `level` are analog expressions (`level` usually a
+    /// constant).
+    Above { quantity: Expr, level: Expr },
+}
+
+/// A process (explicit, or the equivalent process of a concurrent statement: signal
+/// assignment, assertion, break).
+#[derive(Clone, Debug)]
+pub struct Process {
+    /// Instance path plus label (`dut.u_ic.direction`), or a generated `_p3` for unlabelled ones.
+    pub name: String,
+    pub vars: Vec<Variable>,
+    pub code: Vec<Instr>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug)]
+pub struct Variable {
+    pub name: String,
+    pub ty: Type,
+    pub init: Value,
+}
+
+/// The scalar and composite types the kernel handles.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Type {
+    Real,
+    Integer,
+    Boolean,
+    /// Physical type `time`, carried as seconds in an `f64`.
+    Time,
+    /// Enumeration, e.g. `std_ulogic` or `bit` or `character` or `severity_level`.
+    Enum { name: String, literals: Vec<String> },
+    String,
+    /// One-dimensional array with integer index bounds `left to/downto right`.
+    Array { element: Box<Type>, left: i64, right: i64, ascending: bool },
+}
+
+/// A run-time value.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Value {
+    Real(f64),
+    Integer(i64),
+    Boolean(bool),
+    /// Seconds.
+    Time(f64),
+    /// Position of the literal in its enumeration type.
+    Enum(u32),
+    String(String),
+    Array(Vec<Value>),
+}
+
+impl Value {
+    /// The value as a number for the analog side and for waveforms: booleans and enums as
+    /// 0/1 (their position), time in seconds; `None` for strings and arrays.
+    pub fn as_f64(&self) -> Option<f64> {
+        match *self {
+            Value::Real(v) | Value::Time(v) => Some(v),
+            Value::Integer(i) => Some(i as f64),
+            Value::Boolean(b) => Some(if b { 1.0 } else { 0.0 }),
+            Value::Enum(p) => Some(p as f64),
+            Value::String(_) | Value::Array(_) => None,
+        }
+    }
+}
+
+/// Expressions, shared by equations and processes. In equations every value is an `f64`
+/// (booleans 0/1); in processes the kernel evaluates them to [`Value`]s.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Expr {
+    Const(Value),
+    /// A quantity's value (in processes: at the current analog solution).
+    Quantity(QuantityId),
+    /// `Q'dot` (first derivative; elaboration introduces auxiliary quantities for higher orders
+    /// and for `'integ`).
+    Dot(QuantityId),
+    /// A signal's current value (in equations: piecewise constant between events).
+    Signal(SignalId),
+    /// A process variable (processes only).
+    Var(VarId),
+    /// Simulation time `now` (seconds).
+    Now,
+    Unary(UnaryOp, Box<Expr>),
+    Binary(BinaryOp, Box<Expr>, Box<Expr>),
+    /// A predefined function (math_real and the like).
+    Call(Builtin, Vec<Expr>),
+    /// `if cond then a else b`: from simultaneous if/case and conditional expressions.
+    If(Box<Expr>, Box<Expr>, Box<Expr>),
+    /// Array element `a(i)` (processes only); index in the array type's own bounds.
+    Index { array: Box<Expr>, index: Box<Expr>, ty: Type },
+    /// `T'image(x)` (processes only).
+    Image(Type, Box<Expr>),
+    /// A signal attribute (processes only).
+    SignalAttr(SignalId, SignalAttr),
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SignalAttr {
+    Event,
+    Active,
+    LastValue,
+    /// Seconds since the last event.
+    LastEvent,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum UnaryOp {
+    Neg,
+    Plus,
+    Abs,
+    Not,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BinaryOp {
+    Add,
+    Sub,
+    Mul,
+    Div,
+    /// `**`
+    Pow,
+    Mod,
+    Rem,
+    Eq,
+    Ne,
+    Lt,
+    Le,
+    Gt,
+    Ge,
+    And,
+    Or,
+    Nand,
+    Nor,
+    Xor,
+    Xnor,
+    /// `&` on strings and arrays.
+    Concat,
+}
+
+/// Predefined functions callable from both equations and processes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Builtin {
+    Exp,
+    Log,
+    Log10,
+    Sqrt,
+    Sin,
+    Cos,
+    Tan,
+    Asin,
+    Acos,
+    Atan,
+    /// Two-argument arctangent `arctan(y, x)`.
+    Atan2,
+    Sinh,
+    Cosh,
+    Tanh,
+    Asinh,
+    Acosh,
+    Atanh,
+    Floor,
+    Ceil,
+    Round,
+    Trunc,
+    Sign,
+    Realmax,
+    Realmin,
+    /// Type conversion `real(i)`.
+    ToReal,
+    /// Type conversion `integer(x)` (round to nearest).
+    ToInteger,
+}
+
+/// One instruction of a lowered process. Execution starts at index 0 and runs until `Wait` or
+/// `Halt`.
+#[derive(Clone, Debug)]
+pub enum Instr {
+    /// `var := value` (whole variable).
+    SetVar { var: VarId, value: Expr },
+    /// `var(index) := value` for array variables.
+    SetVarElement { var: VarId, index: Expr, value: Expr },
+    /// A signal assignment: a waveform of `(value, delay)` pairs, delays in seconds from now
+    /// (0 = next delta cycle), in increasing order.
+    Assign { target: SignalId, waveform: Vec<(Expr, Expr)>, mechanism: DelayMechanism },
+    /// Suspend until an event on one of `on` with `until` true (or, with empty `on`, any event
+    /// on a signal read by `until`), or until `timeout` seconds have passed.
+    Wait { on: Vec<SignalId>, until: Option<Expr>, timeout: Option<Expr> },
+    Jump(usize),
+    /// Go to `target` when `cond` is false.
+    JumpIfNot { cond: Expr, target: usize },
+    /// `assert cond report msg severity sev` (`report` alone: `cond` is `None`). `severity` is
+    /// an expression of type `severity_level` (0 note, 1 warning, 2 error, 3 failure).
+    Assert { cond: Option<Expr>, report: Option<Expr>, severity: Expr, span: Span },
+    /// Sequential `break [reinit list] [when cond]`: announce a discontinuity now and give
+    /// quantities new values for the restart.
+    Break { reinit: Vec<BreakReinit>, when: Option<Expr>, span: Span },
+    /// `std.env.stop` / `finish`: end the simulation cleanly.
+    Stop,
+    /// Suspend forever (`wait;`).
+    Halt,
+}
+
+/// `q => value` in a break list, or `for selector use q => value` (`selector` is the quantity
+/// whose `'dot` equation is replaced; equal to `quantity` for the plain form).
+#[derive(Clone, Debug)]
+pub struct BreakReinit {
+    pub selector: QuantityId,
+    pub quantity: QuantityId,
+    pub value: Expr,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum DelayMechanism {
+    Transport,
+    /// Inertial with the given pulse-rejection limit in seconds (`None`: the first delay).
+    Inertial { reject: Option<Expr> },
+}
+
+/// `limit q : nature with max_step;` resolved to quantities.
+#[derive(Clone, Debug)]
+pub struct Limit {
+    pub quantities: Vec<QuantityId>,
+    pub max_step: Expr,
+}
+
+impl Expr {
+    pub fn real(v: f64) -> Expr {
+        Expr::Const(Value::Real(v))
+    }
+
+    /// True when the expression can appear in an equation: no process variables, array
+    /// indexing, images or signal attributes.
+    pub fn is_analog(&self) -> bool {
+        match self {
+            Expr::Const(v) => v.as_f64().is_some(),
+            Expr::Quantity(_) | Expr::Dot(_) | Expr::Signal(_) | Expr::Now => true,
+            Expr::Var(_) | Expr::Index { .. } | Expr::Image(..) | Expr::SignalAttr(..) => false,
+            Expr::Unary(_, a) => a.is_analog(),
+            Expr::Binary(op, a, b) => *op != BinaryOp::Concat && a.is_analog() && b.is_analog(),
+            Expr::Call(_, args) => args.iter().all(Expr::is_analog),
+            Expr::If(c, a, b) => c.is_analog() && a.is_analog() && b.is_analog(),
+        }
+    }
+
+    /// Calls `f` on every sub-expression, this one first.
+    pub fn visit(&self, f: &mut impl FnMut(&Expr)) {
+        f(self);
+        match self {
+            Expr::Const(_)
+            | Expr::Quantity(_)
+            | Expr::Dot(_)
+            | Expr::Signal(_)
+            | Expr::Var(_)
+            | Expr::Now
+            | Expr::SignalAttr(..) => {}
+            Expr::Unary(_, a) | Expr::Image(_, a) => a.visit(f),
+            Expr::Binary(_, a, b) => {
+                a.visit(f);
+                b.visit(f);
+            }
+            Expr::Call(_, args) => args.iter().for_each(|a| a.visit(f)),
+            Expr::If(c, a, b) => {
+                c.visit(f);
+                a.visit(f);
+                b.visit(f);
+            }
+            Expr::Index { array, index, .. } => {
+                array.visit(f);
+                index.visit(f);
+            }
+        }
+    }
+
+    /// The signals the expression reads (with repetitions), for implicit sensitivity.
+    pub fn signals(&self) -> Vec<SignalId> {
+        let mut out = Vec::new();
+        self.visit(&mut |e| match e {
+            Expr::Signal(s) | Expr::SignalAttr(s, _) => out.push(*s),
+            _ => {}
+        });
+        out
+    }
+}

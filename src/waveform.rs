@@ -1,0 +1,58 @@
+//! Recorded waveforms: what a simulation gives and what the writers (CSV, VCD, plots) take.
+//!
+//! **Invariant:** every column has exactly `times.len()` values; times are non-decreasing
+//! (equal times appear when a discontinuity is recorded as a before/after pair).
+
+use crate::design::Type;
+
+/// Sampled results of one run, one row per accepted time point.
+#[derive(Clone, Debug, Default)]
+pub struct Waveforms {
+    pub times: Vec<f64>,
+    pub columns: Vec<Column>,
+}
+
+/// One probed quantity or signal.
+#[derive(Clone, Debug)]
+pub struct Column {
+    /// Hierarchical name relative to the top (`vref`, `dut.u_motor.i`).
+    pub name: String,
+    pub kind: ColumnKind,
+    /// One value per time point; signals as numbers ([`crate::design::Value::as_f64`]).
+    pub values: Vec<f64>,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum ColumnKind {
+    /// An analog quantity with its unit symbol, if known.
+    Quantity { unit: Option<String> },
+    /// A signal of the given type (boolean and enumeration values are positions).
+    Signal { ty: Type },
+}
+
+impl Waveforms {
+    /// The column with the given name.
+    pub fn column(&self, name: &str) -> Option<&Column> {
+        self.columns.iter().find(|c| c.name == name)
+    }
+
+    /// Linear interpolation of column `name` at time `t` (the last sample at or before `t` for
+    /// signals); `None` for an unknown name or an empty record.
+    pub fn value_at(&self, name: &str, t: f64) -> Option<f64> {
+        let col = self.column(name)?;
+        let n = self.times.partition_point(|&x| x <= t);
+        if n == 0 {
+            return col.values.first().copied();
+        }
+        let i = n - 1;
+        if i + 1 >= self.times.len() || matches!(col.kind, ColumnKind::Signal { .. }) {
+            return Some(col.values[i]);
+        }
+        let (t0, t1) = (self.times[i], self.times[i + 1]);
+        if t1 <= t0 {
+            return Some(col.values[i]);
+        }
+        let w = (t - t0) / (t1 - t0);
+        Some(col.values[i] + w * (col.values[i + 1] - col.values[i]))
+    }
+}
