@@ -1,0 +1,156 @@
+//! End-to-end simulations of small `.vhd` files in `tests/simulate/`, checked against closed-form
+//! solutions with stated tolerances: source text -> parse -> elaborate -> simulate.
+
+use vams::ast::DesignFile;
+use vams::elaborate::{ElabOptions, elaborate};
+use vams::kernel::{Outcome, Severity, SimOptions, SimResult, simulate};
+use vams::source::{FileId, SourceMap};
+use vams::{parser, stdlib};
+
+/// Runs `tests/simulate/<name>.vhd` with top entity `name`.
+fn run(name: &str, options: SimOptions) -> SimResult {
+    let path = format!("{}/tests/simulate/{name}.vhd", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).expect("test source exists");
+    let mut sources = SourceMap::new();
+    let mut ids = stdlib::load(&mut sources);
+    ids.push(sources.add(path, "work", text));
+    let files: Vec<(FileId, DesignFile)> = ids
+        .iter()
+        .map(|&id| {
+            let text = sources.file(id).text.clone();
+            let (ast, errors) = parser::parse(id, &text);
+            assert!(errors.is_empty(), "syntax errors in {}: {errors:?}", sources.file(id).name);
+            (id, ast)
+        })
+        .collect();
+    let options_elab = ElabOptions {
+        top: name.to_string(),
+        generics: Vec::new(),
+    };
+    let design = match elaborate(&sources, &files, &options_elab) {
+        Ok(d) => d,
+        Err(errors) => panic!("elaboration failed: {errors:?}"),
+    };
+    simulate(&design, &options, &mut |_| {}).expect("simulation runs")
+}
+
+fn report_times(result: &SimResult, message: &str) -> Vec<f64> {
+    result
+        .reports
+        .iter()
+        .filter(|r| r.message == message)
+        .map(|r| r.time)
+        .collect()
+}
+
+#[test]
+fn rc_charge_follows_the_exponential() {
+    let result = run(
+        "rc_charge",
+        SimOptions {
+            stop: 5e-3,
+            reltol: 1e-5,
+            ..SimOptions::default()
+        },
+    );
+    assert_eq!(result.outcome, Outcome::Finished);
+    let w = &result.waveforms;
+    assert!(w.times.len() > 10, "too few points: {}", w.times.len());
+    let tau = 1e-3;
+    // Global error of the BDF solution at reltol 1e-5: well inside 1e-4 V on a 1 V step.
+    for k in 1..=10 {
+        let t = k as f64 * 0.5e-3;
+        let v = w.value_at("v_c", t).expect("v_c recorded");
+        let exact = 1.0 - (-t / tau).exp();
+        // Linear interpolation between accepted points adds its own error: compare at
+        // recorded points too.
+        assert!((v - exact).abs() < 2e-3, "t = {t}: v_c = {v}, exact {exact}");
+    }
+    let col = w.column("v_c").expect("v_c recorded");
+    for (&t, &v) in w.times.iter().zip(&col.values) {
+        let exact = 1.0 - (-t / tau).exp();
+        assert!((v - exact).abs() < 1e-4, "t = {t}: v_c = {v}, exact {exact}");
+    }
+}
+
+#[test]
+fn bouncing_ball_impacts_at_the_analytic_times() {
+    let result = run(
+        "bouncing_ball",
+        SimOptions {
+            stop: 2.5,
+            reltol: 1e-7,
+            ..SimOptions::default()
+        },
+    );
+    let (h0, g, e): (f64, f64, f64) = (1.0, 9.81, 0.8);
+    let v1 = (2.0 * g * h0).sqrt();
+    let mut expected = vec![(2.0 * h0 / g).sqrt()];
+    for k in 1..5 {
+        let last = expected[k - 1];
+        expected.push(last + 2.0 * e.powi(k as i32) * v1 / g);
+    }
+    let expected: Vec<f64> = expected.into_iter().filter(|&t| t < 2.5).collect();
+    let impacts = report_times(&result, "impact");
+    assert_eq!(impacts.len(), expected.len(), "impacts {impacts:?}, expected {expected:?}");
+    for (t, x) in impacts.iter().zip(&expected) {
+        assert!((t - x).abs() < 1e-6, "impact at {t}, analytic {x}");
+    }
+}
+
+#[test]
+fn thermostat_switches_at_the_analytic_times() {
+    let result = run(
+        "thermostat",
+        SimOptions {
+            stop: 400.0,
+            reltol: 1e-7,
+            ..SimOptions::default()
+        },
+    );
+    let (tau, t_on, t_off, t_low, t_high, t0): (f64, f64, f64, f64, f64, f64) =
+        (100.0, 30.0, 10.0, 19.0, 21.0, 15.0);
+    let heat_first = tau * ((t_on - t0) / (t_on - t_high)).ln();
+    let cool = tau * ((t_high - t_off) / (t_low - t_off)).ln();
+    let heat = tau * ((t_on - t_low) / (t_on - t_high)).ln();
+    let offs = report_times(&result, "off");
+    let ons = report_times(&result, "on");
+    assert!(offs.len() >= 2 && !ons.is_empty(), "offs {offs:?} ons {ons:?}");
+    let expected_off = [heat_first, heat_first + cool + heat];
+    let expected_on = [heat_first + cool];
+    for (t, x) in offs.iter().zip(&expected_off) {
+        assert!((t - x).abs() < 1e-5 * x, "off at {t}, analytic {x}");
+    }
+    for (t, x) in ons.iter().zip(&expected_on) {
+        assert!((t - x).abs() < 1e-5 * x, "on at {t}, analytic {x}");
+    }
+}
+
+#[test]
+fn delta_cycles_order_signal_updates() {
+    let result = run(
+        "delta_order",
+        SimOptions {
+            stop: 1e-6,
+            ..SimOptions::default()
+        },
+    );
+    assert_eq!(result.outcome, Outcome::Finished, "reports: {:?}", result.reports);
+    assert_eq!(report_times(&result, "done"), vec![0.0]);
+}
+
+#[test]
+fn a_failure_ends_the_run_and_errors_are_reported() {
+    let result = run(
+        "failing_assert",
+        SimOptions {
+            stop: 1.0,
+            ..SimOptions::default()
+        },
+    );
+    assert!(matches!(result.outcome, Outcome::Failed { time } if (time - 2e-3).abs() < 1e-12));
+    let severities: Vec<Severity> = result.reports.iter().map(|r| r.severity).collect();
+    assert_eq!(severities, vec![Severity::Error, Severity::Failure]);
+    assert_eq!(result.reports[0].message, "first problem");
+    assert!((result.reports[0].time - 1e-3).abs() < 1e-12);
+}
