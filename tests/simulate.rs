@@ -154,3 +154,54 @@ fn a_failure_ends_the_run_and_errors_are_reported() {
     assert_eq!(result.reports[0].message, "first problem");
     assert!((result.reports[0].time - 1e-3).abs() < 1e-12);
 }
+
+#[test]
+fn pwm_rl_ripple_matches_the_steady_state() {
+    let result = run(
+        "pwm_rl",
+        SimOptions {
+            stop: 102.5e-3,
+            reltol: 1e-6,
+            ..SimOptions::default()
+        },
+    );
+    let (v, r, l, period): (f64, f64, f64, f64) = (10.0, 2.0, 10.0e-3, 5.0e-3);
+    let a = (period / 2.0) / (l / r);
+    let i_max = v / r / (1.0 + (-a).exp());
+    let i_min = v / r * (-a).exp() / (1.0 + (-a).exp());
+    let w = &result.waveforms;
+    // 20 time constants in: the transient has decayed to e^-20 of the step.
+    let at_min = w.value_at("i_load", 100e-3).expect("i_load recorded");
+    let at_max = w.value_at("i_load", 102.5e-3).expect("i_load recorded");
+    assert!((at_min - i_min).abs() < 1e-3 * i_max, "i_min {at_min}, analytic {i_min}");
+    assert!((at_max - i_max).abs() < 1e-3 * i_max, "i_max {at_max}, analytic {i_max}");
+}
+
+#[test]
+fn schmitt_trigger_switches_at_the_thresholds() {
+    let result = run(
+        "schmitt",
+        SimOptions {
+            stop: 0.05,
+            reltol: 1e-6,
+            ..SimOptions::default()
+        },
+    );
+    let (f, vth): (f64, f64) = (50.0, 0.5);
+    let w = 2.0 * std::f64::consts::PI * f;
+    let t_up = vth.asin() / w; // first rise
+    // sin(wt) = -vth on the way down: wt = pi + asin(vth).
+    let t_down = (std::f64::consts::PI + vth.asin()) / w;
+    let rises = report_times(&result, "rise");
+    let falls = report_times(&result, "fall");
+    assert_eq!(rises.len(), 3, "rises {rises:?}");
+    assert_eq!(falls.len(), 2, "falls {falls:?}");
+    for (k, t) in rises.iter().enumerate() {
+        let x = t_up + k as f64 / f;
+        assert!((t - x).abs() < 1e-6, "rise at {t}, analytic {x}");
+    }
+    for (k, t) in falls.iter().enumerate() {
+        let x = t_down + k as f64 / f;
+        assert!((t - x).abs() < 1e-6, "fall at {t}, analytic {x}");
+    }
+}
