@@ -48,6 +48,14 @@ pub enum CliError {
     #[diagnostic(code(vams::cli::analog), help("fix the errors above"))]
     Analog { count: usize },
 
+    /// The simulation stopped with an error; the error was printed.
+    #[error("the simulation of `{top}` stopped with an error")]
+    #[diagnostic(
+        code(vams::cli::simulation),
+        help("see the error above; --reltol, --abstol and --max-step tune the solver")
+    )]
+    Simulation { top: String },
+
     /// Neither `--stop` nor a stop comment.
     #[error("no stop time for `{top}`")]
     #[diagnostic(

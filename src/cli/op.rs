@@ -8,6 +8,7 @@ use crate::design::{Design, Type};
 use crate::kernel::{SimOptions, operating_point};
 
 use super::compile::{DesignArgs, compile};
+use super::error::CliError;
 use super::render::render_sim_error;
 use super::time::format_time;
 use crate::output::csv::format_number as csv_number;
@@ -60,7 +61,9 @@ pub fn run(args: &OpArgs) -> Result<(), Report> {
     let compiled = compile(&args.design)?;
     let point = operating_point(&compiled.design, &SimOptions::default()).map_err(|e| {
         eprint!("{}", render_sim_error(&e, &compiled.loaded.sources));
-        miette::miette!("no operating point for `{}`", compiled.design.top)
+        CliError::Simulation {
+            top: compiled.design.top.clone(),
+        }
     })?;
     print!("{}", format_point(&compiled.design, &point));
     Ok(())

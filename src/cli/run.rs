@@ -169,7 +169,9 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
     let mut print = |r: &crate::kernel::Report| eprintln!("{}", format_report(r, &loaded.sources));
     let result = simulate(design, &options, &mut print).map_err(|e| {
         eprint!("{}", render_sim_error(&e, &loaded.sources));
-        miette::miette!("the simulation of `{}` stopped with an error", design.top)
+        CliError::Simulation {
+            top: design.top.clone(),
+        }
     })?;
     let written = write_outputs(args, &result.waveforms, &design.top, stop, &panels)?;
     eprintln!(
