@@ -320,6 +320,76 @@ mod tests {
         assert!(probe_list(&[], &groups).is_empty());
     }
 
+    fn args(outputs: Vec<PathBuf>, plot: Option<PathBuf>) -> RunArgs {
+        RunArgs {
+            design: DesignArgs {
+                paths: vec![],
+                top: None,
+                generics: vec![],
+                params: None,
+            },
+            stop: None,
+            outputs,
+            plot,
+            reltol: 1e-3,
+            abstol: None,
+            max_step: None,
+            probe: vec![],
+            panel: vec![],
+            stats: false,
+        }
+    }
+
+    #[test]
+    fn writes_every_output_and_names_them() {
+        let dir = tempfile::tempdir().unwrap();
+        let (csv, vcd, svg) = (
+            dir.path().join("w.csv"),
+            dir.path().join("w.vcd"),
+            dir.path().join("w.svg"),
+        );
+        let wf = crate::output::csv::tests::synthetic();
+        let a = args(vec![csv.clone(), vcd.clone()], Some(svg.clone()));
+        let written = write_outputs(&a, &wf, "tb", 1.0, &[]).unwrap();
+        assert_eq!(written.len(), 3);
+        assert!(
+            std::fs::read_to_string(&csv)
+                .unwrap()
+                .starts_with("time,vout,")
+        );
+        assert!(
+            std::fs::read_to_string(&vcd)
+                .unwrap()
+                .contains("$scope module tb $end")
+        );
+        assert!(
+            std::fs::read_to_string(&svg)
+                .unwrap()
+                .contains("tb (stop 1 s)")
+        );
+        // Only the three targets: no temporary left behind.
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 3);
+    }
+
+    #[test]
+    fn an_unknown_panel_name_lists_what_was_recorded_and_keeps_the_old_plot() {
+        let dir = tempfile::tempdir().unwrap();
+        let svg = dir.path().join("w.svg");
+        std::fs::write(&svg, "old").unwrap();
+        let wf = crate::output::csv::tests::synthetic();
+        let a = args(vec![], Some(svg.clone()));
+        let err = write_outputs(&a, &wf, "tb", 1.0, &[vec!["vot".into()]]).unwrap_err();
+        let text = format!("{err:?}");
+        assert!(
+            text.contains("vot") && text.contains("vout, dut.u_ic.ov"),
+            "{text}"
+        );
+        assert_eq!(std::fs::read_to_string(&svg).unwrap(), "old");
+        let missing_dir = args(vec![dir.path().join("no/dir/w.csv")], None);
+        let err = write_outputs(&missing_dir, &wf, "tb", 1.0, &[]).unwrap_err();
+        assert!(format!("{err:?}").contains("cannot write"));
+    }
+
     #[test]
     fn summary_and_stats_name_every_figure() {
         let result = SimResult {

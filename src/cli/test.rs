@@ -15,9 +15,9 @@ use miette::Report;
 
 use crate::ast::DesignFile;
 use crate::elaborate::{ElabOptions, elaborate};
-use crate::kernel::{Severity, SimOptions, simulate};
+use crate::kernel::{Severity, SimError, SimOptions, SimResult, simulate};
 use crate::output::atomic::write_atomically;
-use crate::source::FileId;
+use crate::source::{FileId, SourceMap};
 
 use super::error::CliError;
 use super::load::{Loaded, load};
@@ -114,7 +114,13 @@ fn run_bench(
         stop,
         ..SimOptions::default()
     };
-    match simulate(&design, &sim, &mut |_| {}) {
+    judge(simulate(&design, &sim, &mut |_| {}), sources)
+}
+
+/// The verdict on a finished (or failed) run: reports of severity error or failure, or the
+/// simulation error; `None` when it passed.
+pub fn judge(run: Result<SimResult, SimError>, sources: &SourceMap) -> Option<(Problem, String)> {
+    match run {
         Err(e) => Some((Problem::Error, render_sim_error(&e, sources))),
         Ok(result) => {
             let failing: Vec<String> = result
@@ -251,6 +257,7 @@ pub fn run(args: &TestArgs) -> Result<(), Report> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::kernel::Outcome;
 
     #[test]
     fn lines_for_passing_and_failing_testbenches() {
@@ -270,6 +277,46 @@ mod tests {
             verdict_lines("tb_x", &bad),
             "test tb_x ... FAILED (0.10 s)\n    600 ms: error: a\n    2 s: error: b\n"
         );
+    }
+
+    fn result(severities: &[Severity], outcome: Outcome) -> SimResult {
+        SimResult {
+            waveforms: Default::default(),
+            reports: severities
+                .iter()
+                .enumerate()
+                .map(|(k, &severity)| crate::kernel::Report {
+                    time: 1e-3 * (k + 1) as f64,
+                    severity,
+                    message: format!("report {k}"),
+                    process: "check".into(),
+                    span: Default::default(),
+                })
+                .collect(),
+            outcome,
+            stats: Default::default(),
+        }
+    }
+
+    #[test]
+    fn errors_and_failures_fail_notes_and_warnings_do_not() {
+        let sources = SourceMap::new();
+        let quiet = result(&[Severity::Note, Severity::Warning], Outcome::Finished);
+        assert_eq!(judge(Ok(quiet), &sources), None);
+        let noisy = result(
+            &[Severity::Note, Severity::Error, Severity::Failure],
+            Outcome::Failed { time: 3e-3 },
+        );
+        let (kind, text) = judge(Ok(noisy), &sources).unwrap();
+        assert_eq!(kind, Problem::Failure);
+        assert_eq!(
+            text,
+            "2 ms: error: report 1 (process check)\n3 ms: failure: report 2 (process check)"
+        );
+        let broken = Err(SimError::Analog { errors: vec![] });
+        let (kind, text) = judge(broken, &sources).unwrap();
+        assert_eq!(kind, Problem::Error);
+        assert!(text.contains("vams::sim::analog"), "{text}");
     }
 
     #[test]
