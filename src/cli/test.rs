@@ -134,6 +134,17 @@ pub fn judge(run: Result<SimResult, SimError>, sources: &SourceMap) -> Option<(P
     }
 }
 
+/// The one-line gist of a failure text: the message of its first rendered diagnostic (the
+/// line miette marks with `×`), else its first non-empty line.
+pub fn headline(text: &str) -> String {
+    let lines = || text.lines().map(str::trim).filter(|l| !l.is_empty());
+    lines()
+        .find_map(|l| l.strip_prefix('×'))
+        .map(|l| l.trim().to_string())
+        .or_else(|| lines().next().map(str::to_string))
+        .unwrap_or_default()
+}
+
 /// The line for one testbench and its indented failure text.
 pub fn verdict_lines(name: &str, verdict: &Verdict) -> String {
     match &verdict.problem {
@@ -222,10 +233,9 @@ pub fn run(args: &TestArgs) -> Result<(), Report> {
                 name: bench.name.clone(),
                 classname: loaded.sources.file(bench.file).name.clone(),
                 seconds: verdict.seconds,
-                problem: verdict.problem.map(|(kind, text)| {
-                    let message = text.lines().next().unwrap_or_default().trim().to_string();
-                    (kind, message, text)
-                }),
+                problem: verdict
+                    .problem
+                    .map(|(kind, text)| (kind, headline(&text), text)),
             });
         },
     );
@@ -317,6 +327,19 @@ mod tests {
         let (kind, text) = judge(broken, &sources).unwrap();
         assert_eq!(kind, Problem::Error);
         assert!(text.contains("vams::sim::analog"), "{text}");
+    }
+
+    #[test]
+    fn headline_is_the_diagnostic_message_or_the_first_line() {
+        assert_eq!(
+            headline("vams::cli::no_stop\n\n  × no stop time for `tb`\n  help: pass --stop"),
+            "no stop time for `tb`"
+        );
+        assert_eq!(
+            headline("\n1 ms: error: a\n2 ms: error: b"),
+            "1 ms: error: a"
+        );
+        assert_eq!(headline(""), "");
     }
 
     #[test]
