@@ -92,7 +92,10 @@ fn testbenches_that_cannot_start_fail_with_their_diagnostic_and_junit_records_th
     );
     assert!(xml.contains("<testcase name=\"tb_broken\""));
     assert!(xml.contains("<testcase name=\"tb_nostop\""));
-    assert!(xml.contains("<error message=\"no stop time for `tb_nostop`\">"), "{xml}");
+    assert!(
+        xml.contains("<error message=\"no stop time for `tb_nostop`\">"),
+        "{xml}"
+    );
 }
 
 // ---- With the engine ----

@@ -3,6 +3,32 @@
 -- tb_rc: the low pass of rc.vhd checked against its closed form at two times.
 -- vout(2 ms) = 1 - exp(-1) = 0.63212, vout(4 ms) = 1 - exp(-3) = 0.95021.
 
+-- The cell under test comes first: VHDL analyses a unit before its users.
+
+library ieee;
+use ieee.electrical_systems.all;
+
+entity rc_cell is
+  generic (
+    r : real := 1.0e3;   -- [Ohm]
+    c : real := 1.0e-6   -- [F]
+  );
+  port (terminal outp : electrical);
+end entity rc_cell;
+
+architecture behavioral of rc_cell is
+  terminal inp : electrical;
+  quantity vin across iin through inp to electrical_ref;
+  quantity vr across ir through inp to outp;
+  quantity vout across ic through outp to electrical_ref;
+  signal drive : real := 0.0;
+begin
+  vin == drive;
+  vr == r * ir;
+  ic == c * vout'dot;
+  drive <= 1.0 after 1 ms;
+end architecture behavioral;
+
 library ieee;
 use ieee.electrical_systems.all;
 
@@ -29,27 +55,3 @@ begin
     wait;
   end process check;
 end architecture bench;
-
-library ieee;
-use ieee.electrical_systems.all;
-
-entity rc_cell is
-  generic (
-    r : real := 1.0e3;   -- [Ohm]
-    c : real := 1.0e-6   -- [F]
-  );
-  port (terminal outp : electrical);
-end entity rc_cell;
-
-architecture behavioral of rc_cell is
-  terminal inp : electrical;
-  quantity vin across iin through inp to electrical_ref;
-  quantity vr across ir through inp to outp;
-  quantity vout across ic through outp to electrical_ref;
-  signal drive : real := 0.0;
-begin
-  vin == drive;
-  vr == r * ir;
-  ic == c * vout'dot;
-  drive <= 1.0 after 1 ms;
-end architecture behavioral;
