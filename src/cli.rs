@@ -1,11 +1,23 @@
 //! The command line: parses arguments with clap and dispatches to one subcommand.
 //!
-//! Takes argv; gives an exit code: 0 on success, 1 on a diagnosed error (printed by miette's
-//! graphical handler), 2 on a usage error (clap's). Each subcommand keeps its arguments and
-//! its run function in `cli/<name>.rs`; nothing here knows what a subcommand computes.
+//! Takes argv; gives an exit code: 0 on success, 1 on a diagnosed error (rendered by miette,
+//! plain when stderr is not a terminal), 2 on a usage error (clap's). Each subcommand keeps its
+//! arguments and its run function in `cli/<name>.rs`; the shared steps (loading sources,
+//! elaborating, stop times, printing diagnostics and reports) have modules of their own.
 
 pub mod check;
+pub mod compile;
+pub mod dae;
+pub mod error;
 pub mod extract;
+pub mod load;
+pub mod op;
+pub mod params;
+pub mod render;
+pub mod run;
+pub mod stop;
+pub mod test;
+pub mod time;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
@@ -25,6 +37,15 @@ pub struct Cli {
 pub enum Command {
     /// Check VHDL-AMS sources (files or directories) and report every error found.
     Check(check::CheckArgs),
+    /// Simulate a design to its stop time: print its reports, write waveforms (CSV, VCD) and
+    /// a plot (SVG, PNG). Exit 1 when the run fails.
+    Run(run::RunArgs),
+    /// Print the quiescent operating point: every quantity and signal with its unit.
+    Op(op::OpArgs),
+    /// Print the analog equation system of a design (unknowns and equations with their source).
+    Dae(dae::DaeArgs),
+    /// Run every testbench (port-less entity named tb_* or test_*) and report pass or fail.
+    Test(test::TestArgs),
     /// Extract DC motor parameters from four oscilloscope captures (inrush, blocked rotor,
     /// constant speed, coast), the paper's way and refined by a joint fit.
     Extract(extract::ExtractArgs),
@@ -35,12 +56,16 @@ pub fn run() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Check(args) => check::run(&args),
+        Command::Run(args) => run::run(&args),
+        Command::Op(args) => op::run(&args),
+        Command::Dae(args) => dae::run(&args),
+        Command::Test(args) => test::run(&args),
         Command::Extract(args) => extract::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(report) => {
-            eprintln!("{report:?}");
+            eprint!("{}", render::render(report.as_ref()));
             ExitCode::from(1)
         }
     }

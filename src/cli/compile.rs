@@ -1,0 +1,102 @@
+//! What `run`, `op` and `dae` share: the design arguments (sources, `--top`, generics) and the
+//! way from them to an elaborated [`Design`], printing each stage's diagnostics on the way.
+
+use std::path::PathBuf;
+
+use clap::Args;
+use miette::Report;
+
+use crate::design::Design;
+use crate::elaborate::{ElabOptions, elaborate, find_tops};
+
+use super::error::CliError;
+use super::load::{Loaded, load};
+use super::params::{merge_generics, parse_generic, read_params};
+use super::render::render_located;
+
+/// Sources, top entity and generic overrides.
+#[derive(Debug, Args)]
+pub struct DesignArgs {
+    /// Source files or directories (directories are searched for .vhd, .vhdl and .ams files).
+    #[arg(required = true, value_name = "FILES|DIRS")]
+    pub paths: Vec<PathBuf>,
+    /// The entity to elaborate; default: the only entity that nothing instantiates.
+    #[arg(long, value_name = "ENTITY")]
+    pub top: Option<String>,
+    /// Override a generic of the top entity, e.g. `-g r=8.0` or `-g t_step="10 ms"`
+    /// (repeatable; wins over --params).
+    #[arg(short = 'g', long = "generic", value_name = "NAME=VALUE", value_parser = parse_generic)]
+    pub generics: Vec<(String, String)>,
+    /// Read generic overrides from a file of `name=value` lines (`#` or `--` comments).
+    #[arg(long, value_name = "FILE")]
+    pub params: Option<PathBuf>,
+}
+
+/// Sources and the design elaborated from them.
+pub struct Compiled {
+    pub loaded: Loaded,
+    pub design: Design,
+}
+
+/// The top entity: the one given, or the single candidate.
+pub fn choose_top(given: Option<&str>, candidates: Vec<String>) -> Result<String, CliError> {
+    if let Some(top) = given {
+        return Ok(top.to_ascii_lowercase());
+    }
+    match candidates.len() {
+        0 => Err(CliError::NoTop),
+        1 => Ok(candidates.into_iter().next().unwrap_or_default()),
+        _ => Err(CliError::AmbiguousTop { candidates }),
+    }
+}
+
+/// Loads, parses and elaborates; every diagnostic is printed before the summary error.
+pub fn compile(args: &DesignArgs) -> Result<Compiled, Report> {
+    let from_file = match &args.params {
+        Some(path) => read_params(path)?,
+        None => Vec::new(),
+    };
+    let generics = merge_generics(from_file, &args.generics);
+    let loaded = load(&args.paths)?;
+    if !loaded.syntax_errors.is_empty() {
+        loaded.print_syntax_errors(20);
+        return Err(CliError::Syntax {
+            count: loaded.error_count(),
+        }
+        .into());
+    }
+    let top = choose_top(
+        args.top.as_deref(),
+        match &args.top {
+            Some(_) => Vec::new(),
+            None => find_tops(&loaded.sources, &loaded.files),
+        },
+    )?;
+    let options = ElabOptions { top, generics };
+    let design = elaborate(&loaded.sources, &loaded.files, &options).map_err(|errors| {
+        for e in &errors {
+            eprint!("{}", render_located(e, &loaded.sources));
+        }
+        CliError::Elaboration {
+            count: errors.len(),
+        }
+    })?;
+    Ok(Compiled { loaded, design })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn top_is_given_or_the_single_candidate() {
+        assert_eq!(choose_top(Some("TB_Servo"), vec![]).unwrap(), "tb_servo");
+        assert_eq!(choose_top(None, vec!["tb".into()]).unwrap(), "tb");
+        assert!(matches!(choose_top(None, vec![]), Err(CliError::NoTop)));
+        let err = choose_top(None, vec!["tb_a".into(), "tb_b".into()]).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "several entities could be the top: tb_a, tb_b"
+        );
+    }
+}

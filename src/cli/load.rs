@@ -1,0 +1,202 @@
+//! Loading a compilation: files and directories -> a [`SourceMap`] holding the bundled stdlib
+//! and the user's files (library `work`), each parsed, with the syntax errors of each file kept
+//! for the caller to print or act on.
+//!
+//! A directory stands for its `.vhd`, `.vhdl` and `.ams` files, recursively, sorted. A user
+//! file identical to a bundled stdlib file (a copy of `stdlib/` passed on the command line) is
+//! skipped: the bundled copy is already loaded. The same file named twice is loaded once.
+
+use std::path::{Path, PathBuf};
+
+use miette::Diagnostic;
+use thiserror::Error;
+
+use crate::ast::DesignFile;
+use crate::diagnostics::{SyntaxError, render_plain};
+use crate::source::{FileId, SourceMap};
+use crate::{parser, stdlib};
+
+/// Problems with the inputs themselves.
+#[derive(Debug, Error, Diagnostic)]
+pub enum InputError {
+    #[error("cannot read `{path}`: {reason}")]
+    #[diagnostic(
+        code(vams::input::unreadable),
+        help("check the path; directories are searched for .vhd, .vhdl and .ams files")
+    )]
+    Unreadable { path: String, reason: String },
+    #[error("no VHDL-AMS sources under `{path}`")]
+    #[diagnostic(
+        code(vams::input::empty_directory),
+        help("vams reads files ending in .vhd, .vhdl or .ams")
+    )]
+    NoSources { path: String },
+}
+
+/// A loaded and parsed compilation.
+#[derive(Debug)]
+pub struct Loaded {
+    pub sources: SourceMap,
+    /// Every parsed file, stdlib first, in the order loaded (what elaboration takes).
+    pub files: Vec<(FileId, DesignFile)>,
+    /// The syntax errors of each file that has some, in file order.
+    pub syntax_errors: Vec<(FileId, Vec<SyntaxError>)>,
+}
+
+impl Loaded {
+    /// Total number of syntax errors.
+    pub fn error_count(&self) -> usize {
+        self.syntax_errors.iter().map(|(_, e)| e.len()).sum()
+    }
+
+    /// Design units parsed, stdlib included.
+    pub fn unit_count(&self) -> usize {
+        self.files.iter().map(|(_, f)| f.units.len()).sum()
+    }
+
+    /// Prints every syntax error to stderr, at most `max_per_file` per file.
+    pub fn print_syntax_errors(&self, max_per_file: usize) {
+        for (id, errors) in &self.syntax_errors {
+            for e in errors.iter().take(max_per_file) {
+                eprint!("{}", render_plain(e, &self.sources));
+            }
+            if errors.len() > max_per_file {
+                eprintln!(
+                    "  ... and {} more in {}\n",
+                    errors.len() - max_per_file,
+                    self.sources.file(*id).name
+                );
+            }
+        }
+    }
+
+    /// True when the file has syntax errors.
+    pub fn has_errors(&self, id: FileId) -> bool {
+        self.syntax_errors.iter().any(|(f, _)| *f == id)
+    }
+}
+
+/// Collects the source files a path stands for, sorted for a stable order.
+pub fn source_files(path: &Path) -> Result<Vec<PathBuf>, InputError> {
+    let unreadable = |e: std::io::Error| InputError::Unreadable {
+        path: path.display().to_string(),
+        reason: e.to_string(),
+    };
+    let meta = std::fs::metadata(path).map_err(unreadable)?;
+    if !meta.is_dir() {
+        return Ok(vec![path.to_path_buf()]);
+    }
+    let mut out = Vec::new();
+    let mut stack = vec![path.to_path_buf()];
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(&dir).map_err(unreadable)? {
+            let p = entry.map_err(unreadable)?.path();
+            if p.is_dir() {
+                stack.push(p);
+            } else if p
+                .extension()
+                .and_then(|e| e.to_str())
+                .is_some_and(|e| matches!(e.to_ascii_lowercase().as_str(), "vhd" | "vhdl" | "ams"))
+            {
+                out.push(p);
+            }
+        }
+    }
+    if out.is_empty() {
+        return Err(InputError::NoSources {
+            path: path.display().to_string(),
+        });
+    }
+    out.sort();
+    Ok(out)
+}
+
+/// Reads a file as text; non-UTF-8 input is read as ISO 8859-1, VHDL's own character set.
+fn read_text(file: &Path) -> Result<String, InputError> {
+    let bytes = std::fs::read(file).map_err(|e| InputError::Unreadable {
+        path: file.display().to_string(),
+        reason: e.to_string(),
+    })?;
+    Ok(String::from_utf8(bytes)
+        .unwrap_or_else(|e| e.into_bytes().iter().map(|&b| b as char).collect()))
+}
+
+/// Loads the stdlib and the sources under `paths`, and parses every file.
+pub fn load(paths: &[PathBuf]) -> Result<Loaded, InputError> {
+    let mut sources = SourceMap::new();
+    let mut ids = stdlib::load(&mut sources);
+    let mut seen: Vec<PathBuf> = Vec::new();
+    for path in paths {
+        for file in source_files(path)? {
+            let key = std::fs::canonicalize(&file).unwrap_or_else(|_| file.clone());
+            if seen.contains(&key) {
+                continue;
+            }
+            seen.push(key);
+            let text = read_text(&file)?;
+            if stdlib::FILES.iter().any(|(_, _, t)| *t == text) {
+                continue; // The bundled copy of this file is already loaded.
+            }
+            ids.push(sources.add(file.display().to_string(), "work", text));
+        }
+    }
+    let mut files = Vec::with_capacity(ids.len());
+    let mut syntax_errors = Vec::new();
+    for id in ids {
+        let text = sources.file(id).text.clone();
+        let (ast, errors) = parser::parse(id, &text);
+        if !errors.is_empty() {
+            syntax_errors.push((id, errors));
+        }
+        files.push((id, ast));
+    }
+    Ok(Loaded {
+        sources,
+        files,
+        syntax_errors,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn loads_directories_once_skips_stdlib_copies_and_keeps_errors() {
+        let dir = tempfile::tempdir().unwrap();
+        let sub = dir.path().join("sub");
+        std::fs::create_dir(&sub).unwrap();
+        std::fs::write(dir.path().join("a.vhd"), "entity a is end;").unwrap();
+        std::fs::write(sub.join("b.VHDL"), "entity b is port (x : in bit) end;").unwrap();
+        std::fs::write(sub.join("notes.txt"), "not vhdl").unwrap();
+        let (_, _, stdlib_text) = stdlib::FILES[0];
+        std::fs::write(dir.path().join("copy.vhd"), stdlib_text).unwrap();
+        let a = dir.path().join("a.vhd");
+        let loaded = load(&[dir.path().to_path_buf(), a]).unwrap();
+        let stdlib_count = stdlib::FILES.len();
+        assert_eq!(loaded.files.len(), stdlib_count + 2);
+        let names: Vec<&str> = loaded
+            .sources
+            .files()
+            .skip(stdlib_count)
+            .map(|(_, f)| f.name.as_str())
+            .collect();
+        assert!(names[0].ends_with("a.vhd") && names[1].ends_with("b.VHDL"));
+        assert_eq!(loaded.syntax_errors.len(), 1);
+        assert!(loaded.has_errors(loaded.syntax_errors[0].0));
+        assert!(loaded.error_count() >= 1);
+    }
+
+    #[test]
+    fn missing_paths_and_empty_directories_are_diagnosed() {
+        let dir = tempfile::tempdir().unwrap();
+        assert!(matches!(
+            load(&[dir.path().join("nope.vhd")]),
+            Err(InputError::Unreadable { .. })
+        ));
+        assert!(matches!(
+            load(&[dir.path().to_path_buf()]),
+            Err(InputError::NoSources { .. })
+        ));
+    }
+}

@@ -1,0 +1,133 @@
+//! `vams op`: the quiescent operating point of a design (after initialisation: processes run to
+//! their first wait, breaks applied), one line per quantity and signal with its unit.
+
+use clap::Args;
+use miette::Report;
+
+use crate::design::{Design, Type};
+use crate::kernel::{SimOptions, operating_point};
+
+use super::compile::{DesignArgs, compile};
+use super::error::CliError;
+use super::render::render_sim_error;
+use super::time::format_time;
+use crate::output::csv::format_number as csv_number;
+
+/// Arguments of `vams op`.
+#[derive(Debug, Args)]
+#[command(after_help = "Example:\n  vams op models/ --top tb_tracking -g vref0=2.0")]
+pub struct OpArgs {
+    #[command(flatten)]
+    pub design: DesignArgs,
+}
+
+/// A value as text: quantities with their unit symbol; signals by their type (booleans and
+/// enumeration literals by name).
+pub fn format_value(design: &Design, name: &str, value: f64) -> String {
+    if let Some(q) = design.quantities.iter().find(|q| q.name == name) {
+        return match &q.unit {
+            Some(unit) => format!("{} {unit}", csv_number(value)),
+            None => csv_number(value),
+        };
+    }
+    let ty = design
+        .signals
+        .iter()
+        .find(|s| s.name == name)
+        .map(|s| &s.ty);
+    match ty {
+        Some(Type::Boolean) => (if value > 0.5 { "true" } else { "false" }).into(),
+        Some(Type::Enum { literals, .. }) => literals
+            .get(value.round().max(0.0) as usize)
+            .cloned()
+            .unwrap_or_else(|| csv_number(value)),
+        Some(Type::Integer) => format!("{}", value.round() as i64),
+        Some(Type::Time) => format_time(value),
+        _ => csv_number(value),
+    }
+}
+
+/// The listing: names padded to one column.
+pub fn format_point(design: &Design, point: &[(String, f64)]) -> String {
+    let width = point.iter().map(|(n, _)| n.len()).max().unwrap_or(0);
+    point
+        .iter()
+        .map(|(name, v)| format!("{name:<width$}  {}\n", format_value(design, name, *v)))
+        .collect()
+}
+
+/// Runs `vams op`.
+pub fn run(args: &OpArgs) -> Result<(), Report> {
+    let compiled = compile(&args.design)?;
+    let point = operating_point(&compiled.design, &SimOptions::default()).map_err(|e| {
+        eprint!("{}", render_sim_error(&e, &compiled.loaded.sources));
+        CliError::Simulation {
+            top: compiled.design.top.clone(),
+        }
+    })?;
+    print!("{}", format_point(&compiled.design, &point));
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::design::{Quantity, QuantityKind, Signal, SignalKind, Value};
+    use crate::source::Span;
+
+    fn design() -> Design {
+        let quantity = |name: &str, unit: Option<&str>| Quantity {
+            name: name.into(),
+            kind: QuantityKind::Free,
+            tolerance: None,
+            subtype: "voltage".into(),
+            unit: unit.map(Into::into),
+            initial_guess: None,
+            span: Span::default(),
+        };
+        let signal = |name: &str, ty: Type| Signal {
+            name: name.into(),
+            ty,
+            init: Value::Integer(0),
+            kind: SignalKind::Explicit,
+            span: Span::default(),
+        };
+        Design {
+            top: "tb".into(),
+            quantities: vec![quantity("vfb", Some("V")), quantity("x", None)],
+            signals: vec![
+                signal("ov", Type::Boolean),
+                signal(
+                    "en",
+                    Type::Enum {
+                        name: "std_ulogic".into(),
+                        literals: ["'U'", "'X'", "'0'", "'1'"].map(String::from).to_vec(),
+                    },
+                ),
+                signal("n", Type::Integer),
+                signal("t", Type::Time),
+            ],
+            ..Design::default()
+        }
+    }
+
+    #[test]
+    fn values_carry_units_and_literal_names() {
+        let d = design();
+        let point: Vec<(String, f64)> = [
+            ("vfb", 0.9),
+            ("x", -2.5),
+            ("ov", 0.0),
+            ("en", 3.0),
+            ("n", 7.0),
+            ("t", 0.01),
+        ]
+        .iter()
+        .map(|(n, v)| (n.to_string(), *v))
+        .collect();
+        assert_eq!(
+            format_point(&d, &point),
+            "vfb  0.9 V\nx    -2.5\nov   false\nen   '1'\nn    7\nt    10 ms\n"
+        );
+    }
+}

@@ -1,0 +1,415 @@
+//! `vams run`: elaborate, simulate to the stop time, print reports as they happen, write the
+//! waveform files and the plot, and close with a summary line.
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use clap::Args;
+use miette::Report;
+
+use crate::kernel::{Outcome, SimOptions, SimResult, SimStats, simulate};
+use crate::output::atomic::{commit, temp_path, write_atomically};
+use crate::output::csv::write_csv;
+use crate::output::vcd::write_vcd;
+use crate::output::waveplot::{default_groups, named_groups, plot_waveforms};
+use crate::waveform::Waveforms;
+
+use super::compile::{DesignArgs, compile};
+use super::error::CliError;
+use super::render::{format_report, render_located, render_sim_error};
+use super::stop::{declaring_file, stop_comment};
+use super::time::{format_time, parse_positive_time};
+
+/// Arguments of `vams run`.
+#[derive(Debug, Args)]
+#[command(after_help = "Examples:
+  vams run models/ --top tb_tracking -o tracking.csv --plot tracking.svg
+  vams run models/ --top tb_overvoltage --params models/headlight.params -g r=5.0 \\
+      --probe v_supply --probe v_motor --probe ov --plot ov.png
+  vams run rc.vhd --stop 10ms -o rc.vcd --stats
+
+Times: a number of seconds (1e-3) or a number and a unit: fs, ps, ns, us, ms, s or sec, min,
+hr (6s, 6 sec, 10 ms, 2.5 us).")]
+pub struct RunArgs {
+    #[command(flatten)]
+    pub design: DesignArgs,
+    /// Simulated time to stop at; default: the comment `-- vams: stop TIME` in the file that
+    /// declares the top entity.
+    #[arg(long, value_name = "TIME", value_parser = parse_positive_time)]
+    pub stop: Option<f64>,
+    /// Write the waveforms to FILE, by extension: .csv (time and one column per probe) or .vcd
+    /// (for GTKWave, Surfer; 1 ns resolution). Repeatable.
+    #[arg(short = 'o', long = "out", value_name = "FILE", value_parser = output_path)]
+    pub outputs: Vec<PathBuf>,
+    /// Plot the waveforms to FILE (.svg or .png): stacked panels on a shared time axis.
+    #[arg(long, value_name = "FILE", value_parser = plot_path)]
+    pub plot: Option<PathBuf>,
+    /// Relative tolerance of the analog solver.
+    #[arg(long, value_name = "X", default_value_t = 1e-3, value_parser = positive_number)]
+    pub reltol: f64,
+    /// Absolute tolerance for every unknown (default: per tolerance group).
+    #[arg(long, value_name = "X", value_parser = positive_number)]
+    pub abstol: Option<f64>,
+    /// Largest analog time step.
+    #[arg(long, value_name = "TIME", value_parser = parse_positive_time)]
+    pub max_step: Option<f64>,
+    /// Record this quantity or signal (hierarchical name, e.g. dut.u_motor.i); repeatable.
+    /// Default: every quantity and explicit signal.
+    #[arg(long, value_name = "NAME")]
+    pub probe: Vec<String>,
+    /// Draw these names together in one plot panel (comma separated, repeatable, e.g.
+    /// --panel vref,vfb --panel i_motor); only the named panels are drawn. Default: one panel
+    /// per probe, or per unit when there are more than six probes.
+    #[arg(long, value_name = "NAMES")]
+    pub panel: Vec<String>,
+    /// Print every solver and kernel counter at the end.
+    #[arg(long)]
+    pub stats: bool,
+}
+
+/// The `--panel` groups: each argument is one panel of comma-separated names.
+fn panel_groups(raw: &[String]) -> Vec<Vec<String>> {
+    raw.iter()
+        .map(|group| {
+            group
+                .split(',')
+                .map(|n| n.trim().to_ascii_lowercase())
+                .filter(|n| !n.is_empty())
+                .collect::<Vec<_>>()
+        })
+        .filter(|g| !g.is_empty())
+        .collect()
+}
+
+/// Accepts `.csv` and `.vcd` paths.
+pub fn output_path(text: &str) -> Result<PathBuf, String> {
+    with_extension(text, &["csv", "vcd"])
+}
+
+/// Accepts `.svg` and `.png` paths.
+pub fn plot_path(text: &str) -> Result<PathBuf, String> {
+    with_extension(text, &["svg", "png"])
+}
+
+fn with_extension(text: &str, allowed: &[&str]) -> Result<PathBuf, String> {
+    let path = PathBuf::from(text);
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    match ext {
+        Some(e) if allowed.contains(&e.as_str()) => Ok(path),
+        _ => Err(format!(
+            "`{text}` has an unknown extension; name the file with .{}",
+            allowed.join(" or .")
+        )),
+    }
+}
+
+fn positive_number(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(v) if v.is_finite() && v > 0.0 => Ok(v),
+        _ => Err(format!("`{text}` is not a positive number (e.g. 1e-3)")),
+    }
+}
+
+/// The probes to record: `--probe` names plus the `--panel` names, each once; empty (record
+/// everything) when no `--probe` is given.
+fn probe_list(probes: &[String], panels: &[Vec<String>]) -> Vec<String> {
+    let mut out: Vec<String> = Vec::new();
+    if probes.is_empty() {
+        return out;
+    }
+    for name in probes
+        .iter()
+        .map(|p| p.trim().to_ascii_lowercase())
+        .chain(panels.iter().flatten().cloned())
+    {
+        if !out.contains(&name) {
+            out.push(name);
+        }
+    }
+    out
+}
+
+/// Runs `vams run`.
+pub fn run(args: &RunArgs) -> Result<(), Report> {
+    let started = Instant::now();
+    let compiled = compile(&args.design)?;
+    let (loaded, design) = (&compiled.loaded, &compiled.design);
+    let stop = match args.stop {
+        Some(t) => t,
+        None => match declaring_file(loaded, &design.top)
+            .and_then(|f| stop_comment(&loaded.sources, f))
+        {
+            Some(Ok(t)) => t,
+            Some(Err(e)) => {
+                eprint!("{}", render_located(&e, &loaded.sources));
+                return Err(CliError::NoStop {
+                    top: design.top.clone(),
+                }
+                .into());
+            }
+            None => {
+                return Err(CliError::NoStop {
+                    top: design.top.clone(),
+                }
+                .into());
+            }
+        },
+    };
+    let panels = panel_groups(&args.panel);
+    let options = SimOptions {
+        stop,
+        reltol: args.reltol,
+        abstol: args.abstol,
+        max_step: args.max_step,
+        probes: probe_list(&args.probe, &panels),
+    };
+    let mut print = |r: &crate::kernel::Report| eprintln!("{}", format_report(r, &loaded.sources));
+    let result = simulate(design, &options, &mut print).map_err(|e| {
+        eprint!("{}", render_sim_error(&e, &loaded.sources));
+        CliError::Simulation {
+            top: design.top.clone(),
+        }
+    })?;
+    let written = write_outputs(args, &result.waveforms, &design.top, stop, &panels)?;
+    eprintln!(
+        "{}",
+        summary(
+            &design.top,
+            stop,
+            &result,
+            started.elapsed().as_secs_f64(),
+            &written
+        )
+    );
+    if args.stats {
+        eprint!("{}", stats_table(&result.stats));
+    }
+    if let Outcome::Failed { time } = result.outcome {
+        let message = result
+            .reports
+            .iter()
+            .rev()
+            .find(|r| r.severity == crate::kernel::Severity::Failure)
+            .map(|r| r.message.clone())
+            .unwrap_or_else(|| "assertion of severity failure".into());
+        return Err(CliError::RunFailed {
+            time: format_time(time),
+            message,
+        }
+        .into());
+    }
+    Ok(())
+}
+
+fn write_error(path: &Path, e: impl ToString) -> CliError {
+    CliError::Write {
+        path: path.display().to_string(),
+        reason: e.to_string(),
+    }
+}
+
+/// Writes every `--out` file and the plot; returns the paths written.
+fn write_outputs(
+    args: &RunArgs,
+    waveforms: &Waveforms,
+    top: &str,
+    stop: f64,
+    panels: &[Vec<String>],
+) -> Result<Vec<String>, Report> {
+    let mut written = Vec::new();
+    for path in &args.outputs {
+        let is_vcd = path
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("vcd"));
+        write_atomically(path, |w| {
+            if is_vcd {
+                write_vcd(w, waveforms, top)
+            } else {
+                write_csv(w, waveforms)
+            }
+        })
+        .map_err(|e| write_error(path, e))?;
+        written.push(path.display().to_string());
+    }
+    if let Some(path) = &args.plot {
+        let groups = if panels.is_empty() {
+            default_groups(waveforms)
+        } else {
+            named_groups(waveforms, panels).map_err(|name| CliError::UnknownPanelName {
+                name,
+                recorded: waveforms
+                    .columns
+                    .iter()
+                    .map(|c| c.name.as_str())
+                    .collect::<Vec<_>>()
+                    .join(", "),
+            })?
+        };
+        let title = format!("{top} (stop {})", format_time(stop));
+        let temp = temp_path(path);
+        plot_waveforms(&temp, &title, waveforms, &groups).inspect_err(|_| {
+            let _ = std::fs::remove_file(&temp);
+        })?;
+        commit(&temp, path).map_err(|e| write_error(path, e))?;
+        written.push(path.display().to_string());
+    }
+    Ok(written)
+}
+
+/// The closing line: simulated and wall time, steps, Newton iterations, files written.
+pub fn summary(top: &str, stop: f64, result: &SimResult, wall: f64, written: &[String]) -> String {
+    let ended = match result.outcome {
+        Outcome::Finished => format!("simulated {top} to {}", format_time(stop)),
+        Outcome::Stopped { time } => format!(
+            "simulated {top} to {} (stopped by the design)",
+            format_time(time)
+        ),
+        Outcome::Failed { time } => format!("simulated {top} to {} (FAILED)", format_time(time)),
+    };
+    let files = if written.is_empty() {
+        String::new()
+    } else {
+        format!("; wrote {}", written.join(", "))
+    };
+    format!(
+        "{ended} in {wall:.2} s wall time: {} accepted steps, {} Newton iterations{files}",
+        result.stats.accepted_steps, result.stats.newton_iterations
+    )
+}
+
+/// Every counter of [`SimStats`], one per line.
+pub fn stats_table(stats: &SimStats) -> String {
+    let rows = [
+        ("accepted steps", stats.accepted_steps),
+        ("rejected steps", stats.rejected_steps),
+        ("Newton iterations", stats.newton_iterations),
+        ("factorizations", stats.factorizations),
+        ("events", stats.events),
+        ("delta cycles", stats.delta_cycles),
+        ("breaks", stats.breaks),
+    ];
+    rows.iter()
+        .map(|(name, n)| format!("  {name:<18} {n:>10}\n"))
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn output_paths_are_checked_by_extension() {
+        assert!(output_path("a.csv").is_ok() && output_path("dir/A.VCD").is_ok());
+        assert!(output_path("a.txt").unwrap_err().contains(".csv or .vcd"));
+        assert!(plot_path("p.png").is_ok() && plot_path("p").is_err());
+        assert!(positive_number("1e-6").is_ok());
+        assert!(positive_number("0").is_err() && positive_number("x").is_err());
+    }
+
+    #[test]
+    fn panel_names_group_and_join_the_probes() {
+        let groups = panel_groups(&["VREF, vfb".into(), "i_motor".into(), " ".into()]);
+        assert_eq!(groups, [vec!["vref", "vfb"], vec!["i_motor"]]);
+        assert_eq!(
+            probe_list(&["vfb".into(), "OV".into()], &groups),
+            ["vfb", "ov", "vref", "i_motor"]
+        );
+        assert!(probe_list(&[], &groups).is_empty());
+    }
+
+    fn args(outputs: Vec<PathBuf>, plot: Option<PathBuf>) -> RunArgs {
+        RunArgs {
+            design: DesignArgs {
+                paths: vec![],
+                top: None,
+                generics: vec![],
+                params: None,
+            },
+            stop: None,
+            outputs,
+            plot,
+            reltol: 1e-3,
+            abstol: None,
+            max_step: None,
+            probe: vec![],
+            panel: vec![],
+            stats: false,
+        }
+    }
+
+    #[test]
+    fn writes_every_output_and_names_them() {
+        let dir = tempfile::tempdir().unwrap();
+        let (csv, vcd, svg) = (
+            dir.path().join("w.csv"),
+            dir.path().join("w.vcd"),
+            dir.path().join("w.svg"),
+        );
+        let wf = crate::output::csv::tests::synthetic();
+        let a = args(vec![csv.clone(), vcd.clone()], Some(svg.clone()));
+        let written = write_outputs(&a, &wf, "tb", 1.0, &[]).unwrap();
+        assert_eq!(written.len(), 3);
+        assert!(
+            std::fs::read_to_string(&csv)
+                .unwrap()
+                .starts_with("time,vout,")
+        );
+        assert!(
+            std::fs::read_to_string(&vcd)
+                .unwrap()
+                .contains("$scope module tb $end")
+        );
+        assert!(
+            std::fs::read_to_string(&svg)
+                .unwrap()
+                .contains("tb (stop 1 s)")
+        );
+        // Only the three targets: no temporary left behind.
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 3);
+    }
+
+    #[test]
+    fn an_unknown_panel_name_lists_what_was_recorded_and_keeps_the_old_plot() {
+        let dir = tempfile::tempdir().unwrap();
+        let svg = dir.path().join("w.svg");
+        std::fs::write(&svg, "old").unwrap();
+        let wf = crate::output::csv::tests::synthetic();
+        let a = args(vec![], Some(svg.clone()));
+        let err = write_outputs(&a, &wf, "tb", 1.0, &[vec!["vot".into()]]).unwrap_err();
+        let text = format!("{err:?}");
+        assert!(
+            text.contains("vot") && text.contains("vout, dut.u_ic.ov"),
+            "{text}"
+        );
+        assert_eq!(std::fs::read_to_string(&svg).unwrap(), "old");
+        let missing_dir = args(vec![dir.path().join("no/dir/w.csv")], None);
+        let err = write_outputs(&missing_dir, &wf, "tb", 1.0, &[]).unwrap_err();
+        assert!(format!("{err:?}").contains("cannot write"));
+    }
+
+    #[test]
+    fn summary_and_stats_name_every_figure() {
+        let result = SimResult {
+            waveforms: Waveforms::default(),
+            reports: vec![],
+            outcome: Outcome::Finished,
+            stats: SimStats {
+                accepted_steps: 1234,
+                newton_iterations: 5678,
+                breaks: 3,
+                ..SimStats::default()
+            },
+        };
+        let line = summary("tb", 6.0, &result, 0.5, &["a.csv".into(), "p.svg".into()]);
+        assert_eq!(
+            line,
+            "simulated tb to 6 s in 0.50 s wall time: 1234 accepted steps, 5678 Newton iterations; wrote a.csv, p.svg"
+        );
+        let table = stats_table(&result.stats);
+        assert_eq!(table.lines().count(), 7);
+        assert!(table.contains("breaks") && table.contains("5678"));
+    }
+}

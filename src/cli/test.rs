@@ -1,0 +1,359 @@
+//! `vams test`: finds the testbenches under the given paths, runs each to its stop time on
+//! N threads, prints one line per testbench in name order and a closing count, and optionally
+//! writes JUnit XML. A testbench fails on any report of severity error or failure, and on any
+//! error that keeps it from running to its end.
+
+pub mod discover;
+pub mod junit;
+pub mod parallel;
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use clap::Args;
+use miette::Report;
+
+use crate::ast::DesignFile;
+use crate::elaborate::{ElabOptions, elaborate};
+use crate::kernel::{Severity, SimError, SimOptions, SimResult, simulate};
+use crate::output::atomic::write_atomically;
+use crate::source::{FileId, SourceMap};
+
+use super::error::CliError;
+use super::load::{Loaded, load};
+use super::render::{format_report, render, render_located, render_sim_error};
+use super::stop::stop_comment;
+use super::time::parse_positive_time;
+use discover::{Testbench, discover};
+use junit::{Case, Problem, junit_xml};
+use parallel::run_in_order;
+
+/// Arguments of `vams test`.
+#[derive(Debug, Args)]
+#[command(
+    after_help = "A testbench is an entity without ports whose name starts with tb_ or test_. It runs
+to the time of the comment `-- vams: stop TIME` in its file, else to --stop.
+
+Examples:
+  vams test
+  vams test models/ --filter tracking --junit results.xml -j 2"
+)]
+pub struct TestArgs {
+    /// Files or directories to search; default: tests/ and models/ (those that exist).
+    #[arg(value_name = "PATHS")]
+    pub paths: Vec<PathBuf>,
+    /// Run only the testbenches whose name contains TEXT.
+    #[arg(long, value_name = "TEXT")]
+    pub filter: Option<String>,
+    /// Write the results as JUnit XML to FILE.
+    #[arg(long, value_name = "FILE")]
+    pub junit: Option<PathBuf>,
+    /// Stop time for testbenches whose file has no `-- vams: stop` comment.
+    #[arg(long, value_name = "TIME", value_parser = parse_positive_time)]
+    pub stop: Option<f64>,
+    /// Testbenches run at once; default: the number of CPUs.
+    #[arg(short = 'j', long = "jobs", value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1024))]
+    pub jobs: Option<u32>,
+}
+
+/// How one testbench went.
+#[derive(Clone, Debug)]
+pub struct Verdict {
+    pub seconds: f64,
+    /// `None` when it passed; else the kind and the text (report lines or diagnostics).
+    pub problem: Option<(Problem, String)>,
+}
+
+/// The search paths: those given, or those of `tests/` and `models/` that exist.
+pub fn default_paths(given: &[PathBuf], root: &Path) -> Vec<PathBuf> {
+    if !given.is_empty() {
+        return given.to_vec();
+    }
+    ["tests", "models"]
+        .iter()
+        .map(|d| root.join(d))
+        .filter(|p| p.is_dir())
+        .map(|p| p.strip_prefix(root).map(Path::to_path_buf).unwrap_or(p))
+        .collect()
+}
+
+/// Runs one testbench to its end and judges it: `None` when it passed.
+fn run_bench(
+    loaded: &Loaded,
+    files: &[(FileId, DesignFile)],
+    bench: &Testbench,
+    default_stop: Option<f64>,
+) -> Option<(Problem, String)> {
+    let sources = &loaded.sources;
+    if let Some((_, errors)) = loaded.syntax_errors.iter().find(|(f, _)| *f == bench.file) {
+        let text: String = errors.iter().map(|e| render_located(e, sources)).collect();
+        return Some((Problem::Error, text));
+    }
+    let stop = match (stop_comment(sources, bench.file), default_stop) {
+        (Some(Ok(t)), _) | (None, Some(t)) => t,
+        (Some(Err(e)), _) => return Some((Problem::Error, render_located(&e, sources))),
+        (None, None) => {
+            let e = CliError::NoStop {
+                top: bench.name.clone(),
+            };
+            return Some((Problem::Error, render(&e)));
+        }
+    };
+    let options = ElabOptions {
+        top: bench.name.clone(),
+        generics: Vec::new(),
+    };
+    let design = match elaborate(sources, files, &options) {
+        Ok(d) => d,
+        Err(errors) => {
+            let text = errors.iter().map(|e| render_located(e, sources)).collect();
+            return Some((Problem::Error, text));
+        }
+    };
+    let sim = SimOptions {
+        stop,
+        ..SimOptions::default()
+    };
+    judge(simulate(&design, &sim, &mut |_| {}), sources)
+}
+
+/// The verdict on a finished (or failed) run: reports of severity error or failure, or the
+/// simulation error; `None` when it passed.
+pub fn judge(run: Result<SimResult, SimError>, sources: &SourceMap) -> Option<(Problem, String)> {
+    match run {
+        Err(e) => Some((Problem::Error, render_sim_error(&e, sources))),
+        Ok(result) => {
+            let failing: Vec<String> = result
+                .reports
+                .iter()
+                .filter(|r| r.severity >= Severity::Error)
+                .map(|r| format_report(r, sources))
+                .collect();
+            (!failing.is_empty()).then(|| (Problem::Failure, failing.join("\n")))
+        }
+    }
+}
+
+/// The one-line gist of a failure text: the message of its first rendered diagnostic (the
+/// line miette marks with `×`), else its first non-empty line.
+pub fn headline(text: &str) -> String {
+    let lines = || text.lines().map(str::trim).filter(|l| !l.is_empty());
+    lines()
+        .find_map(|l| l.strip_prefix('×'))
+        .map(|l| l.trim().to_string())
+        .or_else(|| lines().next().map(str::to_string))
+        .unwrap_or_default()
+}
+
+/// The line for one testbench and its indented failure text.
+pub fn verdict_lines(name: &str, verdict: &Verdict) -> String {
+    match &verdict.problem {
+        None => format!("test {name} ... ok ({:.2} s)\n", verdict.seconds),
+        Some((_, text)) => {
+            let mut out = format!("test {name} ... FAILED ({:.2} s)\n", verdict.seconds);
+            for line in text.lines() {
+                out.push_str("    ");
+                out.push_str(line);
+                out.push('\n');
+            }
+            out
+        }
+    }
+}
+
+/// Runs `vams test`.
+pub fn run(args: &TestArgs) -> Result<(), Report> {
+    let started = Instant::now();
+    let root = std::env::current_dir().unwrap_or_else(|_| PathBuf::from("."));
+    let paths = default_paths(&args.paths, &root);
+    let loaded = load(&paths)?;
+    let benches = discover(&loaded, args.filter.as_deref());
+    // Files that do not parse are left out of the compilation; their testbenches fail.
+    for (id, errors) in &loaded.syntax_errors {
+        if !benches.iter().any(|b| b.file == *id) {
+            let name = &loaded.sources.file(*id).name;
+            eprintln!(
+                "warning: skipping {name}: {} syntax error(s) (`vams check {name}` shows them)",
+                errors.len()
+            );
+        }
+    }
+    if benches.is_empty() {
+        let shown: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
+        return Err(CliError::NoTestbench {
+            paths: if shown.is_empty() {
+                "the current directory".into()
+            } else {
+                shown.join(", ")
+            },
+            filter: match &args.filter {
+                Some(f) => format!(" and, with --filter, contains `{f}`"),
+                None => String::new(),
+            },
+        }
+        .into());
+    }
+    let files: Vec<(FileId, DesignFile)> = loaded
+        .files
+        .iter()
+        .filter(|(id, _)| !loaded.has_errors(*id))
+        .cloned()
+        .collect();
+    let jobs = args
+        .jobs
+        .map(|j| j as usize)
+        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
+    println!(
+        "running {} testbench(es) on {jobs} thread(s)",
+        benches.len()
+    );
+    let mut cases = Vec::with_capacity(benches.len());
+    run_in_order(
+        &benches,
+        jobs,
+        |bench| {
+            let start = Instant::now();
+            let problem = run_bench(&loaded, &files, bench, args.stop);
+            Verdict {
+                seconds: start.elapsed().as_secs_f64(),
+                problem,
+            }
+        },
+        |k, result| {
+            let bench = &benches[k];
+            let verdict = result.unwrap_or_else(|panic| Verdict {
+                seconds: 0.0,
+                problem: Some((
+                    Problem::Error,
+                    format!("internal error: vams panicked: {panic}"),
+                )),
+            });
+            print!("{}", verdict_lines(&bench.name, &verdict));
+            cases.push(Case {
+                name: bench.name.clone(),
+                classname: loaded.sources.file(bench.file).name.clone(),
+                seconds: verdict.seconds,
+                problem: verdict
+                    .problem
+                    .map(|(kind, text)| (kind, headline(&text), text)),
+            });
+        },
+    );
+    let failed = cases.iter().filter(|c| c.problem.is_some()).count();
+    let total_seconds = started.elapsed().as_secs_f64();
+    println!(
+        "\n{} passed, {failed} failed ({total_seconds:.2} s)",
+        cases.len() - failed
+    );
+    if let Some(path) = &args.junit {
+        let xml = junit_xml(&cases, total_seconds);
+        write_atomically(path, |w| std::io::Write::write_all(w, xml.as_bytes())).map_err(|e| {
+            CliError::Write {
+                path: path.display().to_string(),
+                reason: e.to_string(),
+            }
+        })?;
+    }
+    if failed > 0 {
+        return Err(CliError::TestsFailed {
+            failed,
+            total: cases.len(),
+        }
+        .into());
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::kernel::Outcome;
+
+    #[test]
+    fn lines_for_passing_and_failing_testbenches() {
+        let ok = Verdict {
+            seconds: 0.081,
+            problem: None,
+        };
+        assert_eq!(
+            verdict_lines("tb_tracking", &ok),
+            "test tb_tracking ... ok (0.08 s)\n"
+        );
+        let bad = Verdict {
+            seconds: 0.1,
+            problem: Some((Problem::Failure, "600 ms: error: a\n2 s: error: b".into())),
+        };
+        assert_eq!(
+            verdict_lines("tb_x", &bad),
+            "test tb_x ... FAILED (0.10 s)\n    600 ms: error: a\n    2 s: error: b\n"
+        );
+    }
+
+    fn result(severities: &[Severity], outcome: Outcome) -> SimResult {
+        SimResult {
+            waveforms: Default::default(),
+            reports: severities
+                .iter()
+                .enumerate()
+                .map(|(k, &severity)| crate::kernel::Report {
+                    time: 1e-3 * (k + 1) as f64,
+                    severity,
+                    message: format!("report {k}"),
+                    process: "check".into(),
+                    span: Default::default(),
+                })
+                .collect(),
+            outcome,
+            stats: Default::default(),
+        }
+    }
+
+    #[test]
+    fn errors_and_failures_fail_notes_and_warnings_do_not() {
+        let sources = SourceMap::new();
+        let quiet = result(&[Severity::Note, Severity::Warning], Outcome::Finished);
+        assert_eq!(judge(Ok(quiet), &sources), None);
+        let noisy = result(
+            &[Severity::Note, Severity::Error, Severity::Failure],
+            Outcome::Failed { time: 3e-3 },
+        );
+        let (kind, text) = judge(Ok(noisy), &sources).unwrap();
+        assert_eq!(kind, Problem::Failure);
+        assert_eq!(
+            text,
+            "2 ms: error: report 1 (process check)\n3 ms: failure: report 2 (process check)"
+        );
+        let broken = Err(SimError::Analog { errors: vec![] });
+        let (kind, text) = judge(broken, &sources).unwrap();
+        assert_eq!(kind, Problem::Error);
+        assert!(text.contains("vams::sim::analog"), "{text}");
+    }
+
+    #[test]
+    fn headline_is_the_diagnostic_message_or_the_first_line() {
+        assert_eq!(
+            headline("vams::cli::no_stop\n\n  × no stop time for `tb`\n  help: pass --stop"),
+            "no stop time for `tb`"
+        );
+        assert_eq!(
+            headline("\n1 ms: error: a\n2 ms: error: b"),
+            "1 ms: error: a"
+        );
+        assert_eq!(headline(""), "");
+    }
+
+    #[test]
+    fn default_paths_are_the_existing_of_tests_and_models() {
+        let dir = tempfile::tempdir().unwrap();
+        assert!(default_paths(&[], dir.path()).is_empty());
+        std::fs::create_dir(dir.path().join("models")).unwrap();
+        assert_eq!(default_paths(&[], dir.path()), [PathBuf::from("models")]);
+        std::fs::create_dir(dir.path().join("tests")).unwrap();
+        assert_eq!(
+            default_paths(&[], dir.path()),
+            [PathBuf::from("tests"), PathBuf::from("models")]
+        );
+        let given = [PathBuf::from("x.vhd")];
+        assert_eq!(default_paths(&given, dir.path()), given);
+    }
+}
