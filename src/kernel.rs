@@ -3,15 +3,37 @@
 //! **Takes** a [`Design`] and [`SimOptions`]; **gives** a [`SimResult`]: the recorded
 //! [`Waveforms`], every report and assertion, how the run ended, and statistics.
 //!
-//! May use `design`, `analog`, `solver`, `waveform`, `source`. Never looks at the AST.
+//! Submodules: `signals` (drivers, projected waveforms, resolution), `process` (the
+//! instruction interpreter), `eval`/`ops`/`image` (expressions to values), `events` (delta
+//! cycles), `cycle` (the mixed-signal loop and the quiescent point), `record` (probes and
+//! output rows), `analog_model` (what the loop needs from the analog system).
+//!
+//! May use `design`, `analog`, `solver`, `waveform`, `source`. Never looks at the AST. Designs
+//! without quantities never build an analog system.
 
+use crate::analog::AnalogSystem;
 use crate::design::Design;
 use crate::source::Span;
 use crate::waveform::Waveforms;
 
+mod analog_model;
+mod cycle;
 mod error;
+mod eval;
+mod events;
+mod image;
+mod ops;
+mod process;
+mod record;
+mod signals;
+
+#[cfg(test)]
+mod tests;
 
 pub use error::SimError;
+
+use cycle::Simulation;
+use record::Recorder;
 
 /// How to run.
 #[derive(Clone, Debug)]
@@ -96,8 +118,9 @@ pub fn simulate(
     options: &SimOptions,
     on_report: &mut dyn FnMut(&Report),
 ) -> Result<SimResult, SimError> {
-    let _ = (design, options, on_report);
-    todo!("simulate")
+    let recorder = Recorder::new(design, &options.probes)?;
+    let analog = analog_system(design)?;
+    Simulation::start(design, options, analog, on_report)?.run(recorder, on_report)
 }
 
 /// The quiescent point after initialisation (processes run to their first wait, breaks
@@ -106,6 +129,17 @@ pub fn operating_point(
     design: &Design,
     options: &SimOptions,
 ) -> Result<Vec<(String, f64)>, SimError> {
-    let _ = (design, options);
-    todo!("operating_point")
+    let analog = analog_system(design)?;
+    let sim = Simulation::start(design, options, analog, &mut |_| {})?;
+    Ok(sim.operating_point())
+}
+
+/// The analog system, or `None` for a design without quantities.
+fn analog_system(design: &Design) -> Result<Option<AnalogSystem>, SimError> {
+    if design.quantities.is_empty() {
+        return Ok(None);
+    }
+    AnalogSystem::new(design)
+        .map(Some)
+        .map_err(|errors| SimError::Analog { errors })
 }

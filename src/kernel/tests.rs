@@ -1,0 +1,4 @@
+//! Kernel tests on hand-built designs: the event kernel on digital designs, the mixed-signal
+//! cycle on small analog systems with closed-form solutions.
+
+mod digital;
