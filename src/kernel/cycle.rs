@@ -249,6 +249,10 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                 false => target,
             };
         }
+        // Digital-only runs end with the last event: close the record at the end time.
+        if recorder.last_time().is_some_and(|last| last < t) {
+            recorder.record(t, &self.values, &self.kernel.signals.states);
+        }
         let stats = self.stats();
         Ok(SimResult {
             waveforms: recorder.waveforms,

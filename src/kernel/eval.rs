@@ -192,10 +192,7 @@ mod tests {
             Ok(Value::Time(1.5e-3))
         );
         assert_eq!(run(&bin(Div, t(1e-3), t(2.5e-4))), Ok(Value::Integer(4)));
-        assert_eq!(
-            run(&bin(Sub, Expr::Now, t(1e-3))),
-            Ok(Value::Time(1e-3))
-        );
+        assert_eq!(run(&bin(Sub, Expr::Now, t(1e-3))), Ok(Value::Time(1e-3)));
         assert_eq!(
             run(&bin(Pow, Expr::real(2.0), int(-2))),
             Ok(Value::Real(0.25))

@@ -29,6 +29,8 @@ pub(crate) struct EventKernel<'d> {
     waveform: Vec<(Value, f64)>,
     resume: Vec<usize>,
     last_process: usize,
+    /// Time of the last simulation cycle (initialisation counts as one at 0).
+    last_cycle: f64,
     /// Signal events and delta cycles so far.
     pub events: usize,
     pub delta_cycles: usize,
@@ -48,6 +50,7 @@ impl<'d> EventKernel<'d> {
             waveform: Vec::new(),
             resume: Vec::with_capacity(design.processes.len()),
             last_process: 0,
+            last_cycle: 0.0,
             events: 0,
             delta_cycles: 0,
             breaks_total: 0,
@@ -84,10 +87,12 @@ impl<'d> EventKernel<'d> {
         analog: &AnalogView,
         on_report: &mut dyn FnMut(&Report),
     ) -> Result<Option<Outcome>, SimError> {
-        for cycle in 0..=DELTA_LIMIT {
-            if cycle > 0 {
+        for _ in 0..=DELTA_LIMIT {
+            // A cycle that does not advance time is a delta cycle (LRM 14.7.5.1).
+            if now == self.last_cycle {
                 self.delta_cycles += 1;
             }
+            self.last_cycle = now;
             if let Some(outcome) = self.cycle(now, analog, on_report)? {
                 return Ok(Some(outcome));
             }

@@ -33,11 +33,11 @@ fn value_text(v: &Value) -> String {
 }
 
 pub(crate) fn real_image(x: f64) -> String {
-    let s = format!("{x}");
-    if s.len() > 18 && x != 0.0 && (x.abs() >= 1e15 || x.abs() < 1e-5) {
+    if x.is_finite() && x != 0.0 && (x.abs() >= 1e15 || x.abs() < 1e-4) {
         // `{}` never uses exponents: 1e-7 would print as 0.0000001 and 1e20 with 20 digits.
         return format!("{x:e}");
     }
+    let s = format!("{x}");
     if s.contains(['.', 'e', 'i', 'N']) {
         s
     } else {

@@ -304,10 +304,7 @@ pub(crate) fn builtin(f: Builtin, args: &[Value]) -> Result<Value, EvalError> {
         return match args[0] {
             Value::Integer(i) => Ok(Value::Real(i as f64)),
             Value::Real(x) => Ok(Value::Real(x)),
-            ref v => Err(EvalError::new(
-                format!("real() of {}", kind(v)),
-                TYPE_HELP,
-            )),
+            ref v => Err(EvalError::new(format!("real() of {}", kind(v)), TYPE_HELP)),
         };
     }
     let x = real_arg(f, &args[0])?;
@@ -375,9 +372,6 @@ fn real_arg(f: Builtin, v: &Value) -> Result<f64, EvalError> {
     match v {
         Value::Real(x) => Ok(*x),
         Value::Integer(i) => Ok(*i as f64),
-        v => Err(EvalError::new(
-            format!("{f:?} of {}", kind(v)),
-            TYPE_HELP,
-        )),
+        v => Err(EvalError::new(format!("{f:?} of {}", kind(v)), TYPE_HELP)),
     }
 }

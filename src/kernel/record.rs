@@ -89,7 +89,9 @@ fn default_probes(design: &Design) -> Vec<Probe> {
         .signals
         .iter()
         .enumerate()
-        .filter(|(_, s)| s.kind == SignalKind::Explicit && !matches!(s.ty, Type::String | Type::Array { .. }))
+        .filter(|(_, s)| {
+            s.kind == SignalKind::Explicit && !matches!(s.ty, Type::String | Type::Array { .. })
+        })
         .map(|(i, _)| Probe::Signal(SignalId(i as u32)));
     quantities.chain(signals).collect()
 }
@@ -136,7 +138,9 @@ fn edit_distance(a: &str, b: &str) -> usize {
         let mut diag = row[0];
         row[0] = i + 1;
         for (j, &cb) in b.iter().enumerate() {
-            let next = (diag + usize::from(ca != cb)).min(row[j] + 1).min(row[j + 1] + 1);
+            let next = (diag + usize::from(ca != cb))
+                .min(row[j] + 1)
+                .min(row[j + 1] + 1);
             diag = row[j + 1];
             row[j + 1] = next;
         }

@@ -100,7 +100,11 @@ impl Signals {
                 }
             }
         }
-        let resolved: Vec<bool> = design.signals.iter().map(|s| is_std_ulogic(&s.ty)).collect();
+        let resolved: Vec<bool> = design
+            .signals
+            .iter()
+            .map(|s| is_std_ulogic(&s.ty))
+            .collect();
         for (s, ds) in by_signal.iter().enumerate() {
             if ds.len() > 1 && !resolved[s] {
                 let mut processes: Vec<&str> = index
@@ -285,7 +289,7 @@ const RESOLUTION: [[u32; 9]; 9] = [
     [0, 1, 1, 3, 3, 3, 3, 3, 1],
     [0, 1, 2, 3, 4, 5, 6, 7, 1],
     [0, 1, 2, 3, 5, 5, 5, 5, 1],
-    [0, 1, 2, 3, 6, 5, 6, 7, 1],
+    [0, 1, 2, 3, 6, 5, 6, 5, 1],
     [0, 1, 2, 3, 7, 5, 5, 7, 1],
     [0, 1, 1, 1, 1, 1, 1, 1, 1],
 ];
