@@ -395,3 +395,95 @@ fn thermostat_switches_at_the_analytic_times_with_the_analog_system() {
     let d = thermostat_design();
     check_thermostat(&simulate(&d, &thermostat_options(), &mut |_| {}).expect("runs"));
 }
+
+// ---- Operating point and failures -----------------------------------------------------------
+
+#[test]
+fn the_operating_point_holds_the_initial_breaks() {
+    let d = thermostat_design();
+    let sim = Simulation::start(
+        &d,
+        &thermostat_options(),
+        Some(ExprDae::new(&d)),
+        &mut |_| {},
+    )
+    .expect("initialises");
+    assert_eq!(
+        sim.operating_point(),
+        vec![("temp".to_string(), T0), ("heater".to_string(), 1.0)]
+    );
+}
+
+/// `y'dot == y * y` from `y = 1` blows up at `t = 1`: the solver's failure names `y`.
+#[test]
+fn a_solver_failure_names_the_unknown_and_the_time() {
+    let mut d = Design::default();
+    let y = quantity(&mut d, "y");
+    equation(&mut d, bin(Sub, dot(y), bin(Mul, q(y), q(y))));
+    process(
+        &mut d,
+        "initial",
+        vec![],
+        vec![brk(vec![(y, real(1.0))]), Instr::Halt],
+    );
+    let options = SimOptions {
+        stop: 2.0,
+        ..SimOptions::default()
+    };
+    let recorder = Recorder::new(&d, &[]).expect("probes");
+    let result = Simulation::start(&d, &options, Some(ExprDae::new(&d)), &mut |_| {})
+        .and_then(|sim| sim.run(recorder, &mut |_| {}));
+    match result {
+        Err(crate::kernel::SimError::Solve { time, unknowns, .. }) => {
+            assert!((0.9..=1.0).contains(&time), "failed at {time}");
+            assert_eq!(unknowns, vec!["y".to_string()]);
+        }
+        other => panic!(
+            "expected a solver failure, got {:?}",
+            other.map(|r| r.outcome)
+        ),
+    }
+}
+
+/// A break that moves a quantity across a threshold is a crossing the integrator cannot see:
+/// the `'above` signal must still change, at the break's time.
+#[test]
+fn a_break_across_a_threshold_changes_the_above_signal() {
+    let mut d = Design::default();
+    let x = quantity(&mut d, "x");
+    equation(&mut d, bin(Sub, dot(x), real(1.0)));
+    let over = above(&mut d, x, 3.0);
+    process(
+        &mut d,
+        "initial",
+        vec![],
+        vec![brk(vec![(x, real(0.0))]), Instr::Halt],
+    );
+    process(
+        &mut d,
+        "jump",
+        vec![],
+        vec![wait_for(1.0), brk(vec![(x, real(5.0))]), Instr::Halt],
+    );
+    process(
+        &mut d,
+        "watch",
+        vec![],
+        vec![
+            wait_until(sig(over), None),
+            report("over"),
+            wait_until(not(sig(over)), None),
+            report("under"),
+            Instr::Halt,
+        ],
+    );
+    let options = SimOptions {
+        stop: 2.0,
+        ..SimOptions::default()
+    };
+    let r = run_with(&d, &options, ExprDae::new(&d));
+    assert_eq!(report_times(&r, "over"), vec![1.0]);
+    assert!(report_times(&r, "under").is_empty());
+    let x_end = r.waveforms.value_at("x", 2.0).expect("x recorded");
+    assert!((x_end - 6.0).abs() < 1e-9, "x(2) = {x_end}");
+}
