@@ -107,8 +107,13 @@ pub(crate) fn offset(ty: &Type, i: i64, len: usize) -> Result<usize, EvalError> 
     } else {
         (right, left)
     };
-    let pos = if ascending { i - left } else { left - i };
-    if i < lo || i > hi || pos < 0 || pos as usize >= len {
+    // i128: no overflow whatever index a model computes.
+    let pos = if ascending {
+        i as i128 - left as i128
+    } else {
+        left as i128 - i as i128
+    };
+    if i < lo || i > hi || pos < 0 || pos >= len as i128 {
         let dir = if ascending { "to" } else { "downto" };
         return Err(EvalError::new(
             format!("index {i} is outside the bounds {left} {dir} {right}"),
@@ -249,5 +254,7 @@ mod tests {
         assert_eq!(run(&at(5)), Ok(Value::Integer(50)));
         let err = run(&at(8)).unwrap_err();
         assert!(err.message.contains("7 downto 5"), "{}", err.message);
+        assert!(run(&at(i64::MIN)).is_err());
+        assert!(run(&at(i64::MAX)).is_err());
     }
 }

@@ -375,3 +375,57 @@ fn real_arg(f: Builtin, v: &Value) -> Result<f64, EvalError> {
         v => Err(EvalError::new(format!("{f:?} of {}", kind(v)), TYPE_HELP)),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn value() -> impl Strategy<Value = Value> {
+        prop_oneof![
+            any::<f64>().prop_map(Value::Real),
+            any::<i64>().prop_map(Value::Integer),
+            any::<bool>().prop_map(Value::Boolean),
+            any::<f64>().prop_map(Value::Time),
+            (0u32..300).prop_map(Value::Enum),
+            "[a-z]{0,4}".prop_map(Value::String),
+            proptest::collection::vec(any::<bool>().prop_map(Value::Boolean), 0..3)
+                .prop_map(Value::Array),
+        ]
+    }
+
+    const OPS: [BinaryOp; 20] = [
+        BinaryOp::Add,
+        BinaryOp::Sub,
+        BinaryOp::Mul,
+        BinaryOp::Div,
+        BinaryOp::Pow,
+        BinaryOp::Mod,
+        BinaryOp::Rem,
+        BinaryOp::Eq,
+        BinaryOp::Ne,
+        BinaryOp::Lt,
+        BinaryOp::Le,
+        BinaryOp::Gt,
+        BinaryOp::Ge,
+        BinaryOp::And,
+        BinaryOp::Or,
+        BinaryOp::Nand,
+        BinaryOp::Nor,
+        BinaryOp::Xor,
+        BinaryOp::Xnor,
+        BinaryOp::Concat,
+    ];
+
+    proptest! {
+        /// Whatever the operands, an operator gives a value or an error, never a panic.
+        #[test]
+        fn operators_never_panic(op in 0..OPS.len(), a in value(), b in value()) {
+            let _ = binary(OPS[op], a.clone(), b);
+            for u in [UnaryOp::Neg, UnaryOp::Plus, UnaryOp::Abs, UnaryOp::Not] {
+                let _ = unary(u, a.clone());
+            }
+            let _ = builtin(Builtin::ToInteger, &[a]);
+        }
+    }
+}
