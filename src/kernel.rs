@@ -26,6 +26,7 @@ mod ops;
 mod process;
 mod record;
 mod signals;
+mod solve_error;
 
 #[cfg(test)]
 mod tests;
@@ -58,6 +59,31 @@ impl Default for SimOptions {
             max_step: None,
             probes: Vec::new(),
         }
+    }
+}
+
+impl SimOptions {
+    /// Rejects a stop time or tolerances no run can use.
+    pub fn validate(&self) -> Result<(), SimError> {
+        let o = self;
+        let bad = |message: &str| {
+            Err(SimError::BadOption {
+                message: message.to_string(),
+            })
+        };
+        if !(o.stop.is_finite() && o.stop >= 0.0) {
+            return bad("the stop time must be finite and not negative");
+        }
+        if !(o.reltol.is_finite() && o.reltol > 0.0) {
+            return bad("reltol must be a positive number");
+        }
+        if o.abstol.is_some_and(|a| !(a.is_finite() && a > 0.0)) {
+            return bad("abstol must be a positive number");
+        }
+        if o.max_step.is_some_and(|h| h.is_nan() || h <= 0.0) {
+            return bad("the maximum step must be positive");
+        }
+        Ok(())
     }
 }
 

@@ -16,6 +16,7 @@ use super::error::SimError;
 use super::eval::{Env, eval};
 use super::events::{AnalogView, EventKernel};
 use super::record::Recorder;
+use super::solve_error::solve_error;
 use super::{Outcome, Report, SimOptions, SimResult, SimStats};
 
 /// Absolute tolerance of unknowns without a tolerance group (when `--abstol` is not given).
@@ -56,7 +57,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         analog: Option<A>,
         on_report: &mut dyn FnMut(&Report),
     ) -> Result<Self, SimError> {
-        check_options(options)?;
+        options.validate()?;
         let mut kernel = EventKernel::new(design)?;
         let values: Vec<f64> = design
             .quantities
@@ -398,68 +399,4 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
 /// A signal's value as the equations see it (booleans and enumerations as positions).
 fn number(v: &Value) -> f64 {
     v.as_f64().unwrap_or(f64::NAN)
-}
-
-fn check_options(o: &SimOptions) -> Result<(), SimError> {
-    let bad = |message: &str| {
-        Err(SimError::BadOption {
-            message: message.to_string(),
-        })
-    };
-    if !(o.stop.is_finite() && o.stop >= 0.0) {
-        return bad("the stop time must be finite and not negative");
-    }
-    if !(o.reltol.is_finite() && o.reltol > 0.0) {
-        return bad("reltol must be a positive number");
-    }
-    if o.abstol.is_some_and(|a| !(a.is_finite() && a > 0.0)) {
-        return bad("abstol must be a positive number");
-    }
-    if o.max_step.is_some_and(|h| h.is_nan() || h <= 0.0) {
-        return bad("the maximum step must be positive");
-    }
-    Ok(())
-}
-
-/// Maps a solver failure's indices to names (and the first named quantity's span).
-fn solve_error(
-    cause: SolveError,
-    now: f64,
-    names: &[String],
-    slots: &[usize],
-    design: &Design,
-) -> SimError {
-    let (time, unknown) = indices(&cause);
-    let unknowns: Vec<String> = unknown
-        .iter()
-        .filter_map(|&i| names.get(i).cloned())
-        .collect();
-    let span = unknown.and_then(|i| {
-        slots
-            .iter()
-            .position(|&s| s == i)
-            .map(|q| design.quantities[q].span)
-    });
-    SimError::Solve {
-        time: time.unwrap_or(now),
-        unknowns,
-        span,
-        cause,
-    }
-}
-
-/// The time and the unknown a solver error points at, if it says.
-fn indices(e: &SolveError) -> (Option<f64>, Option<usize>) {
-    match e {
-        SolveError::StepTooSmall {
-            t, worst_unknown, ..
-        } => (Some(*t), Some(*worst_unknown)),
-        SolveError::SingularJacobian { t, column, .. } => (Some(*t), *column),
-        SolveError::NonFiniteJacobian { t, column, .. } => (Some(*t), Some(*column)),
-        SolveError::NewtonDiverged { t, .. }
-        | SolveError::NonFiniteResidual { t, .. }
-        | SolveError::InvalidTime { t, .. } => (Some(*t), None),
-        SolveError::NoOperatingPoint { last } => indices(last),
-        SolveError::InvalidSystem { .. } => (None, None),
-    }
 }

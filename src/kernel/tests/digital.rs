@@ -469,3 +469,29 @@ fn a_process_that_never_waits_is_stopped() {
         other => panic!("expected a runaway process, got {other:?}"),
     }
 }
+
+#[test]
+fn unusable_options_are_rejected() {
+    let d = Design::default();
+    for options in [
+        SimOptions {
+            stop: f64::NAN,
+            ..SimOptions::default()
+        },
+        SimOptions {
+            reltol: 0.0,
+            ..SimOptions::default()
+        },
+        SimOptions {
+            abstol: Some(-1.0),
+            ..SimOptions::default()
+        },
+        SimOptions {
+            max_step: Some(0.0),
+            ..SimOptions::default()
+        },
+    ] {
+        let r = simulate(&d, &options, &mut |_| {});
+        assert!(matches!(r, Err(SimError::BadOption { .. })), "{options:?}");
+    }
+}
