@@ -3,15 +3,38 @@
 //! **Takes** a [`Design`] and [`SimOptions`]; **gives** a [`SimResult`]: the recorded
 //! [`Waveforms`], every report and assertion, how the run ended, and statistics.
 //!
-//! May use `design`, `analog`, `solver`, `waveform`, `source`. Never looks at the AST.
+//! Submodules: `signals` (drivers, projected waveforms, resolution), `process` (the
+//! instruction interpreter), `eval`/`ops`/`image` (expressions to values), `events` (delta
+//! cycles), `cycle` (the mixed-signal loop and the quiescent point), `record` (probes and
+//! output rows), `analog_model` (what the loop needs from the analog system).
+//!
+//! May use `design`, `analog`, `solver`, `waveform`, `source`. Never looks at the AST. Designs
+//! without quantities never build an analog system.
 
+use crate::analog::AnalogSystem;
 use crate::design::Design;
 use crate::source::Span;
 use crate::waveform::Waveforms;
 
+mod analog_model;
+mod cycle;
 mod error;
+mod eval;
+mod events;
+mod image;
+mod ops;
+mod process;
+mod record;
+mod signals;
+mod solve_error;
+
+#[cfg(test)]
+mod tests;
 
 pub use error::SimError;
+
+use cycle::Simulation;
+use record::Recorder;
 
 /// How to run.
 #[derive(Clone, Debug)]
@@ -36,6 +59,31 @@ impl Default for SimOptions {
             max_step: None,
             probes: Vec::new(),
         }
+    }
+}
+
+impl SimOptions {
+    /// Rejects a stop time or tolerances no run can use.
+    pub fn validate(&self) -> Result<(), SimError> {
+        let o = self;
+        let bad = |message: &str| {
+            Err(SimError::BadOption {
+                message: message.to_string(),
+            })
+        };
+        if !(o.stop.is_finite() && o.stop >= 0.0) {
+            return bad("the stop time must be finite and not negative");
+        }
+        if !(o.reltol.is_finite() && o.reltol > 0.0) {
+            return bad("reltol must be a positive number");
+        }
+        if o.abstol.is_some_and(|a| !(a.is_finite() && a > 0.0)) {
+            return bad("abstol must be a positive number");
+        }
+        if o.max_step.is_some_and(|h| h.is_nan() || h <= 0.0) {
+            return bad("the maximum step must be positive");
+        }
+        Ok(())
     }
 }
 
@@ -96,8 +144,9 @@ pub fn simulate(
     options: &SimOptions,
     on_report: &mut dyn FnMut(&Report),
 ) -> Result<SimResult, SimError> {
-    let _ = (design, options, on_report);
-    todo!("simulate")
+    let recorder = Recorder::new(design, &options.probes)?;
+    let analog = analog_system(design)?;
+    Simulation::start(design, options, analog, on_report)?.run(recorder, on_report)
 }
 
 /// The quiescent point after initialisation (processes run to their first wait, breaks
@@ -106,6 +155,17 @@ pub fn operating_point(
     design: &Design,
     options: &SimOptions,
 ) -> Result<Vec<(String, f64)>, SimError> {
-    let _ = (design, options);
-    todo!("operating_point")
+    let analog = analog_system(design)?;
+    let sim = Simulation::start(design, options, analog, &mut |_| {})?;
+    Ok(sim.operating_point())
+}
+
+/// The analog system, or `None` for a design without quantities.
+fn analog_system(design: &Design) -> Result<Option<AnalogSystem>, SimError> {
+    if design.quantities.is_empty() {
+        return Ok(None);
+    }
+    AnalogSystem::new(design)
+        .map(Some)
+        .map_err(|errors| SimError::Analog { errors })
 }

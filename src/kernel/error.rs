@@ -4,11 +4,139 @@ use miette::Diagnostic;
 use thiserror::Error;
 
 use crate::analog::AnalogError;
+use crate::diagnostics::Located;
+use crate::solver::SolveError;
+use crate::source::Span;
 
 #[derive(Clone, Debug, Error, Diagnostic)]
 pub enum SimError {
     /// The analog system could not be built.
     #[error("the analog system is not well formed")]
     #[diagnostic(code(vams::sim::analog))]
-    Analog { errors: Vec<AnalogError> },
+    Analog {
+        #[related]
+        errors: Vec<AnalogError>,
+    },
+
+    /// A process did something that has no value at run time, e.g. `a(11)` on a
+    /// `bit_vector(0 to 7)`, or `x / 0` on integers.
+    #[error("{message} in process `{process}` at t = {time} s")]
+    #[diagnostic(code(vams::sim::runtime))]
+    Runtime {
+        process: String,
+        time: f64,
+        message: String,
+        #[label("in this process")]
+        span: Span,
+        #[help]
+        help: String,
+    },
+
+    /// `process begin x := x + 1; end process;` never reaches a wait.
+    #[error("process `{process}` ran {limit} instructions at t = {time} s without waiting")]
+    #[diagnostic(
+        code(vams::sim::runaway),
+        help("every path through a process loop must reach a wait statement (LRM 11.3)")
+    )]
+    Runaway {
+        process: String,
+        time: f64,
+        limit: usize,
+        #[label("this process")]
+        span: Span,
+    },
+
+    /// `a <= not a;` with `b <= a;` zero-delay feedback: time never advances.
+    #[error("more than {limit} delta cycles at t = {time} s (process `{process}` ran last)")]
+    #[diagnostic(
+        code(vams::sim::delta_limit),
+        help("a zero-delay loop keeps scheduling events at the same time; add a delay (`after`)")
+    )]
+    DeltaLimit {
+        time: f64,
+        limit: usize,
+        process: String,
+        #[label("last process run")]
+        span: Span,
+    },
+
+    /// Two processes drive an unresolved signal: `s <= '1';` in one process and `s <= '0';`
+    /// in another, with `s : bit`.
+    #[error("signal `{signal}` has {count} drivers ({processes}) but no resolution function")]
+    #[diagnostic(
+        code(vams::sim::multiple_drivers),
+        help(
+            "drive the signal from one process, or declare it of a resolved type such as \
+             std_logic (LRM 14.7.3.2)"
+        )
+    )]
+    MultipleDrivers {
+        signal: String,
+        count: usize,
+        processes: String,
+        #[label("declared here")]
+        span: Span,
+    },
+
+    /// `--probe` with a name the design does not have.
+    #[error("no quantity or signal named `{name}`")]
+    #[diagnostic(code(vams::sim::unknown_probe))]
+    UnknownProbe {
+        name: String,
+        #[help]
+        help: String,
+    },
+
+    /// The analog solver gave up, e.g. an equation without a solution past a switch.
+    #[error("analog solver failed at t = {time} s{}", names_suffix(unknowns))]
+    #[diagnostic(
+        code(vams::sim::solve),
+        help(
+            "the cause is below; check the equations of the unknowns named here, their break \
+             values and initial values"
+        )
+    )]
+    Solve {
+        time: f64,
+        /// Names of the unknowns the failure points at.
+        unknowns: Vec<String>,
+        #[label("the first unknown involved")]
+        span: Option<Span>,
+        #[source]
+        #[diagnostic_source]
+        cause: SolveError,
+    },
+
+    /// `--stop -1` or a NaN tolerance.
+    #[error("invalid simulation option: {message}")]
+    #[diagnostic(
+        code(vams::sim::option),
+        help("the stop time must be positive and finite, tolerances positive")
+    )]
+    BadOption { message: String },
+}
+
+fn names_suffix(names: &[String]) -> String {
+    if names.is_empty() {
+        String::new()
+    } else {
+        format!(" (involving {})", names.join(", "))
+    }
+}
+
+impl Located for SimError {
+    fn primary_span(&self) -> Span {
+        match self {
+            SimError::Runtime { span, .. }
+            | SimError::Runaway { span, .. }
+            | SimError::DeltaLimit { span, .. }
+            | SimError::MultipleDrivers { span, .. } => *span,
+            SimError::Solve { span, .. } => span.unwrap_or_default(),
+            SimError::Analog { errors } => errors
+                .first()
+                .map(Located::primary_span)
+                .unwrap_or_default(),
+            SimError::UnknownProbe { .. } | SimError::BadOption { .. } => Span::default(),
+        }
+    }
 }

@@ -1,0 +1,58 @@
+//! What the simulation cycle needs from the analog side, as a trait: [`AnalogSystem`] is the
+//! real implementation; the kernel's tests drive the cycle with small hand-written systems.
+
+use crate::analog::AnalogSystem;
+use crate::design::{QuantityId, SignalId};
+use crate::solver::{DaeSystem, OpOptions, SolveError};
+
+/// The analog system as the kernel drives it (see [`AnalogSystem`] for each method's contract).
+pub(crate) trait AnalogModel: DaeSystem {
+    fn unknown_names(&self) -> &[String];
+    fn quantity_slot(&self, q: QuantityId) -> usize;
+    fn set_signal(&mut self, s: SignalId, value: f64);
+    fn reads_signal(&self, s: SignalId) -> bool;
+    fn above_signals(&self) -> &[SignalId];
+    fn abstol(&self, default: f64) -> Vec<f64>;
+    #[allow(clippy::too_many_arguments)]
+    fn quiescent_point(
+        &mut self,
+        t: f64,
+        guess: &[f64],
+        fixed: &[(usize, f64)],
+        reltol: f64,
+        abstol: &[f64],
+        options: &OpOptions,
+    ) -> Result<(Vec<f64>, Vec<f64>), SolveError>;
+}
+
+impl AnalogModel for AnalogSystem {
+    fn unknown_names(&self) -> &[String] {
+        AnalogSystem::unknown_names(self)
+    }
+    fn quantity_slot(&self, q: QuantityId) -> usize {
+        AnalogSystem::quantity_slot(self, q)
+    }
+    fn set_signal(&mut self, s: SignalId, value: f64) {
+        AnalogSystem::set_signal(self, s, value)
+    }
+    fn reads_signal(&self, s: SignalId) -> bool {
+        AnalogSystem::reads_signal(self, s)
+    }
+    fn above_signals(&self) -> &[SignalId] {
+        AnalogSystem::above_signals(self)
+    }
+    fn abstol(&self, default: f64) -> Vec<f64> {
+        AnalogSystem::abstol(self, default)
+    }
+    fn quiescent_point(
+        &mut self,
+        t: f64,
+        guess: &[f64],
+        fixed: &[(usize, f64)],
+        reltol: f64,
+        abstol: &[f64],
+        options: &OpOptions,
+    ) -> Result<(Vec<f64>, Vec<f64>), SolveError> {
+        AnalogSystem::quiescent_point(self, t, guess, fixed, reltol, abstol, options)
+    }
+}

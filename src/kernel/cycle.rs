@@ -1,0 +1,402 @@
+//! The mixed-signal simulation cycle (LRM 1076.1 12.6.4): initialisation with the quiescent
+//! point, then alternating analog integration up to the next digital event and delta cycles
+//! at that time, with a restart of the integrator after every discontinuity.
+//!
+//! Time points are where digital activity happens: scheduled transactions, process timeouts,
+//! and threshold crossings of `'above` signals, which the integrator locates as roots and which
+//! become events at the crossing time. After the delta cycles at a time point, a change of a
+//! signal the equations read, or an executed break, is a discontinuity: new signal values go to
+//! the analog system, break values replace quantities, and the integrator restarts (order 1).
+
+use crate::design::{Design, QuantityId, SignalId, Value};
+use crate::solver::{Advance, OpOptions, SolveError, Transient, TransientOptions};
+
+use super::analog_model::AnalogModel;
+use super::error::SimError;
+use super::eval::{Env, eval};
+use super::events::{AnalogView, EventKernel};
+use super::record::Recorder;
+use super::solve_error::solve_error;
+use super::{Outcome, Report, SimOptions, SimResult, SimStats};
+
+/// Absolute tolerance of unknowns without a tolerance group (when `--abstol` is not given).
+pub(crate) const DEFAULT_ABSTOL: f64 = 1e-9;
+
+/// The analog half: the system, its integrator and reused buffers.
+struct Analog<A> {
+    sys: A,
+    /// Unknown index of each quantity, by `QuantityId`.
+    slots: Vec<usize>,
+    /// The `'above` signal of each root function.
+    above: Vec<SignalId>,
+    integ: Transient,
+    x: Vec<f64>,
+    g: Vec<f64>,
+}
+
+pub(crate) struct Simulation<'d, A> {
+    design: &'d Design,
+    stop: f64,
+    kernel: EventKernel<'d>,
+    analog: Option<Analog<A>>,
+    /// Quantity values and derivatives at the current time, by `QuantityId`.
+    values: Vec<f64>,
+    derivatives: Vec<f64>,
+    changed: Vec<SignalId>,
+    breaks: Vec<(QuantityId, f64)>,
+    outcome: Option<Outcome>,
+}
+
+impl<'d, A: AnalogModel> Simulation<'d, A> {
+    /// Initialisation: processes run to their first wait; with an analog system, the quiescent
+    /// point with the breaks executed so far as its fixed values, the `'above` signals' initial
+    /// values from it, and the integrator.
+    pub fn start(
+        design: &'d Design,
+        options: &SimOptions,
+        analog: Option<A>,
+        on_report: &mut dyn FnMut(&Report),
+    ) -> Result<Self, SimError> {
+        options.validate()?;
+        let mut kernel = EventKernel::new(design)?;
+        let values: Vec<f64> = design
+            .quantities
+            .iter()
+            .map(|q| q.initial_guess.unwrap_or(0.0))
+            .collect();
+        let derivatives = vec![0.0; values.len()];
+        let view = AnalogView {
+            values: &values,
+            derivatives: &derivatives,
+        };
+        let outcome = kernel.initialize(&view, on_report)?;
+        let mut this = Simulation {
+            design,
+            stop: options.stop,
+            kernel,
+            analog: None,
+            values,
+            derivatives,
+            changed: Vec::new(),
+            breaks: Vec::new(),
+            outcome,
+        };
+        if let Some(sys) = analog {
+            this.analog = Some(this.quiescent(sys, options)?);
+            this.refresh();
+        }
+        // Signal changes from here on count as discontinuities; initial values are pushed.
+        this.kernel.signals.take_changed(&mut this.changed);
+        Ok(this)
+    }
+
+    fn quiescent(&mut self, mut sys: A, options: &SimOptions) -> Result<Analog<A>, SimError> {
+        let design = self.design;
+        for s in 0..design.signals.len() {
+            let s = SignalId(s as u32);
+            if sys.reads_signal(s) {
+                sys.set_signal(s, number(self.kernel.value(s)));
+            }
+        }
+        let slots: Vec<usize> = (0..design.quantities.len())
+            .map(|q| sys.quantity_slot(QuantityId(q as u32)))
+            .collect();
+        let n = sys.len();
+        let mut guess = vec![0.0; n];
+        for (q, &slot) in design.quantities.iter().zip(&slots) {
+            guess[slot] = q.initial_guess.unwrap_or(0.0);
+        }
+        self.kernel.take_breaks(&mut self.breaks);
+        // A later break value for the same quantity replaces an earlier one.
+        let mut fixed: Vec<(usize, f64)> = Vec::new();
+        for &(q, v) in &self.breaks {
+            let slot = slots[q.index()];
+            match fixed.iter_mut().find(|(s, _)| *s == slot) {
+                Some(entry) => entry.1 = v,
+                None => fixed.push((slot, v)),
+            }
+        }
+        let abstol = match options.abstol {
+            Some(a) => vec![a; n],
+            None => sys.abstol(DEFAULT_ABSTOL),
+        };
+        let names = sys.unknown_names().to_vec();
+        let fail = |e: SolveError| solve_error(e, 0.0, &names, &slots, design);
+        let (x, _) = sys
+            .quiescent_point(
+                0.0,
+                &guess,
+                &fixed,
+                options.reltol,
+                &abstol,
+                &OpOptions::default(),
+            )
+            .map_err(fail)?;
+        let above = sys.above_signals().to_vec();
+        let mut g = vec![0.0; sys.root_count().max(above.len())];
+        sys.roots(0.0, &x, &mut g);
+        for (&s, &gi) in above.iter().zip(&g) {
+            self.kernel.signals.initialize(s, Value::Boolean(gi > 0.0));
+            if sys.reads_signal(s) {
+                sys.set_signal(s, if gi > 0.0 { 1.0 } else { 0.0 });
+            }
+        }
+        let max_step = self.max_step(options)?;
+        let topts = TransientOptions {
+            reltol: options.reltol,
+            abstol: abstol.iter().copied().fold(DEFAULT_ABSTOL, f64::min),
+            abstol_per_unknown: abstol,
+            max_step,
+            ..TransientOptions::default()
+        };
+        let integ = Transient::new(&mut sys, 0.0, &x, topts).map_err(fail)?;
+        Ok(Analog {
+            sys,
+            slots,
+            above,
+            integ,
+            x: vec![0.0; n],
+            g,
+        })
+    }
+
+    /// The largest step: `--max-step` and every `limit` specification (applied to all
+    /// quantities, a conservative reading of a per-quantity limit).
+    fn max_step(&self, options: &SimOptions) -> Result<f64, SimError> {
+        let mut h = options.max_step.unwrap_or(f64::INFINITY);
+        for limit in &self.design.limits {
+            let env = Env {
+                signals: &self.kernel.signals.states,
+                vars: &[],
+                quantities: &self.values,
+                derivatives: &self.derivatives,
+                now: 0.0,
+            };
+            let step = eval(&limit.max_step, &env)
+                .ok()
+                .and_then(|v| v.as_f64())
+                .filter(|s| *s > 0.0)
+                .ok_or_else(|| SimError::BadOption {
+                    message: "a limit specification's step is not a positive number".into(),
+                })?;
+            h = h.min(step);
+        }
+        Ok(h)
+    }
+
+    /// Copies the integrator's state into the per-quantity values processes read.
+    fn refresh(&mut self) {
+        if let Some(a) = &self.analog {
+            let (x, xd) = (a.integ.state(), a.integ.derivative());
+            for (q, &slot) in a.slots.iter().enumerate() {
+                self.values[q] = x[slot];
+                self.derivatives[q] = xd[slot];
+            }
+        }
+    }
+
+    /// The quiescent point by name: every quantity, then every explicit signal.
+    pub fn operating_point(&self) -> Vec<(String, f64)> {
+        let quantities = self
+            .design
+            .quantities
+            .iter()
+            .zip(&self.values)
+            .map(|(q, &v)| (q.name.clone(), v));
+        let signals = self
+            .design
+            .signals
+            .iter()
+            .enumerate()
+            .filter(|(_, s)| s.kind == crate::design::SignalKind::Explicit)
+            .map(|(i, s)| {
+                let v = &self.kernel.signals.states[i].value;
+                (s.name.clone(), v.as_f64().unwrap_or(f64::NAN))
+            });
+        quantities.chain(signals).collect()
+    }
+
+    /// Runs from time 0 to the stop time (or a stop or failure).
+    pub fn run(
+        mut self,
+        mut recorder: Recorder,
+        on_report: &mut dyn FnMut(&Report),
+    ) -> Result<SimResult, SimError> {
+        let mut t = 0.0;
+        recorder.record(t, &self.values, &self.kernel.signals.states);
+        while self.outcome.is_none() {
+            if self.kernel.next_time(t) <= t {
+                if recorder.last_time() != Some(t) {
+                    recorder.record(t, &self.values, &self.kernel.signals.states);
+                }
+                let events = self.kernel.events;
+                let view = AnalogView {
+                    values: &self.values,
+                    derivatives: &self.derivatives,
+                };
+                self.outcome = self.kernel.run_time_point(t, &view, on_report)?;
+                let restarted = self.synchronise(t)?;
+                if restarted || self.kernel.events != events {
+                    recorder.record(t, &self.values, &self.kernel.signals.states);
+                }
+                continue;
+            }
+            if t >= self.stop {
+                break;
+            }
+            let target = self.kernel.next_time(t).min(self.stop);
+            t = match self.analog.is_some() {
+                true => self.advance(t, target, &mut recorder)?,
+                false => target,
+            };
+        }
+        // Digital-only runs end with the last event: close the record at the end time.
+        if recorder.last_time().is_some_and(|last| last < t) {
+            recorder.record(t, &self.values, &self.kernel.signals.states);
+        }
+        let stats = self.stats();
+        Ok(SimResult {
+            waveforms: recorder.waveforms,
+            reports: std::mem::take(&mut self.kernel.reports),
+            outcome: self.outcome.unwrap_or(Outcome::Finished),
+            stats,
+        })
+    }
+
+    /// Integrates from `t` towards `target`, recording every accepted step; stops early at a
+    /// threshold crossing (forcing the `'above` signals that crossed). Returns the time reached.
+    fn advance(&mut self, t: f64, target: f64, recorder: &mut Recorder) -> Result<f64, SimError> {
+        if target < self.stop {
+            if let Some(a) = self.analog.as_mut() {
+                a.integ.add_breakpoint(target);
+            }
+        }
+        loop {
+            match self.step(t, target)? {
+                Advance::StepAccepted(t1) => {
+                    self.refresh();
+                    let crossed = self.sync_above(t1);
+                    recorder.record(t1, &self.values, &self.kernel.signals.states);
+                    if crossed {
+                        return Ok(t1);
+                    }
+                }
+                Advance::Reached(t1) => {
+                    self.refresh();
+                    self.sync_above(t1);
+                    recorder.record(t1, &self.values, &self.kernel.signals.states);
+                    return Ok(t1);
+                }
+                Advance::Root {
+                    t: tr,
+                    index,
+                    rising,
+                } => {
+                    self.force_above(index, rising);
+                    // Further crossings at the same instant come one call each.
+                    while let Advance::Root { index, rising, .. } = self.step(tr, tr)? {
+                        self.force_above(index, rising);
+                    }
+                    self.refresh();
+                    recorder.record(tr, &self.values, &self.kernel.signals.states);
+                    return Ok(tr);
+                }
+            }
+        }
+    }
+
+    /// One call of the integrator.
+    fn step(&mut self, t: f64, target: f64) -> Result<Advance, SimError> {
+        let design = self.design;
+        let Some(a) = self.analog.as_mut() else {
+            return Ok(Advance::Reached(target));
+        };
+        a.integ
+            .advance(&mut a.sys, target)
+            .map_err(|e| solve_error(e, t, a.sys.unknown_names(), &a.slots, design))
+    }
+
+    /// Schedules the new value of the `'above` signal of root function `index`.
+    fn force_above(&mut self, index: usize, rising: bool) {
+        if let Some(&s) = self.analog.as_ref().and_then(|a| a.above.get(index)) {
+            if *self.kernel.value(s) != Value::Boolean(rising) {
+                self.kernel.signals.force(s, Value::Boolean(rising));
+            }
+        }
+    }
+
+    /// Forces every `'above` signal whose value disagrees with the sign of its root function at
+    /// the current state: crossings the integrator cannot see, because the function started a
+    /// step at exactly zero or a break moved the quantity across its threshold. True if any.
+    fn sync_above(&mut self, t: f64) -> bool {
+        let Some(a) = self.analog.as_mut() else {
+            return false;
+        };
+        if a.g.is_empty() {
+            return false;
+        }
+        a.sys.roots(t, a.integ.state(), &mut a.g);
+        let mut any = false;
+        for (&s, &g) in a.above.iter().zip(&a.g) {
+            let now = matches!(self.kernel.value(s), Value::Boolean(true));
+            if (g > 0.0 && !now) || (g < 0.0 && now) {
+                self.kernel.signals.force(s, Value::Boolean(g > 0.0));
+                any = true;
+            }
+        }
+        any
+    }
+
+    /// After the delta cycles at `t`: pushes changed signals the equations read, applies break
+    /// values and restarts the integrator if either happened. True on a restart.
+    fn synchronise(&mut self, t: f64) -> Result<bool, SimError> {
+        self.kernel.signals.take_changed(&mut self.changed);
+        let broke = self.kernel.take_breaks(&mut self.breaks);
+        let design = self.design;
+        let Some(a) = self.analog.as_mut() else {
+            return Ok(false);
+        };
+        let mut discontinuity = broke;
+        for &s in &self.changed {
+            if a.sys.reads_signal(s) {
+                a.sys.set_signal(s, number(self.kernel.value(s)));
+                discontinuity = true;
+            }
+        }
+        if !discontinuity {
+            return Ok(false);
+        }
+        a.x.copy_from_slice(a.integ.state());
+        for &(q, v) in &self.breaks {
+            a.x[a.slots[q.index()]] = v;
+        }
+        a.integ
+            .restart(&mut a.sys, t, &a.x)
+            .map_err(|e| solve_error(e, t, a.sys.unknown_names(), &a.slots, design))?;
+        self.refresh();
+        self.sync_above(t);
+        Ok(true)
+    }
+
+    fn stats(&self) -> SimStats {
+        let solver = self
+            .analog
+            .as_ref()
+            .map(|a| a.integ.stats())
+            .unwrap_or_default();
+        SimStats {
+            accepted_steps: solver.accepted_steps,
+            rejected_steps: solver.rejected_steps + solver.newton_failures,
+            newton_iterations: solver.newton_iterations,
+            factorizations: solver.factorizations,
+            events: self.kernel.events,
+            delta_cycles: self.kernel.delta_cycles,
+            breaks: self.kernel.breaks_total,
+        }
+    }
+}
+
+/// A signal's value as the equations see it (booleans and enumerations as positions).
+fn number(v: &Value) -> f64 {
+    v.as_f64().unwrap_or(f64::NAN)
+}

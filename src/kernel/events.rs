@@ -1,0 +1,211 @@
+//! The event-driven half of the simulation cycle: signal update, process resumption and
+//! execution, delta cycles at one time point, and the next time anything digital is due.
+
+use crate::design::{Design, QuantityId, SignalId, Value};
+
+use super::error::SimError;
+use super::eval::{Env, truth};
+use super::process::{self, Context, ProcState, Suspend};
+use super::signals::Signals;
+use super::{Outcome, Report};
+
+/// Delta cycles allowed at one time point before the run counts as an endless zero-delay loop.
+pub(crate) const DELTA_LIMIT: usize = 10_000;
+
+/// The analog solution processes read: quantity values and derivatives by `QuantityId`.
+pub(crate) struct AnalogView<'a> {
+    pub values: &'a [f64],
+    pub derivatives: &'a [f64],
+}
+
+pub(crate) struct EventKernel<'d> {
+    design: &'d Design,
+    pub signals: Signals,
+    procs: Vec<ProcState>,
+    /// Break values executed since the last [`EventKernel::take_breaks`].
+    breaks: Vec<(QuantityId, f64)>,
+    break_count: usize,
+    pub reports: Vec<Report>,
+    waveform: Vec<(Value, f64)>,
+    resume: Vec<usize>,
+    last_process: usize,
+    /// Time of the last simulation cycle (initialisation counts as one at 0).
+    last_cycle: f64,
+    /// Signal events and delta cycles so far.
+    pub events: usize,
+    pub delta_cycles: usize,
+    /// Break statements executed so far.
+    pub breaks_total: usize,
+}
+
+impl<'d> EventKernel<'d> {
+    pub fn new(design: &'d Design) -> Result<EventKernel<'d>, SimError> {
+        Ok(EventKernel {
+            design,
+            signals: Signals::new(design)?,
+            procs: design.processes.iter().map(ProcState::new).collect(),
+            breaks: Vec::new(),
+            break_count: 0,
+            reports: Vec::new(),
+            waveform: Vec::new(),
+            resume: Vec::with_capacity(design.processes.len()),
+            last_process: 0,
+            last_cycle: 0.0,
+            events: 0,
+            delta_cycles: 0,
+            breaks_total: 0,
+        })
+    }
+
+    /// The initialisation phase: every process runs until its first wait, at time 0.
+    pub fn initialize(
+        &mut self,
+        analog: &AnalogView,
+        on_report: &mut dyn FnMut(&Report),
+    ) -> Result<Option<Outcome>, SimError> {
+        self.resume.clear();
+        self.resume.extend(0..self.procs.len());
+        self.run_resumed(0.0, analog, on_report)
+    }
+
+    /// The earliest time at which a transaction or a timeout is due (infinity if none).
+    pub fn next_time(&self, now: f64) -> f64 {
+        if self.signals.has_forced() {
+            return now;
+        }
+        self.procs
+            .iter()
+            .filter(|p| !p.halted)
+            .filter_map(|p| p.timeout_at)
+            .fold(self.signals.next_time(), f64::min)
+    }
+
+    /// Runs simulation cycles at `now` until nothing more is due at `now`.
+    pub fn run_time_point(
+        &mut self,
+        now: f64,
+        analog: &AnalogView,
+        on_report: &mut dyn FnMut(&Report),
+    ) -> Result<Option<Outcome>, SimError> {
+        for _ in 0..=DELTA_LIMIT {
+            // A cycle that does not advance time is a delta cycle (LRM 14.7.5.1).
+            if now == self.last_cycle {
+                self.delta_cycles += 1;
+            }
+            self.last_cycle = now;
+            if let Some(outcome) = self.cycle(now, analog, on_report)? {
+                return Ok(Some(outcome));
+            }
+            if self.next_time(now) > now {
+                return Ok(None);
+            }
+        }
+        let p = &self.design.processes[self.last_process];
+        Err(SimError::DeltaLimit {
+            time: now,
+            limit: DELTA_LIMIT,
+            process: p.name.clone(),
+            span: p.span,
+        })
+    }
+
+    /// One simulation cycle: update signals, then run the processes that resume.
+    fn cycle(
+        &mut self,
+        now: f64,
+        analog: &AnalogView,
+        on_report: &mut dyn FnMut(&Report),
+    ) -> Result<Option<Outcome>, SimError> {
+        self.signals.update(now);
+        self.events += self.signals.events.len();
+        self.resume.clear();
+        for (i, p) in self.procs.iter().enumerate() {
+            if p.halted || p.waiting_at.is_none() {
+                continue;
+            }
+            if p.timeout_at.is_some_and(|t| t <= now) {
+                self.resume.push(i);
+                continue;
+            }
+            let states = &self.signals.states;
+            if !p.sensitivity().iter().any(|s| states[s.index()].event) {
+                continue;
+            }
+            if let Some(cond) = p.until(&self.design.processes[i]) {
+                let env = Env {
+                    signals: states,
+                    vars: &p.vars,
+                    quantities: analog.values,
+                    derivatives: analog.derivatives,
+                    now,
+                };
+                let process = &self.design.processes[i];
+                let holds = super::eval::eval(cond, &env)
+                    .and_then(|v| truth(&v))
+                    .map_err(|e| SimError::Runtime {
+                        process: process.name.clone(),
+                        time: now,
+                        message: e.message,
+                        span: process.span,
+                        help: e.help.to_string(),
+                    })?;
+                if !holds {
+                    continue;
+                }
+            }
+            self.resume.push(i);
+        }
+        self.run_resumed(now, analog, on_report)
+    }
+
+    fn run_resumed(
+        &mut self,
+        now: f64,
+        analog: &AnalogView,
+        on_report: &mut dyn FnMut(&Report),
+    ) -> Result<Option<Outcome>, SimError> {
+        let before = self.break_count;
+        let mut outcome = None;
+        for k in 0..self.resume.len() {
+            let i = self.resume[k];
+            self.last_process = i;
+            let mut cx = Context {
+                signals: &mut self.signals,
+                quantities: analog.values,
+                derivatives: analog.derivatives,
+                now,
+                breaks: &mut self.breaks,
+                break_count: &mut self.break_count,
+                reports: &mut self.reports,
+                on_report,
+                waveform: &mut self.waveform,
+            };
+            match process::run(i, &self.design.processes[i], &mut self.procs[i], &mut cx)? {
+                Suspend::Wait | Suspend::Halt => {}
+                Suspend::Stop => {
+                    outcome = Some(Outcome::Stopped { time: now });
+                    break;
+                }
+                Suspend::Failure => {
+                    outcome = Some(Outcome::Failed { time: now });
+                    break;
+                }
+            }
+        }
+        self.breaks_total += self.break_count - before;
+        Ok(outcome)
+    }
+
+    /// True when a break statement ran since the last call; `out` receives the reinitialisation
+    /// values in execution order (a later value for the same quantity wins).
+    pub fn take_breaks(&mut self, out: &mut Vec<(QuantityId, f64)>) -> bool {
+        out.clear();
+        out.append(&mut self.breaks);
+        std::mem::replace(&mut self.break_count, 0) > 0
+    }
+
+    /// Current value of signal `s`.
+    pub fn value(&self, s: SignalId) -> &Value {
+        &self.signals.states[s.index()].value
+    }
+}

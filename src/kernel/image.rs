@@ -1,0 +1,109 @@
+//! `T'image(x)`: the text of a value of type `T`.
+//!
+//! Reals print as the shortest decimal that reads back to the same number, always with a
+//! fractional part or an exponent (`10.5`, `1.0`, `1e-7`), so a report shows the value
+//! exactly; times in the largest unit that gives a number of at least 1 (`1.5 sec`, `10 ms`).
+
+use crate::design::{Type, Value};
+
+pub(crate) fn image(ty: &Type, v: &Value) -> String {
+    match (ty, v) {
+        (Type::Enum { literals, .. }, Value::Enum(p)) => literals
+            .get(*p as usize)
+            .cloned()
+            .unwrap_or_else(|| p.to_string()),
+        (_, v) => value_text(v),
+    }
+}
+
+/// The text of a value when its type says nothing more (enumerations as positions).
+fn value_text(v: &Value) -> String {
+    match v {
+        Value::Real(x) => real_image(*x),
+        Value::Integer(i) => i.to_string(),
+        Value::Boolean(b) => b.to_string(),
+        Value::Time(t) => time_image(*t),
+        Value::Enum(p) => p.to_string(),
+        Value::String(s) => s.clone(),
+        Value::Array(items) => {
+            let parts: Vec<String> = items.iter().map(value_text).collect();
+            format!("({})", parts.join(", "))
+        }
+    }
+}
+
+pub(crate) fn real_image(x: f64) -> String {
+    if x.is_finite() && x != 0.0 && (x.abs() >= 1e15 || x.abs() < 1e-4) {
+        // `{}` never uses exponents: 1e-7 would print as 0.0000001 and 1e20 with 20 digits.
+        return format!("{x:e}");
+    }
+    let s = format!("{x}");
+    if s.contains(['.', 'e', 'i', 'N']) {
+        s
+    } else {
+        s + ".0"
+    }
+}
+
+const TIME_UNITS: [(f64, &str); 7] = [
+    (3600.0, "hr"),
+    (60.0, "min"),
+    (1.0, "sec"),
+    (1e-3, "ms"),
+    (1e-6, "us"),
+    (1e-9, "ns"),
+    (1e-12, "ps"),
+];
+
+pub(crate) fn time_image(t: f64) -> String {
+    if t == 0.0 || !t.is_finite() {
+        return format!("{t} sec");
+    }
+    let (scale, unit) = TIME_UNITS
+        .iter()
+        .copied()
+        .find(|(scale, _)| t.abs() >= *scale * (1.0 - 1e-12))
+        .unwrap_or((1e-15, "fs"));
+    // Round to 12 significant digits so that 0.0015 s prints as 1.5 ms, not 1.5000000000000002.
+    let n = t / scale;
+    let digits = 11 - n.abs().log10().floor() as i32;
+    let p = 10f64.powi(digits.clamp(0, 15));
+    format!("{} {unit}", (n * p).round() / p)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reals_read_back_and_always_look_real() {
+        assert_eq!(real_image(10.5), "10.5");
+        assert_eq!(real_image(1.0), "1.0");
+        assert_eq!(real_image(-3.0), "-3.0");
+        assert_eq!(real_image(0.1), "0.1");
+        assert_eq!(real_image(1e-7), "1e-7");
+        assert_eq!(real_image(2.5e20), "2.5e20");
+        assert_eq!(real_image(12345.678), "12345.678");
+    }
+
+    #[test]
+    fn times_pick_the_largest_unit() {
+        assert_eq!(time_image(1.5), "1.5 sec");
+        assert_eq!(time_image(0.01), "10 ms");
+        assert_eq!(time_image(0.0015), "1.5 ms");
+        assert_eq!(time_image(2e-9), "2 ns");
+        assert_eq!(time_image(0.0), "0 sec");
+        assert_eq!(time_image(-0.002), "-2 ms");
+    }
+
+    #[test]
+    fn enumerations_print_their_literal() {
+        let ty = Type::Enum {
+            name: "state".into(),
+            literals: vec!["idle".into(), "run".into()],
+        };
+        assert_eq!(image(&ty, &Value::Enum(1)), "run");
+        assert_eq!(image(&Type::Integer, &Value::Integer(-4)), "-4");
+        assert_eq!(image(&Type::Boolean, &Value::Boolean(true)), "true");
+    }
+}

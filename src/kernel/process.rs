@@ -1,0 +1,308 @@
+//! The process interpreter: runs a lowered [`Process`] from its resume point to the next wait.
+
+use crate::design::{DelayMechanism, Expr, Instr, Process, QuantityId, SignalId, Value};
+use crate::source::Span;
+
+use super::error::SimError;
+use super::eval::{Env, EvalError, eval, integer, offset, truth};
+use super::signals::{Delay, Signals};
+use super::{Report, Severity};
+
+/// Instructions one activation may execute before it counts as a loop without a wait.
+pub(crate) const INSTRUCTION_LIMIT: usize = 10_000_000;
+
+/// How an activation ended.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Suspend {
+    /// At a `Wait`; the process state says on what.
+    Wait,
+    /// `wait;` or `Halt`: never again.
+    Halt,
+    /// `std.env.stop`.
+    Stop,
+    /// An assertion of severity failure.
+    Failure,
+}
+
+/// A process's run-time state.
+pub(crate) struct ProcState {
+    pub pc: usize,
+    pub vars: Vec<Value>,
+    /// Signals the wait at each instruction index is sensitive to (empty elsewhere).
+    sensitivity: Vec<Vec<SignalId>>,
+    /// Index of the `Wait` the process is suspended at.
+    pub waiting_at: Option<usize>,
+    /// Absolute time at which the current wait times out.
+    pub timeout_at: Option<f64>,
+    pub halted: bool,
+}
+
+impl ProcState {
+    pub fn new(process: &Process) -> ProcState {
+        let sensitivity = process
+            .code
+            .iter()
+            .map(|instr| match instr {
+                // `wait until c` without `on` is sensitive to the signals `c` reads (LRM 10.2).
+                Instr::Wait { on, until, .. } if on.is_empty() => {
+                    let mut s = until.as_ref().map(Expr::signals).unwrap_or_default();
+                    s.sort_unstable();
+                    s.dedup();
+                    s
+                }
+                Instr::Wait { on, .. } => on.clone(),
+                _ => Vec::new(),
+            })
+            .collect();
+        ProcState {
+            pc: 0,
+            vars: process.vars.iter().map(|v| v.init.clone()).collect(),
+            sensitivity,
+            waiting_at: None,
+            timeout_at: None,
+            halted: false,
+        }
+    }
+
+    /// The condition of the current wait, if it has one.
+    pub fn until<'p>(&self, process: &'p Process) -> Option<&'p Expr> {
+        match process.code.get(self.waiting_at?)? {
+            Instr::Wait { until, .. } => until.as_ref(),
+            _ => None,
+        }
+    }
+
+    /// The signals the current wait is sensitive to.
+    pub fn sensitivity(&self) -> &[SignalId] {
+        match self.waiting_at {
+            Some(at) => &self.sensitivity[at],
+            None => &[],
+        }
+    }
+}
+
+/// Everything an activation reads and writes outside its own state.
+pub(crate) struct Context<'a> {
+    pub signals: &'a mut Signals,
+    pub quantities: &'a [f64],
+    pub derivatives: &'a [f64],
+    pub now: f64,
+    /// Reinitialisation values of the breaks executed, in order.
+    pub breaks: &'a mut Vec<(QuantityId, f64)>,
+    /// Number of break statements executed (with or without values).
+    pub break_count: &'a mut usize,
+    pub reports: &'a mut Vec<Report>,
+    pub on_report: &'a mut dyn FnMut(&Report),
+    /// Reused buffer for a waveform being assigned.
+    pub waveform: &'a mut Vec<(Value, f64)>,
+}
+
+/// Runs process `index` until it suspends.
+pub(crate) fn run(
+    index: usize,
+    process: &Process,
+    state: &mut ProcState,
+    cx: &mut Context,
+) -> Result<Suspend, SimError> {
+    let now = cx.now;
+    let fail = |e: EvalError, span: Span| SimError::Runtime {
+        process: process.name.clone(),
+        time: now,
+        message: e.message,
+        span,
+        help: e.help.to_string(),
+    };
+    state.waiting_at = None;
+    state.timeout_at = None;
+    for _ in 0..INSTRUCTION_LIMIT {
+        let Some(instr) = process.code.get(state.pc) else {
+            // Elaboration guarantees every path ends in a wait; stop here rather than panic.
+            return Err(fail(
+                EvalError::new(
+                    "the process ran past its last instruction",
+                    "this is a bug in elaboration: every process must end in a loop",
+                ),
+                process.span,
+            ));
+        };
+        let env = Env {
+            signals: &cx.signals.states,
+            vars: &state.vars,
+            quantities: cx.quantities,
+            derivatives: cx.derivatives,
+            now: cx.now,
+        };
+        let at = |e: EvalError| fail(e, process.span);
+        state.pc += 1;
+        match instr {
+            Instr::SetVar { var, value } => {
+                state.vars[var.index()] = eval(value, &env).map_err(at)?;
+            }
+            Instr::SetVarElement { var, index, value } => {
+                let i = integer(&eval(index, &env).map_err(at)?).map_err(at)?;
+                let v = eval(value, &env).map_err(at)?;
+                let ty = &process.vars[var.index()].ty;
+                match &mut state.vars[var.index()] {
+                    Value::Array(items) => {
+                        let pos = offset(ty, i, items.len()).map_err(at)?;
+                        items[pos] = v;
+                    }
+                    _ => {
+                        return Err(at(EvalError::new(
+                            "element assignment to a variable that is not an array",
+                            "only array variables can be assigned element by element",
+                        )));
+                    }
+                }
+            }
+            Instr::Assign {
+                target,
+                waveform,
+                mechanism,
+            } => {
+                cx.waveform.clear();
+                let mut last = cx.now;
+                for (value, delay) in waveform {
+                    let v = eval(value, &env).map_err(at)?;
+                    let d = seconds(&eval(delay, &env).map_err(at)?).map_err(at)?;
+                    let t = cx.now + d;
+                    if d < 0.0 || t < last {
+                        return Err(at(EvalError::new(
+                            format!("waveform delay {d} s is negative or out of order"),
+                            "delays in a waveform must be non-negative and increasing \
+                             (LRM 10.5.2.1)",
+                        )));
+                    }
+                    last = t;
+                    cx.waveform.push((v, t));
+                }
+                let delay = match mechanism {
+                    DelayMechanism::Transport => Delay::Transport,
+                    DelayMechanism::Inertial { reject: Some(r) } => {
+                        Delay::Inertial(seconds(&eval(r, &env).map_err(at)?).map_err(at)?)
+                    }
+                    // Without `reject`, the limit is the first element's delay.
+                    DelayMechanism::Inertial { reject: None } => {
+                        Delay::Inertial(cx.waveform.first().map_or(0.0, |e| e.1 - cx.now))
+                    }
+                };
+                let Some(d) = cx.signals.driver(index, *target) else {
+                    // `Signals::new` creates a driver for every assignment of every process.
+                    return Err(at(EvalError::new(
+                        "assignment to a signal without a driver",
+                        "this is a kernel bug",
+                    )));
+                };
+                cx.signals.assign(d, cx.waveform, delay);
+            }
+            Instr::Wait { until, timeout, .. } => {
+                let timeout = match timeout {
+                    Some(t) => {
+                        let d = seconds(&eval(t, &env).map_err(at)?).map_err(at)?;
+                        if d < 0.0 {
+                            return Err(at(EvalError::new(
+                                format!("wait for a negative time ({d} s)"),
+                                "the timeout of a wait must not be negative (LRM 10.2)",
+                            )));
+                        }
+                        Some(cx.now + d)
+                    }
+                    None => None,
+                };
+                let pc = state.pc - 1;
+                if until.is_none() && timeout.is_none() && state.sensitivity[pc].is_empty() {
+                    state.halted = true;
+                    return Ok(Suspend::Halt);
+                }
+                state.waiting_at = Some(pc);
+                state.timeout_at = timeout;
+                return Ok(Suspend::Wait);
+            }
+            Instr::Jump(target) => state.pc = *target,
+            Instr::JumpIfNot { cond, target } => {
+                if !truth(&eval(cond, &env).map_err(at)?).map_err(at)? {
+                    state.pc = *target;
+                }
+            }
+            Instr::Assert {
+                cond,
+                report,
+                severity,
+                span,
+            } => {
+                let at = |e: EvalError| fail(e, *span);
+                if let Some(c) = cond {
+                    if truth(&eval(c, &env).map_err(at)?).map_err(at)? {
+                        continue;
+                    }
+                }
+                let message = match report {
+                    Some(r) => match eval(r, &env).map_err(at)? {
+                        Value::String(s) => s,
+                        other => format!("{other:?}"),
+                    },
+                    None => "Assertion violation.".to_string(),
+                };
+                let severity = match eval(severity, &env).map_err(at)? {
+                    Value::Enum(0) => Severity::Note,
+                    Value::Enum(1) => Severity::Warning,
+                    Value::Enum(2) => Severity::Error,
+                    _ => Severity::Failure,
+                };
+                let report = Report {
+                    time: cx.now,
+                    severity,
+                    message,
+                    process: process.name.clone(),
+                    span: *span,
+                };
+                (cx.on_report)(&report);
+                cx.reports.push(report);
+                if severity == Severity::Failure {
+                    return Ok(Suspend::Failure);
+                }
+            }
+            Instr::Break { reinit, when, span } => {
+                let at = |e: EvalError| fail(e, *span);
+                if let Some(c) = when {
+                    if !truth(&eval(c, &env).map_err(at)?).map_err(at)? {
+                        continue;
+                    }
+                }
+                *cx.break_count += 1;
+                for r in reinit {
+                    let v = eval(&r.value, &env).map_err(at)?;
+                    let x = v.as_f64().ok_or_else(|| {
+                        at(EvalError::new(
+                            "a break value is not a number",
+                            "break values must be real expressions",
+                        ))
+                    })?;
+                    cx.breaks.push((r.quantity, x));
+                }
+            }
+            Instr::Stop => return Ok(Suspend::Stop),
+            Instr::Halt => {
+                state.halted = true;
+                return Ok(Suspend::Halt);
+            }
+        }
+    }
+    Err(SimError::Runaway {
+        process: process.name.clone(),
+        time: cx.now,
+        limit: INSTRUCTION_LIMIT,
+        span: process.span,
+    })
+}
+
+/// A delay or timeout in seconds.
+fn seconds(v: &Value) -> Result<f64, EvalError> {
+    match v {
+        Value::Time(t) | Value::Real(t) => Ok(*t),
+        _ => Err(EvalError::new(
+            "a delay is not a time",
+            "delays and timeouts must be of type time",
+        )),
+    }
+}

@@ -1,0 +1,169 @@
+//! Probes and output rows: which quantities and signals are recorded, one row per time point.
+
+use crate::design::{Design, QuantityId, SignalId, SignalKind, Type};
+use crate::waveform::{Column, ColumnKind, Waveforms};
+
+use super::error::SimError;
+use super::signals::SignalState;
+
+#[derive(Clone, Copy, Debug)]
+enum Probe {
+    Quantity(QuantityId),
+    Signal(SignalId),
+}
+
+pub(crate) struct Recorder {
+    probes: Vec<Probe>,
+    pub waveforms: Waveforms,
+}
+
+impl Recorder {
+    /// Resolves `names`; without names, every quantity except terminal potentials and
+    /// auxiliary quantities (names with a `'`), and every explicit scalar signal.
+    pub fn new(design: &Design, names: &[String]) -> Result<Recorder, SimError> {
+        let probes = if names.is_empty() {
+            default_probes(design)
+        } else {
+            names
+                .iter()
+                .map(|n| find(design, n))
+                .collect::<Result<_, _>>()?
+        };
+        let columns = probes
+            .iter()
+            .map(|p| match *p {
+                Probe::Quantity(q) => {
+                    let q = &design.quantities[q.index()];
+                    Column {
+                        name: q.name.clone(),
+                        kind: ColumnKind::Quantity {
+                            unit: q.unit.clone(),
+                        },
+                        values: Vec::new(),
+                    }
+                }
+                Probe::Signal(s) => {
+                    let s = &design.signals[s.index()];
+                    Column {
+                        name: s.name.clone(),
+                        kind: ColumnKind::Signal { ty: s.ty.clone() },
+                        values: Vec::new(),
+                    }
+                }
+            })
+            .collect();
+        Ok(Recorder {
+            probes,
+            waveforms: Waveforms {
+                times: Vec::new(),
+                columns,
+            },
+        })
+    }
+
+    /// Appends a row; `quantities` by `QuantityId`.
+    pub fn record(&mut self, t: f64, quantities: &[f64], signals: &[SignalState]) {
+        self.waveforms.times.push(t);
+        for (p, col) in self.probes.iter().zip(&mut self.waveforms.columns) {
+            col.values.push(match *p {
+                Probe::Quantity(q) => quantities[q.index()],
+                Probe::Signal(s) => signals[s.index()].value.as_f64().unwrap_or(f64::NAN),
+            });
+        }
+    }
+
+    /// Time of the last row.
+    pub fn last_time(&self) -> Option<f64> {
+        self.waveforms.times.last().copied()
+    }
+}
+
+fn default_probes(design: &Design) -> Vec<Probe> {
+    let quantities = design
+        .quantities
+        .iter()
+        .enumerate()
+        .filter(|(_, q)| !q.name.contains('\'') && !is_potential(&q.name))
+        .map(|(i, _)| Probe::Quantity(QuantityId(i as u32)));
+    let signals = design
+        .signals
+        .iter()
+        .enumerate()
+        .filter(|(_, s)| {
+            s.kind == SignalKind::Explicit && !matches!(s.ty, Type::String | Type::Array { .. })
+        })
+        .map(|(i, _)| Probe::Signal(SignalId(i as u32)));
+    quantities.chain(signals).collect()
+}
+
+/// `v(node)` and `potential(node)` style names of terminal potentials.
+fn is_potential(name: &str) -> bool {
+    let last = name.rsplit('.').next().unwrap_or(name);
+    (last.starts_with("v(") || last.starts_with("potential(")) && last.ends_with(')')
+}
+
+fn find(design: &Design, name: &str) -> Result<Probe, SimError> {
+    let wanted = name.to_lowercase();
+    if let Some(q) = design.quantities.iter().position(|q| q.name == wanted) {
+        return Ok(Probe::Quantity(QuantityId(q as u32)));
+    }
+    if let Some(s) = design.signals.iter().position(|s| s.name == wanted) {
+        return Ok(Probe::Signal(SignalId(s as u32)));
+    }
+    let names = design
+        .quantities
+        .iter()
+        .map(|q| q.name.as_str())
+        .chain(design.signals.iter().map(|s| s.name.as_str()));
+    let best = names
+        .map(|n| (edit_distance(&wanted, n), n))
+        .min_by_key(|&(d, _)| d);
+    let help = match best {
+        Some((d, n)) if d <= wanted.len().max(3) / 2 + 1 => format!("did you mean `{n}`?"),
+        _ => "probe names are hierarchical and lower case, e.g. `dut.u_motor.i`; \
+              run without --probe to record everything"
+            .to_string(),
+    };
+    Err(SimError::UnknownProbe {
+        name: name.to_string(),
+        help,
+    })
+}
+
+/// Levenshtein distance in characters.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut diag = row[0];
+        row[0] = i + 1;
+        for (j, &cb) in b.iter().enumerate() {
+            let next = (diag + usize::from(ca != cb))
+                .min(row[j] + 1)
+                .min(row[j + 1] + 1);
+            diag = row[j + 1];
+            row[j + 1] = next;
+        }
+    }
+    row[b.len()]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn edit_distance_counts_single_edits() {
+        assert_eq!(edit_distance("v_motr", "v_motor"), 1);
+        assert_eq!(edit_distance("abc", "abc"), 0);
+        assert_eq!(edit_distance("", "ab"), 2);
+        assert_eq!(edit_distance("kitten", "sitting"), 3);
+    }
+
+    #[test]
+    fn potentials_are_not_default_probes() {
+        assert!(is_potential("dut.v(out1)"));
+        assert!(is_potential("potential(n1)"));
+        assert!(!is_potential("v_motor"));
+    }
+}

@@ -1,0 +1,7 @@
+//! Kernel tests on hand-built designs: the event kernel on digital designs, the mixed-signal
+//! cycle on small analog systems with closed-form solutions.
+
+mod build;
+mod digital;
+mod expr_dae;
+mod mixed;
