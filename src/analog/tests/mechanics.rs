@@ -1,0 +1,1 @@
+//! The headlight servo's structures: inductors in series, inertias coupled by a gear.
