@@ -312,7 +312,7 @@ impl DaeSystem for AnalogSystem {
 
     fn residual(&mut self, t: f64, x: &[f64], xdot: &[f64], out: &mut [f64]) {
         self.residual_tape.eval(t, x, xdot, &self.signals);
-        for (i, o) in out.iter_mut().enumerate() {
+        for (i, o) in out.iter_mut().enumerate().take(self.residuals.len()) {
             *o = self.residual_tape.output(i);
         }
         if !self.above.is_empty() {
@@ -339,7 +339,7 @@ impl DaeSystem for AnalogSystem {
 
     fn roots(&mut self, t: f64, x: &[f64], out: &mut [f64]) {
         self.roots_tape.eval(t, x, &self.last_xdot, &self.signals);
-        for (i, o) in out.iter_mut().enumerate() {
+        for (i, o) in out.iter_mut().enumerate().take(self.above.len()) {
             *o = self.roots_tape.output(i);
         }
     }

@@ -5,4 +5,5 @@ mod fixture;
 mod jacobian;
 mod listing;
 mod mechanics;
+mod perf;
 mod structural;

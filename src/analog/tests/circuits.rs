@@ -188,3 +188,71 @@ fn math_domain_errors_give_nan_not_panics() {
     sys.jacobian(0.0, &[0.0], &[0.0], 1.0, &mut jac);
     assert!(!jac[0].is_finite());
 }
+
+#[test]
+fn source_scale_multiplies_the_independent_terms_only() {
+    let (mut b, n) = source_resistor(2.0, 1e3);
+    let gnd = b.ground(crate::design::NatureId(0));
+    let (vl, _) = b.branch("vl", "il", n, gnd);
+    b.equation("vl == 0.5;", q(vl), c(0.5));
+    let (d, _) = b.finish();
+    let mut sys = system(&d);
+    let n = sys.len();
+    let mut out = vec![0.0; n];
+    sys.set_source_scale(0.25);
+    sys.residual(0.0, &vec![0.0; n], &vec![0.0; n], &mut out);
+    // Row 0 is `vs - 2.0`, row 1 `vr - 1000 ir` (no source term), row 2 `vl - 0.5`.
+    assert_eq!(&out[..3], &[-0.5, 0.0, -0.125]);
+    sys.set_source_scale(1.0);
+    sys.residual(0.0, &vec![0.0; n], &vec![0.0; n], &mut out);
+    assert_eq!(&out[..3], &[-2.0, 0.0, -0.5]);
+}
+
+#[test]
+fn above_signals_are_root_functions() {
+    use crate::design::{Signal, SignalKind, Type, Value};
+    use crate::solver::{Advance, Transient, TransientOptions};
+    let mut b = Builder::new();
+    let x = b.free("x");
+    b.equation("x'dot == 2.0;", dot(x), c(2.0));
+    let (mut d, _) = b.finish();
+    d.signals.push(Signal {
+        name: "x'above(0.5)".into(),
+        ty: Type::Boolean,
+        init: Value::Boolean(false),
+        kind: SignalKind::Above {
+            quantity: q(x),
+            level: c(0.5),
+        },
+        span: Default::default(),
+    });
+    let mut sys = system(&d);
+    assert_eq!(sys.above_signals(), &[crate::design::SignalId(0)]);
+    assert_eq!(sys.root_count(), 1);
+    let mut tr = Transient::new(&mut sys, 0.0, &[0.0], TransientOptions::default()).expect("init");
+    let root = loop {
+        match tr.advance(&mut sys, 1.0).expect("step") {
+            Advance::Root { t, index, rising } => break (t, index, rising),
+            Advance::Reached(_) => panic!("no root found"),
+            Advance::StepAccepted(_) => {}
+        }
+    };
+    assert_eq!((root.1, root.2), (0, true));
+    assert!((root.0 - 0.25).abs() < 1e-9, "crossing at {}", root.0);
+}
+
+#[test]
+fn abstol_follows_tolerance_groups() {
+    let mut b = Builder::new();
+    let rot = b.nature("rotational_v", "DEFAULT_ANGULAR_VELOCITY", "DEFAULT_TORQUE");
+    let gnd = b.ground(rot);
+    let shaft = b.terminal("shaft", rot);
+    let (w, t) = b.branch("w", "t", shaft, gnd);
+    let f = b.free("f");
+    b.equation("w == 1.0;", q(w), c(1.0));
+    b.equation("f == t;", q(f), q(t));
+    let (d, _) = b.finish();
+    let sys = system(&d);
+    // v(shaft), w, t, f.
+    assert_eq!(sys.abstol(0.5), vec![1e-4, 1e-4, 1e-9, 0.5]);
+}
