@@ -217,6 +217,27 @@ impl AnalogSystem {
         &self.origins
     }
 
+    /// Description and span of equation `row` (a [`SolveError`]'s row index), for messages:
+    /// `None` when `row` is out of range. `design` must be the one the system was built from.
+    pub fn equation_site(
+        &self,
+        design: &Design,
+        row: usize,
+    ) -> Option<(String, crate::source::Span)> {
+        let origin = *self.origins.get(row)?;
+        Some((origin.describe(design), origin.span(design)))
+    }
+
+    /// Name and declaration span of unknown `col` (a [`SolveError`]'s column index).
+    pub fn unknown_site(
+        &self,
+        design: &Design,
+        col: usize,
+    ) -> Option<(String, crate::source::Span)> {
+        let unknown = *self.unknowns.get(col)?;
+        Some((self.names[col].clone(), unknown.span(design)))
+    }
+
     /// Index of quantity `q` in the unknown vector (`q` must belong to the design the system
     /// was built from).
     pub fn quantity_slot(&self, q: QuantityId) -> usize {

@@ -150,6 +150,16 @@ fn quiescent_point_holds_break_values_and_solves_their_derivatives() {
     let slope = 0.75 / (r * cap);
     assert!((xd[sv] - slope).abs() < 1e-9 * slope, "vc' = {}", xd[sv]);
     assert!((x[si] - 0.75 / r).abs() < 1e-12);
+
+    // Rows and columns of solver errors map back to the model.
+    let (what, span) = sys.equation_site(&d, 2).expect("row 2");
+    assert_eq!(what, "`ic == 1.0e-6 * vc'dot`");
+    assert_eq!(span, d.equations[2].span);
+    assert_eq!(
+        sys.unknown_site(&d, sv).map(|s| s.0),
+        Some("vc".to_string())
+    );
+    assert!(sys.equation_site(&d, 99).is_none());
 }
 
 #[test]
