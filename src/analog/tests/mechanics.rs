@@ -115,3 +115,69 @@ fn gear_coupled_inertia_and_spring_mass_oscillate_at_the_closed_form_frequency()
     let rel = (measured - period).abs() / period;
     assert!(rel < 1e-3, "period {measured} vs {period} (rel {rel:e})");
 }
+
+/// The headlight drive as the models wire it: battery, wiring harness, DC motor
+/// (`models/dc_motor.vhd`), rack-and-pinion gear, reflector mass; both structures above at
+/// once. The steady speed has a closed form: `V = (r + r_line) i + ke w`, `kt i = d w`.
+#[test]
+fn headlight_drive_reaches_the_closed_form_steady_speed() {
+    let (v_bat, r_line, l_line) = (11.0, 0.1, 3.75e-6);
+    let (r, l, kt, ke, d, j) = (4.0, 3e-3, 0.015, 0.015, 1.5e-6, 1e-6);
+    let (ratio, mass) = (2e-3, 0.5);
+    let mut b = Builder::new();
+    let el = NatureId(0);
+    let rot = b.nature("rotational_v", "DEFAULT_ANGULAR_VELOCITY", "DEFAULT_TORQUE");
+    let tr = b.nature("translational_v", "DEFAULT_VELOCITY", "DEFAULT_FORCE");
+    let (gnd, rot_ref, tr_ref) = (b.ground(el), b.ground(rot), b.ground(tr));
+    let [bat, m] = ["bat", "m"].map(|n| b.terminal(n, el));
+    let shaft = b.terminal("shaft", rot);
+    let rack = b.terminal("rack", tr);
+    let (vb, _) = b.branch("vb", "ib", bat, gnd);
+    b.equation("vb == 11.0;", q(vb), c(v_bat));
+    let (vh, ih) = b.branch("vh", "ih", bat, m);
+    b.equation(
+        "vh == r_line * ih + l_line * ih'dot;",
+        q(vh),
+        add(mul(c(r_line), q(ih)), mul(c(l_line), dot(ih))),
+    );
+    let (vm, im) = b.branch("vm", "im", m, gnd);
+    let (w, t) = b.branch("w", "t", shaft, rot_ref);
+    b.equation(
+        "v == ke * w + r * i + l * i'dot;",
+        q(vm),
+        add(add(mul(c(ke), q(w)), mul(c(r), q(im))), mul(c(l), dot(im))),
+    );
+    b.equation(
+        "t == j * w'dot + d * w - kt * i;",
+        q(t),
+        sub(add(mul(c(j), dot(w)), mul(c(d), q(w))), mul(c(kt), q(im))),
+    );
+    let (wg, tau) = b.branch("wg", "tau", shaft, rot_ref);
+    let (vg, f) = b.branch("vg", "f", rack, tr_ref);
+    b.equation("v == ratio * w;", q(vg), mul(c(ratio), q(wg)));
+    b.equation("tau == -ratio * f;", q(tau), mul(c(-ratio), q(f)));
+    let (vr, fr) = b.branch("vr", "fr", rack, tr_ref);
+    b.equation("f == m * v'dot;", q(fr), mul(c(mass), dot(vr)));
+    let (design, _) = b.finish();
+    let mut sys = system(&design);
+    let (si, sw, sv) = (
+        sys.quantity_slot(im),
+        sys.quantity_slot(w),
+        sys.quantity_slot(vr),
+    );
+    // `break i => 0, w => 0` as the motor model does.
+    let states = simulate(&mut sys, &[(si, 0.0), (sw, 0.0)], 1e-4, &[1.0]);
+    let x = &states[0];
+    let w_ss = kt * v_bat / (ke * kt + d * (r + r_line));
+    let i_ss = d * w_ss / kt;
+    let close = |got: f64, want: f64| (got - want).abs() <= 1e-3 * want.abs();
+    assert!(close(x[sw], w_ss), "w = {} vs {w_ss}", x[sw]);
+    assert!(
+        close(x[sv], ratio * w_ss),
+        "v = {} vs {}",
+        x[sv],
+        ratio * w_ss
+    );
+    assert!(close(x[si], i_ss), "i = {} vs {i_ss}", x[si]);
+    assert!(close(x[sys.quantity_slot(ih)], i_ss));
+}
