@@ -180,9 +180,14 @@ pub fn check(inc: &Incidence, names: &Names<'_>) -> Result<(), Vec<AnalogError>>
         };
         let help = if ne < nu && !unused.is_empty() {
             format!(
-                "too few equations; {} appear in no equation: add an equation for each \
+                "too few equations; {} {} in no equation: add an equation for each \
                  (LRM 1076.1 12.6.6: one simultaneous statement per free quantity)",
-                names.unknowns(&unused)
+                names.unknowns(&unused),
+                if unused.len() == 1 {
+                    "appears"
+                } else {
+                    "appear"
+                }
             )
         } else if ne < nu {
             "too few equations: add a simultaneous statement for each quantity that is only \

@@ -120,3 +120,30 @@ fn a_terminal_with_only_across_branches_needs_no_conservation_law() {
     let sys = system(&d);
     assert_eq!(sys.unknown_names(), ["v(p)", "vp", "ip"]);
 }
+
+#[test]
+fn process_only_expressions_and_bad_indices_are_errors_not_panics() {
+    use crate::design::{Expr, QuantityId, VarId};
+    let mut b = Builder::new();
+    let x = b.free("x");
+    b.equation("x == v;", q(x), Expr::Var(VarId(0)));
+    let (d, _) = b.finish();
+    let e = AnalogSystem::new(&d).err().expect("rejected");
+    assert!(
+        matches!(&e[..], [AnalogError::NotAnalog { what, .. }] if what == "a process variable")
+    );
+
+    let mut b = Builder::new();
+    let x = b.free("x");
+    b.equation("x == y;", q(x), q(QuantityId(7)));
+    let (d, _) = b.finish();
+    let e = AnalogSystem::new(&d).err().expect("rejected");
+    assert!(matches!(&e[..], [AnalogError::Malformed { .. }]));
+}
+
+#[test]
+fn an_empty_design_is_an_empty_system() {
+    let (d, _) = Builder::new().finish();
+    let sys = system(&d);
+    assert!(sys.unknown_names().is_empty());
+}
