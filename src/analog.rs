@@ -19,6 +19,7 @@ mod build;
 mod deriv;
 mod error;
 mod listing;
+mod lower;
 mod quiescent;
 mod structure;
 mod sym;
@@ -33,7 +34,8 @@ pub use error::AnalogError;
 pub use tolerance::TOLERANCE_GROUPS;
 
 use deriv::{Var, derivative};
-use sym::{Bin, Sym, lower};
+use lower::lower;
+use sym::{Bin, Sym};
 use tape::{Tape, TapeBuilder};
 
 /// The compiled DAE of a design.

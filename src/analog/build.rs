@@ -11,7 +11,8 @@ use petgraph::graph::{NodeIndex, UnGraph};
 use petgraph::visit::Dfs;
 
 use super::error::AnalogError;
-use super::sym::{Sym, lower};
+use super::lower::lower;
+use super::sym::Sym;
 use crate::design::{Design, Expr, QuantityId, QuantityKind, TerminalId};
 use crate::source::Span;
 

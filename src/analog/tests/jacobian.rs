@@ -4,7 +4,8 @@
 use proptest::prelude::*;
 
 use crate::analog::deriv::{Var, derivative};
-use crate::analog::sym::{Sym, lower};
+use crate::analog::lower::lower;
+use crate::analog::sym::Sym;
 use crate::analog::tape::TapeBuilder;
 use crate::design::{BinaryOp, Builtin, Expr, QuantityId};
 
