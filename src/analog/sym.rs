@@ -1,5 +1,5 @@
-//! Symbolic residuals over solver slots: the form equations take between the design's [`Expr`](crate::design::Expr)
-//! and the compiled tape.
+//! Symbolic residuals over solver slots: the form equations take between the design's
+//! [`Expr`](crate::design::Expr) and the compiled tape.
 //!
 //! Quantities become unknown slots, booleans 0/1, calls their numeric function. The smart
 //! constructors fold constants and drop neutral terms, so differentiation and compilation see
