@@ -139,3 +139,60 @@ fn the_tape_shares_common_subexpressions() {
     let tape = tb.finish();
     assert_eq!(tape.instructions(), 2); // load x, exp
 }
+
+#[test]
+fn every_differentiable_function_matches_central_differences() {
+    use crate::analog::sym::{Bin, Un};
+    // Points inside each function's domain and away from kinks.
+    let unary = [
+        (Un::Neg, 0.3),
+        (Un::Abs, -0.7),
+        (Un::Exp, 0.4),
+        (Un::Log, 1.7),
+        (Un::Log10, 2.5),
+        (Un::Sqrt, 0.8),
+        (Un::Sin, 0.9),
+        (Un::Cos, 0.9),
+        (Un::Tan, 0.6),
+        (Un::Asin, 0.35),
+        (Un::Acos, 0.35),
+        (Un::Atan, 1.3),
+        (Un::Sinh, 0.5),
+        (Un::Cosh, 0.5),
+        (Un::Tanh, 0.5),
+        (Un::Asinh, 0.8),
+        (Un::Acosh, 1.9),
+        (Un::Atanh, 0.45),
+        (Un::Floor, 1.3),
+        (Un::Sign, -2.0),
+    ];
+    for (op, at) in unary {
+        // op(2 x) exercises the chain rule too.
+        let e = Sym::un(op, Sym::mul(Sym::Const(2.0), Sym::X(0)));
+        let exact = derivative(&e, Var::X(0)).eval(0.0, &[at / 2.0], &[0.0], &[]);
+        let fd = central(&e, Var::X(0), [at / 2.0, 0.0], [0.0; 2], 1e-6);
+        assert!(
+            (exact - fd).abs() < 1e-6 * (1.0 + fd.abs()),
+            "{op:?}: {exact} vs {fd}"
+        );
+    }
+    let binary = [
+        (Bin::Mod, 5.3, 1.7),
+        (Bin::Rem, -5.3, 1.7),
+        (Bin::Atan2, 0.7, -1.2),
+        (Bin::Max, 0.7, 0.2),
+        (Bin::Min, 0.7, 0.2),
+        (Bin::Pow, 1.3, 2.2),
+    ];
+    for (op, a, b) in binary {
+        let e = Sym::bin(op, Sym::X(0), Sym::X(1));
+        for (var, i) in [(Var::X(0), 0), (Var::X(1), 1)] {
+            let exact = derivative(&e, var).eval(0.0, &[a, b], &[0.0; 2], &[]);
+            let fd = central(&e, var, [a, b], [0.0; 2], 1e-6);
+            assert!(
+                (exact - fd).abs() < 1e-6 * (1.0 + fd.abs()),
+                "{op:?} by x{i}: {exact} vs {fd}"
+            );
+        }
+    }
+}
