@@ -1,4 +1,8 @@
 //! Structural and compile errors of the analog system (codes `vams::analog::*`).
+//!
+//! Every variant points at a span from the design (a user equation's statement, or for
+//! generated equations the quantity or terminal declaration) and names the equations and
+//! quantities involved, so the message stands on its own when the span is in another file.
 
 use miette::Diagnostic;
 use thiserror::Error;
@@ -9,22 +13,115 @@ use crate::source::Span;
 #[derive(Clone, Debug, Error, Diagnostic, PartialEq)]
 pub enum AnalogError {
     /// More or fewer equations than unknowns.
+    ///
+    /// Example: `quantity x, y : real; x == 1.0;` (two unknowns, one equation).
     #[error("{equations} equations for {unknowns} unknowns")]
     #[diagnostic(code(vams::analog::count))]
     Count {
-        #[label("in this design")]
+        #[label("{label}")]
         span: Span,
+        /// What the span shows: a quantity in no equation, or the first equation.
+        label: &'static str,
         equations: usize,
         unknowns: usize,
         #[help]
         help: Option<String>,
+    },
+
+    /// Some equations constrain fewer quantities than they are (a structurally redundant or
+    /// contradictory set, found by the Dulmage-Mendelsohn decomposition).
+    ///
+    /// Example: `x == 1.0; x == 2.0;` while `y` appears in no equation.
+    #[error("over-determined: {count} equations ({equations}) for the quantities {quantities}")]
+    #[diagnostic(
+        code(vams::analog::overdetermined),
+        help(
+            "these equations leave no room for each other: remove or rewrite one so that it \
+             determines another quantity (LRM 1076.1 12.6.6: one equation per quantity)"
+        )
+    )]
+    Overdetermined {
+        #[label("one of the over-determining equations")]
+        span: Span,
+        count: usize,
+        equations: String,
+        quantities: String,
+    },
+
+    /// Some quantities appear in fewer equations than they are.
+    ///
+    /// Example: `x == 1.0; x == 2.0;` with `y` in no equation: `y` is under-determined (and the
+    /// two equations over-determine `x`).
+    #[error("under-determined: {count} quantities ({quantities}) are fixed only by {equations}")]
+    #[diagnostic(
+        code(vams::analog::underdetermined),
+        help(
+            "add an equation for one of these quantities, or connect the terminals they belong \
+             to (LRM 1076.1 12.6.6: one equation per quantity)"
+        )
+    )]
+    Underdetermined {
+        #[label("one of the under-determined quantities")]
+        span: Span,
+        count: usize,
+        quantities: String,
+        equations: String,
+    },
+
+    /// Terminals with no branch path to their nature's reference: their potentials float.
+    ///
+    /// Example: a capacitor between `a` and `b`, neither connected to anything else.
+    #[error("floating terminals {terminals}: no branch connects them to the reference")]
+    #[diagnostic(
+        code(vams::analog::floating),
+        help(
+            "connect one of them to the reference terminal (a resistor to ground, or a port \
+             map to a grounded terminal); branches involved: {quantities}"
+        )
+    )]
+    Floating {
+        #[label("this terminal floats")]
+        span: Span,
+        terminals: String,
+        quantities: String,
+    },
+
+    /// An equation uses something that has no value on the analog side.
+    ///
+    /// Example: `x == v;` where `v` is a process variable.
+    #[error("an equation uses {what}, which the analog solver cannot evaluate")]
+    #[diagnostic(
+        code(vams::analog::not_analog),
+        help("simultaneous statements may use quantities, signals, constants and `now` only")
+    )]
+    NotAnalog {
+        #[label("here")]
+        span: Span,
+        what: String,
+    },
+
+    /// The design breaks an index invariant of the IR (an elaboration bug, not a model error).
+    #[error("malformed design: {what}")]
+    #[diagnostic(
+        code(vams::analog::malformed),
+        help("this is a bug in vams's elaboration; please report it with the model")
+    )]
+    Malformed {
+        #[label("here")]
+        span: Span,
+        what: String,
     },
 }
 
 impl Located for AnalogError {
     fn primary_span(&self) -> Span {
         match self {
-            AnalogError::Count { span, .. } => *span,
+            AnalogError::Count { span, .. }
+            | AnalogError::Overdetermined { span, .. }
+            | AnalogError::Underdetermined { span, .. }
+            | AnalogError::Floating { span, .. }
+            | AnalogError::NotAnalog { span, .. }
+            | AnalogError::Malformed { span, .. } => *span,
         }
     }
 }

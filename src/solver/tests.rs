@@ -1,6 +1,7 @@
 //! Tests of the numerical core against closed forms, with stated tolerances.
 
 mod events;
+mod init;
 mod linear;
 mod newton;
 mod op;

@@ -5,10 +5,58 @@
 //! Jacobian column is `dF/dx'_i` or `dF/dx_i`; the system only offers `dF/dx + alpha dF/dx'`, so
 //! `dF/dx'` is taken as `J(alpha = 1) - J(alpha = 0)` (exact up to rounding when the model sums
 //! the two parts, which is how the interface is defined).
+//!
+//! **Fallback.** Holding every differential unknown leaves that Jacobian singular when an
+//! algebraic constraint ties differential unknowns together: two inductors in series (a KCL row
+//! that contains only the two held currents), two inertias coupled by a gear (`v = ratio * w`
+//! with `v'` and `w'` both present). Then a tiny implicit-Euler step is taken instead: solve
+//! `F((x - x_held) / h, x, t + h) = 0` for all of `x`, and keep `x` (which now satisfies the
+//! constraints: inconsistent held values are projected onto them); `x'` comes from a second
+//! such step from there, and `t` stays unchanged. The step `h` is far below any time constant
+//! the integrator could resolve, so a consistent state moves by `O(h x')` only.
 
 use super::Transient;
 use crate::solver::newton::{NewtonOptions, NonlinearProblem};
 use crate::solver::{DaeSystem, SolveError};
+
+/// The fallback's implicit-Euler step, relative to `max(1, |t|)` seconds.
+const FALLBACK_STEP: f64 = 1e-10;
+
+/// `G(x) = F((x - x_held) / h, x, t + h)` for the differential unknowns (`x' = 0` for the
+/// algebraic ones, whose derivative no equation reads); Jacobian `dF/dx + (1/h) dF/dx'`.
+struct EulerProblem<'a, S: ?Sized> {
+    sys: &'a mut S,
+    t: f64,
+    h: f64,
+    diff: &'a [bool],
+    held: &'a [f64],
+    xdot: &'a mut [f64],
+}
+
+impl<S: ?Sized> EulerProblem<'_, S> {
+    fn derivative(&mut self, x: &[f64]) {
+        for (i, d) in self.xdot.iter_mut().enumerate() {
+            *d = if self.diff[i] {
+                (x[i] - self.held[i]) / self.h
+            } else {
+                0.0
+            };
+        }
+    }
+}
+
+impl<S: DaeSystem + ?Sized> NonlinearProblem for EulerProblem<'_, S> {
+    fn residual(&mut self, x: &[f64], out: &mut [f64]) {
+        self.derivative(x);
+        self.sys.residual(self.t + self.h, x, self.xdot, out);
+    }
+
+    fn jacobian(&mut self, x: &[f64], out: &mut [f64]) {
+        self.derivative(x);
+        self.sys
+            .jacobian(self.t + self.h, x, self.xdot, 1.0 / self.h, out);
+    }
+}
 
 struct InitProblem<'a, S: ?Sized> {
     pub sys: &'a mut S,
@@ -123,16 +171,24 @@ impl Transient {
             ..NewtonOptions::default()
         };
         self.newton.invalidate_jacobian();
-        self.newton
-            .solve(&mut p, &mut self.scratch, &self.tol, &opts, t)?;
-        // Spread the converged z (the last residual may have been at an earlier iterate).
-        for i in 0..self.n {
-            if self.diff[i] {
-                self.xdot[i] = self.scratch[i];
-            } else {
-                self.hist_x[0][i] = self.scratch[i];
-                self.xdot[i] = 0.0;
+        match self
+            .newton
+            .solve(&mut p, &mut self.scratch, &self.tol, &opts, t)
+        {
+            Ok(_) => {
+                // Spread the converged z (the last residual may have been at an earlier
+                // iterate).
+                for i in 0..self.n {
+                    if self.diff[i] {
+                        self.xdot[i] = self.scratch[i];
+                    } else {
+                        self.hist_x[0][i] = self.scratch[i];
+                        self.xdot[i] = 0.0;
+                    }
+                }
             }
+            Err(SolveError::SingularJacobian { .. }) => self.euler_fallback(sys)?,
+            Err(e) => return Err(e),
         }
         self.newton.invalidate_jacobian();
         self.c0_factored = 0.0;
@@ -143,6 +199,48 @@ impl Transient {
         if !self.g_prev.is_empty() {
             sys.roots(t, &self.hist_x[0], &mut self.g_prev);
             self.stats.root_evals += 1;
+        }
+        Ok(())
+    }
+
+    /// The implicit-Euler fallback of the module documentation, in two steps: the first
+    /// projects the held state onto the constraints (an inconsistent state jumps, and its
+    /// difference quotient is an impulse, not a derivative); the second, from the projected
+    /// state, gives `x'`. `x_pred` keeps the step's start and `x_new` is the iterate (both
+    /// free during initialisation).
+    fn euler_fallback<S: DaeSystem + ?Sized>(&mut self, sys: &mut S) -> Result<(), SolveError> {
+        let t = self.t;
+        let h = FALLBACK_STEP * t.abs().max(1.0);
+        // `x' = dx / h`: the update must be far inside the usual tolerance for `x'` to be
+        // accurate, which full Newton steps reach at once on the (locally) linear problems here.
+        let opts = NewtonOptions {
+            tol: 1e-6,
+            ..NewtonOptions::default()
+        };
+        for step in 0..2 {
+            self.x_pred.copy_from_slice(&self.hist_x[0]);
+            self.x_new.copy_from_slice(&self.hist_x[0]);
+            let mut p = EulerProblem {
+                sys: &mut *sys,
+                t,
+                h,
+                diff: &self.diff,
+                held: &self.x_pred,
+                xdot: &mut self.xdot,
+            };
+            self.newton.invalidate_jacobian();
+            self.newton
+                .solve(&mut p, &mut self.x_new, &self.tol, &opts, t)?;
+            if step == 0 {
+                self.hist_x[0].copy_from_slice(&self.x_new);
+            }
+        }
+        for i in 0..self.n {
+            self.xdot[i] = if self.diff[i] {
+                (self.x_new[i] - self.x_pred[i]) / h
+            } else {
+                0.0
+            };
         }
         Ok(())
     }

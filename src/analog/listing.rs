@@ -1,0 +1,212 @@
+//! The text of `vams dae`: unknowns, then equations with their origin and formula.
+//!
+//! Formulas are the assembled residuals (constants folded, before source scaling) printed with
+//! unknown and signal names and the fewest parentheses that keep VHDL's precedence.
+
+use std::fmt::Write;
+
+use super::AnalogSystem;
+use super::build::Origin;
+use super::sym::{Bin, Sym, Un};
+use crate::design::Design;
+use crate::source::{SourceMap, Span};
+
+/// Where a span is, as `file:line` (or `?` when the span is not in `sources`).
+fn location(span: Span, sources: &SourceMap) -> String {
+    if (span.file.0 as usize) < sources.len() {
+        let (line, _) = sources.line_col(span);
+        format!("{}:{}", sources.file(span.file).name, line)
+    } else {
+        "?".to_string()
+    }
+}
+
+pub fn listing(sys: &AnalogSystem, design: &Design, sources: &SourceMap) -> String {
+    let mut out = String::new();
+    let n = sys.names.len();
+    let width = sys.names.iter().map(String::len).max().unwrap_or(0);
+    // Writing into a String cannot fail.
+    let _ = writeln!(out, "unknowns ({n}):");
+    for (i, name) in sys.names.iter().enumerate() {
+        let kind = if sys.differential[i] {
+            "differential"
+        } else {
+            "algebraic"
+        };
+        let _ = writeln!(out, "  {i:>3}  {name:<width$}  {kind}");
+    }
+    let _ = writeln!(out, "equations ({}):", sys.residuals.len());
+    let printer = Printer {
+        names: &sys.names,
+        design,
+    };
+    let origins: Vec<String> = sys
+        .origins
+        .iter()
+        .map(|origin| match *origin {
+            Origin::User(k) => location(design.equations[k].span, sources),
+            other => other.describe(design),
+        })
+        .collect();
+    let width = origins.iter().map(String::len).max().unwrap_or(0);
+    for (i, (r, from)) in sys.residuals.iter().zip(&origins).enumerate() {
+        let mut formula = String::new();
+        printer.print(r, 0, &mut formula);
+        let _ = writeln!(out, "  {i:>3}  {from:<width$}  {formula} = 0");
+    }
+    out
+}
+
+struct Printer<'a> {
+    names: &'a [String],
+    design: &'a Design,
+}
+
+/// Binding strength: higher binds tighter.
+fn precedence(e: &Sym) -> u8 {
+    match e {
+        Sym::Bin(op, ..) => match op {
+            Bin::And | Bin::Or | Bin::Nand | Bin::Nor | Bin::Xor | Bin::Xnor => 1,
+            Bin::Eq | Bin::Ne | Bin::Lt | Bin::Le | Bin::Gt | Bin::Ge => 2,
+            Bin::Add | Bin::Sub => 3,
+            Bin::Mul | Bin::Div | Bin::Mod | Bin::Rem => 4,
+            Bin::Pow => 6,
+            Bin::Atan2 | Bin::Max | Bin::Min => 7,
+        },
+        Sym::Un(Un::Neg, _) => 3,
+        Sym::Un(Un::Not, _) => 6,
+        Sym::Const(v) if *v < 0.0 => 3,
+        Sym::If(..) => 0,
+        _ => 7,
+    }
+}
+
+fn number(v: f64) -> String {
+    let a = v.abs();
+    if v == v.trunc() && a < 1e6 {
+        format!("{v:.1}")
+    } else if (1e-3..1e6).contains(&a) {
+        format!("{v}")
+    } else {
+        format!("{v:e}")
+    }
+}
+
+fn un_name(op: Un) -> &'static str {
+    match op {
+        Un::Neg => "-",
+        Un::Not => "not ",
+        Un::Abs => "abs",
+        Un::Exp => "exp",
+        Un::Log => "log",
+        Un::Log10 => "log10",
+        Un::Sqrt => "sqrt",
+        Un::Sin => "sin",
+        Un::Cos => "cos",
+        Un::Tan => "tan",
+        Un::Asin => "arcsin",
+        Un::Acos => "arccos",
+        Un::Atan => "arctan",
+        Un::Sinh => "sinh",
+        Un::Cosh => "cosh",
+        Un::Tanh => "tanh",
+        Un::Asinh => "arcsinh",
+        Un::Acosh => "arccosh",
+        Un::Atanh => "arctanh",
+        Un::Floor => "floor",
+        Un::Ceil => "ceil",
+        Un::Round => "round",
+        Un::Trunc => "trunc",
+        Un::Sign => "sign",
+    }
+}
+
+fn bin_name(op: Bin) -> &'static str {
+    match op {
+        Bin::Add => " + ",
+        Bin::Sub => " - ",
+        Bin::Mul => " * ",
+        Bin::Div => " / ",
+        Bin::Pow => " ** ",
+        Bin::Mod => " mod ",
+        Bin::Rem => " rem ",
+        Bin::Atan2 => "arctan",
+        Bin::Max => "realmax",
+        Bin::Min => "realmin",
+        Bin::Eq => " = ",
+        Bin::Ne => " /= ",
+        Bin::Lt => " < ",
+        Bin::Le => " <= ",
+        Bin::Gt => " > ",
+        Bin::Ge => " >= ",
+        Bin::And => " and ",
+        Bin::Or => " or ",
+        Bin::Nand => " nand ",
+        Bin::Nor => " nor ",
+        Bin::Xor => " xor ",
+        Bin::Xnor => " xnor ",
+    }
+}
+
+impl Printer<'_> {
+    /// Prints `e`, parenthesised when it binds less tightly than `context` requires.
+    fn print(&self, e: &Sym, context: u8, out: &mut String) {
+        let p = precedence(e);
+        let paren = p < context;
+        if paren {
+            out.push('(');
+        }
+        match e {
+            Sym::Const(v) => out.push_str(&number(*v)),
+            Sym::X(i) => out.push_str(&self.names[*i]),
+            Sym::Dot(i) => {
+                out.push_str(&self.names[*i]);
+                out.push_str("'dot");
+            }
+            Sym::Signal(s) => match self.design.signals.get(*s) {
+                Some(sig) => out.push_str(&sig.name),
+                None => out.push_str("<source scale>"),
+            },
+            Sym::Now => out.push_str("now"),
+            Sym::Un(op @ (Un::Neg | Un::Not), a) => {
+                out.push_str(un_name(*op));
+                self.print(a, p + 1, out);
+            }
+            Sym::Un(op, a) => {
+                out.push_str(un_name(*op));
+                out.push('(');
+                self.print(a, 0, out);
+                out.push(')');
+            }
+            Sym::Bin(op @ (Bin::Atan2 | Bin::Max | Bin::Min), a, b) => {
+                out.push_str(bin_name(*op));
+                out.push('(');
+                self.print(a, 0, out);
+                out.push_str(", ");
+                self.print(b, 0, out);
+                out.push(')');
+            }
+            Sym::Bin(op, a, b) => {
+                // Left-associative: the right operand needs parentheses at equal precedence;
+                // `**` and the relations do not chain in VHDL, so both sides get them.
+                let chains = matches!(
+                    op,
+                    Bin::Add | Bin::Sub | Bin::Mul | Bin::Div | Bin::And | Bin::Or
+                );
+                self.print(a, if chains { p } else { p + 1 }, out);
+                out.push_str(bin_name(*op));
+                self.print(b, p + 1, out);
+            }
+            Sym::If(c, a, b) => {
+                self.print(a, 1, out);
+                out.push_str(" when ");
+                self.print(c, 1, out);
+                out.push_str(" else ");
+                self.print(b, 1, out);
+            }
+        }
+        if paren {
+            out.push(')');
+        }
+    }
+}

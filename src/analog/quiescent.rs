@@ -1,0 +1,105 @@
+//! The quiescent point (LRM 1076.1 12.6.4): the operating point with the augmentation set
+//! `x'_i = 0` for every differential unknown, except those a break statement fixes, which are
+//! held at their value while `x'_i` takes their place as the Newton unknown.
+//!
+//! An adapter [`DaeSystem`] presents the augmented problem to [`operating_point`] (which adds
+//! gmin and source stepping): its unknown `z_i` is `x'_i` for a fixed differential unknown and
+//! `x_i` otherwise, and its Jacobian column `i` is `dF/dx'_i` or `dF/dx_i` accordingly.
+
+use super::AnalogSystem;
+use crate::solver::{DaeSystem, ErrorNorm, OpOptions, SolveError, Tolerances, operating_point};
+
+struct Quiescent<'a> {
+    sys: &'a mut AnalogSystem,
+    /// Per unknown: true when `z_i` is `x'_i` (a fixed differential unknown).
+    held: Vec<bool>,
+    algebraic: Vec<bool>,
+    x: Vec<f64>,
+    xdot: Vec<f64>,
+}
+
+impl Quiescent<'_> {
+    fn assemble(&mut self, z: &[f64]) {
+        for (i, &zi) in z.iter().enumerate() {
+            if self.held[i] {
+                self.xdot[i] = zi;
+            } else {
+                self.x[i] = zi;
+            }
+        }
+    }
+}
+
+impl DaeSystem for Quiescent<'_> {
+    fn len(&self) -> usize {
+        self.held.len()
+    }
+    fn differential(&self) -> &[bool] {
+        // Every Newton unknown of the augmented problem is algebraic.
+        &self.algebraic
+    }
+    fn pattern(&self) -> &[(usize, usize)] {
+        self.sys.pattern()
+    }
+    fn residual(&mut self, t: f64, z: &[f64], _zdot: &[f64], out: &mut [f64]) {
+        self.assemble(z);
+        self.sys.residual(t, &self.x, &self.xdot, out);
+    }
+    fn jacobian(&mut self, t: f64, z: &[f64], _zdot: &[f64], _alpha: f64, out: &mut [f64]) {
+        self.assemble(z);
+        self.sys
+            .jacobian_columns(t, &self.x, &self.xdot, &self.held, out);
+    }
+    fn set_source_scale(&mut self, s: f64) {
+        self.sys.set_source_scale(s);
+    }
+}
+
+/// See [`AnalogSystem::quiescent_point`]. A fixed value for an unknown that appears nowhere
+/// differentiated has no `x' = 0` equation to replace: it only serves as the starting guess.
+pub fn solve(
+    sys: &mut AnalogSystem,
+    t: f64,
+    guess: &[f64],
+    fixed: &[(usize, f64)],
+    reltol: f64,
+    abstol: &[f64],
+    options: &OpOptions,
+) -> Result<(Vec<f64>, Vec<f64>), SolveError> {
+    let n = sys.len();
+    let invalid = |reason, index| Err(SolveError::InvalidSystem { reason, index });
+    if guess.len() != n {
+        return invalid(
+            "initial guess length differs from the system size",
+            guess.len(),
+        );
+    }
+    if abstol.len() != n {
+        return invalid("abstol length differs from the system size", abstol.len());
+    }
+    let mut x = guess.to_vec();
+    let mut held = vec![false; n];
+    for &(i, v) in fixed {
+        if i >= n {
+            return invalid("fixed unknown index out of range", i);
+        }
+        x[i] = v;
+        held[i] = sys.differential()[i];
+    }
+    let mut z: Vec<f64> = (0..n).map(|i| if held[i] { 0.0 } else { x[i] }).collect();
+    let mut p = Quiescent {
+        sys,
+        held,
+        algebraic: vec![false; n],
+        x,
+        xdot: vec![0.0; n],
+    };
+    let tol = Tolerances {
+        reltol,
+        abstol: abstol.to_vec(),
+        norm: ErrorNorm::Rms,
+    };
+    operating_point(&mut p, t, &mut z, &tol, options)?;
+    p.assemble(&z);
+    Ok((p.x, p.xdot))
+}

@@ -1,0 +1,66 @@
+//! Absolute tolerances per unknown from the tolerance groups of IEEE 1076.1.1.
+//!
+//! | group                      | abstol |
+//! |----------------------------|--------|
+//! | `DEFAULT_VOLTAGE`          | 1e-6   |
+//! | `DEFAULT_CURRENT`          | 1e-9   |
+//! | `DEFAULT_DISPLACEMENT`     | 1e-9   |
+//! | `DEFAULT_VELOCITY`         | 1e-6   |
+//! | `DEFAULT_ANGULAR_VELOCITY` | 1e-4   |
+//! | `DEFAULT_ANGLE`            | 1e-6   |
+//! | `DEFAULT_FORCE`            | 1e-9   |
+//! | `DEFAULT_TORQUE`           | 1e-9   |
+//!
+//! A quantity without a group of its own takes its branch's group (across quantities the
+//! nature's across group, through quantities its through group); potentials take their
+//! nature's across group; anything else gets the caller's default.
+
+use super::build::Unknown;
+use crate::design::{Design, QuantityKind};
+
+/// The known tolerance groups and their absolute tolerances.
+pub const TOLERANCE_GROUPS: &[(&str, f64)] = &[
+    ("DEFAULT_VOLTAGE", 1e-6),
+    ("DEFAULT_CURRENT", 1e-9),
+    ("DEFAULT_DISPLACEMENT", 1e-9),
+    ("DEFAULT_VELOCITY", 1e-6),
+    ("DEFAULT_ANGULAR_VELOCITY", 1e-4),
+    ("DEFAULT_ANGLE", 1e-6),
+    ("DEFAULT_FORCE", 1e-9),
+    ("DEFAULT_TORQUE", 1e-9),
+];
+
+/// The absolute tolerance of a group (names compare case-insensitively).
+pub fn group_abstol(group: &str) -> Option<f64> {
+    TOLERANCE_GROUPS
+        .iter()
+        .find(|(name, _)| name.eq_ignore_ascii_case(group))
+        .map(|&(_, v)| v)
+}
+
+/// The group tolerance of each unknown, `None` where no known group applies.
+pub fn per_unknown(design: &Design, unknowns: &[Unknown]) -> Vec<Option<f64>> {
+    let nature_of =
+        |t: crate::design::TerminalId| &design.natures[design.terminals[t.index()].nature.index()];
+    unknowns
+        .iter()
+        .map(|u| {
+            let group = match *u {
+                Unknown::Potential(t) => nature_of(t).across_tolerance.as_deref(),
+                Unknown::Quantity(q) => {
+                    let q = &design.quantities[q.index()];
+                    q.tolerance.as_deref().or(match q.kind {
+                        QuantityKind::Across { plus, .. } => {
+                            nature_of(plus).across_tolerance.as_deref()
+                        }
+                        QuantityKind::Through { plus, .. } => {
+                            nature_of(plus).through_tolerance.as_deref()
+                        }
+                        QuantityKind::Free => None,
+                    })
+                }
+            };
+            group.and_then(group_abstol)
+        })
+        .collect()
+}
