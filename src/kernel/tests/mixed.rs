@@ -185,7 +185,6 @@ fn rc_low_pass_follows_the_exponential() {
 }
 
 #[test]
-#[ignore = "needs analog"]
 fn rc_low_pass_follows_the_exponential_with_the_analog_system() {
     let d = rc_design();
     check_rc(&simulate(&d, &rc_options(), &mut |_| {}).expect("runs"));
@@ -257,7 +256,6 @@ fn bouncing_ball_impacts_at_the_analytic_times() {
 }
 
 #[test]
-#[ignore = "needs analog"]
 fn bouncing_ball_impacts_at_the_analytic_times_with_the_analog_system() {
     let d = ball_design();
     check_ball(&simulate(&d, &ball_options(), &mut |_| {}).expect("runs"));
@@ -390,7 +388,6 @@ fn thermostat_switches_at_the_analytic_times() {
 }
 
 #[test]
-#[ignore = "needs analog"]
 fn thermostat_switches_at_the_analytic_times_with_the_analog_system() {
     let d = thermostat_design();
     check_thermostat(&simulate(&d, &thermostat_options(), &mut |_| {}).expect("runs"));
