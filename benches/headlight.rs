@@ -42,7 +42,9 @@ fn load() -> (SourceMap, Vec<(FileId, DesignFile)>) {
 fn headlight(c: &mut Criterion) {
     let (sources, files) = load();
     let mut group = c.benchmark_group("headlight");
-    group.sample_size(10).measurement_time(Duration::from_secs(8));
+    group
+        .sample_size(10)
+        .measurement_time(Duration::from_secs(8));
     for (top, stop) in [("tb_tracking", 6.0), ("tb_overvoltage", 8.0)] {
         let options = ElabOptions {
             top: top.to_string(),
@@ -65,7 +67,10 @@ fn headlight(c: &mut Criterion) {
     group.finish();
     let mut parse = c.benchmark_group("frontend");
     parse.sample_size(20);
-    let bytes: usize = files.iter().map(|(id, _)| sources.file(*id).text.len()).sum();
+    let bytes: usize = files
+        .iter()
+        .map(|(id, _)| sources.file(*id).text.len())
+        .sum();
     parse.throughput(Throughput::Bytes(bytes as u64));
     parse.bench_function("parse/models+stdlib", |b| {
         b.iter(|| {

@@ -19,7 +19,11 @@ fn run(name: &str, options: SimOptions) -> SimResult {
         .map(|&id| {
             let text = sources.file(id).text.clone();
             let (ast, errors) = parser::parse(id, &text);
-            assert!(errors.is_empty(), "syntax errors in {}: {errors:?}", sources.file(id).name);
+            assert!(
+                errors.is_empty(),
+                "syntax errors in {}: {errors:?}",
+                sources.file(id).name
+            );
             (id, ast)
         })
         .collect();
@@ -64,12 +68,18 @@ fn rc_charge_follows_the_exponential() {
         let exact = 1.0 - (-t / tau).exp();
         // Linear interpolation between accepted points adds its own error: compare at
         // recorded points too.
-        assert!((v - exact).abs() < 2e-3, "t = {t}: v_c = {v}, exact {exact}");
+        assert!(
+            (v - exact).abs() < 2e-3,
+            "t = {t}: v_c = {v}, exact {exact}"
+        );
     }
     let col = w.column("v_c").expect("v_c recorded");
     for (&t, &v) in w.times.iter().zip(&col.values) {
         let exact = 1.0 - (-t / tau).exp();
-        assert!((v - exact).abs() < 1e-4, "t = {t}: v_c = {v}, exact {exact}");
+        assert!(
+            (v - exact).abs() < 1e-4,
+            "t = {t}: v_c = {v}, exact {exact}"
+        );
     }
 }
 
@@ -92,7 +102,11 @@ fn bouncing_ball_impacts_at_the_analytic_times() {
     }
     let expected: Vec<f64> = expected.into_iter().filter(|&t| t < 2.5).collect();
     let impacts = report_times(&result, "impact");
-    assert_eq!(impacts.len(), expected.len(), "impacts {impacts:?}, expected {expected:?}");
+    assert_eq!(
+        impacts.len(),
+        expected.len(),
+        "impacts {impacts:?}, expected {expected:?}"
+    );
     for (t, x) in impacts.iter().zip(&expected) {
         assert!((t - x).abs() < 1e-6, "impact at {t}, analytic {x}");
     }
@@ -117,7 +131,10 @@ fn thermostat_switches_at_the_analytic_times() {
     let heat = tau * ((t_on - t_low) / (t_on - t_high)).ln();
     let offs = report_times(&result, "off");
     let ons = report_times(&result, "on");
-    assert!(offs.len() >= 2 && !ons.is_empty(), "offs {offs:?} ons {ons:?}");
+    assert!(
+        offs.len() >= 2 && !ons.is_empty(),
+        "offs {offs:?} ons {ons:?}"
+    );
     let expected_off = [heat_first, heat_first + cool + heat];
     let expected_on = [heat_first + cool];
     for (t, x) in offs.iter().zip(&expected_off) {
@@ -137,7 +154,12 @@ fn delta_cycles_order_signal_updates() {
             ..SimOptions::default()
         },
     );
-    assert_eq!(result.outcome, Outcome::Finished, "reports: {:?}", result.reports);
+    assert_eq!(
+        result.outcome,
+        Outcome::Finished,
+        "reports: {:?}",
+        result.reports
+    );
     assert_eq!(report_times(&result, "done"), vec![0.0]);
 }
 
@@ -175,8 +197,14 @@ fn pwm_rl_ripple_matches_the_steady_state() {
     // 20 time constants in: the transient has decayed to e^-20 of the step.
     let at_min = w.value_at("i_load", 100e-3).expect("i_load recorded");
     let at_max = w.value_at("i_load", 102.5e-3).expect("i_load recorded");
-    assert!((at_min - i_min).abs() < 1e-3 * i_max, "i_min {at_min}, analytic {i_min}");
-    assert!((at_max - i_max).abs() < 1e-3 * i_max, "i_max {at_max}, analytic {i_max}");
+    assert!(
+        (at_min - i_min).abs() < 1e-3 * i_max,
+        "i_min {at_min}, analytic {i_min}"
+    );
+    assert!(
+        (at_max - i_max).abs() < 1e-3 * i_max,
+        "i_max {at_max}, analytic {i_max}"
+    );
 }
 
 #[test]
