@@ -174,10 +174,18 @@ pub enum Type {
     /// Physical type `time`, carried as seconds in an `f64`.
     Time,
     /// Enumeration, e.g. `std_ulogic` or `bit` or `character` or `severity_level`.
-    Enum { name: String, literals: Vec<String> },
+    Enum {
+        name: String,
+        literals: Vec<String>,
+    },
     String,
     /// One-dimensional array with integer index bounds `left to/downto right`.
-    Array { element: Box<Type>, left: i64, right: i64, ascending: bool },
+    Array {
+        element: Box<Type>,
+        left: i64,
+        right: i64,
+        ascending: bool,
+    },
 }
 
 /// A run-time value.
@@ -231,7 +239,11 @@ pub enum Expr {
     /// `if cond then a else b`: from simultaneous if/case and conditional expressions.
     If(Box<Expr>, Box<Expr>, Box<Expr>),
     /// Array element `a(i)` (processes only); index in the array type's own bounds.
-    Index { array: Box<Expr>, index: Box<Expr>, ty: Type },
+    Index {
+        array: Box<Expr>,
+        index: Box<Expr>,
+        ty: Type,
+    },
     /// `T'image(x)` (processes only).
     Image(Type, Box<Expr>),
     /// A signal attribute (processes only).
@@ -320,24 +332,51 @@ pub enum Builtin {
 #[derive(Clone, Debug)]
 pub enum Instr {
     /// `var := value` (whole variable).
-    SetVar { var: VarId, value: Expr },
+    SetVar {
+        var: VarId,
+        value: Expr,
+    },
     /// `var(index) := value` for array variables.
-    SetVarElement { var: VarId, index: Expr, value: Expr },
+    SetVarElement {
+        var: VarId,
+        index: Expr,
+        value: Expr,
+    },
     /// A signal assignment: a waveform of `(value, delay)` pairs, delays in seconds from now
     /// (0 = next delta cycle), in increasing order.
-    Assign { target: SignalId, waveform: Vec<(Expr, Expr)>, mechanism: DelayMechanism },
+    Assign {
+        target: SignalId,
+        waveform: Vec<(Expr, Expr)>,
+        mechanism: DelayMechanism,
+    },
     /// Suspend until an event on one of `on` with `until` true (or, with empty `on`, any event
     /// on a signal read by `until`), or until `timeout` seconds have passed.
-    Wait { on: Vec<SignalId>, until: Option<Expr>, timeout: Option<Expr> },
+    Wait {
+        on: Vec<SignalId>,
+        until: Option<Expr>,
+        timeout: Option<Expr>,
+    },
     Jump(usize),
     /// Go to `target` when `cond` is false.
-    JumpIfNot { cond: Expr, target: usize },
+    JumpIfNot {
+        cond: Expr,
+        target: usize,
+    },
     /// `assert cond report msg severity sev` (`report` alone: `cond` is `None`). `severity` is
     /// an expression of type `severity_level` (0 note, 1 warning, 2 error, 3 failure).
-    Assert { cond: Option<Expr>, report: Option<Expr>, severity: Expr, span: Span },
+    Assert {
+        cond: Option<Expr>,
+        report: Option<Expr>,
+        severity: Expr,
+        span: Span,
+    },
     /// Sequential `break [reinit list] [when cond]`: announce a discontinuity now and give
     /// quantities new values for the restart.
-    Break { reinit: Vec<BreakReinit>, when: Option<Expr>, span: Span },
+    Break {
+        reinit: Vec<BreakReinit>,
+        when: Option<Expr>,
+        span: Span,
+    },
     /// `std.env.stop` / `finish`: end the simulation cleanly.
     Stop,
     /// Suspend forever (`wait;`).
@@ -357,7 +396,9 @@ pub struct BreakReinit {
 pub enum DelayMechanism {
     Transport,
     /// Inertial with the given pulse-rejection limit in seconds (`None`: the first delay).
-    Inertial { reject: Option<Expr> },
+    Inertial {
+        reject: Option<Expr>,
+    },
 }
 
 /// `limit q : nature with max_step;` resolved to quantities.
