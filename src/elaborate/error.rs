@@ -198,7 +198,7 @@ pub enum ElabError {
     },
 
     /// A construct vams does not elaborate yet.
-    #[error("{what} is not supported yet")]
+    #[error("not supported yet: {what}")]
     #[diagnostic(code(vams::elab::unsupported))]
     Unsupported {
         #[label("here")]

@@ -240,12 +240,15 @@ impl<'a> Elab<'a> {
             return Ok(());
         }
         let help = if t.ty.is_numeric() && want.is_numeric() {
-            Some(INT_REAL_HELP.to_string())
+            INT_REAL_HELP.to_string()
         } else if matches!(want, Ty::Time) && t.ty.is_numeric() {
-            Some("multiply by a unit to get a time: `x * 1 sec`, `10 ms`".to_string())
+            "multiply by a unit to get a time: `x * 1 sec`, `10 ms`".to_string()
+        } else if *want == Ty::Boolean {
+            "a condition must be boolean: compare explicitly, e.g. `n /= 0` (VHDL has no implicit conversion)".to_string()
         } else {
-            None
+            format!("VHDL has no implicit conversion: give a value of type {want}")
         };
+        let help = Some(help);
         Err(self.error(ElabError::TypeMismatch {
             span,
             expected: want.to_string(),
