@@ -5,15 +5,41 @@
 //! entity with generic overrides. **Gives** a [`Design`] or every error found, each an
 //! [`ElabError`] with the span it is about and a help line.
 //!
+//! Analysis and elaboration are one walk: starting at the top entity, each instance's
+//! declarations are resolved in a [`scope::Scope`] and lowered at once (constants and
+//! generics fold to values, objects get their ids), so no intermediate annotated tree exists.
+//! Packages are elaborated once, on first `use`.
+//!
 //! May use `ast`, `source`, `design`, `diagnostics`. Never touches the solver or the kernel.
 
-use crate::ast::DesignFile;
-use crate::design::Design;
-use crate::source::{FileId, SourceMap};
+use std::collections::{HashMap, HashSet};
+use std::rc::Rc;
 
+use crate::ast::{ContextItem, DesignFile, ExprKind};
+use crate::design::{Design, Expr, QuantityId, SignalId};
+use crate::source::{FileId, SourceMap, Span};
+
+mod analog;
+mod attr;
+mod decls;
 mod error;
+mod expr;
+mod fold;
+mod generics;
+mod hier;
+mod library;
+mod process;
+mod scope;
+mod simultaneous;
+#[cfg(test)]
+mod tests;
+mod types;
 
 pub use error::ElabError;
+
+use library::{Library, canonical_library};
+use scope::{Item, PackageScope, Scope};
+use types::Sub;
 
 /// What to elaborate.
 #[derive(Clone, Debug, Default)]
@@ -31,12 +57,312 @@ pub fn elaborate(
     files: &[(FileId, DesignFile)],
     options: &ElabOptions,
 ) -> Result<Design, Vec<ElabError>> {
-    let _ = (sources, files, options);
-    todo!("elaboration")
+    let mut elab = Elab::new(sources, files);
+    elab.top(options);
+    if elab.errors.is_empty() {
+        Ok(elab.design)
+    } else {
+        Err(elab.errors)
+    }
 }
 
 /// Entities of library `work` that no architecture instantiates: the candidates for `--top`.
 pub fn find_tops(sources: &SourceMap, files: &[(FileId, DesignFile)]) -> Vec<String> {
-    let _ = (sources, files);
-    todo!("find_tops")
+    Library::index(sources, files).tops()
+}
+
+/// Marks a failure whose diagnostic is already in `Elab::errors`.
+#[derive(Debug, Clone, Copy)]
+struct Reported;
+
+type R<T> = Result<T, Reported>;
+
+/// A scalar nature of the elaborator's table; it enters the design on first use.
+#[derive(Debug)]
+struct NatureInfo {
+    name: String,
+    across: Rc<Sub>,
+    through: Rc<Sub>,
+    id: Option<crate::design::NatureId>,
+}
+
+/// The elaboration of one design.
+struct Elab<'a> {
+    sources: &'a SourceMap,
+    lib: Library<'a>,
+    design: Design,
+    errors: Vec<ElabError>,
+    packages: HashMap<(String, String), Rc<PackageScope<'a>>>,
+    packages_in_progress: HashSet<(String, String)>,
+    natures: Vec<NatureInfo>,
+    /// Implicit `Q'above(level)` signals, one per distinct pair.
+    above: Vec<(QuantityId, Expr, SignalId)>,
+    /// Auxiliary quantities of `Q'dot'dot` and `Q'integ`, by the quantity they derive from.
+    dot_aux: HashMap<QuantityId, QuantityId>,
+    integ_aux: HashMap<QuantityId, QuantityId>,
+    /// Hierarchical prefix of the objects being declared (`""` at the top, `dut.u_motor`).
+    path: String,
+    /// Instance path of the architecture being elaborated (no block or generate labels).
+    instance: String,
+    /// Unlabelled processes so far, per path (for `_pN` names).
+    unlabelled: HashMap<String, usize>,
+    /// While elaborating a stdlib package: its subprograms that have no body (native ones).
+    native_names: Option<HashSet<String>>,
+    /// Errors in stdlib declarations poison the names instead of being reported.
+    quiet: bool,
+}
+
+impl<'a> Elab<'a> {
+    fn new(sources: &'a SourceMap, files: &'a [(FileId, DesignFile)]) -> Elab<'a> {
+        Elab {
+            sources,
+            lib: Library::index(sources, files),
+            design: Design::default(),
+            errors: Vec::new(),
+            packages: HashMap::new(),
+            packages_in_progress: HashSet::new(),
+            natures: Vec::new(),
+            above: Vec::new(),
+            dot_aux: HashMap::new(),
+            integ_aux: HashMap::new(),
+            path: String::new(),
+            instance: String::new(),
+            unlabelled: HashMap::new(),
+            native_names: None,
+            quiet: false,
+        }
+    }
+
+    fn error(&mut self, e: ElabError) -> Reported {
+        self.errors.push(e);
+        Reported
+    }
+
+    /// `path.name`, or `name` at the top.
+    fn hier_name(&self, name: &str) -> String {
+        if self.path.is_empty() {
+            name.to_string()
+        } else {
+            format!("{}.{}", self.path, name)
+        }
+    }
+
+    /// The source text of a span with whitespace collapsed.
+    fn text(&self, span: Span) -> String {
+        self.sources
+            .snippet(span)
+            .split_whitespace()
+            .collect::<Vec<_>>()
+            .join(" ")
+    }
+
+    /// A new scope with the implicit context (`library std, work; use std.standard.all`) and
+    /// the unit's own context clause.
+    fn unit_scope(&mut self, library: &str, contexts: &[&'a [ContextItem]]) -> Scope<'a> {
+        let mut sc = Scope::new();
+        sc.import("std", Item::Library("std".into()));
+        sc.import("work", Item::Library(library.to_string()));
+        if let Ok(std) = self.package("std", "standard", None) {
+            for (name, items) in &std.items {
+                for item in items {
+                    sc.import(name, item.clone());
+                }
+            }
+        }
+        for context in contexts {
+            for item in context.iter() {
+                match item {
+                    ContextItem::Library(names, _) => {
+                        for n in names {
+                            sc.import(&n.name, Item::Library(canonical_library(&n.name).into()));
+                        }
+                    }
+                    ContextItem::Use(names, _) => {
+                        for n in names {
+                            let _ = self.use_clause(&mut sc, n);
+                        }
+                    }
+                }
+            }
+        }
+        sc
+    }
+
+    /// `use lib.pkg.all;`, `use lib.pkg.name;`, `use lib.pkg;`
+    fn use_clause(&mut self, sc: &mut Scope<'a>, name: &crate::ast::Expr) -> R<()> {
+        let ExprKind::Selected(prefix, suffix) = &name.kind else {
+            return Err(self.error(ElabError::invalid(
+                name.span,
+                "a use clause names `library.package.all` or `library.package.item`",
+                None,
+            )));
+        };
+        if let ExprKind::Name(lib) = &prefix.kind {
+            // `use lib.pkg;`
+            let lib_name = self.library_name(sc, lib)?;
+            let pkg = self.package(&lib_name, &suffix.name, Some(suffix.span))?;
+            sc.import(&suffix.name, Item::Package(pkg));
+            return Ok(());
+        }
+        let ExprKind::Selected(lib_expr, pkg_name) = &prefix.kind else {
+            return Err(self.error(ElabError::invalid(
+                prefix.span,
+                "expected `library.package`",
+                None,
+            )));
+        };
+        let ExprKind::Name(lib) = &lib_expr.kind else {
+            return Err(self.error(ElabError::invalid(
+                lib_expr.span,
+                "expected a library name",
+                None,
+            )));
+        };
+        let lib_name = self.library_name(sc, lib)?;
+        let pkg = self.package(&lib_name, &pkg_name.name, Some(pkg_name.span))?;
+        if suffix.name == "all" {
+            for (n, items) in &pkg.items {
+                for item in items {
+                    sc.import(n, item.clone());
+                }
+            }
+        } else if let Some(items) = pkg.items.get(&suffix.name) {
+            for item in items {
+                sc.import(&suffix.name, item.clone());
+            }
+        } else {
+            let names: Vec<&String> = pkg.items.keys().collect();
+            let best = names
+                .iter()
+                .map(|k| (scope::edit_distance(&suffix.name, k), *k))
+                .min()
+                .filter(|(d, _)| *d <= 2);
+            return Err(self.error(ElabError::Undeclared {
+                span: suffix.span,
+                name: format!("{}.{}", pkg_name.name, suffix.name),
+                help: Some(match best {
+                    Some((_, b)) => format!("did you mean `{b}`?"),
+                    None => format!("package `{}` declares no such item", pkg_name.name),
+                }),
+            }));
+        }
+        Ok(())
+    }
+
+    fn library_name(&mut self, sc: &Scope<'a>, lib: &crate::ast::Ident) -> R<String> {
+        match sc.lookup(&lib.name) {
+            Some([Item::Library(l), ..]) => Ok(l.clone()),
+            _ => Err(self.error(ElabError::Undeclared {
+                span: lib.span,
+                name: lib.name.clone(),
+                help: Some(format!(
+                    "declare the library first: `library {};` (std and work are always visible)",
+                    lib.name
+                )),
+            })),
+        }
+    }
+
+    /// The declarations of package `lib.name`, elaborated on first use.
+    fn package(&mut self, lib: &str, name: &str, span: Option<Span>) -> R<Rc<PackageScope<'a>>> {
+        let key = (canonical_library(lib).to_string(), name.to_string());
+        if let Some(p) = self.packages.get(&key) {
+            return Ok(p.clone());
+        }
+        let Some(unit) = self.lib.packages.get(&key).cloned() else {
+            let err = ElabError::Undeclared {
+                span: span.unwrap_or_default(),
+                name: format!("{}.{}", key.0, key.1),
+                help: Some(format!("library `{}` has no package `{}`", key.0, key.1)),
+            };
+            return Err(self.error(err));
+        };
+        if !self.packages_in_progress.insert(key.clone()) {
+            let err = ElabError::invalid(
+                span.unwrap_or(unit.unit.name.span),
+                format!("package `{}` uses itself", key.1),
+                Some("remove the circular use clause".into()),
+            );
+            return Err(self.error(err));
+        }
+        let stdlib = matches!(key.0.as_str(), "std" | "ieee");
+        let body = self.lib.bodies.get(&key).cloned();
+        let saved = (
+            self.quiet,
+            self.native_names.take(),
+            std::mem::take(&mut self.path),
+        );
+        self.quiet = stdlib;
+        if stdlib {
+            let with_body: HashSet<String> = body
+                .iter()
+                .flat_map(|b| b.unit.decls.iter())
+                .filter_map(|d| match &d.kind {
+                    crate::ast::DeclKind::SubprogramBody { spec, .. } => {
+                        Some(decls::designator(spec))
+                    }
+                    _ => None,
+                })
+                .collect();
+            let native: HashSet<String> = unit
+                .unit
+                .decls
+                .iter()
+                .filter_map(|d| match &d.kind {
+                    crate::ast::DeclKind::Subprogram(spec) => Some(decls::designator(spec)),
+                    _ => None,
+                })
+                .filter(|n| !with_body.contains(n))
+                .collect();
+            self.native_names = Some(native);
+        }
+        let mut sc = if key == ("std".to_string(), "standard".to_string()) {
+            let mut sc = Scope::new();
+            sc.import("std", Item::Library("std".into()));
+            sc
+        } else {
+            self.unit_scope(&unit.library, &[unit.context])
+        };
+        sc.push();
+        self.decls(&mut sc, &unit.unit.decls);
+        self.native_names = None;
+        if let Some(body) = body {
+            // Deferred constants get their values from the body.
+            let mut body_sc = sc.clone();
+            for item in body.context {
+                if let ContextItem::Use(names, _) = item {
+                    for n in names {
+                        let _ = self.use_clause(&mut body_sc, n);
+                    }
+                }
+            }
+            body_sc.push();
+            self.decls(&mut body_sc, &body.unit.decls);
+            if let Some(region) = body_sc.regions.last() {
+                for (n, items) in &region.items {
+                    let deferred =
+                        sc.regions
+                            .last()
+                            .and_then(|r| r.items.get(n))
+                            .is_some_and(|old| {
+                                old.iter().any(
+                                |i| matches!(i, Item::Poison(Some(r)) if r.starts_with("deferred")),
+                            )
+                            });
+                    if deferred {
+                        sc.replace(n, items.clone());
+                    }
+                }
+            }
+        }
+        (self.quiet, self.native_names, self.path) = saved;
+        self.packages_in_progress.remove(&key);
+        let region = sc.regions.pop().unwrap_or_default();
+        let pkg = Rc::new(PackageScope {
+            name: key.1.clone(),
+            items: region.items,
+        });
+        self.packages.insert(key, pkg.clone());
+        Ok(pkg)
+    }
 }

@@ -1,0 +1,478 @@
+//! Analog objects: natures (with their reference terminals), terminals, free and branch
+//! quantities, `limit` specifications, and the implicit objects of `Q'dot'dot`, `Q'integ`
+//! and `Q'above(E)`.
+
+use std::rc::Rc;
+
+use crate::ast::{self, BranchName, EntityNames, Ident, NatureDef, QuantityDecl};
+use crate::design::{
+    BinaryOp, BreakReinit, Equation, Expr, Instr, Limit, Nature, NatureId, Process, Quantity,
+    QuantityId, QuantityKind, Signal, SignalId, SignalKind, Terminal, TerminalId, Value,
+};
+use crate::source::Span;
+
+use super::error::ElabError;
+use super::scope::{Item, Scope};
+use super::types::{Sub, Ty};
+use super::{Elab, NatureInfo, R};
+
+impl<'a> Elab<'a> {
+    pub(super) fn nature_decl(
+        &mut self,
+        sc: &mut Scope<'a>,
+        name: &Ident,
+        def: &NatureDef,
+        span: Span,
+    ) -> R<()> {
+        let NatureDef::Scalar {
+            across,
+            through,
+            reference,
+        } = def
+        else {
+            return Err(self.error(ElabError::unsupported(
+                span,
+                "array and record natures",
+                "declare scalar terminals, one per element",
+            )));
+        };
+        let across = self.type_mark(sc, across)?;
+        let through = self.type_mark(sc, through)?;
+        for (sub, mark) in [(&across, "across"), (&through, "through")] {
+            if sub.ty != Ty::Real {
+                return Err(self.error(ElabError::TypeMismatch {
+                    span,
+                    expected: format!("a real {mark} type"),
+                    found: sub.ty.to_string(),
+                    help: None,
+                }));
+            }
+        }
+        let idx = self.natures.len();
+        self.natures.push(NatureInfo {
+            name: name.name.clone(),
+            across,
+            through,
+            id: None,
+        });
+        sc.declare(&name.name, Item::Nature(idx));
+        sc.declare(&reference.name, Item::RefTerminal { nature: idx });
+        Ok(())
+    }
+
+    /// The design nature of table entry `idx`, created with its reference terminal on first use.
+    pub(super) fn nature_id(&mut self, idx: usize) -> NatureId {
+        if let Some(id) = self.natures[idx].id {
+            return id;
+        }
+        let id = NatureId(self.design.natures.len() as u32);
+        let reference = TerminalId(self.design.terminals.len() as u32);
+        let info = &self.natures[idx];
+        self.design.terminals.push(Terminal {
+            name: format!("{}_ref", info.name),
+            nature: id,
+            is_reference: true,
+            span: Span::default(),
+        });
+        self.design.natures.push(Nature {
+            name: info.name.clone(),
+            across_tolerance: info.across.tolerance.clone(),
+            through_tolerance: info.through.tolerance.clone(),
+            reference,
+        });
+        self.natures[idx].id = Some(id);
+        id
+    }
+
+    pub(super) fn reference_terminal(&mut self, nature: usize) -> TerminalId {
+        let id = self.nature_id(nature);
+        self.design.natures[id.index()].reference
+    }
+
+    pub(super) fn new_terminal(&mut self, name: &str, nature: usize, span: Span) -> TerminalId {
+        let nid = self.nature_id(nature);
+        let id = TerminalId(self.design.terminals.len() as u32);
+        self.design.terminals.push(Terminal {
+            name: self.hier_name(name),
+            nature: nid,
+            is_reference: false,
+            span,
+        });
+        id
+    }
+
+    /// The nature table index a nature mark denotes.
+    pub(super) fn nature_mark(&mut self, sc: &Scope<'a>, si: &ast::SubtypeIndication) -> R<usize> {
+        let items = self.lookup(sc, &si.type_mark)?;
+        match items[0] {
+            Item::Nature(n) => Ok(n),
+            ref other => Err(self.error(ElabError::WrongClass {
+                span: si.type_mark.span,
+                name: self.sources.snippet(si.type_mark.span).into(),
+                found: other.class().into(),
+                expected: "a nature".into(),
+                help: Some(
+                    "terminals are declared with a nature: `terminal p : electrical;`".into(),
+                ),
+            })),
+        }
+    }
+
+    pub(super) fn terminal_decl(
+        &mut self,
+        sc: &mut Scope<'a>,
+        names: &[Ident],
+        nature: &ast::SubtypeIndication,
+    ) -> R<()> {
+        let n = self.nature_mark(sc, nature)?;
+        for name in names {
+            let id = self.new_terminal(&name.name, n, name.span);
+            if !sc.declare(&name.name, Item::Terminal { id, nature: n }) {
+                return Err(self.error(ElabError::Redeclared {
+                    span: name.span,
+                    name: name.name.clone(),
+                }));
+            }
+        }
+        Ok(())
+    }
+
+    /// A terminal named in a branch quantity or a port map: `(id, nature)`.
+    pub(super) fn terminal(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<(TerminalId, usize)> {
+        let items = self.lookup(sc, e)?;
+        match items[0] {
+            Item::Terminal { id, nature } => Ok((id, nature)),
+            Item::RefTerminal { nature } => Ok((self.reference_terminal(nature), nature)),
+            ref other => Err(self.error(ElabError::WrongClass {
+                span: e.span,
+                name: self.sources.snippet(e.span).into(),
+                found: other.class().into(),
+                expected: "a terminal".into(),
+                help: Some("branch quantities are declared between terminals: `quantity v across i through p to n;`".into()),
+            })),
+        }
+    }
+
+    pub(super) fn new_quantity(
+        &mut self,
+        name: &str,
+        kind: QuantityKind,
+        sub: &Sub,
+        tolerance: Option<String>,
+        initial_guess: Option<f64>,
+        span: Span,
+    ) -> QuantityId {
+        let id = QuantityId(self.design.quantities.len() as u32);
+        self.design.quantities.push(Quantity {
+            name: self.hier_name(name),
+            kind,
+            tolerance: tolerance.or_else(|| sub.tolerance.clone()),
+            subtype: sub.name.clone(),
+            unit: sub.unit.clone(),
+            initial_guess,
+            span,
+        });
+        id
+    }
+
+    fn tolerance_and_init(
+        &mut self,
+        sc: &Scope<'a>,
+        tolerance: Option<&ast::Expr>,
+        value: Option<&ast::Expr>,
+    ) -> R<(Option<String>, Option<f64>)> {
+        let tol = match tolerance {
+            Some(t) => {
+                let string = match sc.lookup("string") {
+                    Some([Item::Type(s), ..]) => s.ty.clone(),
+                    _ => return Err(super::Reported),
+                };
+                match self.static_value(sc, t, &string, "a tolerance group")? {
+                    Value::String(s) => Some(s),
+                    _ => None,
+                }
+            }
+            None => None,
+        };
+        let init = match value {
+            Some(v) => self
+                .static_value(sc, v, &Ty::Real, "a quantity's initial value")?
+                .as_f64(),
+            None => None,
+        };
+        Ok((tol, init))
+    }
+
+    pub(super) fn quantity_decl(
+        &mut self,
+        sc: &mut Scope<'a>,
+        q: &QuantityDecl,
+        span: Span,
+    ) -> R<()> {
+        match q {
+            QuantityDecl::Free {
+                names,
+                subtype,
+                value,
+            } => {
+                let sub = self.subtype_indication(sc, subtype)?;
+                if sub.ty != Ty::Real {
+                    return Err(self.error(ElabError::unsupported(
+                        subtype.span,
+                        format!("quantities of type {}", sub.ty),
+                        "quantities are scalar reals in vams (vector quantities are not supported yet)",
+                    )));
+                }
+                let (tol, init) =
+                    self.tolerance_and_init(sc, subtype.tolerance.as_ref(), value.as_ref())?;
+                for n in names {
+                    let id = self.new_quantity(
+                        &n.name,
+                        QuantityKind::Free,
+                        &sub,
+                        tol.clone(),
+                        init,
+                        n.span,
+                    );
+                    if !sc.declare(&n.name, Item::Quantity(id)) {
+                        return Err(self.error(ElabError::Redeclared {
+                            span: n.span,
+                            name: n.name.clone(),
+                        }));
+                    }
+                }
+                Ok(())
+            }
+            QuantityDecl::Branch {
+                across,
+                through,
+                plus,
+                minus,
+            } => {
+                let Some(plus) = plus else {
+                    return Err(self.error(ElabError::invalid(
+                        span,
+                        "a branch quantity needs its terminals: `... through p to n`",
+                        None,
+                    )));
+                };
+                let (p, nature) = self.terminal(sc, plus)?;
+                let m = match minus {
+                    Some(minus) => {
+                        let (m, mn) = self.terminal(sc, minus)?;
+                        if mn != nature {
+                            let (a, b) = (
+                                self.natures[nature].name.clone(),
+                                self.natures[mn].name.clone(),
+                            );
+                            return Err(self.error(ElabError::TypeMismatch {
+                                span: minus.span,
+                                expected: format!("a terminal of nature {a}"),
+                                found: format!("a terminal of nature {b}"),
+                                help: Some(
+                                    "both ends of a branch must have the same nature".into(),
+                                ),
+                            }));
+                        }
+                        m
+                    }
+                    None => self.reference_terminal(nature),
+                };
+                let across_sub = self.natures[nature].across.clone();
+                let through_sub = self.natures[nature].through.clone();
+                let groups: [(&Vec<BranchName>, Rc<Sub>, QuantityKind); 2] = [
+                    (
+                        across,
+                        across_sub,
+                        QuantityKind::Across { plus: p, minus: m },
+                    ),
+                    (
+                        through,
+                        through_sub,
+                        QuantityKind::Through { plus: p, minus: m },
+                    ),
+                ];
+                for (names, sub, kind) in groups {
+                    for b in names {
+                        let (tol, init) =
+                            self.tolerance_and_init(sc, b.tolerance.as_ref(), b.value.as_ref())?;
+                        for n in &b.names {
+                            let id =
+                                self.new_quantity(&n.name, kind, &sub, tol.clone(), init, n.span);
+                            if !sc.declare(&n.name, Item::Quantity(id)) {
+                                return Err(self.error(ElabError::Redeclared {
+                                    span: n.span,
+                                    name: n.name.clone(),
+                                }));
+                            }
+                        }
+                    }
+                }
+                Ok(())
+            }
+            QuantityDecl::Source { .. } => Err(self.error(ElabError::unsupported(
+                span,
+                "source quantities (`spectrum`, `noise`)",
+                "frequency-domain analysis is not supported",
+            ))),
+        }
+    }
+
+    pub(super) fn limit(
+        &mut self,
+        sc: &mut Scope<'a>,
+        names: &EntityNames,
+        _type_mark: &ast::Expr,
+        value: &ast::Expr,
+        span: Span,
+    ) -> R<()> {
+        let EntityNames::List(names) = names else {
+            return Err(self.error(ElabError::unsupported(
+                span,
+                "`limit all` and `limit others`",
+                "list the quantities: `limit q1, q2 : real with 1.0e-3;`",
+            )));
+        };
+        let mut quantities = Vec::new();
+        for n in names {
+            let t = self.expr(sc, n, None)?;
+            match t.e {
+                Expr::Quantity(q) => quantities.push(q),
+                _ => {
+                    return Err(self.error(ElabError::WrongClass {
+                        span: n.span,
+                        name: self.sources.snippet(n.span).into(),
+                        found: "not a quantity".into(),
+                        expected: "a quantity".into(),
+                        help: None,
+                    }));
+                }
+            }
+        }
+        let max_step = self.expr_of(sc, value, &Ty::Real)?;
+        if !max_step.e.is_analog() {
+            return Err(self.error(ElabError::invalid(
+                value.span,
+                "the step limit must be an analog expression",
+                None,
+            )));
+        }
+        self.design.limits.push(Limit {
+            quantities,
+            max_step: max_step.e,
+        });
+        Ok(())
+    }
+
+    fn aux_quantity(&mut self, of: QuantityId, suffix: &str) -> QuantityId {
+        let base = &self.design.quantities[of.index()];
+        let (name, span) = (format!("{}'{suffix}", base.name), base.span);
+        let id = QuantityId(self.design.quantities.len() as u32);
+        self.design.quantities.push(Quantity {
+            name,
+            kind: QuantityKind::Free,
+            tolerance: None,
+            subtype: "real".into(),
+            unit: None,
+            initial_guess: None,
+            span,
+        });
+        id
+    }
+
+    /// The auxiliary quantity `q'dot` (for `q'dot'dot`), with its equation `q'dot == d q/dt`.
+    pub(super) fn dot_quantity(&mut self, q: QuantityId) -> QuantityId {
+        if let Some(a) = self.dot_aux.get(&q) {
+            return *a;
+        }
+        let aux = self.aux_quantity(q, "dot");
+        let name = self.design.quantities[aux.index()].name.clone();
+        let span = self.design.quantities[q.index()].span;
+        self.design.equations.push(Equation {
+            residual: Expr::Binary(
+                BinaryOp::Sub,
+                Box::new(Expr::Quantity(aux)),
+                Box::new(Expr::Dot(q)),
+            ),
+            span,
+            instance: self.instance.clone(),
+            text: format!("{name} == {}'dot", self.design.quantities[q.index()].name),
+        });
+        self.dot_aux.insert(q, aux);
+        aux
+    }
+
+    /// The auxiliary quantity `q'integ`: `d(q'integ)/dt == q`, starting from 0 (a generated
+    /// process breaks it to 0 once).
+    pub(super) fn integ_quantity(&mut self, q: QuantityId) -> QuantityId {
+        if let Some(a) = self.integ_aux.get(&q) {
+            return *a;
+        }
+        let aux = self.aux_quantity(q, "integ");
+        let name = self.design.quantities[aux.index()].name.clone();
+        let span = self.design.quantities[q.index()].span;
+        self.design.equations.push(Equation {
+            residual: Expr::Binary(
+                BinaryOp::Sub,
+                Box::new(Expr::Dot(aux)),
+                Box::new(Expr::Quantity(q)),
+            ),
+            span,
+            instance: self.instance.clone(),
+            text: format!("{name}'dot == {}", self.design.quantities[q.index()].name),
+        });
+        self.design.processes.push(Process {
+            name: format!("{name}_init"),
+            vars: Vec::new(),
+            code: vec![
+                Instr::Break {
+                    reinit: vec![BreakReinit {
+                        selector: aux,
+                        quantity: aux,
+                        value: Expr::real(0.0),
+                    }],
+                    when: None,
+                    span,
+                },
+                Instr::Halt,
+            ],
+            span,
+        });
+        self.integ_aux.insert(q, aux);
+        aux
+    }
+
+    /// The implicit boolean signal `q'above(level)`, one per distinct pair.
+    pub(super) fn above_signal(&mut self, q: QuantityId, level: Expr, span: Span) -> SignalId {
+        if let Some((_, _, s)) = self
+            .above
+            .iter()
+            .find(|(aq, al, _)| *aq == q && *al == level)
+        {
+            return *s;
+        }
+        let level_text = match &level {
+            Expr::Const(v) => v
+                .as_f64()
+                // Shortest readable form: 0.15, not 0.15000000000000002.
+                .map_or_else(|| "?".to_string(), |x| format!("{}", x as f32)),
+            _ => self.text(span),
+        };
+        let id = SignalId(self.design.signals.len() as u32);
+        self.design.signals.push(Signal {
+            name: format!(
+                "{}'above({level_text})",
+                self.design.quantities[q.index()].name
+            ),
+            ty: crate::design::Type::Boolean,
+            init: Value::Boolean(false),
+            kind: SignalKind::Above {
+                quantity: Expr::Quantity(q),
+                level: level.clone(),
+            },
+            span,
+        });
+        self.above.push((q, level, id));
+        id
+    }
+}

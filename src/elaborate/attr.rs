@@ -1,0 +1,369 @@
+//! Attributes: `Q'dot`, `Q'integ`, `Q'above(E)` on quantities, `'event`, `'active`,
+//! `'last_value`, `'last_event` on signals, `T'image(x)`, and the static `'high`, `'low`,
+//! `'left`, `'right`, `'length`, `'ascending`; ranges, including `a'range`.
+
+use std::rc::Rc;
+
+use crate::ast::{self, Actual, Ident, Range};
+use crate::design::{Expr, SignalAttr, Value};
+use crate::source::Span;
+
+use super::error::ElabError;
+use super::expr::Typed;
+use super::scope::{Item, Scope};
+use super::types::{Sub, Ty};
+use super::{Elab, R, Reported};
+
+const ANALOG_UNSUPPORTED: &[&str] = &[
+    "delayed",
+    "ltf",
+    "ztf",
+    "ramp",
+    "slew",
+    "zoh",
+    "tolerance",
+    "contribution",
+    "reference",
+    "across",
+    "through",
+];
+const SIGNAL_UNSUPPORTED: &[&str] = &[
+    "stable",
+    "quiet",
+    "transaction",
+    "last_active",
+    "driving",
+    "driving_value",
+    "delayed",
+];
+
+impl<'a> Elab<'a> {
+    pub(super) fn type_mark(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<Rc<Sub>> {
+        let items = self.lookup(sc, e)?;
+        match &items[0] {
+            Item::Type(sub) => Ok(sub.clone()),
+            other => Err(self.error(ElabError::WrongClass {
+                span: e.span,
+                name: self.sources.snippet(e.span).to_string(),
+                found: other.class().into(),
+                expected: "a type".into(),
+                help: None,
+            })),
+        }
+    }
+
+    pub(super) fn attribute(
+        &mut self,
+        sc: &Scope<'a>,
+        prefix: &ast::Expr,
+        attr: &Ident,
+        args: &[ast::Assoc],
+        span: Span,
+        want: Option<&Ty>,
+    ) -> R<Typed> {
+        let name = attr.name.as_str();
+        let arg = |i: usize| match args.get(i) {
+            Some(ast::Assoc {
+                actual: Actual::Expr(e),
+                ..
+            }) => Some(e),
+            _ => None,
+        };
+        match name {
+            "dot" | "integ" => {
+                let p = self.expr(sc, prefix, None)?;
+                let q = match p.e {
+                    Expr::Quantity(q) => q,
+                    Expr::Dot(q) => self.dot_quantity(q),
+                    _ => return Err(self.wrong_class(prefix, &p, "a quantity", name)),
+                };
+                if name == "dot" {
+                    Ok(Typed { e: Expr::Dot(q), ty: Ty::Real })
+                } else {
+                    Ok(Typed { e: Expr::Quantity(self.integ_quantity(q)), ty: Ty::Real })
+                }
+            }
+            "above" => {
+                let p = self.expr(sc, prefix, None)?;
+                let Expr::Quantity(q) = p.e else {
+                    return Err(self.wrong_class(prefix, &p, "a quantity", name));
+                };
+                let Some(level) = arg(0) else {
+                    return Err(self.error(ElabError::invalid(span, "`'above` needs a level: `q'above(0.5)`", None)));
+                };
+                let level = self.expr_of(sc, level, &Ty::Real)?;
+                if !level.e.is_analog() {
+                    return Err(self.error(ElabError::invalid(span, "the level of `'above` must be an analog expression", None)));
+                }
+                let s = self.above_signal(q, level.e, span);
+                Ok(Typed { e: Expr::Signal(s), ty: Ty::Boolean })
+            }
+            "event" | "active" | "last_value" | "last_event" => {
+                let p = self.expr(sc, prefix, None)?;
+                let Expr::Signal(s) = p.e else {
+                    return Err(self.wrong_class(prefix, &p, "a signal", name));
+                };
+                let (a, ty) = match name {
+                    "event" => (SignalAttr::Event, Ty::Boolean),
+                    "active" => (SignalAttr::Active, Ty::Boolean),
+                    "last_value" => (SignalAttr::LastValue, p.ty),
+                    _ => (SignalAttr::LastEvent, Ty::Time),
+                };
+                Ok(Typed { e: Expr::SignalAttr(s, a), ty })
+            }
+            "image" => {
+                let ty = self.type_mark(sc, prefix)?.ty.clone();
+                let Some(x) = arg(0) else {
+                    return Err(self.error(ElabError::invalid(span, "`'image` takes one argument: `real'image(x)`", None)));
+                };
+                let x = self.expr_of(sc, x, &ty)?;
+                let string = match sc.lookup("string") {
+                    Some([Item::Type(s), ..]) => s.ty.clone(),
+                    _ => Ty::Integer,
+                };
+                Ok(Typed { e: Expr::Image(ty.to_design(), Box::new(x.e)), ty: string })
+            }
+            "high" | "low" | "left" | "right" | "length" | "ascending" => self.bound_attribute(sc, prefix, name, span),
+            _ if ANALOG_UNSUPPORTED.contains(&name) || SIGNAL_UNSUPPORTED.contains(&name) => {
+                let _ = want;
+                Err(self.error(ElabError::unsupported(
+                    attr.span,
+                    format!("the attribute `'{name}`"),
+                    "vams supports 'dot, 'integ and 'above on quantities and 'event, 'active, 'last_value and 'last_event on signals",
+                )))
+            }
+            _ => Err(self.error(ElabError::unsupported(
+                attr.span,
+                format!("the attribute `'{name}`"),
+                "supported: 'dot 'integ 'above 'event 'active 'last_value 'last_event 'image 'high 'low 'left 'right 'length 'range",
+            ))),
+        }
+    }
+
+    fn wrong_class(
+        &mut self,
+        prefix: &ast::Expr,
+        p: &Typed,
+        expected: &str,
+        attr: &str,
+    ) -> Reported {
+        let found = match p.e {
+            Expr::Signal(_) => "a signal",
+            Expr::Quantity(_) => "a quantity",
+            Expr::Var(_) => "a variable",
+            Expr::Const(_) => "a constant",
+            _ => "an expression",
+        };
+        self.error(ElabError::WrongClass {
+            span: prefix.span,
+            name: self.sources.snippet(prefix.span).to_string(),
+            found: found.into(),
+            expected: expected.into(),
+            help: Some(format!("`'{attr}` applies to {expected}")),
+        })
+    }
+
+    /// `'high`, `'low`, `'left`, `'right`, `'length`, `'ascending` of a type or an array.
+    fn bound_attribute(
+        &mut self,
+        sc: &Scope<'a>,
+        prefix: &ast::Expr,
+        name: &str,
+        span: Span,
+    ) -> R<Typed> {
+        let items = self.lookup(sc, prefix)?;
+        let (ty, range) = match &items[0] {
+            Item::Type(sub) => (sub.ty.clone(), sub.range.clone()),
+            _ => (self.expr(sc, prefix, None)?.ty, None),
+        };
+        if let Ty::Array(a) = &ty {
+            let Some((l, r, asc)) = a.bounds else {
+                return Err(self.error(ElabError::invalid(
+                    span,
+                    format!("`{}` is unconstrained: it has no bounds", a.name),
+                    None,
+                )));
+            };
+            let (lo, hi) = if asc { (l, r) } else { (r, l) };
+            let v = match name {
+                "high" => Value::Integer(hi),
+                "low" => Value::Integer(lo),
+                "left" => Value::Integer(l),
+                "right" => Value::Integer(r),
+                "length" => Value::Integer(super::types::bounds_len(l, r, asc) as i64),
+                _ => Value::Boolean(asc),
+            };
+            let ty = if name == "ascending" {
+                Ty::Boolean
+            } else {
+                Ty::Integer
+            };
+            return Ok(Typed {
+                e: Expr::Const(v),
+                ty,
+            });
+        }
+        let Some((left, right)) = range.or_else(|| ty.scalar_bounds()) else {
+            return Err(self.error(ElabError::invalid(
+                span,
+                format!("`'{name}` needs a scalar type or an array"),
+                None,
+            )));
+        };
+        let asc = !matches!(
+            crate::elaborate::fold::eval(&Expr::Binary(
+                crate::design::BinaryOp::Gt,
+                Box::new(Expr::Const(left.clone())),
+                Box::new(Expr::Const(right.clone()))
+            )),
+            Ok(Value::Boolean(true))
+        );
+        let v = match name {
+            "high" => {
+                if asc {
+                    right
+                } else {
+                    left
+                }
+            }
+            "low" => {
+                if asc {
+                    left
+                } else {
+                    right
+                }
+            }
+            "left" => left,
+            "right" => right,
+            "ascending" => {
+                return Ok(Typed {
+                    e: Expr::Const(Value::Boolean(asc)),
+                    ty: Ty::Boolean,
+                });
+            }
+            _ => {
+                return Err(self.error(ElabError::invalid(
+                    span,
+                    "`'length` applies to arrays",
+                    None,
+                )));
+            }
+        };
+        Ok(Typed {
+            e: Expr::Const(v),
+            ty,
+        })
+    }
+
+    /// The bounds of a range as expressions: `(left, right, ascending)`.
+    pub(super) fn range_exprs(&mut self, sc: &Scope<'a>, r: &Range) -> R<(Typed, Typed, bool)> {
+        match r {
+            Range::Explicit {
+                left, dir, right, ..
+            } => {
+                let l = self.expr(sc, left, None)?;
+                let r = self.expr_of(sc, right, &l.ty)?;
+                Ok((l, r, *dir == ast::Direction::To))
+            }
+            Range::Attribute(e) => {
+                let ast::ExprKind::Attribute(prefix, attr) = &e.kind else {
+                    return Err(self.error(ElabError::invalid(e.span, "expected a range", None)));
+                };
+                if attr.name != "range" && attr.name != "reverse_range" {
+                    return Err(self.error(ElabError::invalid(e.span, "expected `x'range`", None)));
+                }
+                let items = self.lookup(sc, prefix)?;
+                let (ty, range) = match &items[0] {
+                    Item::Type(sub) => (sub.ty.clone(), sub.range.clone()),
+                    _ => (self.expr(sc, prefix, None)?.ty, None),
+                };
+                let (l, r, asc) = match (&ty, range) {
+                    (Ty::Array(a), _) => match a.bounds {
+                        Some((l, r, asc)) => (Value::Integer(l), Value::Integer(r), asc),
+                        None => {
+                            return Err(self.error(ElabError::invalid(
+                                e.span,
+                                "an unconstrained array has no range",
+                                None,
+                            )));
+                        }
+                    },
+                    (_, Some((l, r))) => (l, r, true),
+                    (t, None) => match t.scalar_bounds() {
+                        Some((l, r)) => (l, r, true),
+                        None => {
+                            return Err(self.error(ElabError::invalid(e.span, "no range", None)));
+                        }
+                    },
+                };
+                let elem_ty = match &ty {
+                    Ty::Array(_) => Ty::Integer,
+                    t => t.clone(),
+                };
+                let (l, r, asc) = if attr.name == "reverse_range" {
+                    (r, l, !asc)
+                } else {
+                    (l, r, asc)
+                };
+                Ok((
+                    Typed {
+                        e: Expr::Const(l),
+                        ty: elem_ty.clone(),
+                    },
+                    Typed {
+                        e: Expr::Const(r),
+                        ty: elem_ty,
+                    },
+                    asc,
+                ))
+            }
+        }
+    }
+
+    /// A static integer range.
+    pub(super) fn range_bounds(&mut self, sc: &Scope<'a>, r: &Range) -> R<(i64, i64, bool)> {
+        let span = match r {
+            Range::Explicit { span, .. } => *span,
+            Range::Attribute(e) => e.span,
+        };
+        let (l, rr, asc) = self.range_exprs(sc, r)?;
+        match (l.value(), rr.value()) {
+            (Some(Value::Integer(a)), Some(Value::Integer(b))) => Ok((*a, *b, asc)),
+            (Some(_), Some(_)) => Err(self.error(ElabError::TypeMismatch {
+                span,
+                expected: "an integer range".into(),
+                found: l.ty.to_string(),
+                help: None,
+            })),
+            _ => Err(self.error(ElabError::NotStatic {
+                span,
+                what: "this range".into(),
+            })),
+        }
+    }
+
+    /// A static discrete range: `1 to 4`, `x'range`, `natural range 0 to 3`.
+    pub(super) fn discrete_range(
+        &mut self,
+        sc: &Scope<'a>,
+        r: &ast::DiscreteRange,
+    ) -> R<(i64, i64, bool)> {
+        match r {
+            ast::DiscreteRange::Range(r) => self.range_bounds(sc, r),
+            ast::DiscreteRange::Subtype(si) => match &si.range {
+                Some(r) => self.range_bounds(sc, r),
+                None => {
+                    let sub = self.type_mark(sc, &si.type_mark)?;
+                    match sub.range.clone() {
+                        Some((Value::Integer(l), Value::Integer(r))) => Ok((l, r, true)),
+                        _ => Err(self.error(ElabError::unsupported(
+                            si.span,
+                            "this discrete range",
+                            "write an explicit range: `0 to 3`",
+                        ))),
+                    }
+                }
+            },
+        }
+    }
+}

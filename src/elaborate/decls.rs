@@ -1,0 +1,600 @@
+//! Declarations: types, subtypes, constants, signals, aliases, attribute specifications,
+//! components and subprogram declarations; natures, terminals and quantities are in `analog`.
+
+use std::rc::Rc;
+
+use crate::ast::{
+    self, Decl, DeclKind, Designator, EntityNames, EnumLiteral, IndexDef, SubprogramSpec, TypeDef,
+};
+use crate::design::{Builtin, Signal, SignalId, SignalKind, Value};
+
+use super::error::ElabError;
+use super::expr::constrain;
+use super::scope::{Item, Native, Param, Scope, Subprogram};
+use super::types::{ArrayTy, EnumTy, Sub, Ty};
+use super::{Elab, R};
+
+/// The name a subprogram is declared under (`sqrt`, `"and"`).
+pub(super) fn designator(spec: &SubprogramSpec) -> String {
+    match &spec.designator {
+        Designator::Ident(id) => id.name.clone(),
+        Designator::Operator(op, _) => format!("\"{op}\""),
+    }
+}
+
+/// The names a declaration declares (for poisoning them when it fails).
+fn declared_names(d: &Decl) -> Vec<&str> {
+    match &d.kind {
+        DeclKind::Constant { names, .. }
+        | DeclKind::Signal { names, .. }
+        | DeclKind::Variable { names, .. }
+        | DeclKind::File { names, .. }
+        | DeclKind::Terminal { names, .. } => names.iter().map(|n| n.name.as_str()).collect(),
+        DeclKind::Type { name, .. }
+        | DeclKind::Subtype { name, .. }
+        | DeclKind::Nature { name, .. }
+        | DeclKind::Subnature { name, .. }
+        | DeclKind::Alias { name, .. }
+        | DeclKind::Attribute { name, .. }
+        | DeclKind::Component { name, .. } => vec![name.name.as_str()],
+        DeclKind::Quantity(q) => match q {
+            ast::QuantityDecl::Free { names, .. } | ast::QuantityDecl::Source { names, .. } => {
+                names.iter().map(|n| n.name.as_str()).collect()
+            }
+            ast::QuantityDecl::Branch {
+                across, through, ..
+            } => across
+                .iter()
+                .chain(through)
+                .flat_map(|b| b.names.iter().map(|n| n.name.as_str()))
+                .collect(),
+        },
+        _ => Vec::new(),
+    }
+}
+
+/// Maps a bodiless stdlib subprogram to its native implementation.
+fn native(name: &str, arity: usize, is_function: bool) -> Native {
+    use Builtin::*;
+    let b = match (name, arity) {
+        ("now", 0) => return Native::Now,
+        ("stop", _) if !is_function => return Native::Stop,
+        ("finish", _) if !is_function => return Native::Finish,
+        ("log2", 1) => return Native::Log2,
+        ("log", 2) => return Native::LogBase,
+        ("exp", 1) => Exp,
+        ("log", 1) => Log,
+        ("log10", 1) => Log10,
+        ("sqrt", 1) => Sqrt,
+        ("sin", 1) => Sin,
+        ("cos", 1) => Cos,
+        ("tan", 1) => Tan,
+        ("arcsin", 1) => Asin,
+        ("arccos", 1) => Acos,
+        ("arctan", 1) => Atan,
+        ("arctan", 2) => Atan2,
+        ("sinh", 1) => Sinh,
+        ("cosh", 1) => Cosh,
+        ("tanh", 1) => Tanh,
+        ("arcsinh", 1) => Asinh,
+        ("arccosh", 1) => Acosh,
+        ("arctanh", 1) => Atanh,
+        ("floor", 1) => Floor,
+        ("ceil", 1) => Ceil,
+        ("round", 1) => Round,
+        ("trunc", 1) => Trunc,
+        ("sign", 1) => Sign,
+        ("realmax", 2) => Realmax,
+        ("realmin", 2) => Realmin,
+        _ => return Native::Missing,
+    };
+    Native::Builtin(b)
+}
+
+impl<'a> Elab<'a> {
+    pub(super) fn decls(&mut self, sc: &mut Scope<'a>, decls: &'a [Decl]) {
+        for d in decls {
+            self.decl(sc, d);
+        }
+    }
+
+    /// One declaration; on failure its names are poisoned so that later uses do not cascade
+    /// (in the stdlib, silently: the error is reported where a model uses the name).
+    pub(super) fn decl(&mut self, sc: &mut Scope<'a>, d: &'a Decl) {
+        let before = self.errors.len();
+        let failed = self.decl_inner(sc, d).is_err();
+        if !failed && self.errors.len() == before {
+            return;
+        }
+        let reason: Option<Rc<str>> = if self.quiet {
+            let r = self
+                .errors
+                .get(before)
+                .map(|e| e.to_string())
+                .unwrap_or_else(|| "not supported".into());
+            self.errors.truncate(before);
+            Some(r.into())
+        } else {
+            None
+        };
+        for n in declared_names(d) {
+            let declared_here = sc.regions.last().is_some_and(|r| r.items.contains_key(n));
+            if !declared_here {
+                sc.declare(n, Item::Poison(reason.clone()));
+            }
+        }
+    }
+
+    fn declare(&mut self, sc: &mut Scope<'a>, name: &ast::Ident, item: Item<'a>) -> R<()> {
+        if sc.declare(&name.name, item) {
+            Ok(())
+        } else {
+            Err(self.error(ElabError::Redeclared {
+                span: name.span,
+                name: name.name.clone(),
+            }))
+        }
+    }
+
+    fn decl_inner(&mut self, sc: &mut Scope<'a>, d: &'a Decl) -> R<()> {
+        match &d.kind {
+            DeclKind::Constant {
+                names,
+                subtype,
+                value,
+            } => {
+                let sub = self.subtype_indication(sc, subtype)?;
+                let Some(value) = value else {
+                    for n in names {
+                        let reason = format!(
+                            "deferred constant `{}` has no value in the package body",
+                            n.name
+                        );
+                        sc.declare(&n.name, Item::Poison(Some(reason.into())));
+                    }
+                    return Ok(());
+                };
+                let v = self.static_value(sc, value, &sub.ty, "the value of a constant")?;
+                let ty = fit_array(&sub.ty, &v);
+                for n in names {
+                    self.declare(
+                        sc,
+                        n,
+                        Item::Constant {
+                            value: v.clone(),
+                            ty: ty.clone(),
+                        },
+                    )?;
+                }
+                Ok(())
+            }
+            DeclKind::Signal {
+                names,
+                subtype,
+                value,
+            } => {
+                let sub = self.subtype_indication(sc, subtype)?;
+                let init = match value {
+                    Some(v) => {
+                        self.static_value(sc, v, &sub.ty, "the initial value of a signal")?
+                    }
+                    None => sub.ty.default_value(),
+                };
+                for n in names {
+                    let id = self.new_signal(&n.name, &sub.ty, init.clone(), n.span);
+                    self.declare(
+                        sc,
+                        n,
+                        Item::Signal {
+                            id,
+                            ty: sub.ty.clone(),
+                        },
+                    )?;
+                }
+                Ok(())
+            }
+            DeclKind::Variable { .. } => Err(self.error(ElabError::unsupported(
+                d.span,
+                "shared variables",
+                "declare variables inside a process",
+            ))),
+            DeclKind::File { .. } => Err(self.error(ElabError::unsupported(
+                d.span,
+                "files",
+                "use `report` to print",
+            ))),
+            DeclKind::Type { name, def } => match def {
+                None => Ok(()),
+                Some(def) => self.type_decl(sc, name, def, d),
+            },
+            DeclKind::Subtype { name, subtype } => {
+                let mut sub = (*self.subtype_indication(sc, subtype)?).clone();
+                sub.name = name.name.clone();
+                self.declare(sc, name, Item::Type(Rc::new(sub)))
+            }
+            DeclKind::Nature { name, def } => self.nature_decl(sc, name, def, d.span),
+            DeclKind::Subnature { name, nature } => {
+                let items = self.lookup(sc, &nature.type_mark)?;
+                match items[0] {
+                    Item::Nature(n) => self.declare(sc, name, Item::Nature(n)),
+                    _ => Err(self.error(ElabError::WrongClass {
+                        span: nature.type_mark.span,
+                        name: self.sources.snippet(nature.type_mark.span).into(),
+                        found: items[0].class().into(),
+                        expected: "a nature".into(),
+                        help: None,
+                    })),
+                }
+            }
+            DeclKind::Terminal { names, nature } => self.terminal_decl(sc, names, nature),
+            DeclKind::Quantity(q) => self.quantity_decl(sc, q, d.span),
+            DeclKind::Alias { name, target, .. } => {
+                let items = self.lookup(sc, target)?;
+                for item in items {
+                    if !sc.declare(&name.name, item) {
+                        return Err(self.error(ElabError::Redeclared {
+                            span: name.span,
+                            name: name.name.clone(),
+                        }));
+                    }
+                }
+                Ok(())
+            }
+            DeclKind::Attribute { name, .. } => self.declare(sc, name, Item::Attribute),
+            DeclKind::AttributeSpec {
+                attribute,
+                entities,
+                value,
+                ..
+            } => {
+                // Only `symbol` of a subtype matters to the simulator (`Quantity::unit`).
+                if attribute.name != "symbol" {
+                    return Ok(());
+                }
+                let EntityNames::List(names) = entities else {
+                    return Ok(());
+                };
+                let string = sc.lookup("string").and_then(|i| match i.first() {
+                    Some(Item::Type(s)) => Some(s.ty.clone()),
+                    _ => None,
+                });
+                let Some(string) = string else { return Ok(()) };
+                let Value::String(symbol) =
+                    self.static_value(sc, value, &string, "an attribute value")?
+                else {
+                    return Ok(());
+                };
+                for n in names {
+                    let ast::ExprKind::Name(id) = &n.kind else {
+                        continue;
+                    };
+                    if let Some([Item::Type(sub)]) = sc.lookup(&id.name) {
+                        let mut s = (**sub).clone();
+                        s.unit = Some(symbol.clone());
+                        sc.replace(&id.name, vec![Item::Type(Rc::new(s))]);
+                    }
+                }
+                Ok(())
+            }
+            DeclKind::Component { name, .. } => self.declare(sc, name, Item::Component(d)),
+            DeclKind::Subprogram(spec) => self.subprogram_decl(sc, spec, false),
+            DeclKind::SubprogramBody { spec, .. } => self.subprogram_decl(sc, spec, true),
+            DeclKind::Limit {
+                quantities,
+                type_mark,
+                value,
+            } => self.limit(sc, quantities, type_mark, value, d.span),
+            DeclKind::Use(names) => {
+                for n in names {
+                    self.use_clause(sc, n)?;
+                }
+                Ok(())
+            }
+        }
+    }
+
+    fn subprogram_decl(
+        &mut self,
+        sc: &mut Scope<'a>,
+        spec: &'a SubprogramSpec,
+        body: bool,
+    ) -> R<()> {
+        let name = designator(spec);
+        if body {
+            // A body completes an earlier declaration; a body alone declares the subprogram.
+            let declared_here = sc
+                .regions
+                .last()
+                .is_some_and(|r| r.items.contains_key(&name));
+            if declared_here {
+                return Ok(());
+            }
+        }
+        let mut params = Vec::new();
+        for p in &spec.params {
+            let sub = self.subtype_indication(sc, &p.subtype)?;
+            for n in &p.names {
+                params.push(Param {
+                    name: n.name.clone(),
+                    ty: sub.ty.clone(),
+                    has_default: p.default.is_some(),
+                });
+            }
+        }
+        let ret = match &spec.return_type {
+            Some(t) => Some(self.type_mark(sc, t)?.ty.clone()),
+            None => None,
+        };
+        let native = match &self.native_names {
+            Some(names) if names.contains(&name) => {
+                Some(native(&name, params.len(), spec.is_function))
+            }
+            _ => None,
+        };
+        let sub = Subprogram {
+            name: name.clone(),
+            params,
+            ret,
+            native,
+        };
+        sc.declare(&name, Item::Subprogram(Rc::new(sub)));
+        Ok(())
+    }
+
+    fn type_decl(
+        &mut self,
+        sc: &mut Scope<'a>,
+        name: &ast::Ident,
+        def: &'a TypeDef,
+        d: &Decl,
+    ) -> R<()> {
+        match def {
+            TypeDef::Enumeration(lits) => {
+                let literals: Vec<String> = lits
+                    .iter()
+                    .map(|l| match l {
+                        EnumLiteral::Ident(id) => id.name.clone(),
+                        EnumLiteral::Char(c, _) => format!("'{c}'"),
+                    })
+                    .collect();
+                let ty = if name.name == "boolean" {
+                    Ty::Boolean
+                } else {
+                    Ty::Enum(Rc::new(EnumTy {
+                        name: name.name.clone(),
+                        literals: literals.clone(),
+                    }))
+                };
+                self.declare(
+                    sc,
+                    name,
+                    Item::Type(Rc::new(Sub::of(ty.clone(), &name.name))),
+                )?;
+                for (pos, lit) in literals.iter().enumerate() {
+                    sc.declare(
+                        lit,
+                        Item::EnumLiteral {
+                            ty: ty.clone(),
+                            pos: pos as u32,
+                        },
+                    );
+                }
+                Ok(())
+            }
+            TypeDef::Range(r) => {
+                let (l, rr, _) = self.range_exprs(sc, r)?;
+                let (Some(lv), Some(rv)) = (l.value().cloned(), rr.value().cloned()) else {
+                    return Err(self.error(ElabError::NotStatic {
+                        span: d.span,
+                        what: "a type's range".into(),
+                    }));
+                };
+                let ty = match lv {
+                    Value::Integer(_) => Ty::Integer,
+                    Value::Real(_) => Ty::Real,
+                    _ => {
+                        return Err(self.error(ElabError::invalid(
+                            d.span,
+                            "a range type needs integer or real bounds",
+                            None,
+                        )));
+                    }
+                };
+                let mut sub = Sub::of(ty, &name.name);
+                // The predefined types keep their full range; user range types are subtypes.
+                if name.name != "integer" && name.name != "real" {
+                    sub.range = Some((lv, rv));
+                }
+                self.declare(sc, name, Item::Type(Rc::new(sub)))
+            }
+            TypeDef::Physical {
+                primary, secondary, ..
+            } => {
+                if name.name != "time" {
+                    return Err(self.error(ElabError::unsupported(
+                        d.span,
+                        "physical types other than `time`",
+                        "use `real` with a unit symbol subtype instead",
+                    )));
+                }
+                self.declare(sc, name, Item::Type(Rc::new(Sub::of(Ty::Time, "time"))))?;
+                sc.declare(&primary.name, Item::TimeUnit(1.0));
+                for (unit, value) in secondary {
+                    let Value::Time(s) =
+                        self.static_value(sc, value, &Ty::Time, "a unit's value")?
+                    else {
+                        return Err(super::Reported);
+                    };
+                    sc.declare(&unit.name, Item::TimeUnit((s * 1e15).round()));
+                }
+                Ok(())
+            }
+            TypeDef::Array { indexes, element } => {
+                let [index] = indexes.as_slice() else {
+                    return Err(self.error(ElabError::unsupported(
+                        d.span,
+                        "multi-dimensional arrays",
+                        "use a one-dimensional array",
+                    )));
+                };
+                let elem = self.subtype_indication(sc, element)?.ty.clone();
+                let (bounds, index_low) = match index {
+                    IndexDef::Unconstrained(mark) => {
+                        let sub = self.type_mark(sc, mark)?;
+                        let low = match &sub.range {
+                            Some((Value::Integer(l), _)) => *l,
+                            _ => i32::MIN as i64,
+                        };
+                        (None, low)
+                    }
+                    IndexDef::Constrained(r) => {
+                        let (l, r, asc) = self.discrete_range(sc, r)?;
+                        (Some((l, r, asc)), l.min(r))
+                    }
+                };
+                let ty = Ty::Array(Rc::new(ArrayTy {
+                    name: name.name.clone(),
+                    element: elem,
+                    bounds,
+                    index_low,
+                }));
+                self.declare(sc, name, Item::Type(Rc::new(Sub::of(ty, &name.name))))
+            }
+            TypeDef::Record(_) => Err(self.error(ElabError::unsupported(
+                d.span,
+                "record types",
+                "use separate objects for the fields, or an array if they share a type",
+            ))),
+            TypeDef::Access(_) => Err(self.error(ElabError::unsupported(
+                d.span,
+                "access types",
+                "use arrays or constants",
+            ))),
+            TypeDef::File(_) => Err(self.error(ElabError::unsupported(
+                d.span,
+                "file types",
+                "use `report` to print",
+            ))),
+        }
+    }
+
+    /// `type_mark [range ...] [tolerance "..."]`, including index constraints `t(1 to 3)`.
+    pub(super) fn subtype_indication(
+        &mut self,
+        sc: &Scope<'a>,
+        si: &ast::SubtypeIndication,
+    ) -> R<Rc<Sub>> {
+        let base = match &si.type_mark.kind {
+            ast::ExprKind::Apply(mark, args) => {
+                let sub = self.type_mark(sc, mark)?;
+                let Ty::Array(arr) = &sub.ty else {
+                    return Err(self.error(ElabError::invalid(
+                        si.span,
+                        format!("`{}` is not an array type", sub.name),
+                        None,
+                    )));
+                };
+                let [ast::Assoc { actual, .. }] = args.as_slice() else {
+                    return Err(self.error(ElabError::unsupported(
+                        si.span,
+                        "multi-dimensional index constraints",
+                        "use one range",
+                    )));
+                };
+                let (l, r, asc) = match actual {
+                    ast::Actual::Range(r) => self.range_bounds(sc, r)?,
+                    ast::Actual::Expr(e) => {
+                        let r = ast::Range::Attribute(Box::new(e.clone()));
+                        self.range_bounds(sc, &r)?
+                    }
+                    ast::Actual::Open(s) => {
+                        return Err(self.error(ElabError::invalid(*s, "expected a range", None)));
+                    }
+                };
+                let ty = Ty::Array(Rc::new(ArrayTy {
+                    name: arr.name.clone(),
+                    element: arr.element.clone(),
+                    bounds: Some((l, r, asc)),
+                    index_low: arr.index_low,
+                }));
+                Rc::new(Sub {
+                    ty,
+                    ..(*sub).clone()
+                })
+            }
+            ast::ExprKind::Attribute(_, attr) => {
+                return Err(self.error(ElabError::unsupported(
+                    si.span,
+                    format!("subtypes of the form `nature'{}`", attr.name),
+                    "array natures are not supported; use scalar quantities",
+                )));
+            }
+            _ => self.type_mark(sc, &si.type_mark)?,
+        };
+        if si.range.is_none() && si.tolerance.is_none() {
+            return Ok(base);
+        }
+        let mut sub = (*base).clone();
+        if let Some(r) = &si.range {
+            if sub.ty.is_numeric() || sub.ty == Ty::Time {
+                let (l, r, _) = self.range_exprs(sc, r)?;
+                match (l.value(), r.value()) {
+                    (Some(a), Some(b)) if l.ty.same(&sub.ty) => {
+                        sub.range = Some((a.clone(), b.clone()))
+                    }
+                    (Some(_), Some(_)) => {
+                        return Err(self.error(ElabError::TypeMismatch {
+                            span: si.span,
+                            expected: sub.ty.to_string(),
+                            found: l.ty.to_string(),
+                            help: None,
+                        }));
+                    }
+                    _ => {
+                        return Err(self.error(ElabError::NotStatic {
+                            span: si.span,
+                            what: "a subtype's range".into(),
+                        }));
+                    }
+                }
+            }
+        }
+        if let Some(t) = &si.tolerance {
+            let string = match sc.lookup("string") {
+                Some([Item::Type(s), ..]) => s.ty.clone(),
+                _ => return Err(super::Reported),
+            };
+            if let Value::String(group) = self.static_value(sc, t, &string, "a tolerance group")? {
+                sub.tolerance = Some(group);
+            }
+        }
+        Ok(Rc::new(sub))
+    }
+
+    pub(super) fn new_signal(
+        &mut self,
+        name: &str,
+        ty: &Ty,
+        init: Value,
+        span: crate::source::Span,
+    ) -> SignalId {
+        let id = SignalId(self.design.signals.len() as u32);
+        self.design.signals.push(Signal {
+            name: self.hier_name(name),
+            ty: ty.to_design(),
+            init,
+            kind: SignalKind::Explicit,
+            span,
+        });
+        id
+    }
+}
+
+/// The type of a constant: an unconstrained array type takes its bounds from the value.
+pub(super) fn fit_array(ty: &Ty, v: &Value) -> Ty {
+    match (ty, v) {
+        (Ty::Array(a), Value::Array(items)) if a.bounds.is_none() => constrain(a, items.len()),
+        (Ty::Array(a), Value::String(s)) if a.bounds.is_none() => constrain(a, s.chars().count()),
+        _ => ty.clone(),
+    }
+}

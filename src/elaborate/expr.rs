@@ -1,0 +1,1003 @@
+//! Expressions: AST expressions to typed [`Expr`]s, with VHDL's typing rules (no implicit
+//! conversion between integer and real), overload resolution by argument and expected types,
+//! and folding of every static sub-expression.
+
+use std::rc::Rc;
+
+use crate::ast::{self, Actual, ExprKind, Literal};
+use crate::design::{BinaryOp, Builtin, Expr, UnaryOp, Value};
+use crate::source::Span;
+
+use super::error::ElabError;
+use super::fold;
+use super::scope::{Item, Native, Scope, Subprogram};
+use super::types::{ArrayTy, Ty, bounds_len};
+use super::{Elab, R};
+
+/// A lowered expression and its type.
+#[derive(Clone, Debug)]
+pub struct Typed {
+    pub e: Expr,
+    pub ty: Ty,
+}
+
+impl Typed {
+    fn new(e: Expr, ty: Ty) -> Typed {
+        Typed { e, ty }
+    }
+
+    pub fn value(&self) -> Option<&Value> {
+        match &self.e {
+            Expr::Const(v) => Some(v),
+            _ => None,
+        }
+    }
+}
+
+const INT_REAL_HELP: &str = "VHDL never converts between integer and real implicitly: write a real literal \
+(`2.0`, not `2`) or convert with `real(i)` / `integer(x)`";
+
+fn map_binop(op: ast::BinaryOp) -> Option<BinaryOp> {
+    use ast::BinaryOp as A;
+    Some(match op {
+        A::And => BinaryOp::And,
+        A::Or => BinaryOp::Or,
+        A::Nand => BinaryOp::Nand,
+        A::Nor => BinaryOp::Nor,
+        A::Xor => BinaryOp::Xor,
+        A::Xnor => BinaryOp::Xnor,
+        A::Eq => BinaryOp::Eq,
+        A::Ne => BinaryOp::Ne,
+        A::Lt => BinaryOp::Lt,
+        A::Le => BinaryOp::Le,
+        A::Gt => BinaryOp::Gt,
+        A::Ge => BinaryOp::Ge,
+        A::Add => BinaryOp::Add,
+        A::Sub => BinaryOp::Sub,
+        A::Concat => BinaryOp::Concat,
+        A::Mul => BinaryOp::Mul,
+        A::Div => BinaryOp::Div,
+        A::Mod => BinaryOp::Mod,
+        A::Rem => BinaryOp::Rem,
+        A::Pow => BinaryOp::Pow,
+        A::Sll | A::Srl | A::Sla | A::Sra | A::Rol | A::Ror => return None,
+    })
+}
+
+fn op_text(op: BinaryOp) -> &'static str {
+    match op {
+        BinaryOp::Add => "+",
+        BinaryOp::Sub => "-",
+        BinaryOp::Mul => "*",
+        BinaryOp::Div => "/",
+        BinaryOp::Pow => "**",
+        BinaryOp::Mod => "mod",
+        BinaryOp::Rem => "rem",
+        BinaryOp::Eq => "=",
+        BinaryOp::Ne => "/=",
+        BinaryOp::Lt => "<",
+        BinaryOp::Le => "<=",
+        BinaryOp::Gt => ">",
+        BinaryOp::Ge => ">=",
+        BinaryOp::And => "and",
+        BinaryOp::Or => "or",
+        BinaryOp::Nand => "nand",
+        BinaryOp::Nor => "nor",
+        BinaryOp::Xor => "xor",
+        BinaryOp::Xnor => "xnor",
+        BinaryOp::Concat => "&",
+    }
+}
+
+/// True for an expression whose type depends on the context: an overloaded name (`now`, an
+/// enumeration literal) or a character or string literal.
+fn context_typed(e: &ast::Expr) -> bool {
+    match &e.kind {
+        ExprKind::Name(id) => id.name == "now",
+        ExprKind::Literal(Literal::Char(_) | Literal::String(_) | Literal::BitString(_)) => true,
+        ExprKind::Paren(inner) => context_typed(inner),
+        _ => false,
+    }
+}
+
+impl<'a> Elab<'a> {
+    /// Every item a (simple or selected) name denotes.
+    pub(super) fn lookup(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<Vec<Item<'a>>> {
+        let items = match &e.kind {
+            ExprKind::Name(id) => match sc.lookup(&id.name) {
+                Some(items) => items.to_vec(),
+                None => {
+                    let help = sc.suggest(&id.name).map(|s| format!("did you mean `{s}`?"));
+                    return Err(self.error(ElabError::Undeclared {
+                        span: id.span,
+                        name: id.name.clone(),
+                        help: help.or_else(|| {
+                            Some("declare it, or make it visible with a `use` clause".into())
+                        }),
+                    }));
+                }
+            },
+            ExprKind::Selected(prefix, suffix) => {
+                let outer = self.lookup(sc, prefix)?;
+                match outer.first() {
+                    Some(Item::Library(lib)) => {
+                        let lib = lib.clone();
+                        let pkg = self.package(&lib, &suffix.name, Some(suffix.span))?;
+                        vec![Item::Package(pkg)]
+                    }
+                    Some(Item::Package(pkg)) => match pkg.items.get(&suffix.name) {
+                        Some(items) => items.clone(),
+                        None => {
+                            return Err(self.error(ElabError::Undeclared {
+                                span: suffix.span,
+                                name: format!("{}.{}", pkg.name, suffix.name),
+                                help: Some(format!(
+                                    "package `{}` declares no `{}`",
+                                    pkg.name, suffix.name
+                                )),
+                            }));
+                        }
+                    },
+                    Some(other) => {
+                        let class = other.class();
+                        return Err(self.error(ElabError::unsupported(
+                            e.span,
+                            format!("selecting `.{}` from {class}", suffix.name),
+                            "records are not supported yet; selected names reach package items (`lib.pkg.item`)",
+                        )));
+                    }
+                    None => return Err(super::Reported),
+                }
+            }
+            _ => {
+                return Err(self.error(ElabError::invalid(e.span, "expected a name", None)));
+            }
+        };
+        let usable: Vec<Item<'a>> = items
+            .iter()
+            .filter(|i| !matches!(i, Item::Poison(_)))
+            .cloned()
+            .collect();
+        if usable.is_empty() {
+            return match items.first() {
+                Some(Item::Poison(Some(reason))) => Err(self.error(ElabError::unsupported(
+                    e.span,
+                    format!("`{}` ({reason})", self.sources.snippet(e.span)),
+                    "vams's standard packages declare it, but its declaration uses a construct vams cannot elaborate yet",
+                ))),
+                _ => Err(super::Reported),
+            };
+        }
+        Ok(usable)
+    }
+
+    /// Lowers `e`; `want` is a hint for overload resolution only (use [`Elab::expr_of`] to
+    /// check the type).
+    pub(super) fn expr(&mut self, sc: &Scope<'a>, e: &ast::Expr, want: Option<&Ty>) -> R<Typed> {
+        match &e.kind {
+            ExprKind::Literal(lit) => self.literal(sc, lit, e.span, want),
+            ExprKind::Name(_) | ExprKind::Selected(..) => {
+                let items = self.lookup(sc, e)?;
+                self.object(sc, items, e, want)
+            }
+            ExprKind::Paren(inner) => self.expr(sc, inner, want),
+            ExprKind::Qualified(mark, inner) => {
+                let ty = self.type_mark(sc, mark)?.ty.clone();
+                self.expr_of(sc, inner, &ty)
+            }
+            ExprKind::Aggregate(elems) => self.aggregate(sc, elems, e.span, want),
+            ExprKind::Unary(op, a) => {
+                let a = self.expr(sc, a, want)?;
+                self.unary(*op, a, e.span)
+            }
+            ExprKind::Binary(op, l, r) => self.binary(sc, *op, l, r, e.span, want),
+            ExprKind::Attribute(prefix, attr) => {
+                self.attribute(sc, prefix, attr, &[], e.span, want)
+            }
+            ExprKind::Apply(prefix, args) => {
+                if let ExprKind::Attribute(p, attr) = &prefix.kind {
+                    return self.attribute(sc, p, attr, args, e.span, want);
+                }
+                let items = self.lookup(sc, prefix)?;
+                match items.first() {
+                    Some(Item::Subprogram(_)) => {
+                        let subs = items
+                            .iter()
+                            .filter_map(|i| match i {
+                                Item::Subprogram(s) => Some(s.clone()),
+                                _ => None,
+                            })
+                            .collect();
+                        self.call(sc, subs, args, e.span, prefix.span, want)
+                    }
+                    Some(Item::Type(sub)) => {
+                        let target = sub.ty.clone();
+                        self.conversion(sc, &target, args, e.span)
+                    }
+                    _ => {
+                        let array = self.object(sc, items, prefix, None)?;
+                        self.index(sc, array, args, e.span)
+                    }
+                }
+            }
+            ExprKind::New(_) => Err(self.error(ElabError::unsupported(
+                e.span,
+                "allocators (`new`)",
+                "access types are not supported",
+            ))),
+        }
+    }
+
+    /// Lowers `e` and checks that its type is `ty`.
+    pub(super) fn expr_of(&mut self, sc: &Scope<'a>, e: &ast::Expr, ty: &Ty) -> R<Typed> {
+        let t = self.expr(sc, e, Some(ty))?;
+        self.check_type(&t, ty, e.span)?;
+        Ok(t)
+    }
+
+    pub(super) fn check_type(&mut self, t: &Typed, want: &Ty, span: Span) -> R<()> {
+        if t.ty.same(want) {
+            return Ok(());
+        }
+        let help = if t.ty.is_numeric() && want.is_numeric() {
+            INT_REAL_HELP.to_string()
+        } else if matches!(want, Ty::Time) && t.ty.is_numeric() {
+            "multiply by a unit to get a time: `x * 1 sec`, `10 ms`".to_string()
+        } else if *want == Ty::Boolean {
+            "a condition must be boolean: compare explicitly, e.g. `n /= 0` (VHDL has no implicit conversion)".to_string()
+        } else {
+            format!("VHDL has no implicit conversion: give a value of type {want}")
+        };
+        let help = Some(help);
+        Err(self.error(ElabError::TypeMismatch {
+            span,
+            expected: want.to_string(),
+            found: t.ty.to_string(),
+            help,
+        }))
+    }
+
+    /// The value of a static expression of type `ty`.
+    pub(super) fn static_value(
+        &mut self,
+        sc: &Scope<'a>,
+        e: &ast::Expr,
+        ty: &Ty,
+        what: &str,
+    ) -> R<Value> {
+        let t = self.expr_of(sc, e, ty)?;
+        match t.e {
+            Expr::Const(v) => Ok(v),
+            _ => Err(self.error(ElabError::NotStatic {
+                span: e.span,
+                what: what.to_string(),
+            })),
+        }
+    }
+
+    /// A static integer (range bounds, generate parameters).
+    pub(super) fn static_int(&mut self, sc: &Scope<'a>, e: &ast::Expr, what: &str) -> R<i64> {
+        match self.static_value(sc, e, &Ty::Integer, what)? {
+            Value::Integer(i) => Ok(i),
+            _ => Err(self.error(ElabError::invalid(e.span, "expected an integer", None))),
+        }
+    }
+
+    /// Folds a freshly built expression, reporting static errors at `span`.
+    pub(super) fn folded(&mut self, e: Expr, ty: Ty, span: Span) -> R<Typed> {
+        match fold::fold(e) {
+            Ok(e) => Ok(Typed::new(e, ty)),
+            Err(m) => Err(self.error(ElabError::invalid(span, m, None))),
+        }
+    }
+
+    fn literal(
+        &mut self,
+        sc: &Scope<'a>,
+        lit: &Literal,
+        span: Span,
+        want: Option<&Ty>,
+    ) -> R<Typed> {
+        Ok(match lit {
+            Literal::Integer(i) => Typed::new(Expr::Const(Value::Integer(*i)), Ty::Integer),
+            Literal::Real(x) => Typed::new(Expr::Const(Value::Real(*x)), Ty::Real),
+            Literal::Physical(n, unit) => {
+                let factor = match sc.lookup(&unit.name) {
+                    Some([Item::TimeUnit(f), ..]) => *f,
+                    _ => {
+                        return Err(self.error(ElabError::Undeclared {
+                            span: unit.span,
+                            name: unit.name.clone(),
+                            help: Some(
+                                "the units of time are fs, ps, ns, us, ms, sec, min and hr".into(),
+                            ),
+                        }));
+                    }
+                };
+                let n = match **n {
+                    Literal::Integer(i) => i as f64,
+                    Literal::Real(x) => x,
+                    _ => 1.0,
+                };
+                Typed::new(Expr::Const(Value::Time(n * factor / 1e15)), Ty::Time)
+            }
+            Literal::Char(c) => {
+                let name = format!("'{c}'");
+                let items = match sc.lookup(&name) {
+                    Some(items) => items.to_vec(),
+                    None => {
+                        return Err(self.error(ElabError::Undeclared {
+                            span,
+                            name,
+                            help: Some(
+                                "no visible enumeration type has this character literal".into(),
+                            ),
+                        }));
+                    }
+                };
+                return self.enum_literal(&items, want, span);
+            }
+            Literal::String(s) | Literal::BitString(s) => {
+                self.string_literal(sc, s, span, want, matches!(lit, Literal::BitString(_)))?
+            }
+            Literal::Null => {
+                return Err(self.error(ElabError::unsupported(
+                    span,
+                    "`null`",
+                    "access types are not supported",
+                )));
+            }
+        })
+    }
+
+    fn string_literal(
+        &mut self,
+        sc: &Scope<'a>,
+        s: &str,
+        span: Span,
+        want: Option<&Ty>,
+        bits: bool,
+    ) -> R<Typed> {
+        let target = match want {
+            Some(Ty::Array(a)) if a.name != "string" => Some(a.clone()),
+            Some(_) => None,
+            None if bits => match sc.lookup("bit_vector") {
+                Some([Item::Type(sub), ..]) => match &sub.ty {
+                    Ty::Array(a) => Some(a.clone()),
+                    _ => None,
+                },
+                _ => None,
+            },
+            None => None,
+        };
+        let Some(arr) = target else {
+            let ty = string_type(sc, s.chars().count());
+            return Ok(Typed::new(Expr::Const(Value::String(s.to_string())), ty));
+        };
+        let Ty::Enum(elem) = &arr.element else {
+            return Err(self.error(ElabError::TypeMismatch {
+                span,
+                expected: arr.name.clone(),
+                found: "a string literal".into(),
+                help: None,
+            }));
+        };
+        let mut values = Vec::new();
+        for c in s.chars() {
+            let lit = format!("'{c}'");
+            match elem.literals.iter().position(|l| *l == lit) {
+                Some(p) => values.push(Value::Enum(p as u32)),
+                None => {
+                    return Err(self.error(ElabError::invalid(
+                        span,
+                        format!("{lit} is not a literal of {}", elem.name),
+                        None,
+                    )));
+                }
+            }
+        }
+        let ty = constrain(&arr, values.len());
+        Ok(Typed::new(Expr::Const(Value::Array(values)), ty))
+    }
+
+    fn enum_literal(&mut self, items: &[Item<'a>], want: Option<&Ty>, span: Span) -> R<Typed> {
+        let lits: Vec<(&Ty, u32)> = items
+            .iter()
+            .filter_map(|i| match i {
+                Item::EnumLiteral { ty, pos } => Some((ty, *pos)),
+                _ => None,
+            })
+            .collect();
+        let chosen = want
+            .and_then(|w| lits.iter().find(|(t, _)| t.same(w)))
+            .or(lits.first())
+            .copied();
+        let Some((ty, pos)) = chosen else {
+            return Err(self.error(ElabError::invalid(
+                span,
+                "expected an enumeration literal",
+                None,
+            )));
+        };
+        let v = if matches!(ty, Ty::Boolean) {
+            Value::Boolean(pos == 1)
+        } else {
+            Value::Enum(pos)
+        };
+        Ok(Typed::new(Expr::Const(v), ty.clone()))
+    }
+
+    /// The value of a name used as an expression.
+    fn object(
+        &mut self,
+        sc: &Scope<'a>,
+        items: Vec<Item<'a>>,
+        e: &ast::Expr,
+        want: Option<&Ty>,
+    ) -> R<Typed> {
+        let first = items[0].clone();
+        Ok(match first {
+            Item::Constant { value, ty } => Typed::new(Expr::Const(value), ty),
+            Item::Signal { id, ty } => Typed::new(Expr::Signal(id), ty),
+            Item::Quantity(id) => Typed::new(Expr::Quantity(id), Ty::Real),
+            Item::Variable { id, ty, .. } => Typed::new(Expr::Var(id), ty),
+            Item::EnumLiteral { .. } => return self.enum_literal(&items, want, e.span),
+            Item::Subprogram(_) => {
+                let subs = items
+                    .iter()
+                    .filter_map(|i| match i {
+                        Item::Subprogram(s) => Some(s.clone()),
+                        _ => None,
+                    })
+                    .collect();
+                return self.call(sc, subs, &[], e.span, e.span, want);
+            }
+            other => {
+                return Err(self.error(ElabError::WrongClass {
+                    span: e.span,
+                    name: self.sources.snippet(e.span).to_string(),
+                    found: other.class().to_string(),
+                    expected: "a value".into(),
+                    help: Some(
+                        "an expression reads constants, signals, quantities and variables".into(),
+                    ),
+                }));
+            }
+        })
+    }
+
+    fn unary(&mut self, op: ast::UnaryOp, a: Typed, span: Span) -> R<Typed> {
+        let (uop, ok) = match op {
+            ast::UnaryOp::Minus => (UnaryOp::Neg, a.ty.is_numeric() || a.ty == Ty::Time),
+            ast::UnaryOp::Plus => (UnaryOp::Plus, a.ty.is_numeric() || a.ty == Ty::Time),
+            ast::UnaryOp::Abs => (UnaryOp::Abs, a.ty.is_numeric() || a.ty == Ty::Time),
+            ast::UnaryOp::Not => (
+                UnaryOp::Not,
+                a.ty == Ty::Boolean || a.ty.is_enum_named("bit"),
+            ),
+        };
+        if !ok {
+            let name = match op {
+                ast::UnaryOp::Minus => "-",
+                ast::UnaryOp::Plus => "+",
+                ast::UnaryOp::Abs => "abs",
+                ast::UnaryOp::Not => "not",
+            };
+            return Err(self.error(ElabError::BadOperands {
+                span,
+                op: name.into(),
+                left: "(unary)".into(),
+                right: a.ty.to_string(),
+                help: Some(logic_help(&a.ty)),
+            }));
+        }
+        let ty = a.ty.clone();
+        self.folded(Expr::Unary(uop, Box::new(a.e)), ty, span)
+    }
+
+    fn binary(
+        &mut self,
+        sc: &Scope<'a>,
+        op: ast::BinaryOp,
+        l: &ast::Expr,
+        r: &ast::Expr,
+        span: Span,
+        want: Option<&Ty>,
+    ) -> R<Typed> {
+        let Some(bop) = map_binop(op) else {
+            return Err(self.error(ElabError::unsupported(
+                span,
+                "shift and rotate operators",
+                "use arithmetic instead",
+            )));
+        };
+        let arith = matches!(
+            bop,
+            BinaryOp::Add
+                | BinaryOp::Sub
+                | BinaryOp::Mul
+                | BinaryOp::Div
+                | BinaryOp::Mod
+                | BinaryOp::Rem
+        );
+        let hint = if arith
+            || matches!(
+                bop,
+                BinaryOp::And
+                    | BinaryOp::Or
+                    | BinaryOp::Nand
+                    | BinaryOp::Nor
+                    | BinaryOp::Xor
+                    | BinaryOp::Xnor
+            ) {
+            want
+        } else {
+            None
+        };
+        // A context-typed left operand (`now - t`, `'1' = b`) takes its type from the right.
+        let (lt, rt) = if context_typed(l) && !context_typed(r) {
+            let rt = self.expr(sc, r, hint);
+            let lt = self.expr(sc, l, rt.as_ref().ok().map(|t| &t.ty).or(hint));
+            (lt?, rt?)
+        } else {
+            let lt = self.expr(sc, l, hint);
+            let rhint = match (&lt, bop) {
+                (Ok(t), BinaryOp::Pow) if t.ty == Ty::Real => Some(Ty::Integer),
+                (Ok(t), BinaryOp::Mul | BinaryOp::Div) if t.ty == Ty::Time => None,
+                (Ok(t), _) => Some(t.ty.clone()),
+                _ => None,
+            };
+            let rt = self.expr(sc, r, rhint.as_ref().or(hint));
+            (lt?, rt?)
+        };
+        let ty = match result_type(bop, &lt.ty, &rt.ty) {
+            Some(t) => t,
+            None => {
+                let help = if lt.ty.is_numeric() && rt.ty.is_numeric() {
+                    INT_REAL_HELP.to_string()
+                } else {
+                    logic_help(&lt.ty)
+                };
+                return Err(self.error(ElabError::BadOperands {
+                    span,
+                    op: op_text(bop).into(),
+                    left: lt.ty.to_string(),
+                    right: rt.ty.to_string(),
+                    help: Some(help),
+                }));
+            }
+        };
+        self.folded(Expr::Binary(bop, Box::new(lt.e), Box::new(rt.e)), ty, span)
+    }
+
+    /// A call of one of `subs` (overloads of one name).
+    pub(super) fn call(
+        &mut self,
+        sc: &Scope<'a>,
+        subs: Vec<Rc<Subprogram>>,
+        args: &[ast::Assoc],
+        span: Span,
+        name_span: Span,
+        want: Option<&Ty>,
+    ) -> R<Typed> {
+        let name = subs.first().map(|s| s.name.clone()).unwrap_or_default();
+        let fits = |s: &Subprogram| {
+            s.ret.is_some()
+                && args.len() <= s.params.len()
+                && s.params.iter().skip(args.len()).all(|p| p.has_default)
+        };
+        let mut cands: Vec<Rc<Subprogram>> = subs.into_iter().filter(|s| fits(s)).collect();
+        if cands.is_empty() {
+            return Err(self.error(ElabError::invalid(
+                span,
+                format!("no function `{name}` takes {} argument(s)", args.len()),
+                Some(
+                    "check the number of arguments (procedures cannot be called in expressions)"
+                        .into(),
+                ),
+            )));
+        }
+        if cands.len() > 1 {
+            if let Some(w) = want {
+                let matching: Vec<_> = cands
+                    .iter()
+                    .filter(|s| s.ret.as_ref().is_some_and(|r| r.same(w)))
+                    .cloned()
+                    .collect();
+                if !matching.is_empty() {
+                    cands = matching;
+                }
+            }
+        }
+        let mut lowered = Vec::new();
+        if cands.len() == 1 {
+            let mut slots: Vec<Option<&ast::Expr>> = vec![None; cands[0].params.len()];
+            for (k, a) in args.iter().enumerate() {
+                let Actual::Expr(ae) = &a.actual else {
+                    return Err(self.error(ElabError::invalid(
+                        a.span,
+                        "expected an argument expression",
+                        None,
+                    )));
+                };
+                let slot = match &a.formal {
+                    Some(f) => {
+                        let fname = self.sources.snippet(f.span).trim().to_ascii_lowercase();
+                        match cands[0].params.iter().position(|p| p.name == fname) {
+                            Some(i) => i,
+                            None => {
+                                return Err(self.error(ElabError::UnknownFormal {
+                                    span: f.span,
+                                    name: fname,
+                                    what: "parameter",
+                                    unit: name.clone(),
+                                    help: None,
+                                }));
+                            }
+                        }
+                    }
+                    None => k,
+                };
+                slots[slot] = Some(ae);
+            }
+            for (slot, p) in slots.iter().zip(&cands[0].params) {
+                match slot {
+                    Some(ae) => lowered.push(self.expr_of(sc, ae, &p.ty)?),
+                    None => {
+                        return Err(self.error(ElabError::unsupported(
+                            span,
+                            format!("leaving out the parameter `{}`", p.name),
+                            "give every argument",
+                        )));
+                    }
+                }
+            }
+        } else {
+            for a in args {
+                let Actual::Expr(ae) = &a.actual else {
+                    return Err(self.error(ElabError::invalid(
+                        a.span,
+                        "expected an argument expression",
+                        None,
+                    )));
+                };
+                lowered.push(self.expr(sc, ae, None)?);
+            }
+            let found = cands
+                .iter()
+                .find(|s| lowered.iter().zip(&s.params).all(|(a, p)| a.ty.same(&p.ty)))
+                .cloned();
+            match found {
+                Some(s) => cands = vec![s],
+                None => {
+                    let tys: Vec<String> = lowered.iter().map(|t| t.ty.to_string()).collect();
+                    return Err(self.error(ElabError::invalid(
+                        span,
+                        format!("no overload of `{name}` takes ({})", tys.join(", ")),
+                        Some(INT_REAL_HELP.into()),
+                    )));
+                }
+            }
+        }
+        let sub = cands.remove(0);
+        let ret = sub.ret.clone().unwrap_or(Ty::Real);
+        let args: Vec<Expr> = lowered.into_iter().map(|t| t.e).collect();
+        let e = match sub.native {
+            Some(Native::Builtin(b)) => Expr::Call(b, args),
+            Some(Native::Log2) => Expr::Binary(
+                BinaryOp::Div,
+                Box::new(Expr::Call(Builtin::Log, args)),
+                Box::new(Expr::real(std::f64::consts::LN_2)),
+            ),
+            Some(Native::LogBase) => {
+                let mut it = args.into_iter();
+                let (x, b) = (it.next(), it.next());
+                match (x, b) {
+                    (Some(x), Some(b)) => Expr::Binary(
+                        BinaryOp::Div,
+                        Box::new(Expr::Call(Builtin::Log, vec![x])),
+                        Box::new(Expr::Call(Builtin::Log, vec![b])),
+                    ),
+                    _ => return Err(super::Reported),
+                }
+            }
+            Some(Native::Now) => Expr::Now,
+            Some(Native::Stop | Native::Finish) => {
+                return Err(self.error(ElabError::invalid(
+                    span,
+                    format!("`{name}` is a procedure"),
+                    None,
+                )));
+            }
+            Some(Native::Missing) => {
+                return Err(self.error(ElabError::unsupported(
+                    name_span,
+                    format!("the standard function `{name}`"),
+                    "vams implements exp, log, log2, log10, sqrt, the trigonometric and hyperbolic functions, floor, ceil, round, trunc, sign, realmax and realmin",
+                )));
+            }
+            None => {
+                return Err(self.error(ElabError::unsupported(
+                    name_span,
+                    format!("calling the user-defined subprogram `{name}`"),
+                    "user-defined subprograms are not supported yet: write the expression inline, or compute it in a constant",
+                )));
+            }
+        };
+        self.folded(e, ret, span)
+    }
+
+    /// `real(i)`, `integer(x)` and conversions between closely related types.
+    fn conversion(
+        &mut self,
+        sc: &Scope<'a>,
+        target: &Ty,
+        args: &[ast::Assoc],
+        span: Span,
+    ) -> R<Typed> {
+        let [
+            ast::Assoc {
+                actual: Actual::Expr(ae),
+                ..
+            },
+        ] = args
+        else {
+            return Err(self.error(ElabError::invalid(
+                span,
+                "a type conversion takes one expression",
+                None,
+            )));
+        };
+        let a = self.expr(sc, ae, None)?;
+        let e = match (target, &a.ty) {
+            (Ty::Real, Ty::Integer) => Expr::Call(Builtin::ToReal, vec![a.e]),
+            (Ty::Integer, Ty::Real) => Expr::Call(Builtin::ToInteger, vec![a.e]),
+            (t, from) if t.same(from) => a.e,
+            (t, from) => {
+                return Err(self.error(ElabError::invalid(
+                    span,
+                    format!("cannot convert {from} to {t}"),
+                    Some("only integer <-> real conversions and conversions within one type are supported".into()),
+                )));
+            }
+        };
+        self.folded(e, target.clone(), span)
+    }
+
+    fn index(&mut self, sc: &Scope<'a>, array: Typed, args: &[ast::Assoc], span: Span) -> R<Typed> {
+        let Ty::Array(arr) = &array.ty else {
+            return Err(self.error(ElabError::invalid(
+                span,
+                format!("a value of type {} cannot be indexed or called", array.ty),
+                Some("only arrays are indexed and only functions are called".into()),
+            )));
+        };
+        let [
+            ast::Assoc {
+                actual: Actual::Expr(ie),
+                formal: None,
+                ..
+            },
+        ] = args
+        else {
+            return Err(self.error(ElabError::unsupported(
+                span,
+                "slices and multi-dimensional indexing",
+                "index one element: `a(i)`",
+            )));
+        };
+        let idx = self.expr_of(sc, ie, &Ty::Integer)?;
+        let elem = arr.element.clone();
+        let ty = array.ty.to_design();
+        self.folded(
+            Expr::Index {
+                array: Box::new(array.e),
+                index: Box::new(idx.e),
+                ty,
+            },
+            elem,
+            span,
+        )
+    }
+
+    fn aggregate(
+        &mut self,
+        sc: &Scope<'a>,
+        elems: &[ast::ElementAssoc],
+        span: Span,
+        want: Option<&Ty>,
+    ) -> R<Typed> {
+        let Some(Ty::Array(arr)) = want else {
+            return Err(self.error(ElabError::invalid(
+                span,
+                "the type of this aggregate is not known here",
+                Some("qualify it: `my_array'(1.0, 2.0)`".into()),
+            )));
+        };
+        let arr = arr.clone();
+        let elem = arr.element.clone();
+        let mut positional = Vec::new();
+        let mut others = None;
+        let mut named: Vec<(i64, Value)> = Vec::new();
+        for el in elems {
+            let t = self.expr_of(sc, &el.value, &elem)?;
+            let Expr::Const(v) = t.e else {
+                return Err(self.error(ElabError::unsupported(
+                    el.value.span,
+                    "an aggregate with non-static elements",
+                    "aggregates must be built from constants and generics",
+                )));
+            };
+            if el.choices.is_empty() {
+                positional.push(v);
+                continue;
+            }
+            for c in &el.choices {
+                match c {
+                    ast::Choice::Others(_) => others = Some(v.clone()),
+                    ast::Choice::Expr(ce) => {
+                        let i = self.static_int(sc, ce, "an aggregate choice")?;
+                        named.push((i, v.clone()));
+                    }
+                    ast::Choice::Range(r) => {
+                        let (l, rr, asc) = self.range_bounds(sc, r)?;
+                        let (lo, hi) = if asc { (l, rr) } else { (rr, l) };
+                        for i in lo..=hi {
+                            named.push((i, v.clone()));
+                        }
+                    }
+                }
+            }
+        }
+        let (left, right, asc) = match arr.bounds {
+            Some(b) => b,
+            None if named.is_empty() => (
+                arr.index_low,
+                arr.index_low + positional.len() as i64 - 1,
+                true,
+            ),
+            None => {
+                let lo = named.iter().map(|n| n.0).min().unwrap_or(arr.index_low);
+                let hi = named.iter().map(|n| n.0).max().unwrap_or(lo - 1);
+                (lo, hi, true)
+            }
+        };
+        let n = bounds_len(left, right, asc);
+        let mut values: Vec<Option<Value>> = vec![None; n];
+        for (k, v) in positional.into_iter().enumerate() {
+            if k >= n {
+                return Err(self.error(ElabError::invalid(
+                    span,
+                    format!("too many elements for {n} positions"),
+                    None,
+                )));
+            }
+            values[k] = Some(v);
+        }
+        for (i, v) in named {
+            let off = if asc { i - left } else { left - i };
+            if off < 0 || off as usize >= n {
+                return Err(self.error(ElabError::invalid(
+                    span,
+                    format!("index {i} is outside the array's range"),
+                    None,
+                )));
+            }
+            values[off as usize] = Some(v);
+        }
+        let mut out = Vec::with_capacity(n);
+        for v in values {
+            match v.or_else(|| others.clone()) {
+                Some(v) => out.push(v),
+                None => {
+                    return Err(self.error(ElabError::invalid(
+                        span,
+                        format!("the aggregate does not give all {n} elements"),
+                        Some("add the missing elements or `others => value`".into()),
+                    )));
+                }
+            }
+        }
+        let ty = Ty::Array(Rc::new(ArrayTy {
+            name: arr.name.clone(),
+            element: elem,
+            bounds: Some((left, right, asc)),
+            index_low: arr.index_low,
+        }));
+        let value = if ty.is_string() {
+            Value::String(
+                out.iter()
+                    .filter_map(|v| match v {
+                        Value::Enum(c) => char::from_u32(*c),
+                        _ => None,
+                    })
+                    .collect(),
+            )
+        } else {
+            Value::Array(out)
+        };
+        Ok(Typed::new(Expr::Const(value), ty))
+    }
+}
+
+/// The result type of `l op r`, or `None` when the operator is not defined for them.
+fn result_type(op: BinaryOp, l: &Ty, r: &Ty) -> Option<Ty> {
+    use BinaryOp::*;
+    match op {
+        Add | Sub => (l.same(r) && (l.is_numeric() || *l == Ty::Time)).then(|| l.clone()),
+        Mul => match (l, r) {
+            (Ty::Integer, Ty::Integer) | (Ty::Real, Ty::Real) => Some(l.clone()),
+            (Ty::Time, Ty::Integer | Ty::Real) | (Ty::Integer | Ty::Real, Ty::Time) => {
+                Some(Ty::Time)
+            }
+            _ => None,
+        },
+        Div => match (l, r) {
+            (Ty::Integer, Ty::Integer) | (Ty::Real, Ty::Real) => Some(l.clone()),
+            (Ty::Time, Ty::Integer | Ty::Real) => Some(Ty::Time),
+            (Ty::Time, Ty::Time) => Some(Ty::Integer),
+            _ => None,
+        },
+        Mod | Rem => (l.same(r) && l.is_numeric()).then(|| l.clone()),
+        Pow => match (l, r) {
+            (Ty::Integer, Ty::Integer) => Some(Ty::Integer),
+            (Ty::Real, Ty::Integer | Ty::Real) | (Ty::Integer, Ty::Real) => Some(Ty::Real),
+            _ => None,
+        },
+        Eq | Ne => l.same(r).then_some(Ty::Boolean),
+        Lt | Le | Gt | Ge => (l.same(r) && (l.is_scalar() || l.is_string())).then_some(Ty::Boolean),
+        And | Or | Nand | Nor | Xor | Xnor => {
+            (l.same(r) && (*l == Ty::Boolean || l.is_enum_named("bit"))).then(|| l.clone())
+        }
+        Concat => match (l, r) {
+            (Ty::Array(a), Ty::Array(b)) if a.name == b.name => Some(Ty::Array(unconstrained(a))),
+            (Ty::Array(a), e) | (e, Ty::Array(a)) if a.element.same(e) => {
+                Some(Ty::Array(unconstrained(a)))
+            }
+            _ => None,
+        },
+    }
+}
+
+fn unconstrained(a: &ArrayTy) -> Rc<ArrayTy> {
+    Rc::new(ArrayTy {
+        name: a.name.clone(),
+        element: a.element.clone(),
+        bounds: None,
+        index_low: a.index_low,
+    })
+}
+
+/// `arr` constrained to `n` elements from its index subtype's low bound.
+pub(super) fn constrain(arr: &ArrayTy, n: usize) -> Ty {
+    Ty::Array(Rc::new(ArrayTy {
+        name: arr.name.clone(),
+        element: arr.element.clone(),
+        bounds: Some((arr.index_low, arr.index_low + n as i64 - 1, true)),
+        index_low: arr.index_low,
+    }))
+}
+
+/// The type of a string literal of `n` characters.
+fn string_type(sc: &Scope<'_>, n: usize) -> Ty {
+    match sc.lookup("string") {
+        Some([Item::Type(sub), ..]) => match &sub.ty {
+            Ty::Array(a) => constrain(a, n),
+            other => other.clone(),
+        },
+        _ => Ty::Array(Rc::new(ArrayTy {
+            name: "string".into(),
+            element: Ty::Integer,
+            bounds: Some((1, n as i64, true)),
+            index_low: 1,
+        })),
+    }
+}
+
+fn logic_help(ty: &Ty) -> String {
+    if ty.is_enum_named("std_ulogic") {
+        "the std_logic_1164 operators are user-defined subprograms, not supported yet; use boolean or bit".into()
+    } else {
+        "logical operators take two boolean or two bit operands; arithmetic takes two numbers of the same type".into()
+    }
+}

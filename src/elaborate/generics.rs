@@ -1,0 +1,107 @@
+//! Top-level generic overrides (`-g NAME=VALUE`): the text read as a VHDL literal of the
+//! generic's type.
+
+use crate::design::Value;
+
+use super::scope::{Item, Scope};
+use super::types::Ty;
+
+/// The value `text` denotes for type `ty`, or `None` when it is not a literal of that type.
+/// An integer literal is accepted for a real generic (`-g r=5` means 5.0): the command line is
+/// not VHDL source, and refusing it would only annoy.
+pub(super) fn parse_literal(text: &str, ty: &Ty, sc: &Scope<'_>) -> Option<Value> {
+    let t = text.trim();
+    match ty {
+        Ty::Real => number(t).map(Value::Real),
+        Ty::Integer => {
+            let clean: String = t.chars().filter(|c| *c != '_').collect();
+            clean.parse::<i64>().ok().map(Value::Integer)
+        }
+        Ty::Time => {
+            let split = t
+                .find(|c: char| c.is_ascii_alphabetic() && c != 'e' && c != 'E')
+                .or_else(|| {
+                    // `10 ms`: the unit starts after the last space.
+                    t.rfind(' ').map(|p| p + 1)
+                })?;
+            let (num, unit) = t.split_at(split);
+            let n = number(num.trim())?;
+            match sc.lookup(&unit.trim().to_ascii_lowercase()) {
+                Some([Item::TimeUnit(f), ..]) => Some(Value::Time(n * f / 1e15)),
+                _ => None,
+            }
+        }
+        Ty::Boolean => match t.to_ascii_lowercase().as_str() {
+            "true" => Some(Value::Boolean(true)),
+            "false" => Some(Value::Boolean(false)),
+            _ => None,
+        },
+        Ty::Enum(e) => {
+            let lit = if t.starts_with('\'') {
+                t.to_string()
+            } else {
+                t.to_ascii_lowercase()
+            };
+            e.literals
+                .iter()
+                .position(|l| *l == lit)
+                .map(|p| Value::Enum(p as u32))
+        }
+        Ty::Array(_) if ty.is_string() => {
+            let s = t
+                .strip_prefix('"')
+                .and_then(|s| s.strip_suffix('"'))
+                .unwrap_or(t);
+            Some(Value::String(s.to_string()))
+        }
+        Ty::Array(_) => None,
+    }
+}
+
+fn number(t: &str) -> Option<f64> {
+    let clean: String = t.chars().filter(|c| *c != '_').collect();
+    if clean.is_empty()
+        || !clean
+            .chars()
+            .all(|c| c.is_ascii_digit() || matches!(c, '.' | 'e' | 'E' | '+' | '-'))
+    {
+        return None;
+    }
+    clean.parse::<f64>().ok().filter(|x| x.is_finite())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn literals_of_each_type() {
+        let mut sc = Scope::new();
+        sc.declare("ms", Item::TimeUnit(1e12));
+        assert_eq!(parse_literal("4.5", &Ty::Real, &sc), Some(Value::Real(4.5)));
+        assert_eq!(
+            parse_literal("1e-3", &Ty::Real, &sc),
+            Some(Value::Real(1e-3))
+        );
+        assert_eq!(parse_literal("5", &Ty::Real, &sc), Some(Value::Real(5.0)));
+        assert_eq!(
+            parse_literal("1_000", &Ty::Integer, &sc),
+            Some(Value::Integer(1000))
+        );
+        assert_eq!(
+            parse_literal("10 ms", &Ty::Time, &sc),
+            Some(Value::Time(0.01))
+        );
+        assert_eq!(
+            parse_literal("2.5ms", &Ty::Time, &sc),
+            Some(Value::Time(2.5e-3))
+        );
+        assert_eq!(
+            parse_literal("TRUE", &Ty::Boolean, &sc),
+            Some(Value::Boolean(true))
+        );
+        assert_eq!(parse_literal("abc", &Ty::Real, &sc), None);
+        assert_eq!(parse_literal("inf", &Ty::Real, &sc), None);
+        assert_eq!(parse_literal("10 parsec", &Ty::Time, &sc), None);
+    }
+}

@@ -1,0 +1,698 @@
+//! The hierarchy: the top entity, entity and component instances with their generic and port
+//! maps, generate statements and blocks. Ports are aliases of their actuals; an unconnected
+//! port gets a fresh object named `instance.port`.
+
+use std::collections::HashMap;
+
+use crate::ast::{
+    self, Actual, Architecture, Assoc, ConcKind, ConcStmt, Entity, InstantiatedUnit, InterfaceDecl,
+    ObjectClass,
+};
+use crate::design::{QuantityKind, Value};
+use crate::source::Span;
+
+use super::error::ElabError;
+use super::generics::parse_literal;
+use super::library::{Unit, canonical_library};
+use super::scope::{Item, Scope, list_names};
+use super::types::Ty;
+use super::{Elab, ElabOptions, R, Reported};
+
+/// Instances nested deeper than this are taken as a recursive instantiation.
+const MAX_DEPTH: usize = 64;
+
+/// Where an instance's generics and ports come from.
+enum Actuals<'x, 'a> {
+    Top(&'x [(String, String)]),
+    Map {
+        parent: &'x Scope<'a>,
+        generics: &'a [Assoc],
+        ports: &'a [Assoc],
+    },
+}
+
+/// Interface names in declaration order with their declarations.
+fn flatten(decls: &[InterfaceDecl]) -> Vec<(&ast::Ident, &InterfaceDecl)> {
+    decls
+        .iter()
+        .flat_map(|d| d.names.iter().map(move |n| (n, d)))
+        .collect()
+}
+
+impl<'a> Elab<'a> {
+    pub(super) fn top(&mut self, options: &ElabOptions) {
+        let name = options.top.to_ascii_lowercase();
+        let key = ("work".to_string(), name.clone());
+        let Some(entity) = self.lib.entities.get(&key).cloned() else {
+            let cands = self.lib.tops();
+            let help = match self
+                .lib
+                .work_entities()
+                .iter()
+                .map(|e| (super::scope::edit_distance(&name, e), e.clone()))
+                .min()
+            {
+                Some((d, best)) if d <= 2 => {
+                    format!("did you mean `{best}`? candidates: {}", list_names(&cands))
+                }
+                _ => format!("top-level candidates: {}", list_names(&cands)),
+            };
+            self.error(ElabError::UnknownTop {
+                span: None,
+                name,
+                help: Some(help),
+            });
+            return;
+        };
+        let generic_names: Vec<String> = flatten(&entity.unit.generics)
+            .iter()
+            .map(|(n, _)| n.name.clone())
+            .collect();
+        let mut overrides = Vec::new();
+        for (g, text) in &options.generics {
+            let g = g.to_ascii_lowercase();
+            if generic_names.contains(&g) {
+                overrides.push((g, text.clone()));
+            } else {
+                self.error(ElabError::UnknownGeneric {
+                    span: entity.unit.name.span,
+                    name: g,
+                    entity: name.clone(),
+                    help: Some(format!("its generics are {}", list_names(&generic_names))),
+                });
+            }
+        }
+        let Ok(arch) = self.architecture(&entity, None, entity.unit.name.span) else {
+            return;
+        };
+        self.design.top = name;
+        let _ = self.instance_body(&entity, &arch, Actuals::Top(&overrides), 0);
+    }
+
+    fn architecture(
+        &mut self,
+        entity: &Unit<'a, Entity>,
+        named: Option<&ast::Ident>,
+        span: Span,
+    ) -> R<Unit<'a, Architecture>> {
+        let key = (entity.library.clone(), entity.unit.name.name.clone());
+        let archs = self.lib.architectures.get(&key);
+        let found = match (archs, named) {
+            (Some(a), Some(n)) => a.iter().rev().find(|u| u.unit.name.name == n.name).cloned(),
+            (Some(a), None) => a.last().cloned(),
+            (None, _) => None,
+        };
+        let known: Vec<String> = archs
+            .map(|a| a.iter().map(|u| u.unit.name.name.clone()).collect())
+            .unwrap_or_default();
+        found.ok_or_else(|| {
+            self.error(ElabError::NoArchitecture {
+                span,
+                entity: key.1.clone(),
+                named: named.map(|n| format!(" `{}`", n.name)).unwrap_or_default(),
+                help: Some(if known.is_empty() {
+                    format!(
+                        "write `architecture a of {} is ... end architecture;` and pass its file",
+                        key.1
+                    )
+                } else {
+                    format!("its architectures are {}", list_names(&known))
+                }),
+            })
+        })
+    }
+
+    /// Matches a map's associations to the formals: `formal name -> actual`.
+    fn associate<'x>(
+        &mut self,
+        formals: &[(&ast::Ident, &InterfaceDecl)],
+        map: &'x [Assoc],
+        what: &'static str,
+        unit: &str,
+    ) -> HashMap<String, &'x Assoc> {
+        let mut out = HashMap::new();
+        let names: Vec<String> = formals.iter().map(|(n, _)| n.name.clone()).collect();
+        for (k, a) in map.iter().enumerate() {
+            let name = match &a.formal {
+                Some(f) => match &f.kind {
+                    ast::ExprKind::Name(id) => id.name.clone(),
+                    _ => {
+                        self.error(ElabError::unsupported(
+                            f.span,
+                            "partial or converted formals",
+                            "associate whole formals by name",
+                        ));
+                        continue;
+                    }
+                },
+                None => match names.get(k) {
+                    Some(n) => n.clone(),
+                    None => {
+                        self.error(ElabError::invalid(
+                            a.span,
+                            format!(
+                                "too many {what} actuals: `{unit}` has {} {what}s",
+                                names.len()
+                            ),
+                            None,
+                        ));
+                        continue;
+                    }
+                },
+            };
+            if !names.contains(&name) {
+                let span = a.formal.as_ref().map_or(a.span, |f| f.span);
+                let best = names
+                    .iter()
+                    .map(|n| (super::scope::edit_distance(&name, n), n))
+                    .min()
+                    .filter(|(d, _)| *d <= 2);
+                self.error(ElabError::UnknownFormal {
+                    span,
+                    name,
+                    what,
+                    unit: unit.to_string(),
+                    help: Some(match best {
+                        Some((_, b)) => {
+                            format!("did you mean `{b}`? its {what}s are {}", list_names(&names))
+                        }
+                        None => format!("its {what}s are {}", list_names(&names)),
+                    }),
+                });
+                continue;
+            }
+            out.insert(name, a);
+        }
+        out
+    }
+
+    fn instance_body(
+        &mut self,
+        entity: &Unit<'a, Entity>,
+        arch: &Unit<'a, Architecture>,
+        actuals: Actuals<'_, 'a>,
+        depth: usize,
+    ) -> R<()> {
+        let ent = entity.unit;
+        let mut sc = self.unit_scope(&entity.library, &[entity.context, arch.context]);
+        sc.push();
+        let generics = flatten(&ent.generics);
+        let ports = flatten(&ent.ports);
+        let (gmap, pmap, parent) = match &actuals {
+            Actuals::Top(_) => (HashMap::new(), HashMap::new(), None),
+            Actuals::Map {
+                parent,
+                generics: g,
+                ports: p,
+            } => {
+                let gm = self.associate(&generics, g, "generic", &ent.name.name);
+                let pm = self.associate(&ports, p, "port", &ent.name.name);
+                (gm, pm, Some(*parent))
+            }
+        };
+        let mut ok = true;
+        for (name, decl) in &generics {
+            ok &= self
+                .generic(
+                    &mut sc,
+                    name,
+                    decl,
+                    &actuals,
+                    gmap.get(&name.name).copied(),
+                    parent,
+                    &ent.name.name,
+                )
+                .is_ok();
+        }
+        if !ok {
+            return Err(Reported);
+        }
+        for (name, decl) in &ports {
+            ok &= self
+                .port(&mut sc, name, decl, pmap.get(&name.name).copied(), parent)
+                .is_ok();
+        }
+        if !ok {
+            return Err(Reported);
+        }
+        self.decls(&mut sc, &ent.decls);
+        self.conc_stmts(&mut sc, &ent.stmts, depth);
+        sc.push();
+        self.decls(&mut sc, &arch.unit.decls);
+        self.conc_stmts(&mut sc, &arch.unit.stmts, depth);
+        Ok(())
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn generic(
+        &mut self,
+        sc: &mut Scope<'a>,
+        name: &ast::Ident,
+        decl: &InterfaceDecl,
+        actuals: &Actuals<'_, 'a>,
+        actual: Option<&Assoc>,
+        parent: Option<&Scope<'a>>,
+        entity: &str,
+    ) -> R<()> {
+        let sub = self.subtype_indication(sc, &decl.subtype)?;
+        let override_text = match actuals {
+            Actuals::Top(o) => o
+                .iter()
+                .rev()
+                .find(|(n, _)| *n == name.name)
+                .map(|(_, t)| t.clone()),
+            Actuals::Map { .. } => None,
+        };
+        let value = if let Some(text) = override_text {
+            match parse_literal(&text, &sub.ty, sc) {
+                Some(v) => v,
+                None => {
+                    return Err(self.error(ElabError::BadGenericValue {
+                        span: name.span,
+                        name: name.name.clone(),
+                        text,
+                        ty: sub.ty.to_string(),
+                        help: Some(literal_help(&sub.ty)),
+                    }));
+                }
+            }
+        } else if let (
+            Some(Assoc {
+                actual: Actual::Expr(e),
+                ..
+            }),
+            Some(parent),
+        ) = (actual, parent)
+        {
+            self.static_value(parent, e, &sub.ty, "a generic actual")?
+        } else if let Some(default) = &decl.default {
+            self.static_value(sc, default, &sub.ty, "a generic's default")?
+        } else {
+            return Err(self.error(ElabError::MissingGeneric {
+                span: name.span,
+                name: name.name.clone(),
+                entity: entity.to_string(),
+            }));
+        };
+        let ty = super::decls::fit_array(&sub.ty, &value);
+        sc.declare(&name.name, Item::Constant { value, ty });
+        Ok(())
+    }
+
+    fn port(
+        &mut self,
+        sc: &mut Scope<'a>,
+        name: &ast::Ident,
+        decl: &InterfaceDecl,
+        actual: Option<&Assoc>,
+        parent: Option<&Scope<'a>>,
+    ) -> R<()> {
+        let actual_expr = match (actual, parent) {
+            (
+                Some(Assoc {
+                    actual: Actual::Expr(e),
+                    ..
+                }),
+                Some(p),
+            ) => Some((e, p)),
+            (
+                Some(Assoc {
+                    actual: Actual::Range(_),
+                    span,
+                    ..
+                }),
+                _,
+            ) => {
+                return Err(self.error(ElabError::invalid(
+                    *span,
+                    "a range is not a port actual",
+                    None,
+                )));
+            }
+            _ => None,
+        };
+        let class = decl.class.unwrap_or(ObjectClass::Signal);
+        let port_class_error = |me: &mut Self, e: &ast::Expr, found: &str, expected: &str| {
+            me.error(ElabError::PortClass {
+                span: e.span,
+                port: name.name.clone(),
+                expected: expected.into(),
+                found: found.into(),
+                help: Some(format!(
+                    "connect a {expected} (or `open`) to `{}`",
+                    name.name
+                )),
+            })
+        };
+        let item = match class {
+            ObjectClass::Terminal => {
+                let nature = self.nature_mark(sc, &decl.subtype)?;
+                match actual_expr {
+                    Some((e, p)) => {
+                        let items = self.lookup(p, e)?;
+                        let (id, n) = match items[0] {
+                            Item::Terminal { id, nature } => (id, nature),
+                            Item::RefTerminal { nature } => {
+                                (self.reference_terminal(nature), nature)
+                            }
+                            ref other => {
+                                return Err(port_class_error(self, e, other.class(), "terminal"));
+                            }
+                        };
+                        if n != nature {
+                            let (a, b) = (
+                                self.natures[nature].name.clone(),
+                                self.natures[n].name.clone(),
+                            );
+                            return Err(self.error(ElabError::TypeMismatch {
+                                span: e.span,
+                                expected: format!("a terminal of nature {a}"),
+                                found: format!("a terminal of nature {b}"),
+                                help: Some(
+                                    "a terminal port connects to a terminal of the same nature"
+                                        .into(),
+                                ),
+                            }));
+                        }
+                        Item::Terminal { id, nature }
+                    }
+                    None => Item::Terminal {
+                        id: self.new_terminal(&name.name, nature, name.span),
+                        nature,
+                    },
+                }
+            }
+            ObjectClass::Quantity => {
+                let sub = self.subtype_indication(sc, &decl.subtype)?;
+                match actual_expr {
+                    Some((e, p)) => {
+                        let items = self.lookup(p, e)?;
+                        match items[0] {
+                            Item::Quantity(q) => Item::Quantity(q),
+                            Item::Constant { .. } | Item::Signal { .. } | Item::Variable { .. } => {
+                                return Err(self.error(ElabError::unsupported(
+                                    e.span,
+                                    "an expression as the actual of a quantity port",
+                                    "declare a quantity `q == expr;` in the instantiating architecture and connect it",
+                                )));
+                            }
+                            ref other => {
+                                return Err(port_class_error(self, e, other.class(), "quantity"));
+                            }
+                        }
+                    }
+                    None => Item::Quantity(self.new_quantity(
+                        &name.name,
+                        QuantityKind::Free,
+                        &sub,
+                        None,
+                        None,
+                        name.span,
+                    )),
+                }
+            }
+            ObjectClass::Signal => {
+                let sub = self.subtype_indication(sc, &decl.subtype)?;
+                match actual_expr {
+                    Some((e, p)) => {
+                        let items = self.lookup(p, e)?;
+                        match &items[0] {
+                            Item::Signal { id, ty } => {
+                                if !ty.same(&sub.ty) {
+                                    return Err(self.error(ElabError::TypeMismatch {
+                                        span: e.span,
+                                        expected: sub.ty.to_string(),
+                                        found: ty.to_string(),
+                                        help: Some(format!(
+                                            "port `{}` is of type {}",
+                                            name.name, sub.ty
+                                        )),
+                                    }));
+                                }
+                                Item::Signal {
+                                    id: *id,
+                                    ty: sub.ty.clone(),
+                                }
+                            }
+                            other => {
+                                return Err(port_class_error(self, e, other.class(), "signal"));
+                            }
+                        }
+                    }
+                    None => {
+                        let init = match &decl.default {
+                            Some(d) => self.static_value(sc, d, &sub.ty, "a port's default")?,
+                            None => sub.ty.default_value(),
+                        };
+                        let id = self.new_signal(&name.name, &sub.ty, init, name.span);
+                        Item::Signal {
+                            id,
+                            ty: sub.ty.clone(),
+                        }
+                    }
+                }
+            }
+            other => {
+                return Err(self.error(ElabError::unsupported(
+                    decl.span,
+                    format!("{other:?} ports").to_lowercase(),
+                    "ports are signals, quantities or terminals",
+                )));
+            }
+        };
+        sc.declare(&name.name, item);
+        Ok(())
+    }
+
+    pub(super) fn conc_stmts(&mut self, sc: &mut Scope<'a>, stmts: &'a [ConcStmt], depth: usize) {
+        for s in stmts {
+            match &s.kind {
+                ConcKind::Process {
+                    sensitivity,
+                    decls,
+                    stmts,
+                } => self.process(sc, s, sensitivity, decls, stmts),
+                ConcKind::ConditionalAssign { .. }
+                | ConcKind::SelectedAssign { .. }
+                | ConcKind::Assert(_)
+                | ConcKind::ProcedureCall(_)
+                | ConcKind::Break(_) => {
+                    let _ = self.concurrent_assign(sc, s);
+                }
+                ConcKind::Instance {
+                    unit,
+                    generic_map,
+                    port_map,
+                } => {
+                    let _ = self.instantiate(sc, s, unit, generic_map, port_map, depth);
+                }
+                ConcKind::ForGenerate {
+                    param,
+                    range,
+                    decls,
+                    stmts,
+                } => {
+                    let Ok((l, r, asc)) = self.discrete_range(sc, range) else {
+                        continue;
+                    };
+                    let label = s.label.as_ref().map_or("gen", |l| l.name.as_str());
+                    let values: Vec<i64> = if asc {
+                        (l..=r).collect()
+                    } else {
+                        (r..=l).rev().collect()
+                    };
+                    for i in values {
+                        let saved = self.path.clone();
+                        self.path = format!("{}({i})", self.hier_name(label));
+                        sc.push();
+                        sc.declare(
+                            &param.name,
+                            Item::Constant {
+                                value: Value::Integer(i),
+                                ty: Ty::Integer,
+                            },
+                        );
+                        self.decls(sc, decls);
+                        self.conc_stmts(sc, stmts, depth);
+                        sc.pop();
+                        self.path = saved;
+                    }
+                }
+                ConcKind::IfGenerate {
+                    condition,
+                    decls,
+                    stmts,
+                } => {
+                    let Ok(v) =
+                        self.static_value(sc, condition, &Ty::Boolean, "a generate condition")
+                    else {
+                        continue;
+                    };
+                    if v == Value::Boolean(true) {
+                        self.nested_region(sc, s, decls, stmts, depth);
+                    }
+                }
+                ConcKind::Block {
+                    guard,
+                    decls,
+                    stmts,
+                } => {
+                    if let Some(g) = guard {
+                        self.error(ElabError::unsupported(
+                            g.span,
+                            "guarded blocks",
+                            "use a process with an if statement",
+                        ));
+                        continue;
+                    }
+                    self.nested_region(sc, s, decls, stmts, depth);
+                }
+                ConcKind::Simultaneous(kind) => self.simultaneous(sc, s, kind),
+            }
+        }
+    }
+
+    fn nested_region(
+        &mut self,
+        sc: &mut Scope<'a>,
+        s: &ConcStmt,
+        decls: &'a [ast::Decl],
+        stmts: &'a [ConcStmt],
+        depth: usize,
+    ) {
+        let saved = self.path.clone();
+        if let Some(l) = &s.label {
+            self.path = self.hier_name(&l.name);
+        }
+        sc.push();
+        self.decls(sc, decls);
+        self.conc_stmts(sc, stmts, depth);
+        sc.pop();
+        self.path = saved;
+    }
+
+    fn instantiate(
+        &mut self,
+        sc: &mut Scope<'a>,
+        s: &ConcStmt,
+        unit: &'a InstantiatedUnit,
+        generics: &'a [Assoc],
+        ports: &'a [Assoc],
+        depth: usize,
+    ) -> R<()> {
+        let (lib, name, arch_name, name_span) = match unit {
+            InstantiatedUnit::Entity { name, architecture } => {
+                let (lib, ent) = match &name.kind {
+                    ast::ExprKind::Selected(prefix, ent) => {
+                        let ast::ExprKind::Name(l) = &prefix.kind else {
+                            return Err(self.error(ElabError::invalid(
+                                prefix.span,
+                                "expected a library name",
+                                None,
+                            )));
+                        };
+                        (self.library_name(sc, l)?, ent)
+                    }
+                    ast::ExprKind::Name(ent) => (
+                        match sc.lookup("work") {
+                            Some([Item::Library(l), ..]) => l.clone(),
+                            _ => "work".into(),
+                        },
+                        ent,
+                    ),
+                    _ => {
+                        return Err(self.error(ElabError::invalid(
+                            name.span,
+                            "expected an entity name",
+                            None,
+                        )));
+                    }
+                };
+                (lib, ent.name.clone(), architecture.as_ref(), name.span)
+            }
+            InstantiatedUnit::Component(name) => {
+                let items = self.lookup(sc, name)?;
+                let Item::Component(decl) = items[0] else {
+                    return Err(self.error(ElabError::WrongClass {
+                        span: name.span,
+                        name: self.sources.snippet(name.span).into(),
+                        found: items[0].class().into(),
+                        expected: "a component".into(),
+                        help: Some("instantiate an entity with `label : entity work.name`".into()),
+                    }));
+                };
+                // Default binding (LRM 7.3.3): the entity of the same name in work.
+                let simple = match &decl.kind {
+                    ast::DeclKind::Component { name, .. } => name.name.clone(),
+                    _ => String::new(),
+                };
+                ("work".to_string(), simple, None, name.span)
+            }
+            InstantiatedUnit::Configuration(n) => {
+                return Err(self.error(ElabError::unsupported(
+                    n.span,
+                    "configuration instantiation",
+                    "instantiate the entity: `entity work.e(arch)`",
+                )));
+            }
+        };
+        let key = (canonical_library(&lib).to_string(), name.clone());
+        let Some(entity) = self.lib.entities.get(&key).cloned() else {
+            let cands = self.lib.work_entities();
+            let best = cands
+                .iter()
+                .map(|e| (super::scope::edit_distance(&name, e), e))
+                .min()
+                .filter(|(d, _)| *d <= 2);
+            return Err(self.error(ElabError::Undeclared {
+                span: name_span,
+                name: format!("{}.{}", key.0, key.1),
+                help: Some(match best {
+                    Some((_, b)) => format!("did you mean `{b}`?"),
+                    None => format!(
+                        "library {} has no entity `{}`; pass the file that declares it",
+                        key.0, key.1
+                    ),
+                }),
+            }));
+        };
+        let arch = self.architecture(&entity, arch_name, name_span)?;
+        if depth >= MAX_DEPTH {
+            return Err(self.error(ElabError::invalid(
+                s.span,
+                format!("instances nested more than {MAX_DEPTH} deep"),
+                Some("an entity probably instantiates itself".into()),
+            )));
+        }
+        let label = s
+            .label
+            .as_ref()
+            .map_or_else(|| name.clone(), |l| l.name.clone());
+        let saved = (self.path.clone(), self.instance.clone());
+        self.path = self.hier_name(&label);
+        self.instance = self.path.clone();
+        let r = self.instance_body(
+            &entity,
+            &arch,
+            Actuals::Map {
+                parent: sc,
+                generics,
+                ports,
+            },
+            depth + 1,
+        );
+        (self.path, self.instance) = saved;
+        r
+    }
+}
+
+fn literal_help(ty: &Ty) -> String {
+    match ty {
+        Ty::Real => "write a real number: `-g NAME=4.0` or `1e-3`".into(),
+        Ty::Integer => "write an integer: `-g NAME=12`".into(),
+        Ty::Time => "write a number and a unit: `-g NAME=\"10 ms\"`".into(),
+        Ty::Boolean => "write `true` or `false`".into(),
+        Ty::Enum(e) => format!("write one of {}", list_names(&e.literals)),
+        Ty::Array(_) => "array generics cannot be set from the command line".into(),
+    }
+}

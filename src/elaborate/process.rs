@@ -1,0 +1,921 @@
+//! Processes: sequential statements lowered to [`Instr`]s with jumps, and the equivalent
+//! processes of concurrent signal assignments, assertions, procedure calls and breaks
+//! (LRM 11.3-11.6, 1076.1 12.6.4).
+
+use crate::ast::{
+    self, Actual, Assertion, BreakStmt, ConcStmt, DelayMechanism as AstDelay, Ident, LoopScheme,
+    Sensitivity, SeqKind, SeqStmt, Waveform,
+};
+use crate::design::{
+    BinaryOp, BreakReinit, DelayMechanism, Expr, Instr, Process, SignalId, Value, VarId, Variable,
+};
+use crate::source::Span;
+
+use super::error::ElabError;
+use super::scope::{Item, Native, Scope};
+use super::types::Ty;
+use super::{Elab, R, Reported};
+
+/// A process being lowered.
+#[derive(Default)]
+pub(super) struct Proc {
+    vars: Vec<Variable>,
+    code: Vec<Instr>,
+    loops: Vec<LoopFrame>,
+}
+
+struct LoopFrame {
+    label: Option<String>,
+    /// `Jump` instructions to patch to the loop's end.
+    exits: Vec<usize>,
+    /// `Jump` instructions to patch to the loop's continuation.
+    nexts: Vec<usize>,
+}
+
+impl Proc {
+    fn emit(&mut self, i: Instr) -> usize {
+        self.code.push(i);
+        self.code.len() - 1
+    }
+
+    fn here(&self) -> usize {
+        self.code.len()
+    }
+
+    fn patch(&mut self, at: usize, target: usize) {
+        match &mut self.code[at] {
+            Instr::Jump(t) | Instr::JumpIfNot { target: t, .. } => *t = target,
+            _ => {}
+        }
+    }
+
+    fn new_var(&mut self, name: &str, ty: &Ty, init: Value) -> VarId {
+        self.vars.push(Variable {
+            name: name.to_string(),
+            ty: ty.to_design(),
+            init,
+        });
+        VarId(self.vars.len() as u32 - 1)
+    }
+}
+
+/// Every signal the instructions read, without repetitions, in order of appearance.
+fn signals_read(code: &[Instr]) -> Vec<SignalId> {
+    let mut out = Vec::new();
+    let mut add = |e: &Expr| {
+        for s in e.signals() {
+            if !out.contains(&s) {
+                out.push(s);
+            }
+        }
+    };
+    for i in code {
+        match i {
+            Instr::SetVar { value, .. } => add(value),
+            Instr::SetVarElement { index, value, .. } => {
+                add(index);
+                add(value);
+            }
+            Instr::Assign { waveform, .. } => waveform.iter().for_each(|(v, d)| {
+                add(v);
+                add(d);
+            }),
+            Instr::JumpIfNot { cond, .. } => add(cond),
+            Instr::Assert {
+                cond,
+                report,
+                severity,
+                ..
+            } => {
+                cond.iter().chain(report).for_each(&mut add);
+                add(severity);
+            }
+            Instr::Break { reinit, when, .. } => {
+                reinit.iter().for_each(|r| add(&r.value));
+                when.iter().for_each(&mut add);
+            }
+            Instr::Wait { .. } | Instr::Jump(_) | Instr::Stop | Instr::Halt => {}
+        }
+    }
+    out
+}
+
+impl<'a> Elab<'a> {
+    fn push_process(&mut self, label: Option<&Ident>, span: Span, p: Proc) {
+        let name = match label {
+            Some(l) => self.hier_name(&l.name),
+            None => {
+                let n = self.unlabelled.entry(self.path.clone()).or_insert(0);
+                let name = format!("_p{n}");
+                *n += 1;
+                self.hier_name(&name)
+            }
+        };
+        self.design.processes.push(Process {
+            name,
+            vars: p.vars,
+            code: p.code,
+            span,
+        });
+    }
+
+    /// An explicit process statement.
+    pub(super) fn process(
+        &mut self,
+        sc: &mut Scope<'a>,
+        stmt: &'a ConcStmt,
+        sensitivity: &Option<Sensitivity>,
+        decls: &'a [ast::Decl],
+        stmts: &'a [SeqStmt],
+    ) {
+        let mut p = Proc::default();
+        sc.push();
+        let ok = self.process_decls(sc, &mut p, decls).is_ok();
+        let mut on = Vec::new();
+        if let Some(Sensitivity::List(names)) = sensitivity {
+            for n in names {
+                if let Ok(s) = self.signal_name(sc, n) {
+                    if !on.contains(&s) {
+                        on.push(s);
+                    }
+                }
+            }
+        }
+        self.seq(sc, &mut p, stmts);
+        sc.pop();
+        if sensitivity.is_some() {
+            if stmts.iter().any(contains_wait) {
+                self.error(ElabError::invalid(
+                    stmt.span,
+                    "a process with a sensitivity list cannot contain `wait`",
+                    Some("remove the sensitivity list or the wait statements (LRM 11.3)".into()),
+                ));
+            }
+            if matches!(sensitivity, Some(Sensitivity::All)) {
+                on = signals_read(&p.code);
+            }
+            p.emit(Instr::Wait {
+                on,
+                until: None,
+                timeout: None,
+            });
+        }
+        p.emit(Instr::Jump(0));
+        if ok {
+            self.push_process(stmt.label.as_ref(), stmt.span, p);
+        }
+    }
+
+    fn process_decls(&mut self, sc: &mut Scope<'a>, p: &mut Proc, decls: &'a [ast::Decl]) -> R<()> {
+        let mut result = Ok(());
+        for d in decls {
+            if let ast::DeclKind::Variable {
+                names,
+                subtype,
+                value,
+                ..
+            } = &d.kind
+            {
+                let r = (|| {
+                    let sub = self.subtype_indication(sc, subtype)?;
+                    let init = match value {
+                        Some(v) => {
+                            self.static_value(sc, v, &sub.ty, "a variable's initial value")?
+                        }
+                        None => sub.ty.default_value(),
+                    };
+                    let ty = super::decls::fit_array(&sub.ty, &init);
+                    for n in names {
+                        let id = p.new_var(&n.name, &ty, init.clone());
+                        if !sc.declare(
+                            &n.name,
+                            Item::Variable {
+                                id,
+                                ty: ty.clone(),
+                                readonly: false,
+                            },
+                        ) {
+                            return Err(self.error(ElabError::Redeclared {
+                                span: n.span,
+                                name: n.name.clone(),
+                            }));
+                        }
+                    }
+                    Ok(())
+                })();
+                if r.is_err() {
+                    result = r;
+                }
+            } else if matches!(
+                d.kind,
+                ast::DeclKind::Signal { .. }
+                    | ast::DeclKind::Quantity(_)
+                    | ast::DeclKind::Terminal { .. }
+            ) {
+                result = Err(self.error(ElabError::invalid(
+                    d.span,
+                    "signals, quantities and terminals cannot be declared in a process",
+                    Some("declare them in the architecture".into()),
+                )));
+            } else {
+                self.decl(sc, d);
+            }
+        }
+        result
+    }
+
+    fn signal_name(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<SignalId> {
+        let t = self.expr(sc, e, None)?;
+        match t.e {
+            Expr::Signal(s) => Ok(s),
+            _ => Err(self.error(ElabError::WrongClass {
+                span: e.span,
+                name: self.sources.snippet(e.span).into(),
+                found: "not a signal".into(),
+                expected: "a signal".into(),
+                help: Some("sensitivity lists and `wait on` name signals (a quantity threshold is `q'above(level)`)".into()),
+            })),
+        }
+    }
+
+    fn seq(&mut self, sc: &mut Scope<'a>, p: &mut Proc, stmts: &'a [SeqStmt]) {
+        for s in stmts {
+            let _ = self.seq_stmt(sc, p, s);
+        }
+    }
+
+    fn cond(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<Expr> {
+        Ok(self.expr_of(sc, e, &Ty::Boolean)?.e)
+    }
+
+    fn severity(&mut self, sc: &Scope<'a>, e: Option<&ast::Expr>, default: u32) -> R<Expr> {
+        let Some(e) = e else {
+            return Ok(Expr::Const(Value::Enum(default)));
+        };
+        let ty = match sc.lookup("severity_level") {
+            Some([Item::Type(s), ..]) => s.ty.clone(),
+            _ => return Err(Reported),
+        };
+        Ok(self.expr_of(sc, e, &ty)?.e)
+    }
+
+    fn message(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<Expr> {
+        let t = self.expr(sc, e, None)?;
+        if !t.ty.is_string() {
+            return Err(self.error(ElabError::TypeMismatch {
+                span: e.span,
+                expected: "string".into(),
+                found: t.ty.to_string(),
+                help: Some("convert numbers with `real'image(x)` and join with `&`".into()),
+            }));
+        }
+        Ok(t.e)
+    }
+
+    fn assertion(&mut self, sc: &Scope<'a>, a: &Assertion, span: Span) -> R<Instr> {
+        let cond = self.cond(sc, &a.condition);
+        let report = match &a.report {
+            Some(r) => Some(self.message(sc, r)?),
+            None => None,
+        };
+        let severity = self.severity(sc, a.severity.as_ref(), 2)?;
+        Ok(Instr::Assert {
+            cond: Some(cond?),
+            report,
+            severity,
+            span,
+        })
+    }
+
+    fn seq_stmt(&mut self, sc: &mut Scope<'a>, p: &mut Proc, s: &'a SeqStmt) -> R<()> {
+        match &s.kind {
+            SeqKind::Wait { on, until, timeout } => {
+                if on.is_empty() && until.is_none() && timeout.is_none() {
+                    p.emit(Instr::Halt);
+                    return Ok(());
+                }
+                let mut sigs = Vec::new();
+                for n in on {
+                    let sig = self.signal_name(sc, n)?;
+                    if !sigs.contains(&sig) {
+                        sigs.push(sig);
+                    }
+                }
+                let until = match until {
+                    Some(u) => Some(self.cond(sc, u)?),
+                    None => None,
+                };
+                let timeout = match timeout {
+                    Some(t) => Some(self.expr_of(sc, t, &Ty::Time)?.e),
+                    None => None,
+                };
+                if on.is_empty() {
+                    for sig in until.iter().flat_map(Expr::signals) {
+                        if !sigs.contains(&sig) {
+                            sigs.push(sig);
+                        }
+                    }
+                }
+                p.emit(Instr::Wait {
+                    on: sigs,
+                    until,
+                    timeout,
+                });
+            }
+            SeqKind::SignalAssign {
+                target,
+                delay,
+                waveform,
+            } => {
+                if let Some(i) = self.assign(sc, target, delay, waveform)? {
+                    p.emit(i);
+                }
+            }
+            SeqKind::VariableAssign { target, value } => {
+                let (name_expr, index) = match &target.kind {
+                    ast::ExprKind::Apply(prefix, args) => match args.as_slice() {
+                        [
+                            ast::Assoc {
+                                actual: Actual::Expr(i),
+                                formal: None,
+                                ..
+                            },
+                        ] => (&**prefix, Some(i)),
+                        _ => {
+                            return Err(self.error(ElabError::unsupported(
+                                target.span,
+                                "this assignment target",
+                                "assign a variable or one element `v(i) := x`",
+                            )));
+                        }
+                    },
+                    _ => (target, None),
+                };
+                let items = self.lookup(sc, name_expr)?;
+                let (id, ty, readonly) = match &items[0] {
+                    Item::Variable { id, ty, readonly } => (*id, ty.clone(), *readonly),
+                    other => {
+                        let help = match other {
+                            Item::Signal { .. } => "signals are assigned with `<=`",
+                            Item::Quantity(_) => {
+                                "quantities are defined by simultaneous statements (`q == expr;`) or set by `break q => value;`"
+                            }
+                            _ => "only variables are assigned with `:=`",
+                        };
+                        return Err(self.error(ElabError::WrongClass {
+                            span: name_expr.span,
+                            name: self.sources.snippet(name_expr.span).into(),
+                            found: other.class().into(),
+                            expected: "a variable".into(),
+                            help: Some(help.into()),
+                        }));
+                    }
+                };
+                if readonly {
+                    return Err(self.error(ElabError::invalid(
+                        target.span,
+                        "a loop parameter cannot be assigned",
+                        Some("copy it into a variable".into()),
+                    )));
+                }
+                match index {
+                    None => {
+                        let v = self.expr_of(sc, value, &ty)?;
+                        p.emit(Instr::SetVar {
+                            var: id,
+                            value: v.e,
+                        });
+                    }
+                    Some(i) => {
+                        let Ty::Array(arr) = &ty else {
+                            return Err(self.error(ElabError::invalid(
+                                target.span,
+                                "only array variables can be indexed",
+                                None,
+                            )));
+                        };
+                        let i = self.expr_of(sc, i, &Ty::Integer)?;
+                        let v = self.expr_of(sc, value, &arr.element)?;
+                        p.emit(Instr::SetVarElement {
+                            var: id,
+                            index: i.e,
+                            value: v.e,
+                        });
+                    }
+                }
+            }
+            SeqKind::If {
+                branches,
+                otherwise,
+            } => {
+                let mut ends = Vec::new();
+                for (c, body) in branches {
+                    let cond = self
+                        .cond(sc, c)
+                        .unwrap_or(Expr::Const(Value::Boolean(false)));
+                    let skip = p.emit(Instr::JumpIfNot { cond, target: 0 });
+                    self.seq(sc, p, body);
+                    ends.push(p.emit(Instr::Jump(0)));
+                    let next = p.here();
+                    p.patch(skip, next);
+                }
+                if let Some(body) = otherwise {
+                    self.seq(sc, p, body);
+                }
+                let end = p.here();
+                for j in ends {
+                    p.patch(j, end);
+                }
+            }
+            SeqKind::Case {
+                selector,
+                alternatives,
+            } => {
+                let sel = self.expr(sc, selector, None)?;
+                let mut ends = Vec::new();
+                for (choices, body) in alternatives {
+                    let cond = self.choices_condition(sc, &sel.e, &sel.ty, choices)?;
+                    let cond = self.folded(cond, Ty::Boolean, s.span)?.e;
+                    let skip = p.emit(Instr::JumpIfNot { cond, target: 0 });
+                    self.seq(sc, p, body);
+                    ends.push(p.emit(Instr::Jump(0)));
+                    let next = p.here();
+                    p.patch(skip, next);
+                }
+                let end = p.here();
+                for j in ends {
+                    p.patch(j, end);
+                }
+            }
+            SeqKind::Loop { scheme, body } => self.loop_stmt(sc, p, s, scheme, body)?,
+            SeqKind::Next { label, condition } | SeqKind::Exit { label, condition } => {
+                let is_exit = matches!(s.kind, SeqKind::Exit { .. });
+                let frame = match label {
+                    Some(l) => p
+                        .loops
+                        .iter()
+                        .rposition(|f| f.label.as_deref() == Some(l.name.as_str())),
+                    None => p.loops.len().checked_sub(1),
+                };
+                let Some(frame) = frame else {
+                    return Err(self.error(ElabError::invalid(
+                        s.span,
+                        match label {
+                            Some(l) => format!("no enclosing loop is labelled `{}`", l.name),
+                            None => "`next` and `exit` must be inside a loop".into(),
+                        },
+                        None,
+                    )));
+                };
+                let skip = match condition {
+                    Some(c) => {
+                        let cond = self.cond(sc, c)?;
+                        Some(p.emit(Instr::JumpIfNot { cond, target: 0 }))
+                    }
+                    None => None,
+                };
+                let j = p.emit(Instr::Jump(0));
+                if is_exit {
+                    p.loops[frame].exits.push(j);
+                } else {
+                    p.loops[frame].nexts.push(j);
+                }
+                if let Some(skip) = skip {
+                    let next = p.here();
+                    p.patch(skip, next);
+                }
+            }
+            SeqKind::Return(_) => {
+                return Err(self.error(ElabError::invalid(
+                    s.span,
+                    "`return` outside a subprogram",
+                    None,
+                )));
+            }
+            SeqKind::Null => {}
+            SeqKind::Assert(a) => {
+                let i = self.assertion(sc, a, s.span)?;
+                p.emit(i);
+            }
+            SeqKind::Report { message, severity } => {
+                let report = self.message(sc, message)?;
+                let severity = self.severity(sc, severity.as_ref(), 0)?;
+                p.emit(Instr::Assert {
+                    cond: None,
+                    report: Some(report),
+                    severity,
+                    span: s.span,
+                });
+            }
+            SeqKind::ProcedureCall(call) => {
+                let i = self.procedure_call(sc, call)?;
+                p.emit(i);
+            }
+            SeqKind::Break(b) => {
+                if let Some(first) = b.sensitivity.first() {
+                    return Err(self.error(ElabError::invalid(
+                        first.span,
+                        "a sequential break has no `on` list",
+                        Some("use `break ... when cond;` or a concurrent break".into()),
+                    )));
+                }
+                let i = self.break_instr(sc, b, s.span)?;
+                p.emit(i);
+            }
+        }
+        Ok(())
+    }
+
+    fn loop_stmt(
+        &mut self,
+        sc: &mut Scope<'a>,
+        p: &mut Proc,
+        s: &'a SeqStmt,
+        scheme: &'a LoopScheme,
+        body: &'a [SeqStmt],
+    ) -> R<()> {
+        let label = s.label.as_ref().map(|l| l.name.clone());
+        let mut pushed = false;
+        let (top, exit_test, step): (usize, Option<usize>, Option<(VarId, bool)>) = match scheme {
+            LoopScheme::Forever => (p.here(), None, None),
+            LoopScheme::While(c) => {
+                let cond = self.cond(sc, c)?;
+                let top = p.here();
+                (
+                    top,
+                    Some(p.emit(Instr::JumpIfNot { cond, target: 0 })),
+                    None,
+                )
+            }
+            LoopScheme::For(param, range) => {
+                let (left, right, asc) = match range {
+                    ast::DiscreteRange::Range(r) => {
+                        let (l, r, asc) = self.range_exprs(sc, r)?;
+                        (l, r, asc)
+                    }
+                    ast::DiscreteRange::Subtype(_) => {
+                        let (l, r, asc) = self.discrete_range(sc, range)?;
+                        let int = |v| super::expr::Typed {
+                            e: Expr::Const(Value::Integer(v)),
+                            ty: Ty::Integer,
+                        };
+                        (int(l), int(r), asc)
+                    }
+                };
+                if !matches!(left.ty, Ty::Integer) {
+                    return Err(self.error(ElabError::unsupported(
+                        param.span,
+                        "loops over non-integer ranges",
+                        "loop over integers and index a constant array",
+                    )));
+                }
+                let var = p.new_var(&param.name, &Ty::Integer, Value::Integer(0));
+                p.emit(Instr::SetVar { var, value: left.e });
+                let right = match right.e {
+                    Expr::Const(_) => right.e,
+                    e => {
+                        let hidden = p.new_var(
+                            &format!("{}'right", param.name),
+                            &Ty::Integer,
+                            Value::Integer(0),
+                        );
+                        p.emit(Instr::SetVar {
+                            var: hidden,
+                            value: e,
+                        });
+                        Expr::Var(hidden)
+                    }
+                };
+                let top = p.here();
+                let op = if asc { BinaryOp::Le } else { BinaryOp::Ge };
+                let cond = Expr::Binary(op, Box::new(Expr::Var(var)), Box::new(right));
+                let test = p.emit(Instr::JumpIfNot { cond, target: 0 });
+                sc.push();
+                pushed = true;
+                sc.declare(
+                    &param.name,
+                    Item::Variable {
+                        id: var,
+                        ty: Ty::Integer,
+                        readonly: true,
+                    },
+                );
+                (top, Some(test), Some((var, asc)))
+            }
+        };
+        p.loops.push(LoopFrame {
+            label,
+            exits: Vec::new(),
+            nexts: Vec::new(),
+        });
+        self.seq(sc, p, body);
+        if pushed {
+            sc.pop();
+        }
+        let cont = p.here();
+        if let Some((var, asc)) = step {
+            let op = if asc { BinaryOp::Add } else { BinaryOp::Sub };
+            p.emit(Instr::SetVar {
+                var,
+                value: Expr::Binary(
+                    op,
+                    Box::new(Expr::Var(var)),
+                    Box::new(Expr::Const(Value::Integer(1))),
+                ),
+            });
+        }
+        p.emit(Instr::Jump(top));
+        let end = p.here();
+        // Invariant: pushed above and popped only here.
+        let frame = p.loops.pop().expect("loop frame");
+        for j in frame.exits {
+            p.patch(j, end);
+        }
+        for j in frame.nexts {
+            p.patch(j, cont);
+        }
+        if let Some(t) = exit_test {
+            p.patch(t, end);
+        }
+        Ok(())
+    }
+
+    /// A signal assignment instruction (`None` for `unaffected`).
+    fn assign(
+        &mut self,
+        sc: &Scope<'a>,
+        target: &ast::Expr,
+        delay: &AstDelay,
+        waveform: &Waveform,
+    ) -> R<Option<Instr>> {
+        let items = self.lookup(sc, target)?;
+        let (sig, ty) = match &items[0] {
+            Item::Signal { id, ty } => (*id, ty.clone()),
+            other => {
+                let help = match other {
+                    Item::Quantity(_) => {
+                        "quantities are defined by simultaneous statements (`q == expr;`) or set by `break q => value;`"
+                    }
+                    Item::Variable { .. } => "variables are assigned with `:=`",
+                    _ => "only signals are assigned with `<=`",
+                };
+                return Err(self.error(ElabError::WrongClass {
+                    span: target.span,
+                    name: self.sources.snippet(target.span).into(),
+                    found: other.class().into(),
+                    expected: "a signal".into(),
+                    help: Some(help.into()),
+                }));
+            }
+        };
+        let Waveform::Elements(elems) = waveform else {
+            return Ok(None);
+        };
+        let mut wave = Vec::new();
+        for el in elems {
+            let Some(v) = &el.value else {
+                return Err(self.error(ElabError::unsupported(
+                    el.span,
+                    "`null` waveform elements",
+                    "guarded signals are not supported",
+                )));
+            };
+            let v = self.expr_of(sc, v, &ty)?;
+            let d = match &el.after {
+                Some(a) => self.expr_of(sc, a, &Ty::Time)?.e,
+                None => Expr::Const(Value::Time(0.0)),
+            };
+            wave.push((v.e, d));
+        }
+        let mechanism = match delay {
+            AstDelay::Default => DelayMechanism::Inertial { reject: None },
+            AstDelay::Transport => DelayMechanism::Transport,
+            AstDelay::Inertial { reject } => DelayMechanism::Inertial {
+                reject: match reject {
+                    Some(r) => Some(self.expr_of(sc, r, &Ty::Time)?.e),
+                    None => None,
+                },
+            },
+        };
+        Ok(Some(Instr::Assign {
+            target: sig,
+            waveform: wave,
+            mechanism,
+        }))
+    }
+
+    fn procedure_call(&mut self, sc: &Scope<'a>, call: &ast::Expr) -> R<Instr> {
+        let name = match &call.kind {
+            ast::ExprKind::Apply(prefix, _) => &**prefix,
+            _ => call,
+        };
+        let items = self.lookup(sc, name)?;
+        let native = items.iter().find_map(|i| match i {
+            Item::Subprogram(s) if s.ret.is_none() => Some(s.native),
+            _ => None,
+        });
+        match native {
+            Some(Some(Native::Stop | Native::Finish)) => Ok(Instr::Stop),
+            Some(None) => Err(self.error(ElabError::unsupported(
+                name.span,
+                format!(
+                    "calling the user-defined procedure `{}`",
+                    self.sources.snippet(name.span)
+                ),
+                "user-defined subprograms are not supported yet: write the statements inline",
+            ))),
+            Some(Some(_)) => Err(self.error(ElabError::unsupported(
+                name.span,
+                format!(
+                    "the standard procedure `{}`",
+                    self.sources.snippet(name.span)
+                ),
+                "of the standard procedures vams implements std.env.stop and std.env.finish",
+            ))),
+            None => Err(self.error(ElabError::WrongClass {
+                span: name.span,
+                name: self.sources.snippet(name.span).into(),
+                found: items[0].class().into(),
+                expected: "a procedure".into(),
+                help: None,
+            })),
+        }
+    }
+
+    fn break_instr(&mut self, sc: &Scope<'a>, b: &BreakStmt, span: Span) -> R<Instr> {
+        let mut reinit = Vec::new();
+        for el in &b.elements {
+            let quantity = self.quantity_name(sc, &el.quantity)?;
+            let selector = match &el.selector {
+                Some(s) => self.quantity_name(sc, s)?,
+                None => quantity,
+            };
+            let value = self.expr_of(sc, &el.value, &Ty::Real)?.e;
+            reinit.push(BreakReinit {
+                selector,
+                quantity,
+                value,
+            });
+        }
+        let when = match &b.condition {
+            Some(c) => Some(self.cond(sc, c)?),
+            None => None,
+        };
+        Ok(Instr::Break { reinit, when, span })
+    }
+
+    fn quantity_name(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<crate::design::QuantityId> {
+        let items = self.lookup(sc, e)?;
+        match &items[0] {
+            Item::Quantity(q) => Ok(*q),
+            other => Err(self.error(ElabError::WrongClass {
+                span: e.span,
+                name: self.sources.snippet(e.span).into(),
+                found: other.class().into(),
+                expected: "a quantity".into(),
+                help: Some("a break list sets quantities: `break q => value;`".into()),
+            })),
+        }
+    }
+
+    /// The equivalent process of a concurrent statement: `body`, then wait on the signals it
+    /// reads (or on `on` when given); a body that reads no signal runs once.
+    fn equivalent(&mut self, stmt: &ConcStmt, mut p: Proc, on: Option<Vec<SignalId>>) {
+        let on = on
+            .filter(|o| !o.is_empty())
+            .unwrap_or_else(|| signals_read(&p.code));
+        if on.is_empty() {
+            p.emit(Instr::Halt);
+        } else {
+            p.emit(Instr::Wait {
+                on,
+                until: None,
+                timeout: None,
+            });
+            p.emit(Instr::Jump(0));
+        }
+        self.push_process(stmt.label.as_ref(), stmt.span, p);
+    }
+
+    pub(super) fn concurrent_assign(&mut self, sc: &Scope<'a>, stmt: &ConcStmt) -> R<()> {
+        let mut p = Proc::default();
+        match &stmt.kind {
+            ast::ConcKind::ConditionalAssign {
+                target,
+                delay,
+                branches,
+            } => {
+                let mut ends = Vec::new();
+                for (wave, cond) in branches {
+                    let skip = match cond {
+                        Some(c) => {
+                            let cond = self.cond(sc, c)?;
+                            Some(p.emit(Instr::JumpIfNot { cond, target: 0 }))
+                        }
+                        None => None,
+                    };
+                    if let Some(i) = self.assign(sc, target, delay, wave)? {
+                        p.emit(i);
+                    }
+                    if let Some(skip) = skip {
+                        ends.push(p.emit(Instr::Jump(0)));
+                        let next = p.here();
+                        p.patch(skip, next);
+                    }
+                }
+                let end = p.here();
+                for j in ends {
+                    p.patch(j, end);
+                }
+            }
+            ast::ConcKind::SelectedAssign {
+                selector,
+                target,
+                delay,
+                alternatives,
+            } => {
+                let sel = self.expr(sc, selector, None)?;
+                let mut ends = Vec::new();
+                for (wave, choices) in alternatives {
+                    let cond = self.choices_condition(sc, &sel.e, &sel.ty, choices)?;
+                    let cond = self.folded(cond, Ty::Boolean, stmt.span)?.e;
+                    let skip = p.emit(Instr::JumpIfNot { cond, target: 0 });
+                    if let Some(i) = self.assign(sc, target, delay, wave)? {
+                        p.emit(i);
+                    }
+                    ends.push(p.emit(Instr::Jump(0)));
+                    let next = p.here();
+                    p.patch(skip, next);
+                }
+                let end = p.here();
+                for j in ends {
+                    p.patch(j, end);
+                }
+                // The selector is read even when no choice matches.
+                let mut on = signals_read(&p.code);
+                for s in sel.e.signals() {
+                    if !on.contains(&s) {
+                        on.push(s);
+                    }
+                }
+                self.equivalent(stmt, p, Some(on));
+                return Ok(());
+            }
+            ast::ConcKind::Assert(a) => {
+                let i = self.assertion(sc, a, stmt.span)?;
+                p.emit(i);
+            }
+            ast::ConcKind::ProcedureCall(call) => {
+                let i = self.procedure_call(sc, call)?;
+                p.emit(i);
+            }
+            ast::ConcKind::Break(b) => {
+                let i = self.break_instr(sc, b, stmt.span)?;
+                p.emit(i);
+                let mut on = Vec::new();
+                for s in &b.sensitivity {
+                    let sig = self.signal_name(sc, s)?;
+                    if !on.contains(&sig) {
+                        on.push(sig);
+                    }
+                }
+                // Without an `on` list a break is sensitive to its condition's signals only.
+                if on.is_empty() {
+                    if let Some(c) = b.condition.as_ref() {
+                        let c = self.cond(sc, c)?;
+                        on = c.signals();
+                        on.dedup();
+                    }
+                    if on.is_empty() {
+                        p.emit(Instr::Halt);
+                        self.push_process(stmt.label.as_ref(), stmt.span, p);
+                        return Ok(());
+                    }
+                }
+                self.equivalent(stmt, p, Some(on));
+                return Ok(());
+            }
+            _ => return Ok(()),
+        }
+        self.equivalent(stmt, p, None);
+        Ok(())
+    }
+}
+
+fn contains_wait(s: &SeqStmt) -> bool {
+    match &s.kind {
+        SeqKind::Wait { .. } => true,
+        SeqKind::If {
+            branches,
+            otherwise,
+        } => {
+            branches.iter().any(|(_, b)| b.iter().any(contains_wait))
+                || otherwise.iter().flatten().any(contains_wait)
+        }
+        SeqKind::Case { alternatives, .. } => alternatives
+            .iter()
+            .any(|(_, b)| b.iter().any(contains_wait)),
+        SeqKind::Loop { body, .. } => body.iter().any(contains_wait),
+        _ => false,
+    }
+}

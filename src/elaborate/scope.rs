@@ -1,0 +1,239 @@
+//! Named things and the regions that make them visible.
+//!
+//! A [`Scope`] is a stack of regions (innermost last); the outermost holds what `use` clauses
+//! made visible. A name found in an inner region hides the outer ones (LRM 12.3), except that
+//! overloadable items (subprograms, enumeration literals) of the same region are all returned.
+
+use std::collections::HashMap;
+use std::rc::Rc;
+
+use crate::ast;
+use crate::design::{Builtin, QuantityId, SignalId, TerminalId, Value, VarId};
+
+use super::types::{Sub, Ty};
+
+/// What a name denotes.
+#[derive(Clone, Debug)]
+pub enum Item<'a> {
+    /// A constant or generic, folded.
+    Constant {
+        value: Value,
+        ty: Ty,
+    },
+    Signal {
+        id: SignalId,
+        ty: Ty,
+    },
+    /// Scalar quantities are `real`.
+    Quantity(QuantityId),
+    Terminal {
+        id: TerminalId,
+        nature: usize,
+    },
+    /// A nature's reference terminal, created in the design on first use.
+    RefTerminal {
+        nature: usize,
+    },
+    /// A process variable; loop parameters are read-only.
+    Variable {
+        id: VarId,
+        ty: Ty,
+        readonly: bool,
+    },
+    Type(Rc<Sub>),
+    /// Index into the elaborator's nature table.
+    Nature(usize),
+    EnumLiteral {
+        ty: Ty,
+        pos: u32,
+    },
+    Subprogram(Rc<Subprogram>),
+    /// A unit of the physical type `time`, in femtoseconds (integral, so that `1 sec` is
+    /// exactly 1.0 s).
+    TimeUnit(f64),
+    Library(String),
+    Package(Rc<PackageScope<'a>>),
+    Component(&'a ast::Decl),
+    /// A user-declared attribute (`attribute symbol : string;`).
+    Attribute,
+    /// Declared, but its declaration could not be elaborated (a stdlib declaration using an
+    /// unsupported construct): the reason, reported where it is used (`None`: the declaration's
+    /// own error was reported already).
+    Poison(Option<Rc<str>>),
+}
+
+impl Item<'_> {
+    /// "a signal", "a quantity", ... for wrong-class diagnostics.
+    pub fn class(&self) -> &'static str {
+        match self {
+            Item::Constant { .. } => "a constant",
+            Item::Signal { .. } => "a signal",
+            Item::Quantity(_) => "a quantity",
+            Item::Terminal { .. } | Item::RefTerminal { .. } => "a terminal",
+            Item::Variable { .. } => "a variable",
+            Item::Type(_) => "a type",
+            Item::Nature(_) => "a nature",
+            Item::EnumLiteral { .. } => "an enumeration literal",
+            Item::Subprogram(_) => "a subprogram",
+            Item::TimeUnit(_) => "a unit of time",
+            Item::Library(_) => "a library",
+            Item::Package(_) => "a package",
+            Item::Component(_) => "a component",
+            Item::Attribute => "an attribute",
+            Item::Poison(_) => "an unsupported declaration",
+        }
+    }
+
+    fn overloadable(&self) -> bool {
+        matches!(self, Item::Subprogram(_) | Item::EnumLiteral { .. })
+    }
+}
+
+/// A function or procedure declaration.
+#[derive(Debug)]
+pub struct Subprogram {
+    pub name: String,
+    pub params: Vec<Param>,
+    /// `None` for a procedure.
+    pub ret: Option<Ty>,
+    pub native: Option<Native>,
+}
+
+#[derive(Debug)]
+pub struct Param {
+    pub name: String,
+    pub ty: Ty,
+    pub has_default: bool,
+}
+
+/// What a stdlib subprogram without body is, natively.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Native {
+    Builtin(Builtin),
+    /// `log2(x)`, lowered to `log(x) / log(2)`.
+    Log2,
+    /// `log(x, base)`, lowered to `log(x) / log(base)`.
+    LogBase,
+    Now,
+    Stop,
+    Finish,
+    /// A native subprogram vams does not implement.
+    Missing,
+}
+
+/// The declarations of a package (and its body's deferred constants).
+#[derive(Debug, Default)]
+pub struct PackageScope<'a> {
+    pub name: String,
+    pub items: HashMap<String, Vec<Item<'a>>>,
+}
+
+/// One declarative region.
+#[derive(Debug, Default, Clone)]
+pub struct Region<'a> {
+    pub items: HashMap<String, Vec<Item<'a>>>,
+}
+
+#[derive(Debug, Default, Clone)]
+pub struct Scope<'a> {
+    pub regions: Vec<Region<'a>>,
+}
+
+impl<'a> Scope<'a> {
+    pub fn new() -> Scope<'a> {
+        Scope {
+            regions: vec![Region::default()],
+        }
+    }
+
+    pub fn push(&mut self) {
+        self.regions.push(Region::default());
+    }
+
+    pub fn pop(&mut self) {
+        self.regions.pop();
+    }
+
+    /// Declares `name` in the innermost region. Returns false when it is already declared
+    /// there and neither declaration is overloadable.
+    pub fn declare(&mut self, name: &str, item: Item<'a>) -> bool {
+        // Invariant: a scope always has at least its use region.
+        let region = self.regions.last_mut().expect("scope has a region");
+        let entry = region.items.entry(name.to_string()).or_default();
+        let clash = entry.iter().any(|old| {
+            !(matches!(old, Item::Poison(_)) || old.overloadable() && item.overloadable())
+        });
+        if clash {
+            return false;
+        }
+        entry.retain(|old| !matches!(old, Item::Poison(_)));
+        entry.push(item);
+        true
+    }
+
+    /// Makes `item` use-visible (outermost region); repeated imports are harmless.
+    pub fn import(&mut self, name: &str, item: Item<'a>) {
+        let region = &mut self.regions[0];
+        region.items.entry(name.to_string()).or_default().push(item);
+    }
+
+    /// Replaces the items of `name` in the innermost region that declares it.
+    pub fn replace(&mut self, name: &str, items: Vec<Item<'a>>) {
+        for region in self.regions.iter_mut().rev() {
+            if let Some(slot) = region.items.get_mut(name) {
+                *slot = items;
+                return;
+            }
+        }
+    }
+
+    /// Every item the innermost region declaring `name` holds for it.
+    pub fn lookup(&self, name: &str) -> Option<&[Item<'a>]> {
+        self.regions
+            .iter()
+            .rev()
+            .find_map(|r| r.items.get(name).filter(|v| !v.is_empty()))
+            .map(|v| v.as_slice())
+    }
+
+    /// The visible name closest to `name` by edit distance, if close enough to be a typo.
+    pub fn suggest(&self, name: &str) -> Option<String> {
+        let limit = (name.len() / 3).max(1);
+        self.regions
+            .iter()
+            .flat_map(|r| r.items.keys())
+            .filter(|k| !k.starts_with('"') && !k.starts_with('\''))
+            .map(|k| (edit_distance(name, k), k))
+            .filter(|(d, _)| *d <= limit)
+            .min()
+            .map(|(_, k)| k.clone())
+    }
+}
+
+/// Levenshtein distance over bytes (identifiers are ASCII).
+pub fn edit_distance(a: &str, b: &str) -> usize {
+    let (a, b) = (a.as_bytes(), b.as_bytes());
+    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.iter().enumerate() {
+        let mut cur = vec![i + 1; b.len() + 1];
+        for (j, cb) in b.iter().enumerate() {
+            let cost = usize::from(ca != cb);
+            cur[j + 1] = (prev[j] + cost).min(prev[j + 1] + 1).min(cur[j] + 1);
+        }
+        prev = cur;
+    }
+    prev[b.len()]
+}
+
+/// `x, y and z` for help lines.
+pub fn list_names(names: &[String]) -> String {
+    match names {
+        [] => "none".to_string(),
+        [one] => format!("`{one}`"),
+        _ => {
+            let (last, rest) = names.split_last().unwrap_or((&names[0], &[]));
+            let rest: Vec<String> = rest.iter().map(|n| format!("`{n}`")).collect();
+            format!("{} and `{last}`", rest.join(", "))
+        }
+    }
+}

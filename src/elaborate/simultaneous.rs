@@ -1,0 +1,259 @@
+//! Simultaneous statements to [`Equation`]s: `lhs == rhs` gives the residual `lhs - rhs`;
+//! a simultaneous if or case gives one equation per position whose residual is a chain of
+//! [`Expr::If`] over its branches.
+
+use crate::ast::{self, Choice, ConcKind, ConcStmt, SimKind};
+use crate::design::{BinaryOp, Equation, Expr, UnaryOp, Value};
+use crate::source::Span;
+
+use super::error::ElabError;
+use super::scope::Scope;
+use super::types::Ty;
+use super::{Elab, R};
+
+/// A branch of a simultaneous if or case: its condition (`None` for the default) and body.
+type Arm<'s> = (Option<(Expr, Span)>, &'s [ConcStmt]);
+
+/// An equation before it is placed in the design.
+struct Eqn {
+    residual: Expr,
+    span: Span,
+    text: String,
+}
+
+impl<'a> Elab<'a> {
+    /// Elaborates one simultaneous statement into the design's equations.
+    pub(super) fn simultaneous(&mut self, sc: &Scope<'a>, stmt: &ConcStmt, kind: &SimKind) {
+        if let Ok(eqns) = self.sim_equations(sc, stmt, kind) {
+            for e in eqns {
+                self.design.equations.push(Equation {
+                    residual: e.residual,
+                    span: e.span,
+                    instance: self.instance.clone(),
+                    text: e.text,
+                });
+            }
+        }
+    }
+
+    fn analog(&mut self, sc: &Scope<'a>, e: &ast::Expr, ty: &Ty) -> R<Expr> {
+        let t = self.expr_of(sc, e, ty)?;
+        if !t.e.is_analog() {
+            return Err(self.error(ElabError::invalid(
+                e.span,
+                "this expression cannot appear in a simultaneous statement",
+                Some("equations read quantities, signals, constants and `now`; not variables, array elements of signals, images or signal attributes".into()),
+            )));
+        }
+        Ok(t.e)
+    }
+
+    fn sim_equations(&mut self, sc: &Scope<'a>, stmt: &ConcStmt, kind: &SimKind) -> R<Vec<Eqn>> {
+        match kind {
+            SimKind::Simple { lhs, rhs, .. } => {
+                let l = self.analog(sc, lhs, &Ty::Real);
+                let r = self.analog(sc, rhs, &Ty::Real);
+                let residual = Expr::Binary(BinaryOp::Sub, Box::new(l?), Box::new(r?));
+                let residual = self.folded(residual, Ty::Real, stmt.span)?.e;
+                Ok(vec![Eqn {
+                    residual,
+                    span: stmt.span,
+                    text: self.text(stmt.span),
+                }])
+            }
+            SimKind::Null => Ok(Vec::new()),
+            SimKind::Procedural { .. } => Err(self.error(ElabError::unsupported(
+                stmt.span,
+                "simultaneous procedural statements",
+                "write the equations as simple simultaneous statements (`lhs == rhs;`)",
+            ))),
+            SimKind::If {
+                branches,
+                otherwise,
+            } => {
+                let mut arms = Vec::new();
+                for (cond, body) in branches {
+                    let c = self.analog(sc, cond, &Ty::Boolean)?;
+                    arms.push((Some((c, cond.span)), body.as_slice()));
+                }
+                arms.push((None, otherwise.as_deref().unwrap_or(&[])));
+                self.combine(sc, stmt, "if", arms)
+            }
+            SimKind::Case {
+                selector,
+                alternatives,
+            } => {
+                let sel = self.expr(sc, selector, None)?;
+                if !sel.e.is_analog() {
+                    return Err(self.error(ElabError::invalid(
+                        selector.span,
+                        "this selector cannot appear in a simultaneous statement",
+                        None,
+                    )));
+                }
+                let mut arms = Vec::new();
+                let mut has_others = false;
+                for (choices, body) in alternatives {
+                    if choices.iter().any(|c| matches!(c, Choice::Others(_))) {
+                        has_others = true;
+                        arms.push((None, body.as_slice()));
+                        continue;
+                    }
+                    let c = self.choices_condition(sc, &sel.e, &sel.ty, choices)?;
+                    let span = choices.first().map_or(stmt.span, choice_span);
+                    arms.push((Some((c, span)), body.as_slice()));
+                }
+                if !has_others {
+                    // The LRM requires the choices to cover the selector's type; without
+                    // `others` the last alternative is taken as the default.
+                    if let Some(last) = arms.last_mut() {
+                        last.0 = None;
+                    }
+                }
+                self.combine(sc, stmt, "case", arms)
+            }
+        }
+    }
+
+    /// Merges branch equation lists position by position into `If` chains. `arms` ends with
+    /// the default branch (condition `None`).
+    fn combine(
+        &mut self,
+        sc: &Scope<'a>,
+        stmt: &ConcStmt,
+        what: &'static str,
+        arms: Vec<Arm<'_>>,
+    ) -> R<Vec<Eqn>> {
+        let mut lists = Vec::new();
+        let mut failed = false;
+        for (cond, body) in arms {
+            // A static condition selects its branch at elaboration.
+            if let Some((Expr::Const(Value::Boolean(false)), _)) = cond {
+                continue;
+            }
+            let mut eqns = Vec::new();
+            for s in body {
+                match &s.kind {
+                    ConcKind::Simultaneous(k) => match self.sim_equations(sc, s, k) {
+                        Ok(e) => eqns.extend(e),
+                        Err(_) => failed = true,
+                    },
+                    _ => {
+                        failed = true;
+                        self.error(ElabError::invalid(
+                            s.span,
+                            "only simultaneous statements may appear in a simultaneous if or case",
+                            Some("move it out of the `use` branch".into()),
+                        ));
+                    }
+                }
+            }
+            let always = matches!(cond, None | Some((Expr::Const(Value::Boolean(true)), _)));
+            lists.push((cond.map(|c| c.0), eqns));
+            if always {
+                break;
+            }
+        }
+        if failed {
+            return Err(super::Reported);
+        }
+        let counts: Vec<usize> = lists.iter().map(|(_, e)| e.len()).collect();
+        if counts.windows(2).any(|w| w[0] != w[1]) {
+            let counts = counts
+                .iter()
+                .map(|c| c.to_string())
+                .collect::<Vec<_>>()
+                .join(", ");
+            return Err(self.error(ElabError::BranchEquations {
+                span: stmt.span,
+                what,
+                counts,
+            }));
+        }
+        let n = counts.first().copied().unwrap_or(0);
+        let text = self.text(stmt.span);
+        let mut out = Vec::with_capacity(n);
+        for k in 0..n {
+            let mut acc: Option<Expr> = None;
+            let mut span = stmt.span;
+            for (cond, eqns) in lists.iter().rev() {
+                let r = eqns[k].residual.clone();
+                span = eqns[k].span;
+                acc = Some(match (cond, acc) {
+                    (Some(c), Some(rest)) => {
+                        Expr::If(Box::new(c.clone()), Box::new(r), Box::new(rest))
+                    }
+                    (_, _) => r,
+                });
+            }
+            if let Some(residual) = acc {
+                out.push(Eqn {
+                    residual,
+                    span,
+                    text: text.clone(),
+                });
+            }
+        }
+        Ok(out)
+    }
+
+    /// `sel = c1 or sel = c2 or c3_low <= sel <= c3_high ...`
+    pub(super) fn choices_condition(
+        &mut self,
+        sc: &Scope<'a>,
+        sel: &Expr,
+        ty: &Ty,
+        choices: &[Choice],
+    ) -> R<Expr> {
+        let mut cond: Option<Expr> = None;
+        for c in choices {
+            let one = match c {
+                Choice::Expr(e) => {
+                    let v = self.expr_of(sc, e, ty)?;
+                    if !matches!(v.e, Expr::Const(_)) {
+                        return Err(self.error(ElabError::NotStatic {
+                            span: e.span,
+                            what: "a choice".into(),
+                        }));
+                    }
+                    Expr::Binary(BinaryOp::Eq, Box::new(sel.clone()), Box::new(v.e))
+                }
+                Choice::Range(r) => {
+                    let (l, h, asc) = self.range_exprs(sc, r)?;
+                    let (lo, hi) = if asc { (l.e, h.e) } else { (h.e, l.e) };
+                    Expr::Binary(
+                        BinaryOp::And,
+                        Box::new(Expr::Binary(
+                            BinaryOp::Ge,
+                            Box::new(sel.clone()),
+                            Box::new(lo),
+                        )),
+                        Box::new(Expr::Binary(
+                            BinaryOp::Le,
+                            Box::new(sel.clone()),
+                            Box::new(hi),
+                        )),
+                    )
+                }
+                Choice::Others(_) => Expr::Const(Value::Boolean(true)),
+            };
+            cond = Some(match cond {
+                Some(prev) => Expr::Binary(BinaryOp::Or, Box::new(prev), Box::new(one)),
+                None => one,
+            });
+        }
+        Ok(cond.unwrap_or(Expr::Unary(
+            UnaryOp::Not,
+            Box::new(Expr::Const(Value::Boolean(true))),
+        )))
+    }
+}
+
+fn choice_span(c: &Choice) -> Span {
+    match c {
+        Choice::Expr(e) => e.span,
+        Choice::Range(ast::Range::Explicit { span, .. }) => *span,
+        Choice::Range(ast::Range::Attribute(e)) => e.span,
+        Choice::Others(s) => *s,
+    }
+}

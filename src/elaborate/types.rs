@@ -1,0 +1,179 @@
+//! Semantic types of the elaborator: richer than [`design::Type`] (they keep names, index
+//! bounds, tolerance groups and unit symbols) and lowered to it at the end.
+
+use std::fmt;
+use std::rc::Rc;
+
+use crate::design::{Type, Value};
+
+/// A type as the type checker sees it. Two types are the same when their base names agree
+/// (`same`); subtypes of `integer` and `real` share their base type.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Ty {
+    Integer,
+    Real,
+    /// Physical type `time`, carried in seconds.
+    Time,
+    Boolean,
+    Enum(Rc<EnumTy>),
+    Array(Rc<ArrayTy>),
+}
+
+#[derive(Debug, PartialEq)]
+pub struct EnumTy {
+    pub name: String,
+    /// Literals in position order; characters are written `'c'`.
+    pub literals: Vec<String>,
+}
+
+#[derive(Debug, PartialEq)]
+pub struct ArrayTy {
+    /// Name of the array base type (`real_vector`, `string`, `segment_array`).
+    pub name: String,
+    pub element: Ty,
+    /// Index bounds `(left, right, ascending)` for a constrained (sub)type.
+    pub bounds: Option<(i64, i64, bool)>,
+    /// Lowest value of the index subtype (`natural`: 0, `positive`: 1): where the index of an
+    /// unconstrained array's value starts.
+    pub index_low: i64,
+}
+
+impl ArrayTy {
+    pub fn len(&self) -> Option<usize> {
+        self.bounds.map(|(l, r, asc)| bounds_len(l, r, asc))
+    }
+}
+
+/// Number of positions in `left to/downto right`.
+pub fn bounds_len(left: i64, right: i64, ascending: bool) -> usize {
+    let n = if ascending {
+        right - left + 1
+    } else {
+        left - right + 1
+    };
+    n.max(0) as usize
+}
+
+impl Ty {
+    /// True when values of `self` and `other` may be mixed without conversion.
+    pub fn same(&self, other: &Ty) -> bool {
+        match (self, other) {
+            (Ty::Enum(a), Ty::Enum(b)) => a.name == b.name,
+            (Ty::Array(a), Ty::Array(b)) => a.name == b.name,
+            (a, b) => std::mem::discriminant(a) == std::mem::discriminant(b),
+        }
+    }
+
+    pub fn is_numeric(&self) -> bool {
+        matches!(self, Ty::Integer | Ty::Real)
+    }
+
+    pub fn is_scalar(&self) -> bool {
+        !matches!(self, Ty::Array(_))
+    }
+
+    pub fn is_string(&self) -> bool {
+        matches!(self, Ty::Array(a) if a.name == "string")
+    }
+
+    pub fn is_enum_named(&self, name: &str) -> bool {
+        matches!(self, Ty::Enum(e) if e.name == name)
+    }
+
+    /// The kernel's view of the type.
+    pub fn to_design(&self) -> Type {
+        match self {
+            Ty::Integer => Type::Integer,
+            Ty::Real => Type::Real,
+            Ty::Time => Type::Time,
+            Ty::Boolean => Type::Boolean,
+            Ty::Enum(e) => Type::Enum {
+                name: e.name.clone(),
+                literals: e.literals.clone(),
+            },
+            Ty::Array(a) if a.name == "string" => Type::String,
+            Ty::Array(a) => {
+                let (left, right, ascending) = a.bounds.unwrap_or((0, -1, true));
+                Type::Array {
+                    element: Box::new(a.element.to_design()),
+                    left,
+                    right,
+                    ascending,
+                }
+            }
+        }
+    }
+
+    /// `T'left`: the default initial value of objects of the type (LRM 12.3.1.5).
+    pub fn default_value(&self) -> Value {
+        match self {
+            Ty::Integer => Value::Integer(i32::MIN as i64),
+            Ty::Real => Value::Real(-1.0e308),
+            Ty::Time => Value::Time(-(i64::MAX as f64) * 1e-15),
+            Ty::Boolean => Value::Boolean(false),
+            Ty::Enum(_) => Value::Enum(0),
+            Ty::Array(a) if a.name == "string" => Value::String(" ".repeat(a.len().unwrap_or(0))),
+            Ty::Array(a) => Value::Array(vec![a.element.default_value(); a.len().unwrap_or(0)]),
+        }
+    }
+
+    /// Scalar bounds `(T'left, T'right)` of the base type, for `'high`, `'low` and ranges.
+    pub fn scalar_bounds(&self) -> Option<(Value, Value)> {
+        match self {
+            Ty::Integer => Some((
+                Value::Integer(i32::MIN as i64),
+                Value::Integer(i32::MAX as i64),
+            )),
+            Ty::Real => Some((Value::Real(-1.0e308), Value::Real(1.0e308))),
+            Ty::Time => {
+                let max = i64::MAX as f64 * 1e-15;
+                Some((Value::Time(-max), Value::Time(max)))
+            }
+            Ty::Boolean => Some((Value::Boolean(false), Value::Boolean(true))),
+            Ty::Enum(e) => Some((
+                Value::Enum(0),
+                Value::Enum(e.literals.len().saturating_sub(1) as u32),
+            )),
+            Ty::Array(_) => None,
+        }
+    }
+}
+
+impl fmt::Display for Ty {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Ty::Integer => f.write_str("integer"),
+            Ty::Real => f.write_str("real"),
+            Ty::Time => f.write_str("time"),
+            Ty::Boolean => f.write_str("boolean"),
+            Ty::Enum(e) => f.write_str(&e.name),
+            Ty::Array(a) => f.write_str(&a.name),
+        }
+    }
+}
+
+/// A named subtype: a type plus what the analog side needs from the subtype declaration.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sub {
+    pub ty: Ty,
+    /// The subtype's own name (`voltage`), for `Quantity::subtype`.
+    pub name: String,
+    /// `tolerance "DEFAULT_VOLTAGE"`.
+    pub tolerance: Option<String>,
+    /// The `symbol` attribute (`"V"`).
+    pub unit: Option<String>,
+    /// A range constraint of an integer or real subtype (`natural`), for `'high`/`'low`.
+    pub range: Option<(Value, Value)>,
+}
+
+impl Sub {
+    pub fn of(ty: Ty, name: &str) -> Sub {
+        Sub {
+            ty,
+            name: name.to_string(),
+            tolerance: None,
+            unit: None,
+            range: None,
+        }
+    }
+}

@@ -1,0 +1,7 @@
+entity leaf is end;
+
+entity t is end;
+architecture a of t is
+begin
+  u1 : entity work.leaf;
+end;
