@@ -135,10 +135,13 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         let above = sys.above_signals().to_vec();
         let mut g = vec![0.0; sys.root_count().max(above.len())];
         sys.roots(0.0, &x, &mut g);
+        // The processes ran their initialisation with every `'above` signal false (its value
+        // before the quiescent point exists); one that is true at the quiescent point changes
+        // with an event in the first delta cycle, so that processes sensitive to it re-run.
         for (&s, &gi) in above.iter().zip(&g) {
-            self.kernel.signals.initialize(s, Value::Boolean(gi > 0.0));
-            if sys.reads_signal(s) {
-                sys.set_signal(s, if gi > 0.0 { 1.0 } else { 0.0 });
+            let value = Value::Boolean(gi > 0.0);
+            if *self.kernel.value(s) != value {
+                self.kernel.signals.force(s, value);
             }
         }
         let max_step = self.max_step(options)?;

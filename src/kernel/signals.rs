@@ -141,13 +141,6 @@ impl Signals {
         self.index.get(&(process, signal)).copied()
     }
 
-    /// Sets a value without an event (the `'above` signals' values from the quiescent point).
-    pub fn initialize(&mut self, s: SignalId, value: Value) {
-        let st = &mut self.states[s.index()];
-        st.value = value.clone();
-        st.last_value = value;
-    }
-
     /// Schedules `value` on signal `s` in the next update phase (an `'above` crossing).
     pub fn force(&mut self, s: SignalId, value: Value) {
         self.forced.push((s, value));

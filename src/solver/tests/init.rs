@@ -25,9 +25,11 @@ fn series_inductors_start_with_the_combined_slope() {
     let mut sys = series_inductors(l1, l2, 4.0, 1.0, v);
     let tr = Transient::new(&mut sys, 0.0, &[0.0; 3], opts(1e-6, 1e-12)).expect("init");
     let slope = v / (l1 + l2);
+    // The fallback's Euler step (1e-8 s here) moves the state by O(h x') and leaves x' with a
+    // relative error of O(h R / L).
     for i in 0..2 {
-        assert!((tr.derivative()[i] - slope).abs() < 1e-6 * slope);
-        assert!(tr.state()[i].abs() < 1e-9 * slope);
+        assert!((tr.derivative()[i] - slope).abs() < 1e-4 * slope);
+        assert!(tr.state()[i].abs() < 2e-8 * slope);
     }
     // vm divides the voltage across the inductances: L2 / (L1 + L2) of V.
     assert!((tr.state()[2] - v * l2 / (l1 + l2)).abs() < 1e-6 * v);
