@@ -150,7 +150,6 @@ fn csv_column(text: &str, name: &str) -> Vec<(f64, f64)> {
 }
 
 #[test]
-#[ignore = "needs the engine"]
 fn rc_step_matches_its_closed_form_in_every_output() {
     let dir = tempfile::tempdir().unwrap();
     let (csv, vcd, svg) = (
@@ -189,7 +188,6 @@ fn rc_step_matches_its_closed_form_in_every_output() {
 }
 
 #[test]
-#[ignore = "needs the engine"]
 fn generics_from_params_and_command_line_change_the_time_constant() {
     let dir = tempfile::tempdir().unwrap();
     let (params, csv) = (dir.path().join("rc.params"), dir.path().join("rc.csv"));
@@ -221,7 +219,6 @@ fn generics_from_params_and_command_line_change_the_time_constant() {
 }
 
 #[test]
-#[ignore = "needs the engine"]
 fn reports_print_as_they_happen_and_a_failure_fails_the_run() {
     let dir = tempfile::tempdir().unwrap();
     let csv = dir.path().join("f.csv");
@@ -247,7 +244,6 @@ fn reports_print_as_they_happen_and_a_failure_fails_the_run() {
 }
 
 #[test]
-#[ignore = "needs the engine"]
 fn headlight_tracking_runs_with_the_motor_parameters() {
     let dir = tempfile::tempdir().unwrap();
     let (csv, png) = (dir.path().join("t.csv"), dir.path().join("t.png"));
@@ -281,7 +277,6 @@ fn headlight_tracking_runs_with_the_motor_parameters() {
 }
 
 #[test]
-#[ignore = "needs the engine"]
 fn several_tops_need_top_and_a_missing_stop_is_diagnosed() {
     vams()
         .args(["run", "models"])
@@ -297,7 +292,6 @@ fn several_tops_need_top_and_a_missing_stop_is_diagnosed() {
 }
 
 #[test]
-#[ignore = "needs the engine"]
 fn op_prints_the_quiescent_point_and_dae_the_equations() {
     vams()
         .args(["op", "tests/run/rc.vhd"])

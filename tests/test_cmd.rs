@@ -101,7 +101,6 @@ fn testbenches_that_cannot_start_fail_with_their_diagnostic_and_junit_records_th
 // ---- With the engine ----
 
 #[test]
-#[ignore = "needs the engine"]
 fn passing_and_failing_testbenches() {
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(
@@ -156,7 +155,6 @@ end;
 }
 
 #[test]
-#[ignore = "needs the engine"]
 fn the_repository_testbenches_pass_by_default() {
     // Default paths: tests/ (tests/diagnostics is skipped: its files do not parse) and models/.
     vams()
