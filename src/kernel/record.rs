@@ -78,6 +78,11 @@ impl Recorder {
     }
 }
 
+/// `std.standard.domain`, present in every design: the simulator's own phase, not the model's.
+fn is_standard_domain(s: &crate::design::Signal) -> bool {
+    s.name == "domain" && matches!(&s.ty, Type::Enum { name, .. } if name == "domain_type")
+}
+
 fn default_probes(design: &Design) -> Vec<Probe> {
     let quantities = design
         .quantities
@@ -90,7 +95,9 @@ fn default_probes(design: &Design) -> Vec<Probe> {
         .iter()
         .enumerate()
         .filter(|(_, s)| {
-            s.kind == SignalKind::Explicit && !matches!(s.ty, Type::String | Type::Array { .. })
+            s.kind == SignalKind::Explicit
+                && !matches!(s.ty, Type::String | Type::Array { .. })
+                && !is_standard_domain(s)
         })
         .map(|(i, _)| Probe::Signal(SignalId(i as u32)));
     quantities.chain(signals).collect()

@@ -3,7 +3,9 @@
 //! unit-less analog traces (their positions).
 //!
 //! Default layout: one panel per column; with more than [`MAX_SEPARATE_PANELS`] columns,
-//! columns of the same unit share a panel (logic signals one panel together). Explicit groups
+//! only the top level's columns are drawn (when it has any: a testbench's own quantities and
+//! signals), and columns of the same unit share a panel (logic signals one panel together).
+//! Explicit groups
 //! (`--panel vref,vfb`) replace the default layout.
 
 use std::path::Path;
@@ -35,7 +37,14 @@ fn group_key(column: &Column) -> GroupKey {
 /// Column indices per panel in the default layout.
 pub fn default_groups(waveforms: &Waveforms) -> Vec<Vec<usize>> {
     let columns = &waveforms.columns;
-    let drawable = (0..columns.len()).filter(|&c| presentation(&columns[c]) != Presentation::Other);
+    // A testbench exposes what matters at its top level (`vref`, `i_motor`, `ov`); with many
+    // probes, the hierarchy below it would drown those in a plot.
+    let top_level =
+        columns.len() > MAX_SEPARATE_PANELS && columns.iter().any(|c| !c.name.contains('.'));
+    let drawable = (0..columns.len()).filter(|&c| {
+        presentation(&columns[c]) != Presentation::Other
+            && !(top_level && columns[c].name.contains('.'))
+    });
     if columns.len() <= MAX_SEPARATE_PANELS {
         return drawable.map(|c| vec![c]).collect();
     }

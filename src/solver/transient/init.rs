@@ -22,6 +22,9 @@ use crate::solver::{DaeSystem, SolveError};
 /// The fallback's implicit-Euler step, relative to `max(1, |t|)` seconds.
 const FALLBACK_STEP: f64 = 1e-8;
 
+/// Multiples of [`FALLBACK_STEP`] tried in turn when the step's matrix is singular.
+const FALLBACK_SCALES: [f64; 3] = [1.0, 30.0, 1000.0];
+
 /// `G(x) = F((x - x_held) / h, x, t + h)` for the differential unknowns (`x' = 0` for the
 /// algebraic ones, whose derivative no equation reads); Jacobian `dF/dx + (1/h) dF/dx'`.
 struct EulerProblem<'a, S: ?Sized> {
@@ -225,8 +228,32 @@ impl Transient {
     /// state, gives `x'`. `x_pred` keeps the step's start and `x_new` is the iterate (both
     /// free during initialisation).
     fn euler_fallback<S: DaeSystem + ?Sized>(&mut self, sys: &mut S) -> Result<(), SolveError> {
+        // The smallest step conditions worst (entries of m/h beside entries of 1, as with a
+        // reflector mass behind a 60:1 gear): when its matrix is numerically singular, a
+        // larger step usually is not; a structural defect stays singular at every step.
+        let held = self.hist_x[0].clone();
+        let mut result = Ok(());
+        for scale in FALLBACK_SCALES {
+            self.hist_x[0].copy_from_slice(&held);
+            result = self.euler_fallback_with(sys, FALLBACK_STEP * scale);
+            if !matches!(result, Err(SolveError::SingularJacobian { .. })) {
+                break;
+            }
+        }
+        if result.is_err() {
+            self.hist_x[0].copy_from_slice(&held);
+            self.x_pred.copy_from_slice(&held);
+        }
+        result
+    }
+
+    fn euler_fallback_with<S: DaeSystem + ?Sized>(
+        &mut self,
+        sys: &mut S,
+        h_rel: f64,
+    ) -> Result<(), SolveError> {
         let t = self.t;
-        let h = FALLBACK_STEP * t.abs().max(1.0);
+        let h = h_rel * t.abs().max(1.0);
         // `x' = dx / h`: the update must be far inside the usual tolerance for `x'` to be
         // accurate, which full Newton steps reach at once on the (locally) linear problems here.
         let opts = NewtonOptions {
