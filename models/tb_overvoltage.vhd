@@ -1,4 +1,9 @@
 -- vams: stop 8 sec
+-- vams: panel v_bat, v_supply
+-- vams: panel v_motor
+-- vams: panel i_motor
+-- vams: panel vfb
+-- vams: panel ov
 --
 -- tb_overvoltage: the paper's Figure 7.  Battery 0 -> 12 V (0-1 s), 12 -> 24 V
 -- (2-3 s), 24 -> 12 V (3-4 s), 12 -> 0 V (5.5-7 s); the supply follows a diode

@@ -1,4 +1,9 @@
 -- vams: stop 6 sec
+-- vams: panel vref, vfb
+-- vams: panel v_conn1, v_conn2, v_supply
+-- vams: panel v_motor
+-- vams: panel i_motor
+-- vams: panel ov
 --
 -- tb_tracking: the paper's Figure 6.  Battery 12 V, reflector at position 0,
 -- reference 1.0 V; the motor runs until vfb enters the deadband and the brake

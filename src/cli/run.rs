@@ -17,7 +17,7 @@ use crate::waveform::Waveforms;
 use super::compile::{DesignArgs, compile};
 use super::error::CliError;
 use super::render::{format_report, render_located, render_sim_error};
-use super::stop::{declaring_file, stop_comment};
+use super::stop::{declaring_file, panel_comments, stop_comment};
 use super::time::{format_time, parse_positive_time};
 
 /// Arguments of `vams run`.
@@ -173,7 +173,19 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
             top: design.top.clone(),
         }
     })?;
-    let written = write_outputs(args, &result.waveforms, &design.top, stop, &panels)?;
+    // Without --panel, the testbench's own `-- vams: panel` comments lay out the plot.
+    let file_panels = match declaring_file(loaded, &design.top) {
+        Some(f) if panels.is_empty() => panel_comments(&loaded.sources, f),
+        _ => Vec::new(),
+    };
+    let written = write_outputs(
+        args,
+        &result.waveforms,
+        &design.top,
+        stop,
+        &panels,
+        &file_panels,
+    )?;
     eprintln!(
         "{}",
         summary(
@@ -211,6 +223,21 @@ fn write_error(path: &Path, e: impl ToString) -> CliError {
     }
 }
 
+/// Column indices of the file's `-- vams: panel` groups; names not recorded (the user chose
+/// other probes) are left out, and so are panels left empty.
+fn file_groups(waveforms: &Waveforms, file_panels: &[Vec<String>]) -> Vec<Vec<usize>> {
+    file_panels
+        .iter()
+        .map(|names| {
+            names
+                .iter()
+                .filter_map(|n| waveforms.columns.iter().position(|c| c.name == *n))
+                .collect::<Vec<usize>>()
+        })
+        .filter(|g| !g.is_empty())
+        .collect()
+}
+
 /// Writes every `--out` file and the plot; returns the paths written.
 fn write_outputs(
     args: &RunArgs,
@@ -218,6 +245,7 @@ fn write_outputs(
     top: &str,
     stop: f64,
     panels: &[Vec<String>],
+    file_panels: &[Vec<String>],
 ) -> Result<Vec<String>, Report> {
     let mut written = Vec::new();
     for path in &args.outputs {
@@ -235,9 +263,8 @@ fn write_outputs(
         written.push(path.display().to_string());
     }
     if let Some(path) = &args.plot {
-        let groups = if panels.is_empty() {
-            default_groups(waveforms)
-        } else {
+        let from_file = file_groups(waveforms, file_panels);
+        let groups = if !panels.is_empty() {
             named_groups(waveforms, panels).map_err(|name| CliError::UnknownPanelName {
                 name,
                 recorded: waveforms
@@ -247,6 +274,10 @@ fn write_outputs(
                     .collect::<Vec<_>>()
                     .join(", "),
             })?
+        } else if !from_file.is_empty() {
+            from_file
+        } else {
+            default_groups(waveforms)
         };
         let title = format!("{top} (stop {})", format_time(stop));
         let temp = temp_path(path);
@@ -350,7 +381,7 @@ mod tests {
         );
         let wf = crate::output::csv::tests::synthetic();
         let a = args(vec![csv.clone(), vcd.clone()], Some(svg.clone()));
-        let written = write_outputs(&a, &wf, "tb", 1.0, &[]).unwrap();
+        let written = write_outputs(&a, &wf, "tb", 1.0, &[], &[]).unwrap();
         assert_eq!(written.len(), 3);
         assert!(
             std::fs::read_to_string(&csv)
@@ -378,7 +409,7 @@ mod tests {
         std::fs::write(&svg, "old").unwrap();
         let wf = crate::output::csv::tests::synthetic();
         let a = args(vec![], Some(svg.clone()));
-        let err = write_outputs(&a, &wf, "tb", 1.0, &[vec!["vot".into()]]).unwrap_err();
+        let err = write_outputs(&a, &wf, "tb", 1.0, &[vec!["vot".into()]], &[]).unwrap_err();
         let text = format!("{err:?}");
         assert!(
             text.contains("vot") && text.contains("vout, dut.u_ic.ov"),
@@ -386,7 +417,7 @@ mod tests {
         );
         assert_eq!(std::fs::read_to_string(&svg).unwrap(), "old");
         let missing_dir = args(vec![dir.path().join("no/dir/w.csv")], None);
-        let err = write_outputs(&missing_dir, &wf, "tb", 1.0, &[]).unwrap_err();
+        let err = write_outputs(&missing_dir, &wf, "tb", 1.0, &[], &[]).unwrap_err();
         assert!(format!("{err:?}").contains("cannot write"));
     }
 

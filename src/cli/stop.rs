@@ -1,5 +1,6 @@
-//! The stop time a source file asks for: a comment `-- vams: stop 6 sec` in the file that
-//! declares the entity (the first such comment counts).
+//! What a source file asks of `vams run` in `-- vams:` comments: the stop time
+//! (`-- vams: stop 6 sec`, the first such comment counts) and the plot's panels
+//! (`-- vams: panel vref, vfb`, one comment per panel, in order).
 
 use crate::ast::LibraryUnit;
 use crate::source::{FileId, SourceMap, Span};
@@ -39,6 +40,29 @@ pub fn stop_comment(sources: &SourceMap, file: FileId) -> Option<Result<f64, Sou
     None
 }
 
+/// The plot panels a file asks for: each `-- vams: panel a, b` comment is one panel of the
+/// names listed (lower case), in file order.
+pub fn panel_comments(sources: &SourceMap, file: FileId) -> Vec<Vec<String>> {
+    let text = sources.file(file).text.clone();
+    text.lines()
+        .filter_map(|line| {
+            let body = line[line.find("--")? + 2..].trim_start();
+            let tag = body.get(..5)?;
+            let rest = body[5..].trim_start();
+            let keyword = rest.get(..5)?;
+            if !tag.eq_ignore_ascii_case("vams:") || !keyword.eq_ignore_ascii_case("panel") {
+                return None;
+            }
+            let names: Vec<String> = rest[5..]
+                .split(',')
+                .map(|n| n.trim().to_ascii_lowercase())
+                .filter(|n| !n.is_empty())
+                .collect();
+            (!names.is_empty()).then_some(names)
+        })
+        .collect()
+}
+
 /// The user file (library `work`) that declares entity `name`.
 pub fn declaring_file(loaded: &Loaded, name: &str) -> Option<FileId> {
     loaded
@@ -61,6 +85,22 @@ mod tests {
         let mut sources = SourceMap::new();
         let id = sources.add("tb.vhd", "work", text.into());
         (sources, id)
+    }
+
+    #[test]
+    fn reads_panel_comments_in_order() {
+        let (sources, id) = map(
+            "-- vams: panel VREF, vfb\n-- vams: panel i_motor\n-- vams: panel\n-- vams: stop 1 s\n",
+        );
+        assert_eq!(
+            panel_comments(&sources, id),
+            vec![
+                vec!["vref".to_string(), "vfb".into()],
+                vec!["i_motor".into()]
+            ]
+        );
+        let (sources, id) = map("-- vams: stop 1 s\n");
+        assert!(panel_comments(&sources, id).is_empty());
     }
 
     #[test]
