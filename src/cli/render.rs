@@ -37,14 +37,21 @@ pub fn render_located<D: Located>(diag: &D, sources: &SourceMap) -> String {
 /// Renders a simulation error; the analog system's errors are located in `sources`.
 pub fn render_sim_error(error: &SimError, sources: &SourceMap) -> String {
     let mut out = String::new();
-    // Variants added by the kernel later fall through to the plain rendering.
-    #[allow(irrefutable_let_patterns)]
-    if let SimError::Analog { errors } = error {
-        for e in errors {
-            out.push_str(&render_located(e, sources));
+    match error {
+        SimError::Analog { errors } => {
+            for e in errors {
+                out.push_str(&render_located(e, sources));
+            }
+            out.push_str(&render(error));
         }
+        // A real span points into the sources: show the line it is about.
+        _ if (error.primary_span().file.0 as usize) < sources.len()
+            && error.primary_span() != Default::default() =>
+        {
+            out.push_str(&render_located(error, sources));
+        }
+        _ => out.push_str(&render(error)),
     }
-    out.push_str(&render(error));
     out
 }
 

@@ -2,8 +2,9 @@
 //! real implementation; the kernel's tests drive the cycle with small hand-written systems.
 
 use crate::analog::AnalogSystem;
-use crate::design::{QuantityId, SignalId};
+use crate::design::{Design, QuantityId, SignalId};
 use crate::solver::{DaeSystem, OpOptions, SolveError};
+use crate::source::Span;
 
 /// The analog system as the kernel drives it (see [`AnalogSystem`] for each method's contract).
 pub(crate) trait AnalogModel: DaeSystem {
@@ -13,6 +14,10 @@ pub(crate) trait AnalogModel: DaeSystem {
     fn reads_signal(&self, s: SignalId) -> bool;
     fn above_signals(&self) -> &[SignalId];
     fn abstol(&self, default: f64) -> Vec<f64>;
+    /// What equation `row` is and where it comes from, for failure messages.
+    fn equation_site(&self, _design: &Design, _row: usize) -> Option<(String, Span)> {
+        None
+    }
     #[allow(clippy::too_many_arguments)]
     fn quiescent_point(
         &mut self,
@@ -43,6 +48,9 @@ impl AnalogModel for AnalogSystem {
     }
     fn abstol(&self, default: f64) -> Vec<f64> {
         AnalogSystem::abstol(self, default)
+    }
+    fn equation_site(&self, design: &Design, row: usize) -> Option<(String, Span)> {
+        AnalogSystem::equation_site(self, design, row)
     }
     fn quiescent_point(
         &mut self,

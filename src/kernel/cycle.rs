@@ -10,6 +10,7 @@
 
 use crate::design::{Design, QuantityId, SignalId, Value};
 use crate::solver::{Advance, OpOptions, SolveError, Transient, TransientOptions};
+use crate::source::Span;
 
 use super::analog_model::AnalogModel;
 use super::error::SimError;
@@ -32,6 +33,8 @@ struct Analog<A> {
     integ: Transient,
     x: Vec<f64>,
     g: Vec<f64>,
+    /// What each equation is and where it comes from, for failure messages.
+    equations: Vec<Option<(String, Span)>>,
 }
 
 pub(crate) struct Simulation<'d, A> {
@@ -121,7 +124,9 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             None => sys.abstol(DEFAULT_ABSTOL),
         };
         let names = sys.unknown_names().to_vec();
-        let fail = |e: SolveError| solve_error(e, 0.0, &names, &slots, design);
+        let equations: Vec<Option<(String, Span)>> =
+            (0..n).map(|r| sys.equation_site(design, r)).collect();
+        let fail = |e: SolveError| solve_error(e, 0.0, &names, &slots, design, &equations);
         let (x, _) = sys
             .quiescent_point(
                 0.0,
@@ -160,6 +165,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             integ,
             x: vec![0.0; n],
             g,
+            equations,
         })
     }
 
@@ -316,7 +322,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         };
         a.integ
             .advance(&mut a.sys, target)
-            .map_err(|e| solve_error(e, t, a.sys.unknown_names(), &a.slots, design))
+            .map_err(|e| solve_error(e, t, a.sys.unknown_names(), &a.slots, design, &a.equations))
     }
 
     /// Schedules the new value of the `'above` signal of root function `index`.
@@ -373,9 +379,9 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         for &(q, v) in &self.breaks {
             a.x[a.slots[q.index()]] = v;
         }
-        a.integ
-            .restart(&mut a.sys, t, &a.x)
-            .map_err(|e| solve_error(e, t, a.sys.unknown_names(), &a.slots, design))?;
+        a.integ.restart(&mut a.sys, t, &a.x).map_err(|e| {
+            solve_error(e, t, a.sys.unknown_names(), &a.slots, design, &a.equations)
+        })?;
         self.refresh();
         self.sync_above(t);
         Ok(true)

@@ -88,7 +88,11 @@ pub enum SimError {
     },
 
     /// The analog solver gave up, e.g. an equation without a solution past a switch.
-    #[error("analog solver failed at t = {time} s{}", names_suffix(unknowns))]
+    #[error(
+        "analog solver failed at t = {time} s{}{}",
+        names_suffix(unknowns),
+        equation_suffix(equation)
+    )]
     #[diagnostic(
         code(vams::sim::solve),
         help(
@@ -100,8 +104,10 @@ pub enum SimError {
         time: f64,
         /// Names of the unknowns the failure points at.
         unknowns: Vec<String>,
-        #[label("the first unknown involved")]
+        #[label("involved here")]
         span: Option<Span>,
+        /// The equation the failure points at (largest residual, singular row), described.
+        equation: Option<String>,
         #[source]
         #[diagnostic_source]
         cause: SolveError,
@@ -114,6 +120,13 @@ pub enum SimError {
         help("the stop time must be positive and finite, tolerances positive")
     )]
     BadOption { message: String },
+}
+
+fn equation_suffix(equation: &Option<String>) -> String {
+    match equation {
+        Some(e) => format!("; worst equation: {e}"),
+        None => String::new(),
+    }
 }
 
 fn names_suffix(names: &[String]) -> String {

@@ -1,8 +1,10 @@
 //! Solver failures mapped back to the model: the indices a [`SolveError`] carries become
-//! unknown names and the span of the quantity involved.
+//! unknown names, the equation involved (what it is and its source span), and the span to
+//! point at: the equation's, else the first quantity's.
 
 use crate::design::Design;
 use crate::solver::SolveError;
+use crate::source::Span;
 
 use super::error::SimError;
 
@@ -13,8 +15,10 @@ pub(crate) fn solve_error(
     names: &[String],
     slots: &[usize],
     design: &Design,
+    equations: &[Option<(String, Span)>],
 ) -> SimError {
     let (time, unknown) = indices(&cause);
+    let equation = equation_of(&cause).and_then(|r| equations.get(r).cloned().flatten());
     let unknowns: Vec<String> = unknown
         .iter()
         .filter_map(|&i| names.get(i).cloned())
@@ -28,8 +32,21 @@ pub(crate) fn solve_error(
     SimError::Solve {
         time: time.unwrap_or(now),
         unknowns,
-        span,
+        span: equation.as_ref().map(|(_, s)| *s).or(span),
+        equation: equation.map(|(what, _)| what),
         cause,
+    }
+}
+
+/// The equation (row) a solver error points at, if it says.
+fn equation_of(e: &SolveError) -> Option<usize> {
+    match e {
+        SolveError::NewtonDiverged { worst_equation, .. } => Some(*worst_equation),
+        SolveError::SingularJacobian { row, .. } => *row,
+        SolveError::NonFiniteResidual { equation, .. } => Some(*equation),
+        SolveError::NonFiniteJacobian { row, .. } => Some(*row),
+        SolveError::NoOperatingPoint { last } => equation_of(last),
+        _ => None,
     }
 }
 
