@@ -328,8 +328,8 @@ impl<'a> Elab<'a> {
             }
             Literal::Char(c) => {
                 let name = format!("'{c}'");
-                let items = match sc.lookup(&name) {
-                    Some(items) => items.to_vec(),
+                let items = match sc.lookup_overloads(&name) {
+                    Some(items) => items,
                     None => {
                         return Err(self.error(ElabError::Undeclared {
                             span,

@@ -225,6 +225,26 @@ impl<'a> Scope<'a> {
             .map(|v| v.as_slice())
     }
 
+    /// Like [`Scope::lookup`], but when the innermost items are all overloadable the
+    /// overloadable items of outer regions come too (a package's `'0'` of `std_ulogic` does
+    /// not hide `bit`'s `'0'`, LRM 12.3).
+    pub fn lookup_overloads(&self, name: &str) -> Option<Vec<Item<'a>>> {
+        let mut out: Vec<Item<'a>> = Vec::new();
+        for region in self.regions.iter().rev() {
+            let Some(items) = region.items.get(name).filter(|v| !v.is_empty()) else {
+                continue;
+            };
+            if !items.iter().all(Item::overloadable) {
+                if out.is_empty() {
+                    out.extend(items.iter().cloned());
+                }
+                break;
+            }
+            out.extend(items.iter().cloned());
+        }
+        (!out.is_empty()).then_some(out)
+    }
+
     /// The visible name closest to `name` by edit distance, if close enough to be a typo.
     pub fn suggest(&self, name: &str) -> Option<String> {
         let limit = (name.len() / 3).max(1);
