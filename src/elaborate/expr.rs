@@ -558,7 +558,9 @@ impl<'a> Elab<'a> {
         let ty = match result_type(bop, &lt.ty, &rt.ty) {
             Some(t) => t,
             None => {
-                if let Some(r) = self.user_operator(sc, op_text(bop), vec![lt.clone(), rt.clone()], span) {
+                if let Some(r) =
+                    self.user_operator(sc, op_text(bop), vec![lt.clone(), rt.clone()], span)
+                {
                     return r;
                 }
                 let help = if lt.ty.is_numeric() && rt.ty.is_numeric() {

@@ -39,15 +39,25 @@ pub(super) fn inline(design: &Design, e: &Expr, depth: usize) -> Result<Expr, No
                 return Err(fail("it calls itself"));
             }
             let mut frame: Vec<Expr> = args.iter().map(&go).collect::<Result<_, _>>()?;
-            frame.extend(f.vars[frame.len()..].iter().map(|v| Expr::Const(v.init.clone())));
+            frame.extend(
+                f.vars[frame.len()..]
+                    .iter()
+                    .map(|v| Expr::Const(v.init.clone())),
+            );
             for instr in &f.code {
                 match instr {
                     Instr::SetVar { var, value } => {
                         let v = substitute(value, &frame);
                         frame[var.index()] = v;
                     }
-                    Instr::Return(Some(r)) => return inline(design, &substitute(r, &frame), depth + 1),
-                    _ => return Err(fail("its body is not straight-line (branches, loops, element assignments or reports)")),
+                    Instr::Return(Some(r)) => {
+                        return inline(design, &substitute(r, &frame), depth + 1);
+                    }
+                    _ => {
+                        return Err(fail(
+                            "its body is not straight-line (branches, loops, element assignments or reports)",
+                        ));
+                    }
                 }
             }
             return Err(fail("its body does not end in a return"));

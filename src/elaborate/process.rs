@@ -107,10 +107,7 @@ fn signals_read(code: &[Instr]) -> Vec<SignalId> {
                 when.iter().for_each(&mut add);
             }
             Instr::Call {
-                sub,
-                args,
-                signals,
-                ..
+                sub, args, signals, ..
             } => {
                 args.iter().for_each(&mut add);
                 // The signal actuals, as one expression that reads them all.
@@ -193,7 +190,12 @@ impl<'a> Elab<'a> {
         }
     }
 
-    pub(super) fn process_decls(&mut self, sc: &mut Scope<'a>, p: &mut Proc, decls: &'a [ast::Decl]) -> R<()> {
+    pub(super) fn process_decls(
+        &mut self,
+        sc: &mut Scope<'a>,
+        p: &mut Proc,
+        decls: &'a [ast::Decl],
+    ) -> R<()> {
         let mut result = Ok(());
         for d in decls {
             if let ast::DeclKind::Variable {

@@ -8,9 +8,7 @@ use std::cell::RefCell;
 use std::rc::Rc;
 
 use crate::ast::{self, Actual, Decl, ExprKind, Mode, ObjectClass, SeqStmt, SubprogramSpec};
-use crate::design::{
-    self, Expr, Instr, ParamMode, SignalId, SubprogramId, SubprogramKind, VarId,
-};
+use crate::design::{self, Expr, Instr, ParamMode, SignalId, SubprogramId, SubprogramKind, VarId};
 use crate::source::Span;
 
 use super::decls::{designator, native};
@@ -255,7 +253,10 @@ impl<'a> Elab<'a> {
             Expr::Signal(s) => Ok(s),
             _ => Err(self.error(ElabError::invalid(
                 actual.map_or(span, |a| a.span),
-                format!("the parameter `{}` is a signal: its actual must name a signal", p.name),
+                format!(
+                    "the parameter `{}` is a signal: its actual must name a signal",
+                    p.name
+                ),
                 None,
             ))),
         }
@@ -461,7 +462,10 @@ impl<'a> Elab<'a> {
                 if s.ret.is_some()
                     && s.params.len() == operands.len()
                     && s.params.iter().all(|p| !p.is_signal)
-                    && s.params.iter().zip(&operands).all(|(p, t)| p.ty.same(&t.ty)) =>
+                    && s.params
+                        .iter()
+                        .zip(&operands)
+                        .all(|(p, t)| p.ty.same(&t.ty)) =>
             {
                 Some(s.clone())
             }

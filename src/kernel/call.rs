@@ -36,7 +36,11 @@ pub(crate) fn frame(sub: &Subprogram, args: Vec<Value>) -> Vec<Value> {
 }
 
 /// Runs function `id` on `args` (evaluated in `env`) and returns its result.
-pub(crate) fn call_function(id: SubprogramId, args: &[Expr], env: &Env) -> Result<Value, EvalError> {
+pub(crate) fn call_function(
+    id: SubprogramId,
+    args: &[Expr],
+    env: &Env,
+) -> Result<Value, EvalError> {
     let Some(sub) = env.subprograms.get(id.index()) else {
         return Err(EvalError::new(
             "a call of a subprogram the design does not have",

@@ -82,7 +82,10 @@ impl ProcState {
 
     /// The condition of the current wait, if it has one.
     pub fn until<'p>(&self, process: &'p Process, subs: &'p [Subprogram]) -> Option<&'p Expr> {
-        match code_of(process, subs, self.running).0.get(self.waiting_at?)? {
+        match code_of(process, subs, self.running)
+            .0
+            .get(self.waiting_at?)?
+        {
             Instr::Wait { until, .. } => until.as_ref(),
             _ => None,
         }

@@ -67,11 +67,9 @@ end;
         "t",
     );
     assert_eq!(d.subprograms.len(), 2, "one instance per actual signal");
-    assert!(
-        d.subprograms
-            .iter()
-            .all(|s| s.kind == SubprogramKind::Procedure && s.params == [ParamMode::In, ParamMode::Out])
-    );
+    assert!(d.subprograms.iter().all(
+        |s| s.kind == SubprogramKind::Procedure && s.params == [ParamMode::In, ParamMode::Out]
+    ));
     let calls: Vec<_> = d.processes[0]
         .code
         .iter()

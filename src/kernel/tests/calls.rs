@@ -27,8 +27,15 @@ fn int_var(name: &str) -> Variable {
     }
 }
 
-fn subprogram(d: &mut Design, kind: SubprogramKind, params: Vec<ParamMode>, code: Vec<Instr>) -> SubprogramId {
-    let vars = (0..params.len().max(1)).map(|k| int_var(&format!("v{k}"))).collect();
+fn subprogram(
+    d: &mut Design,
+    kind: SubprogramKind,
+    params: Vec<ParamMode>,
+    code: Vec<Instr>,
+) -> SubprogramId {
+    let vars = (0..params.len().max(1))
+        .map(|k| int_var(&format!("v{k}")))
+        .collect();
     d.subprograms.push(Subprogram {
         name: format!("sub{}", d.subprograms.len()),
         kind,
@@ -183,5 +190,8 @@ fn endless_recursion_stops_at_the_depth_limit() {
         .expect("the run fails");
     let text = err.to_string();
     assert!(text.contains("process `deep`"), "{text}");
-    assert!(text.contains("more than 100 nested subprogram calls"), "{text}");
+    assert!(
+        text.contains("more than 100 nested subprogram calls"),
+        "{text}"
+    );
 }
