@@ -45,8 +45,11 @@ id_type! {
     NatureId,
     /// Index into [`Design::signals`].
     SignalId,
-    /// Index into [`Process::vars`] of the process that uses it.
+    /// Index into [`Process::vars`] of the process that uses it (in a subprogram's code: into
+    /// [`Subprogram::vars`]).
     VarId,
+    /// Index into [`Design::subprograms`].
+    SubprogramId,
 }
 
 /// A whole elaborated model.
@@ -62,6 +65,42 @@ pub struct Design {
     pub processes: Vec<Process>,
     /// `limit` specifications: the largest step for the quantities listed.
     pub limits: Vec<Limit>,
+    /// User-defined functions and procedures with bodies, one per distinct set of actual
+    /// signals of their signal parameters (those are bound at elaboration).
+    pub subprograms: Vec<Subprogram>,
+}
+
+/// A function or procedure lowered like a process: its frame is `vars` (the variable
+/// parameters first, in declaration order, then the locals), its body `code`, which ends in
+/// `Return`. Signal parameters do not appear: the body reads and drives the actual signals.
+#[derive(Clone, Debug)]
+pub struct Subprogram {
+    /// Instance path plus name (`tb.r_of`), for run-time errors.
+    pub name: String,
+    pub kind: SubprogramKind,
+    /// Modes of the variable parameters, `vars[0..params.len()]`.
+    pub params: Vec<ParamMode>,
+    pub vars: Vec<Variable>,
+    pub code: Vec<Instr>,
+    pub span: Span,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SubprogramKind {
+    /// Called in expressions; never waits, never assigns signals.
+    Function,
+    /// Called by [`Instr::Call`]; may wait (the calling process's whole call stack suspends) and
+    /// drive signals through the calling process's drivers.
+    Procedure,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ParamMode {
+    In,
+    /// Starts at its type's default; copied back to the actual variable on return.
+    Out,
+    /// Starts at the actual's value; copied back on return.
+    InOut,
 }
 
 /// A scalar nature, e.g. `electrical is voltage across current through electrical_ref reference`.
@@ -248,6 +287,14 @@ pub enum Expr {
     Image(Type, Box<Expr>),
     /// A signal attribute (processes only).
     SignalAttr(SignalId, SignalAttr),
+    /// A call of a user-defined function (processes only; equations get pure straight-line
+    /// functions inlined): one argument per variable parameter. `signals` are the actuals of
+    /// its signal parameters, kept for implicit sensitivity only.
+    FnCall {
+        sub: SubprogramId,
+        args: Vec<Expr>,
+        signals: Vec<SignalId>,
+    },
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -381,6 +428,19 @@ pub enum Instr {
     Stop,
     /// Suspend forever (`wait;`).
     Halt,
+    /// A procedure call: one argument per variable parameter (an `out` parameter's argument is
+    /// its initial value); on return, callee variable `param` is copied to caller variable
+    /// `actual` for each of `copy_back`. `signals` are the actuals of its signal parameters
+    /// (for implicit sensitivity).
+    Call {
+        sub: SubprogramId,
+        args: Vec<Expr>,
+        copy_back: Vec<(VarId, VarId)>,
+        signals: Vec<SignalId>,
+        span: Span,
+    },
+    /// Leave the subprogram (with the function's result).
+    Return(Option<Expr>),
 }
 
 /// `q => value` in a break list, or `for selector use q => value` (`selector` is the quantity
@@ -419,7 +479,11 @@ impl Expr {
         match self {
             Expr::Const(v) => v.as_f64().is_some(),
             Expr::Quantity(_) | Expr::Dot(_) | Expr::Signal(_) | Expr::Now => true,
-            Expr::Var(_) | Expr::Index { .. } | Expr::Image(..) | Expr::SignalAttr(..) => false,
+            Expr::Var(_)
+            | Expr::Index { .. }
+            | Expr::Image(..)
+            | Expr::SignalAttr(..)
+            | Expr::FnCall { .. } => false,
             Expr::Unary(_, a) => a.is_analog(),
             Expr::Binary(op, a, b) => *op != BinaryOp::Concat && a.is_analog() && b.is_analog(),
             Expr::Call(_, args) => args.iter().all(Expr::is_analog),
@@ -443,7 +507,7 @@ impl Expr {
                 a.visit(f);
                 b.visit(f);
             }
-            Expr::Call(_, args) => args.iter().for_each(|a| a.visit(f)),
+            Expr::Call(_, args) | Expr::FnCall { args, .. } => args.iter().for_each(|a| a.visit(f)),
             Expr::If(c, a, b) => {
                 c.visit(f);
                 a.visit(f);
@@ -461,6 +525,7 @@ impl Expr {
         let mut out = Vec::new();
         self.visit(&mut |e| match e {
             Expr::Signal(s) | Expr::SignalAttr(s, _) => out.push(*s),
+            Expr::FnCall { signals, .. } => out.extend(signals),
             _ => {}
         });
         out

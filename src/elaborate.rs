@@ -27,10 +27,12 @@ mod expr;
 mod fold;
 mod generics;
 mod hier;
+mod inline;
 mod library;
 mod process;
 mod scope;
 mod simultaneous;
+mod subprogram;
 #[cfg(test)]
 mod tests;
 mod types;

@@ -17,6 +17,7 @@ use crate::source::Span;
 use crate::waveform::Waveforms;
 
 mod analog_model;
+mod call;
 mod cycle;
 mod error;
 mod eval;

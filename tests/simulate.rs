@@ -3,12 +3,17 @@
 
 use vams::ast::DesignFile;
 use vams::elaborate::{ElabOptions, elaborate};
-use vams::kernel::{Outcome, Severity, SimOptions, SimResult, simulate};
+use vams::kernel::{Outcome, Severity, SimError, SimOptions, SimResult, simulate};
 use vams::source::{FileId, SourceMap};
 use vams::{parser, stdlib};
 
 /// Runs `tests/simulate/<name>.vhd` with top entity `name`.
 fn run(name: &str, options: SimOptions) -> SimResult {
+    try_run(name, options).expect("simulation runs")
+}
+
+/// Like [`run`], for runs that end in a simulation error.
+fn try_run(name: &str, options: SimOptions) -> Result<SimResult, SimError> {
     let path = format!("{}/tests/simulate/{name}.vhd", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(&path).expect("test source exists");
     let mut sources = SourceMap::new();
@@ -35,7 +40,7 @@ fn run(name: &str, options: SimOptions) -> SimResult {
         Ok(d) => d,
         Err(errors) => panic!("elaboration failed: {errors:?}"),
     };
-    simulate(&design, &options, &mut |_| {}).expect("simulation runs")
+    simulate(&design, &options, &mut |_| {})
 }
 
 fn report_times(result: &SimResult, message: &str) -> Vec<f64> {
@@ -235,4 +240,89 @@ fn schmitt_trigger_switches_at_the_thresholds() {
         let x = t_down + k as f64 / f;
         assert!((t - x).abs() < 1e-6, "fall at {t}, analytic {x}");
     }
+}
+
+#[test]
+fn user_functions_recurse_overload_and_take_named_and_default_arguments() {
+    let result = run("sub_functions", SimOptions::default());
+    // Every check in the model is an assertion of severity failure.
+    assert_eq!(result.outcome, Outcome::Finished);
+    assert_eq!(report_times(&result, "functions ok"), vec![0.0]);
+}
+
+#[test]
+fn procedures_copy_back_out_parameters_wait_and_drive_signals() {
+    let result = run(
+        "sub_procedures",
+        SimOptions {
+            stop: 20e-3,
+            ..SimOptions::default()
+        },
+    );
+    assert_eq!(result.outcome, Outcome::Finished);
+    assert_eq!(report_times(&result, "params ok"), vec![0.0]);
+    let close = |got: Vec<f64>, want: f64| got.len() == 1 && (got[0] - want).abs() < 1e-12;
+    // `pause(2 ms)` suspends the caller inside the procedure.
+    assert!(close(report_times(&result, "paused"), 2e-3));
+    // `pulse(pulse_out, 3 ms)` drives the signal from 2 ms to 5 ms, seen by another process.
+    assert!(close(report_times(&result, "rise"), 2e-3));
+    assert!(close(report_times(&result, "fall"), 5e-3));
+    assert!(close(report_times(&result, "pulsed"), 5e-3));
+}
+
+#[test]
+fn rising_edge_and_std_logic_operators_run_through_the_1164_bodies() {
+    let result = run(
+        "sub_rising_edge",
+        SimOptions {
+            stop: 200e-9,
+            ..SimOptions::default()
+        },
+    );
+    assert_eq!(result.outcome, Outcome::Finished);
+    assert_eq!(report_times(&result, "logic ok"), vec![0.0]);
+    // The clock toggles every 5 ns until 100 ns: rising edges at 5, 15, ..., 95 ns.
+    let edges = report_times(&result, "edge");
+    let want: Vec<f64> = (0..10).map(|k| (5.0 + 10.0 * k as f64) * 1e-9).collect();
+    assert_eq!(edges.len(), want.len(), "edges at {edges:?}");
+    for (t, w) in edges.iter().zip(&want) {
+        assert!((t - w).abs() < 1e-15, "edge at {t}, expected {w}");
+    }
+}
+
+#[test]
+fn function_inlined_into_an_equation_matches_the_rc_exponential() {
+    let result = run(
+        "sub_rc_function",
+        SimOptions {
+            stop: 5e-3,
+            reltol: 1e-5,
+            ..SimOptions::default()
+        },
+    );
+    assert_eq!(result.outcome, Outcome::Finished);
+    let w = &result.waveforms;
+    let tau = 1e-3;
+    let col = w.column("v_c").expect("v_c recorded");
+    assert!(w.times.len() > 10, "too few points: {}", w.times.len());
+    // Same tolerance as the plain RC test: the global BDF error at reltol 1e-5.
+    for (&t, &v) in w.times.iter().zip(&col.values) {
+        let exact = 1.0 - (-t / tau).exp();
+        assert!(
+            (v - exact).abs() < 5e-4,
+            "t = {t}: v_c = {v}, exact {exact}"
+        );
+    }
+}
+
+#[test]
+fn endless_recursion_is_a_runtime_error_naming_the_process() {
+    let err = match try_run("sub_recursion", SimOptions::default()) {
+        Ok(r) => panic!("the run should fail, ended {:?}", r.outcome),
+        Err(e) => e,
+    };
+    let text = err.to_string();
+    assert!(text.contains("`runaway`"), "{text}");
+    assert!(text.contains("nested subprogram calls"), "{text}");
+    assert!(text.contains("`forever`"), "{text}");
 }

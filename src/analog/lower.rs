@@ -57,6 +57,7 @@ pub fn lower(e: &Expr, slot_of: &dyn Fn(usize) -> usize) -> Result<Sym, NotAnalo
         Expr::Index { .. } => return Err(NotAnalog("array indexing")),
         Expr::Image(..) => return Err(NotAnalog("the 'image attribute")),
         Expr::SignalAttr(..) => return Err(NotAnalog("a signal attribute")),
+        Expr::FnCall { .. } => return Err(NotAnalog("a call of a user-defined function")),
     })
 }
 

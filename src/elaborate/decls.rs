@@ -10,7 +10,7 @@ use crate::design::{Builtin, Signal, SignalId, SignalKind, Value};
 
 use super::error::ElabError;
 use super::expr::constrain;
-use super::scope::{Item, Native, Param, Scope, Subprogram};
+use super::scope::{Item, Native, Scope};
 use super::types::{ArrayTy, EnumTy, Sub, Ty};
 use super::{Elab, R};
 
@@ -54,7 +54,7 @@ fn declared_names(d: &Decl) -> Vec<&str> {
 }
 
 /// Maps a bodiless stdlib subprogram to its native implementation.
-fn native(name: &str, arity: usize, is_function: bool) -> Native {
+pub(super) fn native(name: &str, arity: usize, is_function: bool) -> Native {
     use Builtin::*;
     let b = match (name, arity) {
         ("now", 0) => return Native::Now,
@@ -277,8 +277,10 @@ impl<'a> Elab<'a> {
                 Ok(())
             }
             DeclKind::Component { name, .. } => self.declare(sc, name, Item::Component(d)),
-            DeclKind::Subprogram(spec) => self.subprogram_decl(sc, spec, false),
-            DeclKind::SubprogramBody { spec, .. } => self.subprogram_decl(sc, spec, true),
+            DeclKind::Subprogram(spec) => self.subprogram_decl(sc, spec, None),
+            DeclKind::SubprogramBody { spec, decls, stmts } => {
+                self.subprogram_decl(sc, spec, Some((decls, stmts)))
+            }
             DeclKind::Limit {
                 quantities,
                 type_mark,
@@ -291,54 +293,6 @@ impl<'a> Elab<'a> {
                 Ok(())
             }
         }
-    }
-
-    fn subprogram_decl(
-        &mut self,
-        sc: &mut Scope<'a>,
-        spec: &'a SubprogramSpec,
-        body: bool,
-    ) -> R<()> {
-        let name = designator(spec);
-        if body {
-            // A body completes an earlier declaration; a body alone declares the subprogram.
-            let declared_here = sc
-                .regions
-                .last()
-                .is_some_and(|r| r.items.contains_key(&name));
-            if declared_here {
-                return Ok(());
-            }
-        }
-        let mut params = Vec::new();
-        for p in &spec.params {
-            let sub = self.subtype_indication(sc, &p.subtype)?;
-            for n in &p.names {
-                params.push(Param {
-                    name: n.name.clone(),
-                    ty: sub.ty.clone(),
-                    has_default: p.default.is_some(),
-                });
-            }
-        }
-        let ret = match &spec.return_type {
-            Some(t) => Some(self.type_mark(sc, t)?.ty.clone()),
-            None => None,
-        };
-        let native = match &self.native_names {
-            Some(names) if names.contains(&name) => {
-                Some(native(&name, params.len(), spec.is_function))
-            }
-            _ => None,
-        };
-        let sub = Subprogram {
-            name: name.clone(),
-            params,
-            ret,
-            native,
-        };
-        sc.declare(&name, Item::Subprogram(Rc::new(sub)));
-        Ok(())
     }
 
     fn type_decl(

@@ -188,6 +188,11 @@ impl<'a> Elab<'a> {
             ExprKind::Aggregate(elems) => self.aggregate(sc, elems, e.span, want),
             ExprKind::Unary(op, a) => {
                 let a = self.expr(sc, a, want)?;
+                if *op == ast::UnaryOp::Not && !(a.ty == Ty::Boolean || a.ty.is_enum_named("bit")) {
+                    if let Some(r) = self.user_operator(sc, "not", vec![a.clone()], e.span) {
+                        return r;
+                    }
+                }
                 self.unary(*op, a, e.span)
             }
             ExprKind::Binary(op, l, r) => self.binary(sc, *op, l, r, e.span, want),
@@ -323,8 +328,8 @@ impl<'a> Elab<'a> {
             }
             Literal::Char(c) => {
                 let name = format!("'{c}'");
-                let items = match sc.lookup(&name) {
-                    Some(items) => items.to_vec(),
+                let items = match sc.lookup_overloads(&name) {
+                    Some(items) => items,
                     None => {
                         return Err(self.error(ElabError::Undeclared {
                             span,
@@ -553,6 +558,11 @@ impl<'a> Elab<'a> {
         let ty = match result_type(bop, &lt.ty, &rt.ty) {
             Some(t) => t,
             None => {
+                if let Some(r) =
+                    self.user_operator(sc, op_text(bop), vec![lt.clone(), rt.clone()], span)
+                {
+                    return r;
+                }
                 let help = if lt.ty.is_numeric() && rt.ty.is_numeric() {
                     INT_REAL_HELP.to_string()
                 } else {
@@ -574,114 +584,32 @@ impl<'a> Elab<'a> {
     pub(super) fn call(
         &mut self,
         sc: &Scope<'a>,
-        subs: Vec<Rc<Subprogram>>,
+        subs: Vec<Rc<Subprogram<'a>>>,
         args: &[ast::Assoc],
         span: Span,
         name_span: Span,
         want: Option<&Ty>,
     ) -> R<Typed> {
         let name = subs.first().map(|s| s.name.clone()).unwrap_or_default();
-        let fits = |s: &Subprogram| {
-            s.ret.is_some()
-                && args.len() <= s.params.len()
-                && s.params.iter().skip(args.len()).all(|p| p.has_default)
-        };
-        let mut cands: Vec<Rc<Subprogram>> = subs.into_iter().filter(|s| fits(s)).collect();
-        if cands.is_empty() {
-            return Err(self.error(ElabError::invalid(
-                span,
-                format!("no function `{name}` takes {} argument(s)", args.len()),
-                Some(
-                    "check the number of arguments (procedures cannot be called in expressions)"
-                        .into(),
-                ),
-            )));
-        }
-        if cands.len() > 1 {
-            if let Some(w) = want {
-                let matching: Vec<_> = cands
-                    .iter()
-                    .filter(|s| s.ret.as_ref().is_some_and(|r| r.same(w)))
-                    .cloned()
-                    .collect();
-                if !matching.is_empty() {
-                    cands = matching;
-                }
-            }
-        }
-        let mut lowered = Vec::new();
-        if cands.len() == 1 {
-            let mut slots: Vec<Option<&ast::Expr>> = vec![None; cands[0].params.len()];
-            for (k, a) in args.iter().enumerate() {
-                let Actual::Expr(ae) = &a.actual else {
-                    return Err(self.error(ElabError::invalid(
-                        a.span,
-                        "expected an argument expression",
-                        None,
-                    )));
-                };
-                let slot = match &a.formal {
-                    Some(f) => {
-                        let fname = self.sources.snippet(f.span).trim().to_ascii_lowercase();
-                        match cands[0].params.iter().position(|p| p.name == fname) {
-                            Some(i) => i,
-                            None => {
-                                return Err(self.error(ElabError::UnknownFormal {
-                                    span: f.span,
-                                    name: fname,
-                                    what: "parameter",
-                                    unit: name.clone(),
-                                    help: None,
-                                }));
-                            }
-                        }
-                    }
-                    None => k,
-                };
-                slots[slot] = Some(ae);
-            }
-            for (slot, p) in slots.iter().zip(&cands[0].params) {
-                match slot {
-                    Some(ae) => lowered.push(self.expr_of(sc, ae, &p.ty)?),
-                    None => {
-                        return Err(self.error(ElabError::unsupported(
-                            span,
-                            format!("leaving out the parameter `{}`", p.name),
-                            "give every argument",
-                        )));
-                    }
-                }
-            }
-        } else {
-            for a in args {
-                let Actual::Expr(ae) = &a.actual else {
-                    return Err(self.error(ElabError::invalid(
-                        a.span,
-                        "expected an argument expression",
-                        None,
-                    )));
-                };
-                lowered.push(self.expr(sc, ae, None)?);
-            }
-            let found = cands
-                .iter()
-                .find(|s| lowered.iter().zip(&s.params).all(|(a, p)| a.ty.same(&p.ty)))
-                .cloned();
-            match found {
-                Some(s) => cands = vec![s],
-                None => {
-                    let tys: Vec<String> = lowered.iter().map(|t| t.ty.to_string()).collect();
-                    return Err(self.error(ElabError::invalid(
-                        span,
-                        format!("no overload of `{name}` takes ({})", tys.join(", ")),
-                        Some(INT_REAL_HELP.into()),
-                    )));
-                }
-            }
-        }
-        let sub = cands.remove(0);
+        let (sub, slots) = self.resolve_call(sc, subs, args, true, want, span)?;
         let ret = sub.ret.clone().unwrap_or(Ty::Real);
-        let args: Vec<Expr> = lowered.into_iter().map(|t| t.e).collect();
+        if sub.native.is_none() {
+            let e = self.user_function_call(sc, &sub, &slots, span)?;
+            return Ok(Typed::new(e, ret));
+        }
+        let mut args = Vec::new();
+        for (p, slot) in sub.params.iter().zip(&slots) {
+            match slot {
+                Some(ae) => args.push(self.expr_of(sc, ae, &p.ty)?.e),
+                None => {
+                    return Err(self.error(ElabError::unsupported(
+                        span,
+                        format!("leaving out the parameter `{}`", p.name),
+                        "give every argument",
+                    )));
+                }
+            }
+        }
         let e = match sub.native {
             Some(Native::Builtin(b)) => Expr::Call(b, args),
             Some(Native::Log2) => Expr::Binary(
@@ -716,13 +644,8 @@ impl<'a> Elab<'a> {
                     "vams implements exp, log, log2, log10, sqrt, the trigonometric and hyperbolic functions, floor, ceil, round, trunc, sign, realmax and realmin",
                 )));
             }
-            None => {
-                return Err(self.error(ElabError::unsupported(
-                    name_span,
-                    format!("calling the user-defined subprogram `{name}`"),
-                    "user-defined subprograms are not supported yet: write the expression inline, or compute it in a constant",
-                )));
-            }
+            // Handled above.
+            None => return Err(super::Reported),
         };
         self.folded(e, ret, span)
     }
@@ -996,7 +919,7 @@ fn string_type(sc: &Scope<'_>, n: usize) -> Ty {
 
 fn logic_help(ty: &Ty) -> String {
     if ty.is_enum_named("std_ulogic") {
-        "the std_logic_1164 operators are user-defined subprograms, not supported yet; use boolean or bit".into()
+        "the std_logic_1164 operators on std_ulogic are visible with `library ieee; use ieee.std_logic_1164.all;`".into()
     } else {
         "logical operators take two boolean or two bit operands; arithmetic takes two numbers of the same type".into()
     }

@@ -26,6 +26,8 @@ pub fn eval(e: &Expr) -> Result<Value, NoFold> {
         | Expr::Var(_)
         | Expr::Now
         | Expr::SignalAttr(..)
+        // User functions run in the kernel (they may read signals or recurse without bound).
+        | Expr::FnCall { .. }
         // Images are left to the kernel so that every image has the same format.
         | Expr::Image(..) => Err(NoFold::Dynamic),
         Expr::Unary(op, a) => unary(*op, eval(a)?),

@@ -16,12 +16,20 @@ use super::scope::{Item, Native, Scope};
 use super::types::Ty;
 use super::{Elab, R, Reported};
 
-/// A process being lowered.
+/// A process (or subprogram body) being lowered.
 #[derive(Default)]
 pub(super) struct Proc {
     vars: Vec<Variable>,
     code: Vec<Instr>,
     loops: Vec<LoopFrame>,
+    /// Set while lowering a subprogram body.
+    pub(super) subprogram: Option<SubContext>,
+}
+
+/// What a subprogram body may do.
+pub(super) struct SubContext {
+    /// The function's result type; `None` for a procedure.
+    pub(super) ret: Option<Ty>,
 }
 
 struct LoopFrame {
@@ -33,7 +41,11 @@ struct LoopFrame {
 }
 
 impl Proc {
-    fn emit(&mut self, i: Instr) -> usize {
+    pub(super) fn into_parts(self) -> (Vec<Variable>, Vec<Instr>) {
+        (self.vars, self.code)
+    }
+
+    pub(super) fn emit(&mut self, i: Instr) -> usize {
         self.code.push(i);
         self.code.len() - 1
     }
@@ -49,7 +61,7 @@ impl Proc {
         }
     }
 
-    fn new_var(&mut self, name: &str, ty: &Ty, init: Value) -> VarId {
+    pub(super) fn new_var(&mut self, name: &str, ty: &Ty, init: Value) -> VarId {
         self.vars.push(Variable {
             name: name.to_string(),
             ty: ty.to_design(),
@@ -94,6 +106,18 @@ fn signals_read(code: &[Instr]) -> Vec<SignalId> {
                 reinit.iter().for_each(|r| add(&r.value));
                 when.iter().for_each(&mut add);
             }
+            Instr::Call {
+                sub, args, signals, ..
+            } => {
+                args.iter().for_each(&mut add);
+                // The signal actuals, as one expression that reads them all.
+                add(&Expr::FnCall {
+                    sub: *sub,
+                    args: Vec::new(),
+                    signals: signals.clone(),
+                });
+            }
+            Instr::Return(value) => value.iter().for_each(&mut add),
             Instr::Wait { .. } | Instr::Jump(_) | Instr::Stop | Instr::Halt => {}
         }
     }
@@ -166,7 +190,12 @@ impl<'a> Elab<'a> {
         }
     }
 
-    fn process_decls(&mut self, sc: &mut Scope<'a>, p: &mut Proc, decls: &'a [ast::Decl]) -> R<()> {
+    pub(super) fn process_decls(
+        &mut self,
+        sc: &mut Scope<'a>,
+        p: &mut Proc,
+        decls: &'a [ast::Decl],
+    ) -> R<()> {
         let mut result = Ok(());
         for d in decls {
             if let ast::DeclKind::Variable {
@@ -178,15 +207,30 @@ impl<'a> Elab<'a> {
             {
                 let r = (|| {
                     let sub = self.subtype_indication(sc, subtype)?;
-                    let init = match value {
-                        Some(v) => {
-                            self.static_value(sc, v, &sub.ty, "a variable's initial value")?
+                    // In a subprogram an initial value may depend on the parameters: it is
+                    // assigned when the call starts.
+                    let (init, dynamic) = match value {
+                        Some(v) if p.subprogram.is_some() => {
+                            match self.expr_of(sc, v, &sub.ty)?.e {
+                                Expr::Const(c) => (c, None),
+                                e => (sub.ty.default_value(), Some(e)),
+                            }
                         }
-                        None => sub.ty.default_value(),
+                        Some(v) => (
+                            self.static_value(sc, v, &sub.ty, "a variable's initial value")?,
+                            None,
+                        ),
+                        None => (sub.ty.default_value(), None),
                     };
                     let ty = super::decls::fit_array(&sub.ty, &init);
                     for n in names {
                         let id = p.new_var(&n.name, &ty, init.clone());
+                        if let Some(e) = &dynamic {
+                            p.emit(Instr::SetVar {
+                                var: id,
+                                value: e.clone(),
+                            });
+                        }
                         if !sc.declare(
                             &n.name,
                             Item::Variable {
@@ -195,6 +239,51 @@ impl<'a> Elab<'a> {
                                 readonly: false,
                             },
                         ) {
+                            return Err(self.error(ElabError::Redeclared {
+                                span: n.span,
+                                name: n.name.clone(),
+                            }));
+                        }
+                    }
+                    Ok(())
+                })();
+                if r.is_err() {
+                    result = r;
+                }
+            } else if let (
+                Some(_),
+                ast::DeclKind::Constant {
+                    names,
+                    subtype,
+                    value: Some(value),
+                },
+            ) = (&p.subprogram, &d.kind)
+            {
+                // A subprogram's constant may depend on the parameters (then it is a read-only
+                // variable assigned when the call starts).
+                let r = (|| {
+                    let sub = self.subtype_indication(sc, subtype)?;
+                    let t = self.expr_of(sc, value, &sub.ty)?;
+                    for n in names {
+                        let item = match &t.e {
+                            Expr::Const(v) => Item::Constant {
+                                value: v.clone(),
+                                ty: super::decls::fit_array(&sub.ty, v),
+                            },
+                            e => {
+                                let id = p.new_var(&n.name, &sub.ty, sub.ty.default_value());
+                                p.emit(Instr::SetVar {
+                                    var: id,
+                                    value: e.clone(),
+                                });
+                                Item::Variable {
+                                    id,
+                                    ty: sub.ty.clone(),
+                                    readonly: true,
+                                }
+                            }
+                        };
+                        if !sc.declare(&n.name, item) {
                             return Err(self.error(ElabError::Redeclared {
                                 span: n.span,
                                 name: n.name.clone(),
@@ -238,7 +327,7 @@ impl<'a> Elab<'a> {
         }
     }
 
-    fn seq(&mut self, sc: &mut Scope<'a>, p: &mut Proc, stmts: &'a [SeqStmt]) {
+    pub(super) fn seq(&mut self, sc: &mut Scope<'a>, p: &mut Proc, stmts: &'a [SeqStmt]) {
         for s in stmts {
             let _ = self.seq_stmt(sc, p, s);
         }
@@ -288,6 +377,21 @@ impl<'a> Elab<'a> {
     }
 
     fn seq_stmt(&mut self, sc: &mut Scope<'a>, p: &mut Proc, s: &'a SeqStmt) -> R<()> {
+        let in_function = p.subprogram.as_ref().is_some_and(|c| c.ret.is_some());
+        let forbidden = match &s.kind {
+            SeqKind::Wait { .. } => Some("wait"),
+            SeqKind::SignalAssign { .. } => Some("assign signals"),
+            SeqKind::ProcedureCall(_) => Some("call procedures"),
+            SeqKind::Break(_) => Some("execute `break`"),
+            _ => None,
+        };
+        if let (true, Some(what)) = (in_function, forbidden) {
+            return Err(self.error(ElabError::invalid(
+                s.span,
+                format!("a function cannot {what}"),
+                Some("make it a procedure (LRM 4.2: functions compute a value and have no side effects on signals)".into()),
+            )));
+        }
         match &s.kind {
             SeqKind::Wait { on, until, timeout } => {
                 if on.is_empty() && until.is_none() && timeout.is_none() {
@@ -485,12 +589,33 @@ impl<'a> Elab<'a> {
                     p.patch(skip, next);
                 }
             }
-            SeqKind::Return(_) => {
-                return Err(self.error(ElabError::invalid(
-                    s.span,
-                    "`return` outside a subprogram",
-                    None,
-                )));
+            SeqKind::Return(value) => {
+                let Some(ctx) = &p.subprogram else {
+                    return Err(self.error(ElabError::invalid(
+                        s.span,
+                        "`return` outside a subprogram",
+                        None,
+                    )));
+                };
+                let value = match (&ctx.ret, value) {
+                    (Some(ty), Some(v)) => Some(self.expr_of(sc, v, &ty.clone())?.e),
+                    (None, None) => None,
+                    (Some(_), None) => {
+                        return Err(self.error(ElabError::invalid(
+                            s.span,
+                            "a function's `return` needs a value",
+                            Some("write `return expression;`".into()),
+                        )));
+                    }
+                    (None, Some(v)) => {
+                        return Err(self.error(ElabError::invalid(
+                            v.span,
+                            "a procedure's `return` has no value",
+                            Some("write `return;` (results leave through `out` parameters)".into()),
+                        )));
+                    }
+                };
+                p.emit(Instr::Return(value));
             }
             SeqKind::Null => {}
             SeqKind::Assert(a) => {
@@ -716,14 +841,21 @@ impl<'a> Elab<'a> {
         });
         match native {
             Some(Some(Native::Stop | Native::Finish)) => Ok(Instr::Stop),
-            Some(None) => Err(self.error(ElabError::unsupported(
-                name.span,
-                format!(
-                    "calling the user-defined procedure `{}`",
-                    self.sources.snippet(name.span)
-                ),
-                "user-defined subprograms are not supported yet: write the statements inline",
-            ))),
+            Some(None) => {
+                let subs = items
+                    .iter()
+                    .filter_map(|i| match i {
+                        Item::Subprogram(s) if s.native.is_none() => Some(s.clone()),
+                        _ => None,
+                    })
+                    .collect();
+                let args = match &call.kind {
+                    ast::ExprKind::Apply(_, args) => args.as_slice(),
+                    _ => &[],
+                };
+                let (sub, slots) = self.resolve_call(sc, subs, args, false, None, call.span)?;
+                self.user_procedure_call(sc, &sub, &slots, call.span)
+            }
             Some(Some(_)) => Err(self.error(ElabError::unsupported(
                 name.span,
                 format!(

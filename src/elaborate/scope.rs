@@ -4,11 +4,15 @@
 //! made visible. A name found in an inner region hides the outer ones (LRM 12.3), except that
 //! overloadable items (subprograms, enumeration literals) of the same region are all returned.
 
+use std::cell::RefCell;
 use std::collections::HashMap;
 use std::rc::Rc;
 
 use crate::ast;
-use crate::design::{Builtin, QuantityId, SignalId, TerminalId, Value, VarId};
+use crate::design::{
+    Builtin, ParamMode, QuantityId, SignalId, SubprogramId, TerminalId, Value, VarId,
+};
+use crate::source::Span;
 
 use super::types::{Sub, Ty};
 
@@ -47,7 +51,7 @@ pub enum Item<'a> {
         ty: Ty,
         pos: u32,
     },
-    Subprogram(Rc<Subprogram>),
+    Subprogram(Rc<Subprogram<'a>>),
     /// A unit of the physical type `time`, in femtoseconds (integral, so that `1 sec` is
     /// exactly 1.0 s).
     TimeUnit(f64),
@@ -91,19 +95,44 @@ impl Item<'_> {
 
 /// A function or procedure declaration.
 #[derive(Debug)]
-pub struct Subprogram {
+pub struct Subprogram<'a> {
     pub name: String,
-    pub params: Vec<Param>,
+    pub params: Vec<Param<'a>>,
     /// `None` for a procedure.
     pub ret: Option<Ty>,
     pub native: Option<Native>,
+    pub span: Span,
+    /// The body, once seen (a package body completes its package's declarations).
+    pub body: RefCell<Option<Rc<Body<'a>>>>,
+    /// Lowered instances in the design, by the actual signals of the signal parameters.
+    pub instances: RefCell<Vec<(Vec<SignalId>, SubprogramId)>>,
 }
 
 #[derive(Debug)]
-pub struct Param {
+pub struct Param<'a> {
     pub name: String,
     pub ty: Ty,
     pub has_default: bool,
+    pub default: Option<&'a ast::Expr>,
+    /// `signal` parameters are bound to their actual signal; the others are variables of the
+    /// subprogram's frame.
+    pub is_signal: bool,
+    pub mode: ParamMode,
+}
+
+/// A subprogram body and the scope it is elaborated in (the declarations visible where the
+/// body is written; the variables of an enclosing process are hidden).
+pub struct Body<'a> {
+    pub decls: &'a [ast::Decl],
+    pub stmts: &'a [ast::SeqStmt],
+    pub scope: Scope<'a>,
+}
+
+impl std::fmt::Debug for Body<'_> {
+    // The scope holds the subprogram itself: printing it would not end.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Body({} statements)", self.stmts.len())
+    }
 }
 
 /// What a stdlib subprogram without body is, natively.
@@ -194,6 +223,26 @@ impl<'a> Scope<'a> {
             .rev()
             .find_map(|r| r.items.get(name).filter(|v| !v.is_empty()))
             .map(|v| v.as_slice())
+    }
+
+    /// Like [`Scope::lookup`], but when the innermost items are all overloadable the
+    /// overloadable items of outer regions come too (a package's `'0'` of `std_ulogic` does
+    /// not hide `bit`'s `'0'`, LRM 12.3).
+    pub fn lookup_overloads(&self, name: &str) -> Option<Vec<Item<'a>>> {
+        let mut out: Vec<Item<'a>> = Vec::new();
+        for region in self.regions.iter().rev() {
+            let Some(items) = region.items.get(name).filter(|v| !v.is_empty()) else {
+                continue;
+            };
+            if !items.iter().all(Item::overloadable) {
+                if out.is_empty() {
+                    out.extend(items.iter().cloned());
+                }
+                break;
+            }
+            out.extend(items.iter().cloned());
+        }
+        (!out.is_empty()).then_some(out)
     }
 
     /// The visible name closest to `name` by edit distance, if close enough to be a typo.

@@ -38,6 +38,8 @@ impl<'a> Elab<'a> {
 
     fn analog(&mut self, sc: &Scope<'a>, e: &ast::Expr, ty: &Ty) -> R<Expr> {
         let t = self.expr_of(sc, e, ty)?;
+        let inlined = self.inline_calls(t.e, e.span)?;
+        let t = self.folded(inlined, t.ty, e.span)?;
         if !t.e.is_analog() {
             return Err(self.error(ElabError::invalid(
                 e.span,

@@ -2,6 +2,7 @@
 
 mod constructs;
 mod models;
+mod subprograms;
 
 use crate::ast::DesignFile;
 use crate::design::Design;

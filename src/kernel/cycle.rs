@@ -180,6 +180,8 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                 quantities: &self.values,
                 derivatives: &self.derivatives,
                 now: 0.0,
+                subprograms: &self.design.subprograms,
+                depth: 0,
             };
             let step = eval(&limit.max_step, &env)
                 .ok()

@@ -1,7 +1,7 @@
 //! Expression evaluation in processes: [`Expr`] to [`Value`] against the current signal values,
 //! the process's variables, the analog solution at the current time and `now`.
 
-use crate::design::{BinaryOp, Expr, SignalAttr, Type, Value};
+use crate::design::{BinaryOp, Expr, SignalAttr, Subprogram, Type, Value};
 
 use super::image::image;
 pub(crate) use super::ops::EvalError;
@@ -16,6 +16,10 @@ pub(crate) struct Env<'a> {
     pub quantities: &'a [f64],
     pub derivatives: &'a [f64],
     pub now: f64,
+    /// The design's subprograms, for function calls.
+    pub subprograms: &'a [Subprogram],
+    /// Subprogram calls active around this evaluation (see `call::MAX_CALL_DEPTH`).
+    pub depth: usize,
 }
 
 pub(crate) fn eval(e: &Expr, env: &Env) -> Result<Value, EvalError> {
@@ -53,6 +57,7 @@ pub(crate) fn eval(e: &Expr, env: &Env) -> Result<Value, EvalError> {
             element(array, i, ty)?
         }
         Expr::Image(ty, x) => Value::String(image(ty, &eval(x, env)?)),
+        Expr::FnCall { sub, args, .. } => super::call::call_function(*sub, args, env)?,
         Expr::SignalAttr(s, attr) => {
             let st = &env.signals[s.index()];
             match attr {
@@ -161,6 +166,8 @@ mod tests {
             quantities: &[],
             derivatives: &[],
             now: 2e-3,
+            subprograms: &[],
+            depth: 0,
         };
         eval(e, &env)
     }

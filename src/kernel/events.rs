@@ -131,13 +131,16 @@ impl<'d> EventKernel<'d> {
             if !p.sensitivity().iter().any(|s| states[s.index()].event) {
                 continue;
             }
-            if let Some(cond) = p.until(&self.design.processes[i]) {
+            let subs = &self.design.subprograms;
+            if let Some(cond) = p.until(&self.design.processes[i], subs) {
                 let env = Env {
                     signals: states,
                     vars: &p.vars,
                     quantities: analog.values,
                     derivatives: analog.derivatives,
                     now,
+                    subprograms: subs,
+                    depth: 0,
                 };
                 let process = &self.design.processes[i];
                 let holds = super::eval::eval(cond, &env)
@@ -179,6 +182,7 @@ impl<'d> EventKernel<'d> {
                 reports: &mut self.reports,
                 on_report,
                 waveform: &mut self.waveform,
+                subprograms: &self.design.subprograms,
             };
             match process::run(i, &self.design.processes[i], &mut self.procs[i], &mut cx)? {
                 Suspend::Wait | Suspend::Halt => {}

@@ -1,8 +1,12 @@
 //! The process interpreter: runs a lowered [`Process`] from its resume point to the next wait.
 
-use crate::design::{DelayMechanism, Expr, Instr, Process, QuantityId, SignalId, Value};
+use crate::design::{
+    DelayMechanism, Expr, Instr, Process, QuantityId, SignalId, Subprogram, SubprogramId, Value,
+    Variable,
+};
 use crate::source::Span;
 
+use super::call::{MAX_CALL_DEPTH, frame, too_deep};
 use super::error::SimError;
 use super::eval::{Env, EvalError, eval, integer, offset, truth};
 use super::signals::{Delay, Signals};
@@ -26,11 +30,20 @@ pub(crate) enum Suspend {
 
 /// A process's run-time state.
 pub(crate) struct ProcState {
+    /// Next instruction of the running code.
     pub pc: usize,
+    /// Variables of the running code (the process's, or the running procedure's frame).
     pub vars: Vec<Value>,
-    /// Signals the wait at each instruction index is sensitive to (empty elsewhere).
+    /// The running code: `None` for the process's own, else a procedure.
+    pub running: Option<SubprogramId>,
+    /// The suspended callers of the running procedure, innermost last.
+    stack: Vec<Frame>,
+    /// Signals the wait at each instruction index of the process is sensitive to (empty
+    /// elsewhere).
     sensitivity: Vec<Vec<SignalId>>,
-    /// Index of the `Wait` the process is suspended at.
+    /// Signals a wait inside a procedure is sensitive to (filled when it suspends).
+    procedure_sensitivity: Vec<SignalId>,
+    /// Index in the running code of the `Wait` the process is suspended at.
     pub waiting_at: Option<usize>,
     /// Absolute time at which the current wait times out.
     pub timeout_at: Option<f64>,
@@ -57,7 +70,10 @@ impl ProcState {
         ProcState {
             pc: 0,
             vars: process.vars.iter().map(|v| v.init.clone()).collect(),
+            running: None,
+            stack: Vec::new(),
             sensitivity,
+            procedure_sensitivity: Vec::new(),
             waiting_at: None,
             timeout_at: None,
             halted: false,
@@ -65,8 +81,11 @@ impl ProcState {
     }
 
     /// The condition of the current wait, if it has one.
-    pub fn until<'p>(&self, process: &'p Process) -> Option<&'p Expr> {
-        match process.code.get(self.waiting_at?)? {
+    pub fn until<'p>(&self, process: &'p Process, subs: &'p [Subprogram]) -> Option<&'p Expr> {
+        match code_of(process, subs, self.running)
+            .0
+            .get(self.waiting_at?)?
+        {
             Instr::Wait { until, .. } => until.as_ref(),
             _ => None,
         }
@@ -75,9 +94,29 @@ impl ProcState {
     /// The signals the current wait is sensitive to.
     pub fn sensitivity(&self) -> &[SignalId] {
         match self.waiting_at {
+            Some(_) if self.running.is_some() => &self.procedure_sensitivity,
             Some(at) => &self.sensitivity[at],
             None => &[],
         }
+    }
+}
+
+/// A suspended caller: where to continue and its variables.
+struct Frame {
+    running: Option<SubprogramId>,
+    pc: usize,
+    vars: Vec<Value>,
+}
+
+/// The code and variable declarations of the process or of procedure `running`.
+fn code_of<'p>(
+    process: &'p Process,
+    subs: &'p [Subprogram],
+    running: Option<SubprogramId>,
+) -> (&'p [Instr], &'p [Variable]) {
+    match running.and_then(|id| subs.get(id.index())) {
+        Some(sub) => (&sub.code, &sub.vars),
+        None => (&process.code, &process.vars),
     }
 }
 
@@ -95,6 +134,8 @@ pub(crate) struct Context<'a> {
     pub on_report: &'a mut dyn FnMut(&Report),
     /// Reused buffer for a waveform being assigned.
     pub waveform: &'a mut Vec<(Value, f64)>,
+    /// The design's subprograms.
+    pub subprograms: &'a [Subprogram],
 }
 
 /// Runs process `index` until it suspends.
@@ -114,8 +155,10 @@ pub(crate) fn run(
     };
     state.waiting_at = None;
     state.timeout_at = None;
+    let subs = cx.subprograms;
     for _ in 0..INSTRUCTION_LIMIT {
-        let Some(instr) = process.code.get(state.pc) else {
+        let (code, decls) = code_of(process, subs, state.running);
+        let Some(instr) = code.get(state.pc) else {
             // Elaboration guarantees every path ends in a wait; stop here rather than panic.
             return Err(fail(
                 EvalError::new(
@@ -131,6 +174,8 @@ pub(crate) fn run(
             quantities: cx.quantities,
             derivatives: cx.derivatives,
             now: cx.now,
+            subprograms: subs,
+            depth: state.stack.len(),
         };
         let at = |e: EvalError| fail(e, process.span);
         state.pc += 1;
@@ -141,7 +186,7 @@ pub(crate) fn run(
             Instr::SetVarElement { var, index, value } => {
                 let i = integer(&eval(index, &env).map_err(at)?).map_err(at)?;
                 let v = eval(value, &env).map_err(at)?;
-                let ty = &process.vars[var.index()].ty;
+                let ty = &decls[var.index()].ty;
                 match &mut state.vars[var.index()] {
                     Value::Array(items) => {
                         let pos = offset(ty, i, items.len()).map_err(at)?;
@@ -210,7 +255,23 @@ pub(crate) fn run(
                     None => None,
                 };
                 let pc = state.pc - 1;
-                if until.is_none() && timeout.is_none() && state.sensitivity[pc].is_empty() {
+                if state.running.is_some() {
+                    // A wait inside a procedure (rare): its sensitivity is computed here.
+                    let sens = &mut state.procedure_sensitivity;
+                    sens.clear();
+                    match (code.get(pc), until) {
+                        (Some(Instr::Wait { on, .. }), _) if !on.is_empty() => {
+                            sens.extend_from_slice(on)
+                        }
+                        (_, Some(u)) => sens.extend(u.signals()),
+                        _ => {}
+                    }
+                }
+                let sensitive = match state.running {
+                    Some(_) => !state.procedure_sensitivity.is_empty(),
+                    None => !state.sensitivity[pc].is_empty(),
+                };
+                if until.is_none() && timeout.is_none() && !sensitive {
                     state.halted = true;
                     return Ok(Suspend::Halt);
                 }
@@ -279,6 +340,48 @@ pub(crate) fn run(
                         ))
                     })?;
                     cx.breaks.push((r.quantity, x));
+                }
+            }
+            Instr::Call { sub, args, .. } => {
+                let Some(callee) = subs.get(sub.index()) else {
+                    return Err(at(EvalError::new(
+                        "a call of a subprogram the design does not have",
+                        "this is a bug in elaboration",
+                    )));
+                };
+                if state.stack.len() + 1 >= MAX_CALL_DEPTH {
+                    return Err(at(too_deep(&callee.name)));
+                }
+                let values = args
+                    .iter()
+                    .map(|a| eval(a, &env))
+                    .collect::<Result<Vec<_>, _>>()
+                    .map_err(at)?;
+                let callee_vars = frame(callee, values);
+                state.stack.push(Frame {
+                    running: state.running,
+                    pc: state.pc,
+                    vars: std::mem::replace(&mut state.vars, callee_vars),
+                });
+                state.running = Some(*sub);
+                state.pc = 0;
+            }
+            Instr::Return(_) => {
+                let Some(caller) = state.stack.pop() else {
+                    return Err(at(EvalError::new(
+                        "`return` outside a subprogram",
+                        "this is a bug in elaboration",
+                    )));
+                };
+                let callee_vars = std::mem::replace(&mut state.vars, caller.vars);
+                state.running = caller.running;
+                state.pc = caller.pc;
+                // `out` and `inout` parameters go back to the caller's variables.
+                let (code, _) = code_of(process, subs, state.running);
+                if let Some(Instr::Call { copy_back, .. }) = code.get(state.pc.wrapping_sub(1)) {
+                    for (param, actual) in copy_back {
+                        state.vars[actual.index()] = callee_vars[param.index()].clone();
+                    }
                 }
             }
             Instr::Stop => return Ok(Suspend::Stop),

@@ -8,7 +8,7 @@
 //! several drivers act on a `std_ulogic` signal). `'above` signals have no driver: the analog
 //! side forces their values at threshold crossings.
 
-use std::collections::{HashMap, VecDeque};
+use std::collections::{HashMap, HashSet, VecDeque};
 
 use crate::design::{Design, Instr, SignalId, Type, Value};
 
@@ -67,6 +67,30 @@ pub(crate) struct Signals {
     changed_list: Vec<SignalId>,
 }
 
+/// The signals `code` assigns, directly or in the procedures it calls (a procedure drives
+/// its signal parameters through the calling process's drivers, LRM 14.7.2).
+fn assigned_signals(design: &Design, code: &[Instr]) -> Vec<SignalId> {
+    let mut out = Vec::new();
+    let mut seen = HashSet::new();
+    let mut todo = vec![code];
+    while let Some(code) = todo.pop() {
+        for instr in code {
+            match instr {
+                Instr::Assign { target, .. } => out.push(*target),
+                Instr::Call { sub, .. } => {
+                    if let Some(s) = design.subprograms.get(sub.index()) {
+                        if seen.insert(*sub) {
+                            todo.push(&s.code);
+                        }
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+    out
+}
+
 impl Signals {
     /// Creates a driver for every `(process, target)` pair of the design's assignments and
     /// rejects unresolved signals with several drivers.
@@ -86,12 +110,12 @@ impl Signals {
         let mut by_signal = vec![Vec::new(); design.signals.len()];
         let mut index = HashMap::new();
         for (p, process) in design.processes.iter().enumerate() {
-            for instr in &process.code {
-                if let Instr::Assign { target, .. } = instr {
-                    index.entry((p, *target)).or_insert_with(|| {
+            for target in assigned_signals(design, &process.code) {
+                {
+                    index.entry((p, target)).or_insert_with(|| {
                         by_signal[target.index()].push(drivers.len());
                         drivers.push(Driver {
-                            signal: *target,
+                            signal: target,
                             current: design.signals[target.index()].init.clone(),
                             waveform: VecDeque::new(),
                         });

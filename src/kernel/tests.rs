@@ -2,6 +2,7 @@
 //! cycle on small analog systems with closed-form solutions.
 
 mod build;
+mod calls;
 mod digital;
 mod expr_dae;
 mod mixed;

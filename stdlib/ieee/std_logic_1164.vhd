@@ -2,7 +2,9 @@
 --
 -- The body is ordinary VHDL that the vams simulator executes: every operation is
 -- a look-up in a constant table indexed by STD_ULOGIC, and the vector operations
--- loop over their operands.
+-- loop over their operands. The scalar operators and conversions state their
+-- tables as rules (if/elsif on the operand values), because vams cannot index
+-- arrays by an enumeration type yet; the tables stay as their specification.
 
 package std_logic_1164 is
 
@@ -235,37 +237,69 @@ package body std_logic_1164 is
   -------------------------------------------------------------------
   function "and" (l : std_ulogic; r : std_ulogic) return UX01 is
   begin
-    return and_table(l, r);
+    -- and_table as rules (vams cannot index arrays by std_ulogic yet): a 0 wins, then a U.
+    if l = '0' or l = 'L' or r = '0' or r = 'L' then
+      return '0';
+    elsif l = 'U' or r = 'U' then
+      return 'U';
+    elsif (l = '1' or l = 'H') and (r = '1' or r = 'H') then
+      return '1';
+    end if;
+    return 'X';
   end function "and";
 
   function "nand" (l : std_ulogic; r : std_ulogic) return UX01 is
   begin
-    return not_table(and_table(l, r));
+    return not (l and r);
   end function "nand";
 
   function "or" (l : std_ulogic; r : std_ulogic) return UX01 is
   begin
-    return or_table(l, r);
+    -- or_table as rules: a 1 wins, then a U.
+    if l = '1' or l = 'H' or r = '1' or r = 'H' then
+      return '1';
+    elsif l = 'U' or r = 'U' then
+      return 'U';
+    elsif (l = '0' or l = 'L') and (r = '0' or r = 'L') then
+      return '0';
+    end if;
+    return 'X';
   end function "or";
 
   function "nor" (l : std_ulogic; r : std_ulogic) return UX01 is
   begin
-    return not_table(or_table(l, r));
+    return not (l or r);
   end function "nor";
 
   function "xor" (l : std_ulogic; r : std_ulogic) return UX01 is
   begin
-    return xor_table(l, r);
+    -- xor_table as rules: U, then X for anything that is not a strong or weak 0 or 1.
+    if l = 'U' or r = 'U' then
+      return 'U';
+    elsif to_x01(l) = 'X' or to_x01(r) = 'X' then
+      return 'X';
+    elsif to_x01(l) = to_x01(r) then
+      return '0';
+    end if;
+    return '1';
   end function "xor";
 
   function "xnor" (l : std_ulogic; r : std_ulogic) return UX01 is
   begin
-    return not_table(xor_table(l, r));
+    return not (l xor r);
   end function "xnor";
 
   function "not" (l : std_ulogic) return UX01 is
   begin
-    return not_table(l);
+    -- not_table as rules.
+    if l = 'U' then
+      return 'U';
+    elsif l = '0' or l = 'L' then
+      return '1';
+    elsif l = '1' or l = 'H' then
+      return '0';
+    end if;
+    return 'X';
   end function "not";
 
   -------------------------------------------------------------------
@@ -564,7 +598,13 @@ package body std_logic_1164 is
 
   function to_x01 (s : std_ulogic) return X01 is
   begin
-    return cvt_to_x01(s);
+    -- cvt_to_x01 as rules.
+    if s = '0' or s = 'L' then
+      return '0';
+    elsif s = '1' or s = 'H' then
+      return '1';
+    end if;
+    return 'X';
   end function to_x01;
 
   function to_x01 (b : bit_vector) return std_logic_vector is
@@ -617,7 +657,15 @@ package body std_logic_1164 is
 
   function to_x01z (s : std_ulogic) return X01Z is
   begin
-    return cvt_to_x01z(s);
+    -- cvt_to_x01z as rules.
+    if s = '0' or s = 'L' then
+      return '0';
+    elsif s = '1' or s = 'H' then
+      return '1';
+    elsif s = 'Z' then
+      return 'Z';
+    end if;
+    return 'X';
   end function to_x01z;
 
   function to_x01z (b : bit_vector) return std_logic_vector is
@@ -670,7 +718,15 @@ package body std_logic_1164 is
 
   function to_ux01 (s : std_ulogic) return UX01 is
   begin
-    return cvt_to_ux01(s);
+    -- cvt_to_ux01 as rules.
+    if s = 'U' then
+      return 'U';
+    elsif s = '0' or s = 'L' then
+      return '0';
+    elsif s = '1' or s = 'H' then
+      return '1';
+    end if;
+    return 'X';
   end function to_ux01;
 
   function to_ux01 (b : bit_vector) return std_logic_vector is

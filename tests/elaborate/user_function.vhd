@@ -1,10 +1,13 @@
 entity t is end;
 architecture a of t is
-  function twice (v : real) return real is
+  function clipped (v : real) return real is
   begin
-    return 2.0 * v;
+    if v > 1.0 then
+      return 1.0;
+    end if;
+    return v;
   end function;
   quantity x : real;
 begin
-  x == twice(1.0);
+  x == clipped(2.0);
 end;

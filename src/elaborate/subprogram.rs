@@ -1,0 +1,491 @@
+//! User-defined functions and procedures: declarations and bodies (a package body completes
+//! its package's declarations), overload resolution and argument association at a call
+//! (positional, named, defaults), and lowering of a body to a [`design::Subprogram`] on its
+//! first call, once per distinct set of actual signals of its signal parameters (those are
+//! bound at elaboration, so the body reads and drives the actual signals).
+
+use std::cell::RefCell;
+use std::rc::Rc;
+
+use crate::ast::{self, Actual, Decl, ExprKind, Mode, ObjectClass, SeqStmt, SubprogramSpec};
+use crate::design::{self, Expr, Instr, ParamMode, SignalId, SubprogramId, SubprogramKind, VarId};
+use crate::source::Span;
+
+use super::decls::{designator, native};
+use super::error::ElabError;
+use super::expr::Typed;
+use super::process::{Proc, SubContext};
+use super::scope::{Body, Item, Param, Scope, Subprogram};
+use super::types::Ty;
+use super::{Elab, R};
+
+/// Arguments bound to a subprogram's parameters: one optional actual per parameter.
+type Slots<'e> = Vec<Option<&'e ast::Expr>>;
+
+/// The actuals of `args` by parameter of `sub`, or `None` when they do not fit (unknown formal,
+/// too many actuals, a parameter without actual or default).
+fn bind<'e>(sub: &Subprogram<'_>, args: &'e [ast::Assoc]) -> Option<Slots<'e>> {
+    let mut slots: Slots<'e> = vec![None; sub.params.len()];
+    for (k, a) in args.iter().enumerate() {
+        let Actual::Expr(actual) = &a.actual else {
+            return None;
+        };
+        let slot = match &a.formal {
+            Some(f) => match &f.kind {
+                ExprKind::Name(id) => sub.params.iter().position(|p| p.name == id.name)?,
+                _ => return None,
+            },
+            None => k,
+        };
+        if slot >= slots.len() || slots[slot].is_some() {
+            return None;
+        }
+        slots[slot] = Some(actual);
+    }
+    let complete = slots
+        .iter()
+        .zip(&sub.params)
+        .all(|(s, p)| s.is_some() || p.has_default);
+    complete.then_some(slots)
+}
+
+fn mode(m: Option<Mode>) -> ParamMode {
+    match m {
+        None | Some(Mode::In | Mode::Linkage) => ParamMode::In,
+        Some(Mode::Out) => ParamMode::Out,
+        Some(Mode::Inout | Mode::Buffer) => ParamMode::InOut,
+    }
+}
+
+/// A copy of `sc` in which the variables of an enclosing process cannot be named (their ids
+/// index the process's frame, not the subprogram's).
+fn body_scope<'a>(sc: &Scope<'a>) -> Scope<'a> {
+    let mut out = sc.clone();
+    for region in &mut out.regions {
+        for items in region.items.values_mut() {
+            for item in items.iter_mut() {
+                if matches!(item, Item::Variable { .. }) {
+                    *item = Item::Poison(Some(
+                        "a variable of the enclosing process, which a subprogram cannot read; pass it as a parameter".into(),
+                    ));
+                }
+            }
+        }
+    }
+    out
+}
+
+impl<'a> Elab<'a> {
+    /// A subprogram declaration, or a body (which completes a visible declaration of the same
+    /// signature, or declares the subprogram).
+    pub(super) fn subprogram_decl(
+        &mut self,
+        sc: &mut Scope<'a>,
+        spec: &'a SubprogramSpec,
+        body: Option<(&'a [Decl], &'a [SeqStmt])>,
+    ) -> R<()> {
+        let name = designator(spec);
+        let mut params = Vec::new();
+        for p in &spec.params {
+            let sub = self.subtype_indication(sc, &p.subtype)?;
+            for n in &p.names {
+                params.push(Param {
+                    name: n.name.clone(),
+                    ty: sub.ty.clone(),
+                    has_default: p.default.is_some(),
+                    default: p.default.as_ref(),
+                    is_signal: p.class == Some(ObjectClass::Signal),
+                    mode: mode(p.mode),
+                });
+            }
+        }
+        let ret = match &spec.return_type {
+            Some(t) => Some(self.type_mark(sc, t)?.ty.clone()),
+            None => None,
+        };
+        if let Some((decls, stmts)) = body {
+            let earlier = sc.lookup(&name).and_then(|items| {
+                items.iter().find_map(|i| match i {
+                    Item::Subprogram(s)
+                        if s.body.borrow().is_none()
+                            && s.native.is_none()
+                            && same_signature(s, &params, ret.as_ref()) =>
+                    {
+                        Some(s.clone())
+                    }
+                    _ => None,
+                })
+            });
+            if let Some(s) = earlier {
+                *s.body.borrow_mut() = Some(Rc::new(Body {
+                    decls,
+                    stmts,
+                    scope: body_scope(sc),
+                }));
+                return Ok(());
+            }
+        }
+        let native = match &self.native_names {
+            Some(names) if names.contains(&name) && body.is_none() => {
+                Some(native(&name, params.len(), spec.is_function))
+            }
+            _ => None,
+        };
+        let sub = Rc::new(Subprogram {
+            name: name.clone(),
+            params,
+            ret,
+            native,
+            span: spec.span,
+            body: RefCell::new(None),
+            instances: RefCell::new(Vec::new()),
+        });
+        sc.declare(&name, Item::Subprogram(sub.clone()));
+        if let Some((decls, stmts)) = body {
+            // Declared first, so that the body sees itself (recursion).
+            *sub.body.borrow_mut() = Some(Rc::new(Body {
+                decls,
+                stmts,
+                scope: body_scope(sc),
+            }));
+        }
+        Ok(())
+    }
+
+    /// The one subprogram of `subs` that `args` call: by arity and formal names, then by the
+    /// expected result type, then by the argument types.
+    pub(super) fn resolve_call<'e>(
+        &mut self,
+        sc: &Scope<'a>,
+        subs: Vec<Rc<Subprogram<'a>>>,
+        args: &'e [ast::Assoc],
+        function: bool,
+        want: Option<&Ty>,
+        span: Span,
+    ) -> R<(Rc<Subprogram<'a>>, Slots<'e>)> {
+        let name = subs.first().map(|s| s.name.clone()).unwrap_or_default();
+        let mut cands: Vec<(Rc<Subprogram<'a>>, Slots<'e>)> = subs
+            .into_iter()
+            .filter(|s| s.ret.is_some() == function)
+            .filter_map(|s| bind(&s, args).map(|slots| (s, slots)))
+            .collect();
+        let what = if function { "function" } else { "procedure" };
+        if cands.is_empty() {
+            return Err(self.error(ElabError::invalid(
+                span,
+                format!("no {what} `{name}` takes {} argument(s)", args.len()),
+                Some("check the number of arguments and the formal names (procedures are called as statements, functions in expressions)".into()),
+            )));
+        }
+        if cands.len() > 1 {
+            if let Some(w) = want {
+                let matching: Vec<_> = cands
+                    .iter()
+                    .filter(|(s, _)| s.ret.as_ref().is_some_and(|r| r.same(w)))
+                    .cloned()
+                    .collect();
+                if !matching.is_empty() {
+                    cands = matching;
+                }
+            }
+        }
+        if cands.len() > 1 {
+            // Lower each actual once without a hint and keep the overloads its type fits.
+            let mut types: Vec<(usize, Ty)> = Vec::new();
+            for (k, a) in args.iter().enumerate() {
+                if let Actual::Expr(e) = &a.actual {
+                    types.push((k, self.expr(sc, e, None)?.ty));
+                }
+            }
+            let fits = |(s, slots): &(Rc<Subprogram<'a>>, Slots<'e>)| {
+                slots.iter().zip(&s.params).all(|(slot, p)| match slot {
+                    None => true,
+                    Some(e) => args
+                        .iter()
+                        .position(|a| matches!(&a.actual, Actual::Expr(x) if std::ptr::eq(x, *e)))
+                        .and_then(|k| types.iter().find(|(i, _)| *i == k))
+                        .is_some_and(|(_, t)| t.same(&p.ty)),
+                })
+            };
+            match cands.iter().find(|c| fits(c)).cloned() {
+                Some(c) => cands = vec![c],
+                None => {
+                    let tys: Vec<String> = types.iter().map(|(_, t)| t.to_string()).collect();
+                    return Err(self.error(ElabError::invalid(
+                        span,
+                        format!("no overload of `{name}` takes ({})", tys.join(", ")),
+                        Some("give arguments of the parameter types of one declaration; VHDL never converts between integer and real implicitly".into()),
+                    )));
+                }
+            }
+        }
+        Ok(cands.remove(0))
+    }
+
+    /// The argument of a parameter: its actual, or its default.
+    fn argument(
+        &mut self,
+        sc: &Scope<'a>,
+        p: &Param<'a>,
+        actual: Option<&ast::Expr>,
+        span: Span,
+    ) -> R<Typed> {
+        match actual.or(p.default) {
+            Some(e) => self.expr_of(sc, e, &p.ty),
+            None => Err(self.error(ElabError::invalid(
+                span,
+                format!("no argument for the parameter `{}`", p.name),
+                Some("give it an actual, or declare a default value".into()),
+            ))),
+        }
+    }
+
+    /// The actual signal of a signal parameter.
+    fn signal_actual(
+        &mut self,
+        sc: &Scope<'a>,
+        p: &Param<'a>,
+        actual: Option<&ast::Expr>,
+        span: Span,
+    ) -> R<SignalId> {
+        let t = self.argument(sc, p, actual, span)?;
+        match t.e {
+            Expr::Signal(s) => Ok(s),
+            _ => Err(self.error(ElabError::invalid(
+                actual.map_or(span, |a| a.span),
+                format!(
+                    "the parameter `{}` is a signal: its actual must name a signal",
+                    p.name
+                ),
+                None,
+            ))),
+        }
+    }
+
+    /// A call of the user-defined function `sub` with bound actuals.
+    pub(super) fn user_function_call(
+        &mut self,
+        sc: &Scope<'a>,
+        sub: &Rc<Subprogram<'a>>,
+        slots: &Slots<'_>,
+        span: Span,
+    ) -> R<Expr> {
+        let mut args = Vec::new();
+        let mut signals = Vec::new();
+        for (p, actual) in sub.params.iter().zip(slots) {
+            if p.is_signal {
+                signals.push(self.signal_actual(sc, p, *actual, span)?);
+            } else {
+                args.push(self.argument(sc, p, *actual, span)?.e);
+            }
+        }
+        self.function_expr(sub, args, signals, span)
+    }
+
+    /// `FnCall` of the instance of `sub` for `signals`.
+    pub(super) fn function_expr(
+        &mut self,
+        sub: &Rc<Subprogram<'a>>,
+        args: Vec<Expr>,
+        signals: Vec<SignalId>,
+        span: Span,
+    ) -> R<Expr> {
+        let id = self.instance(sub, &signals, span)?;
+        Ok(Expr::FnCall {
+            sub: id,
+            args,
+            signals,
+        })
+    }
+
+    /// A call of the user-defined procedure `sub`: `in` arguments by value, `out` and `inout`
+    /// actuals (variables) copied back on return, signal actuals bound in the instance.
+    pub(super) fn user_procedure_call(
+        &mut self,
+        sc: &Scope<'a>,
+        sub: &Rc<Subprogram<'a>>,
+        slots: &Slots<'_>,
+        span: Span,
+    ) -> R<Instr> {
+        let mut args = Vec::new();
+        let mut signals = Vec::new();
+        let mut copy_back = Vec::new();
+        for (p, actual) in sub.params.iter().zip(slots) {
+            if p.is_signal {
+                signals.push(self.signal_actual(sc, p, *actual, span)?);
+                continue;
+            }
+            let param = VarId(args.len() as u32);
+            match p.mode {
+                ParamMode::In => args.push(self.argument(sc, p, *actual, span)?.e),
+                ParamMode::Out | ParamMode::InOut => {
+                    let Some(actual) = actual else {
+                        return Err(self.error(ElabError::invalid(
+                            span,
+                            format!("the `out` parameter `{}` needs an actual variable", p.name),
+                            None,
+                        )));
+                    };
+                    let items = self.lookup(sc, actual)?;
+                    let Some(Item::Variable {
+                        id,
+                        ty,
+                        readonly: false,
+                    }) = items.first()
+                    else {
+                        return Err(self.error(ElabError::WrongClass {
+                            span: actual.span,
+                            name: self.sources.snippet(actual.span).into(),
+                            found: items[0].class().into(),
+                            expected: "a variable".into(),
+                            help: Some(format!(
+                                "the actual of the `out`/`inout` parameter `{}` must be a variable (declare it `signal` to drive a signal)",
+                                p.name
+                            )),
+                        }));
+                    };
+                    if !ty.same(&p.ty) {
+                        self.error(ElabError::TypeMismatch {
+                            span: actual.span,
+                            expected: p.ty.to_string(),
+                            found: ty.to_string(),
+                            help: None,
+                        });
+                    }
+                    args.push(if p.mode == ParamMode::Out {
+                        Expr::Const(p.ty.default_value())
+                    } else {
+                        Expr::Var(*id)
+                    });
+                    copy_back.push((param, *id));
+                }
+            }
+        }
+        let id = self.instance(sub, &signals, span)?;
+        Ok(Instr::Call {
+            sub: id,
+            args,
+            copy_back,
+            signals,
+            span,
+        })
+    }
+
+    /// The design subprogram of `sub` for the actual signals `signals`, lowered on first use.
+    fn instance(
+        &mut self,
+        sub: &Rc<Subprogram<'a>>,
+        signals: &[SignalId],
+        span: Span,
+    ) -> R<SubprogramId> {
+        if let Some((_, id)) = sub.instances.borrow().iter().find(|(s, _)| s == signals) {
+            return Ok(*id);
+        }
+        let Some(body) = sub.body.borrow().clone() else {
+            return Err(self.error(ElabError::invalid(
+                span,
+                format!("the subprogram `{}` has no body", sub.name),
+                Some("write its body (in the package body for a package's subprogram)".into()),
+            )));
+        };
+        let kind = if sub.ret.is_some() {
+            SubprogramKind::Function
+        } else {
+            SubprogramKind::Procedure
+        };
+        let id = SubprogramId(self.design.subprograms.len() as u32);
+        // Registered before the body is lowered, so that recursive calls find it.
+        self.design.subprograms.push(design::Subprogram {
+            name: self.hier_name(&sub.name),
+            kind,
+            params: Vec::new(),
+            vars: Vec::new(),
+            code: vec![Instr::Return(None)],
+            span: sub.span,
+        });
+        sub.instances.borrow_mut().push((signals.to_vec(), id));
+        let mut sc = body.scope.clone();
+        sc.push();
+        let mut p = Proc::default();
+        p.subprogram = Some(SubContext {
+            ret: sub.ret.clone(),
+        });
+        let mut params = Vec::new();
+        let mut signals = signals.iter();
+        for param in &sub.params {
+            let item = if param.is_signal {
+                let Some(s) = signals.next() else {
+                    return Err(super::Reported);
+                };
+                Item::Signal {
+                    id: *s,
+                    ty: param.ty.clone(),
+                }
+            } else {
+                params.push(param.mode);
+                let var = p.new_var(&param.name, &param.ty, param.ty.default_value());
+                Item::Variable {
+                    id: var,
+                    ty: param.ty.clone(),
+                    readonly: param.mode == ParamMode::In,
+                }
+            };
+            sc.declare(&param.name, item);
+        }
+        let before = self.errors.len();
+        let decls_ok = self.process_decls(&mut sc, &mut p, body.decls).is_ok();
+        self.seq(&mut sc, &mut p, body.stmts);
+        p.emit(Instr::Return(None));
+        if !decls_ok || self.errors.len() > before {
+            return Err(super::Reported);
+        }
+        let (vars, code) = p.into_parts();
+        let slot = &mut self.design.subprograms[id.index()];
+        slot.params = params;
+        slot.vars = vars;
+        slot.code = code;
+        Ok(id)
+    }
+
+    /// A user-defined operator (`"and"` on `std_ulogic`) for operands of types `tys`, if one
+    /// is visible.
+    pub(super) fn user_operator(
+        &mut self,
+        sc: &Scope<'a>,
+        op: &str,
+        operands: Vec<Typed>,
+        span: Span,
+    ) -> Option<R<Typed>> {
+        let items = sc.lookup(&format!("\"{op}\""))?;
+        let sub = items.iter().find_map(|i| match i {
+            Item::Subprogram(s)
+                if s.ret.is_some()
+                    && s.params.len() == operands.len()
+                    && s.params.iter().all(|p| !p.is_signal)
+                    && s.params
+                        .iter()
+                        .zip(&operands)
+                        .all(|(p, t)| p.ty.same(&t.ty)) =>
+            {
+                Some(s.clone())
+            }
+            _ => None,
+        })?;
+        let ret = sub.ret.clone()?;
+        let args = operands.into_iter().map(|t| t.e).collect();
+        Some(
+            self.function_expr(&sub, args, Vec::new(), span)
+                .map(|e| Typed { e, ty: ret }),
+        )
+    }
+}
+
+fn same_signature(s: &Subprogram<'_>, params: &[Param<'_>], ret: Option<&Ty>) -> bool {
+    s.params.len() == params.len()
+        && s.params.iter().zip(params).all(|(a, b)| a.ty.same(&b.ty))
+        && match (&s.ret, ret) {
+            (Some(a), Some(b)) => a.same(b),
+            (None, None) => true,
+            _ => false,
+        }
+}
