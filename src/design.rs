@@ -62,6 +62,21 @@ pub struct Design {
     pub processes: Vec<Process>,
     /// `limit` specifications: the largest step for the quantities listed.
     pub limits: Vec<Limit>,
+    /// `Q'delayed(T)` lines: each defines its output quantity from the input's history.
+    pub delays: Vec<Delay>,
+}
+
+/// `output == input'delayed(delay)`: the input's value `delay` seconds ago, interpolated from
+/// the integrator's accepted points (before time 0, its quiescent value). In the quiescent
+/// domain the output equals the input (LRM 1076.1, 14.1). The analog engine owns the history
+/// and generates the defining equation.
+#[derive(Clone, Debug)]
+pub struct Delay {
+    pub output: QuantityId,
+    pub input: QuantityId,
+    /// Seconds, positive.
+    pub delay: f64,
+    pub span: Span,
 }
 
 /// A scalar nature, e.g. `electrical is voltage across current through electrical_ref reference`.
@@ -145,6 +160,9 @@ pub enum SignalKind {
     /// by the analog solver. `quantity` and `level` are analog expressions (`level` usually a
     /// constant).
     Above { quantity: Expr, level: Expr },
+    /// A signal of a process that elaboration generates (the state of `S'ramp`, `S'slew`,
+    /// `Q'zoh`, `Q'ztf`): driven like a declared one, but not a probe of its own.
+    Implicit,
 }
 
 /// A process (explicit, or the equivalent process of a concurrent statement: signal

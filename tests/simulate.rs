@@ -236,3 +236,162 @@ fn schmitt_trigger_switches_at_the_thresholds() {
         assert!((t - x).abs() < 1e-6, "fall at {t}, analytic {x}");
     }
 }
+
+/// Largest deviation of `name` from `exact` over the recorded points in `[from, to]`.
+fn worst_error(result: &SimResult, name: &str, from: f64, to: f64, exact: impl Fn(f64) -> f64) -> f64 {
+    let w = &result.waveforms;
+    let col = w.column(name).unwrap_or_else(|| panic!("{name} recorded"));
+    w.times
+        .iter()
+        .zip(&col.values)
+        .filter(|(t, _)| (from..=to).contains(*t))
+        .map(|(&t, &v)| (v - exact(t)).abs())
+        .fold(0.0, f64::max)
+}
+
+fn options(stop: f64) -> SimOptions {
+    SimOptions {
+        stop,
+        reltol: 1e-6,
+        ..SimOptions::default()
+    }
+}
+
+#[test]
+fn ltf_first_order_low_pass_step() {
+    let result = run("ltf_first_order", options(6e-3));
+    assert_eq!(result.outcome, Outcome::Finished);
+    let tau = 1e-3;
+    // Before the step: the quiescent value 0; after: 1 - exp(-(t - 1 ms) / tau). BDF at
+    // reltol 1e-6: global error under 1e-4 on a unit step.
+    let before = worst_error(&result, "y", 0.0, 0.999e-3, |_| 0.0);
+    assert!(before < 1e-12, "before the step: {before}");
+    let err = worst_error(&result, "y", 1.0001e-3, 6e-3, |t| 1.0 - (-(t - 1e-3) / tau).exp());
+    assert!(err < 1e-4, "step response error {err}");
+}
+
+#[test]
+fn ltf_second_order_underdamped_step() {
+    let result = run("ltf_second_order", options(11e-3));
+    assert_eq!(result.outcome, Outcome::Finished);
+    let (w, zeta) = (1e3_f64, 0.2_f64);
+    let wd = w * (1.0 - zeta * zeta).sqrt();
+    let exact = |t: f64| {
+        let s = t - 1e-3;
+        1.0 - (-zeta * w * s).exp() * ((wd * s).cos() + zeta * w / wd * (wd * s).sin())
+    };
+    let err = worst_error(&result, "y", 1.0001e-3, 11e-3, exact);
+    // Overshoot 1 + exp(-pi zeta / sqrt(1 - zeta^2)) = 1.53: 5e-4 absolute is 0.1 %.
+    assert!(err < 5e-4, "step response error {err}");
+}
+
+#[test]
+fn delayed_sine_is_the_shifted_sine() {
+    let result = run("delayed_sine", options(3e-3));
+    assert_eq!(result.outcome, Outcome::Finished);
+    let (f, d) = (1e3, 0.25e-3);
+    let pi2 = 2.0 * std::f64::consts::PI;
+    let early = worst_error(&result, "y", 0.0, d * 0.999, |_| 0.0);
+    assert!(early < 1e-9, "before the delay: {early}");
+    // Interpolated history of a BDF solution: 1e-3 of the amplitude.
+    let err = worst_error(&result, "y", d * 1.01, 3e-3, |t| (pi2 * f * (t - d)).sin());
+    assert!(err < 1e-3, "delayed sine error {err}");
+}
+
+#[test]
+fn ramp_and_slew_of_a_signal_step_are_linear_between_breakpoints() {
+    let result = run("ramp_step", options(5e-3));
+    assert_eq!(result.outcome, Outcome::Finished);
+    let shape = |t: f64| {
+        if t < 1e-3 {
+            0.0
+        } else if t < 1.5e-3 {
+            (t - 1e-3) / 0.5e-3
+        } else if t < 3e-3 {
+            1.0
+        } else if t < 4e-3 {
+            1.0 - (t - 3e-3) / 1e-3
+        } else {
+            0.0
+        }
+    };
+    for name in ["r", "l"] {
+        let err = worst_error(&result, name, 0.0, 5e-3, shape);
+        assert!(err < 1e-9, "{name}: error {err}");
+        // The breakpoints are recorded points: the ramp's corners land exactly.
+        let w = &result.waveforms;
+        for corner in [1e-3, 1.5e-3, 3e-3, 4e-3] {
+            assert!(
+                w.times.iter().any(|&t| (t - corner).abs() < 1e-12),
+                "{name}: no point at {corner}"
+            );
+        }
+    }
+    let instant = |t: f64| if (1e-3..3e-3).contains(&t) { 1.0 } else { 0.0 };
+    let w = &result.waveforms;
+    let i = w.column("i").expect("i recorded");
+    for (&t, &v) in w.times.iter().zip(&i.values) {
+        // At the event times both the value before and after are recorded.
+        if [1e-3, 3e-3].iter().all(|e: &f64| (t - e).abs() > 1e-12) {
+            assert!((v - instant(t)).abs() < 1e-9, "i at {t}: {v}");
+        }
+    }
+}
+
+#[test]
+fn slew_of_a_quantity_limits_its_slope() {
+    let result = run("slew_quantity", options(3e-3));
+    assert_eq!(result.outcome, Outcome::Finished);
+    let w = &result.waveforms;
+    let y = &w.column("y").expect("y recorded").values;
+    let x = &w.column("x").expect("x recorded").values;
+    let mut tracked = 0;
+    let mut slewed = 0;
+    for k in 1..w.times.len() {
+        let h = w.times[k] - w.times[k - 1];
+        if h <= 0.0 {
+            continue;
+        }
+        let slope = (y[k] - y[k - 1]) / h;
+        assert!(slope.abs() < 2000.0 * (1.0 + 1e-6) + 1e-6, "slope {slope} at {}", w.times[k]);
+        if (y[k] - x[k]).abs() < 1e-6 {
+            tracked += 1;
+        } else {
+            slewed += 1;
+        }
+    }
+    assert!(tracked > 10 && slewed > 10, "tracked {tracked}, slewed {slewed}");
+    // Starting at 0 the sine rises at 6283/s: the output slews at 2000/s. It meets the sine
+    // again on its way down, after tracking nothing in between.
+    let at = |t: f64| w.value_at("y", t).expect("y recorded");
+    assert!((at(0.1e-3) - 0.2).abs() < 1e-6, "y(0.1 ms) = {}", at(0.1e-3));
+}
+
+#[test]
+fn zoh_of_a_ramp_is_a_staircase_and_ztf_accumulates() {
+    let result = run("zoh_ramp", options(4.9e-3));
+    assert_eq!(result.outcome, Outcome::Finished);
+    let w = &result.waveforms;
+    // Just before and after each sample (at 0.5 ms + k ms): the previous and new stair.
+    for k in 0..4 {
+        let ts = 0.5e-3 + k as f64 * 1e-3;
+        let mid = ts + 0.5e-3;
+        let held = w.value_at("held", mid).expect("held recorded");
+        assert!((held - 1000.0 * ts).abs() < 1e-9, "held at {mid}: {held}");
+        let acc = w.value_at("acc", mid).expect("acc recorded");
+        assert!((acc - (k + 1) as f64).abs() < 1e-12, "acc at {mid}: {acc}");
+    }
+    let before = w.value_at("held", 0.4e-3).expect("held recorded");
+    assert!(before.abs() < 1e-12, "held before the first sample: {before}");
+}
+
+#[test]
+fn integ_and_dot_dot_of_a_cubic() {
+    let result = run("integ_dotdot", options(2.0));
+    assert_eq!(result.outcome, Outcome::Finished);
+    let integ = worst_error(&result, "xi", 0.0, 2.0, |t| t.powi(4) / 4.0);
+    // BDF2 integration of t^3 over [0, 2] at reltol 1e-6: relative 1e-4 of the final 4.
+    assert!(integ < 4e-4, "x'integ error {integ}");
+    let dd = worst_error(&result, "xdd", 0.1, 2.0, |t| 6.0 * t);
+    assert!(dd < 1e-2, "x'dot'dot error {dd}");
+}

@@ -165,7 +165,12 @@ impl Printer<'_> {
             }
             Sym::Signal(s) => match self.design.signals.get(*s) {
                 Some(sig) => out.push_str(&sig.name),
-                None => out.push_str("<source scale>"),
+                // Past the design's signals: the source scale, then the delay histories.
+                None => match *s - self.design.signals.len() {
+                    0 => out.push_str("<source scale>"),
+                    1 => out.push_str("<history ready>"),
+                    k => out.push_str(&format!("<history {}>", k - 2)),
+                },
             },
             Sym::Now => out.push_str("now"),
             Sym::Un(op @ (Un::Neg | Un::Not), a) => {

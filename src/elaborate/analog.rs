@@ -364,7 +364,7 @@ impl<'a> Elab<'a> {
         Ok(())
     }
 
-    fn aux_quantity(&mut self, of: QuantityId, suffix: &str) -> QuantityId {
+    pub(super) fn aux_quantity(&mut self, of: QuantityId, suffix: &str) -> QuantityId {
         let base = &self.design.quantities[of.index()];
         let (name, span) = (format!("{}'{suffix}", base.name), base.span);
         let id = QuantityId(self.design.quantities.len() as u32);

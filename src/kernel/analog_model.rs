@@ -13,6 +13,12 @@ pub(crate) trait AnalogModel: DaeSystem {
     fn reads_signal(&self, s: SignalId) -> bool;
     fn above_signals(&self) -> &[SignalId];
     fn abstol(&self, default: f64) -> Vec<f64>;
+    /// Records an accepted point for `Q'delayed` (systems without delays ignore it).
+    fn record_history(&mut self, _t: f64, _x: &[f64], _xdot: &[f64]) {}
+    /// The shortest `Q'delayed` delay, a bound on the step.
+    fn shortest_delay(&self) -> Option<f64> {
+        None
+    }
     #[allow(clippy::too_many_arguments)]
     fn quiescent_point(
         &mut self,
@@ -43,6 +49,12 @@ impl AnalogModel for AnalogSystem {
     }
     fn abstol(&self, default: f64) -> Vec<f64> {
         AnalogSystem::abstol(self, default)
+    }
+    fn record_history(&mut self, t: f64, x: &[f64], xdot: &[f64]) {
+        AnalogSystem::record_history(self, t, x, xdot)
+    }
+    fn shortest_delay(&self) -> Option<f64> {
+        AnalogSystem::shortest_delay(self)
     }
     fn quiescent_point(
         &mut self,
