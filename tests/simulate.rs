@@ -378,8 +378,9 @@ fn zoh_of_a_ramp_is_a_staircase_and_ztf_accumulates() {
         let mid = ts + 0.5e-3;
         let held = w.value_at("held", mid).expect("held recorded");
         assert!((held - 1000.0 * ts).abs() < 1e-9, "held at {mid}: {held}");
-        let acc = w.value_at("acc", mid).expect("acc recorded");
-        assert!((acc - (k + 1) as f64).abs() < 1e-12, "acc at {mid}: {acc}");
+        // The accumulator samples at k ms: k + 1 after the k-th sample.
+        let acc = w.value_at("acc", ts).expect("acc recorded");
+        assert!((acc - (k + 1) as f64).abs() < 1e-12, "acc at {ts}: {acc}");
     }
     let before = w.value_at("held", 0.4e-3).expect("held recorded");
     assert!(before.abs() < 1e-12, "held before the first sample: {before}");

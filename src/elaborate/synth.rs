@@ -4,7 +4,7 @@
 
 use crate::ast;
 use crate::design::{BinaryOp, Equation, Expr, QuantityId, Signal, SignalId, SignalKind, Type};
-use crate::design::{UnaryOp, Value};
+use crate::design::{Builtin, UnaryOp, Value};
 use crate::source::Span;
 
 use super::error::ElabError;
@@ -44,9 +44,9 @@ pub(super) fn cond(c: Expr, a: Expr, b: Expr) -> Expr {
     Expr::If(Box::new(c), Box::new(a), Box::new(b))
 }
 
-/// `now` as a real number of seconds (`now / 1 sec`): processes keep `time` and `real` apart.
+/// `now` as a real number of seconds: processes keep `time` and `real` apart.
 pub(super) fn now_seconds() -> Expr {
-    div(Expr::Now, Expr::Const(Value::Time(1.0)))
+    Expr::Call(Builtin::ToReal, vec![Expr::Now])
 }
 
 /// `c0 * x0 + c1 * x1 + ...`, dropping zero coefficients (`0.0` when all are zero).
