@@ -296,7 +296,8 @@ impl AnalogSystem {
     fn load_delays(&mut self, t: f64) {
         for (k, line) in self.delay_lines.iter().enumerate() {
             if !line.is_empty() {
-                self.signals[delay::history_slot(self.design_signals, k)] = line.value_at(t - line.delay);
+                self.signals[delay::history_slot(self.design_signals, k)] =
+                    line.value_at(t - line.delay);
             }
         }
     }

@@ -25,8 +25,8 @@ mod decls;
 mod delay;
 mod error;
 mod expr;
-mod follow;
 mod fold;
+mod follow;
 mod generics;
 mod hier;
 mod library;
@@ -35,7 +35,6 @@ mod process;
 mod sampled;
 mod scope;
 mod simultaneous;
-mod slew;
 mod synth;
 #[cfg(test)]
 mod tests;

@@ -161,7 +161,10 @@ fn check_indices(design: &Design) -> Result<(), AnalogError> {
     for d in &design.delays {
         let n = design.quantities.len();
         if d.output.index() >= n || d.input.index() >= n {
-            return Err(malformed(d.span, "a 'delayed names an unknown quantity".into()));
+            return Err(malformed(
+                d.span,
+                "a 'delayed names an unknown quantity".into(),
+            ));
         }
     }
     for s in &design.signals {

@@ -111,9 +111,13 @@ impl<'a> Elab<'a> {
                     Expr::Signal(s) if p.ty.same(&Ty::Real) => {
                         self.signal_follow_attribute(sc, s, name, args, span)?
                     }
-                    Expr::Quantity(q) if name == "slew" => self.quantity_slew_attribute(sc, q, args, span)?,
-                    _ if name == "slew" => {
-                        return Err(self.wrong_class(prefix, &p, "a real signal or a quantity", name));
+                    Expr::Quantity(_) => {
+                        return Err(self.error(ElabError::unsupported(
+                            attr.span,
+                            format!("`'{name}` of a quantity"),
+                            "vams supports 'ramp and 'slew of real signals; for a quantity, write the \
+                             slope limit as an equation",
+                        )));
                     }
                     _ => return Err(self.wrong_class(prefix, &p, "a real signal", name)),
                 };
@@ -150,7 +154,7 @@ impl<'a> Elab<'a> {
                 Err(self.error(ElabError::unsupported(
                     attr.span,
                     format!("the attribute `'{name}`"),
-                    "vams supports 'dot, 'integ, 'above, 'delayed, 'slew, 'ltf, 'zoh and 'ztf on quantities and 'event, 'active, 'last_value, 'last_event, 'ramp and 'slew on signals",
+                    "vams supports 'dot, 'integ, 'above, 'delayed, 'ltf, 'zoh and 'ztf on quantities and 'event, 'active, 'last_value, 'last_event, 'ramp and 'slew on signals",
                 )))
             }
             _ => Err(self.error(ElabError::unsupported(

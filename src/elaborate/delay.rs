@@ -37,7 +37,12 @@ impl<'a> Elab<'a> {
         if delay == 0.0 {
             return Ok(Expr::Quantity(q));
         }
-        if let Some(d) = self.design.delays.iter().find(|d| d.input == q && d.delay == delay) {
+        if let Some(d) = self
+            .design
+            .delays
+            .iter()
+            .find(|d| d.input == q && d.delay == delay)
+        {
             return Ok(Expr::Quantity(d.output));
         }
         let output = self.aux_quantity(q, &format!("delayed({delay})"));

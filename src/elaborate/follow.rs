@@ -35,7 +35,11 @@ impl Pace {
             Pace::Duration { rise, fall } => cond(rising, real(rise), real(fall)),
             Pace::Slope { rise, fall } => {
                 let delta = sub(tgt, cur);
-                cond(rising, div(delta.clone(), real(rise)), div(delta, real(fall)))
+                cond(
+                    rising,
+                    div(delta.clone(), real(rise)),
+                    div(delta, real(fall)),
+                )
             }
         }
     }
@@ -88,7 +92,10 @@ impl<'a> Elab<'a> {
         let v0 = self.implicit_signal(format!("{base}.v0"), init, span);
         let slope = self.implicit_signal(format!("{base}.slope"), 0.0, span);
         let t0 = self.implicit_signal(format!("{base}.t0"), 0.0, span);
-        let value = add(Expr::Signal(v0), mul(Expr::Signal(slope), sub(now_seconds(), Expr::Signal(t0))));
+        let value = add(
+            Expr::Signal(v0),
+            mul(Expr::Signal(slope), sub(now_seconds(), Expr::Signal(t0))),
+        );
         let code = follow_code(s, [v0, slope, t0], &value, pace);
         let vars = ["tgt", "endt", "cur", "d"]
             .iter()
@@ -110,7 +117,12 @@ impl<'a> Elab<'a> {
 }
 
 /// The follower process over variables `tgt, endt, cur, d` (see the module comment).
-fn follow_code(s: SignalId, [v0, slope, t0]: [SignalId; 3], value: &Expr, pace: Pace) -> Vec<Instr> {
+fn follow_code(
+    s: SignalId,
+    [v0, slope, t0]: [SignalId; 3],
+    value: &Expr,
+    pace: Pace,
+) -> Vec<Instr> {
     let (tgt, endt, cur, d) = (VarId(0), VarId(1), VarId(2), VarId(3));
     let v = Expr::Var;
     let assign = |target: SignalId, value: Expr| Instr::Assign {
@@ -153,7 +165,10 @@ fn follow_code(s: SignalId, [v0, slope, t0]: [SignalId; 3], value: &Expr, pace: 
         /* 4 */ set(cur, cond(ended, v(tgt), value.clone())),
         /* 5 */ set(tgt, Expr::Signal(s)),
         /* 6 */ set(d, pace.duration(v(tgt), v(cur))),
-        /* 7 */ Instr::JumpIfNot { cond: ramping, target: 13 },
+        /* 7 */ Instr::JumpIfNot {
+            cond: ramping,
+            target: 13,
+        },
         /* 8 */ assign(v0, v(cur)),
         /* 9 */ assign(slope, div(sub(v(tgt), v(cur)), v(d))),
         /* 10 */ assign(t0, now_seconds()),

@@ -75,7 +75,9 @@ impl<'a> Elab<'a> {
             return Err(self.error(ElabError::invalid(
                 span,
                 "`'ltf` takes two arguments: the numerator and denominator coefficients",
-                Some("`q'ltf(num, den)` with real_vector constants in ascending powers of s".into()),
+                Some(
+                    "`q'ltf(num, den)` with real_vector constants in ascending powers of s".into(),
+                ),
             )));
         };
         let num = self.coefficients(sc, num, "the numerator of `'ltf`")?;
@@ -98,7 +100,10 @@ impl<'a> Elab<'a> {
         let out_name = self.qname(out);
         if n == 0 {
             let gain = tf.num[0] / tf.den[0];
-            let residual = sub(Expr::Quantity(out), synth::mul(synth::real(gain), Expr::Quantity(q)));
+            let residual = sub(
+                Expr::Quantity(out),
+                synth::mul(synth::real(gain), Expr::Quantity(q)),
+            );
             self.generated_equation(residual, span, format!("{out_name} == {gain} * {input}"));
             return out;
         }
@@ -116,7 +121,11 @@ impl<'a> Elab<'a> {
             self.generated_equation(residual, span, text);
         }
         let top = Expr::Dot(states[n - 1]);
-        let lhs = linear((0..n).map(|i| (tf.den[i], x(i))).chain([(tf.den[n], top.clone())]));
+        let lhs = linear(
+            (0..n)
+                .map(|i| (tf.den[i], x(i)))
+                .chain([(tf.den[n], top.clone())]),
+        );
         self.generated_equation(
             sub(lhs, Expr::Quantity(q)),
             span,

@@ -89,7 +89,13 @@ impl<'a> Elab<'a> {
     }
 
     /// The period (argument `first`) and optional initial delay (`first + 1`).
-    fn sampling(&mut self, sc: &Scope<'a>, args: &[ast::Assoc], first: usize, span: Span) -> R<Sampling> {
+    fn sampling(
+        &mut self,
+        sc: &Scope<'a>,
+        args: &[ast::Assoc],
+        first: usize,
+        span: Span,
+    ) -> R<Sampling> {
         let period = match arg(args, first) {
             Some(e) => self.static_real(sc, e, "the sampling period")?,
             None => 0.0,
@@ -98,19 +104,31 @@ impl<'a> Elab<'a> {
             Some(e) => self.static_real(sc, e, "the initial delay")?,
             None => 0.0,
         };
-        if !(period > 0.0 && period.is_finite()) || !(initial_delay >= 0.0 && initial_delay.is_finite()) {
+        if !(period > 0.0 && period.is_finite())
+            || !(initial_delay >= 0.0 && initial_delay.is_finite())
+        {
             return Err(self.error(ElabError::invalid(
                 span,
                 "the sampling period must be positive and the initial delay non-negative",
                 Some("both are reals in seconds: `q'zoh(1.0e-3)`".into()),
             )));
         }
-        Ok(Sampling { period, initial_delay })
+        Ok(Sampling {
+            period,
+            initial_delay,
+        })
     }
 
     /// Wraps `sample` (the work at each sample) in the sampling loop:
     /// `wait for initial_delay; loop sample; wait for T; end loop`.
-    fn sampling_process(&mut self, name: String, vars: Vec<Variable>, sample: Vec<Instr>, s: Sampling, span: Span) {
+    fn sampling_process(
+        &mut self,
+        name: String,
+        vars: Vec<Variable>,
+        sample: Vec<Instr>,
+        s: Sampling,
+        span: Span,
+    ) {
         let wait = |t: f64| Instr::Wait {
             on: Vec::new(),
             until: None,
@@ -130,7 +148,13 @@ impl<'a> Elab<'a> {
 }
 
 /// The variables and per-sample instructions of the direct-form filter `num / den`.
-fn ztf_code(q: QuantityId, out: SignalId, num: &[f64], den: &[f64], name: &str) -> (Vec<Variable>, Vec<Instr>) {
+fn ztf_code(
+    q: QuantityId,
+    out: SignalId,
+    num: &[f64],
+    den: &[f64],
+    name: &str,
+) -> (Vec<Variable>, Vec<Instr>) {
     let mut vars = Vec::new();
     let mut var = |n: String| {
         vars.push(Variable {
@@ -143,23 +167,37 @@ fn ztf_code(q: QuantityId, out: SignalId, num: &[f64], den: &[f64], name: &str) 
     let u = var(format!("{name}.u"));
     let y = var(format!("{name}.y"));
     // Past inputs u(k-1)..u(k-m) and outputs y(k-1)..y(k-n).
-    let past_u: Vec<VarId> = (1..num.len()).map(|i| var(format!("{name}.u{i}"))).collect();
-    let past_y: Vec<VarId> = (1..den.len()).map(|i| var(format!("{name}.y{i}"))).collect();
+    let past_u: Vec<VarId> = (1..num.len())
+        .map(|i| var(format!("{name}.u{i}")))
+        .collect();
+    let past_y: Vec<VarId> = (1..den.len())
+        .map(|i| var(format!("{name}.y{i}")))
+        .collect();
     let v = |id: VarId| Expr::Var(id);
     let feed = linear(
-        std::iter::once((num[0], v(u))).chain(past_u.iter().zip(&num[1..]).map(|(&p, &c)| (c, v(p)))),
+        std::iter::once((num[0], v(u)))
+            .chain(past_u.iter().zip(&num[1..]).map(|(&p, &c)| (c, v(p)))),
     );
     let back = linear(past_y.iter().zip(&den[1..]).map(|(&p, &c)| (c, v(p))));
     let mut code = vec![
-        Instr::SetVar { var: u, value: Expr::Quantity(q) },
-        Instr::SetVar { var: y, value: div(sub(feed, back), real(den[0])) },
+        Instr::SetVar {
+            var: u,
+            value: Expr::Quantity(q),
+        },
+        Instr::SetVar {
+            var: y,
+            value: div(sub(feed, back), real(den[0])),
+        },
     ];
     // Shift the delay lines, oldest first.
     for past in [(&past_u, u), (&past_y, y)] {
         let (line, newest) = past;
         for i in (0..line.len()).rev() {
             let from = if i == 0 { newest } else { line[i - 1] };
-            code.push(Instr::SetVar { var: line[i], value: v(from) });
+            code.push(Instr::SetVar {
+                var: line[i],
+                value: v(from),
+            });
         }
     }
     code.push(Instr::Assign {

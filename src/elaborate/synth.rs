@@ -81,12 +81,21 @@ impl<'a> Elab<'a> {
     pub(super) fn static_real(&mut self, sc: &Scope<'a>, e: &ast::Expr, what: &str) -> R<f64> {
         match self.static_value(sc, e, &Ty::Real, what)? {
             Value::Real(v) => Ok(v),
-            _ => Err(self.error(ElabError::invalid(e.span, format!("{what} must be a real"), None))),
+            _ => Err(self.error(ElabError::invalid(
+                e.span,
+                format!("{what} must be a real"),
+                None,
+            ))),
         }
     }
 
     /// A static `real_vector` of coefficients (a single real counts as a one-element vector).
-    pub(super) fn coefficients(&mut self, sc: &Scope<'a>, e: &ast::Expr, what: &str) -> R<Vec<f64>> {
+    pub(super) fn coefficients(
+        &mut self,
+        sc: &Scope<'a>,
+        e: &ast::Expr,
+        what: &str,
+    ) -> R<Vec<f64>> {
         let want = match sc.lookup("real_vector") {
             Some([Item::Type(s), ..]) => Some(s.ty.clone()),
             _ => None,

@@ -145,7 +145,9 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             }
         }
         // `Q'delayed` reads accepted history only if no step is longer than its delay.
-        let max_step = self.max_step(options)?.min(sys.shortest_delay().unwrap_or(f64::INFINITY));
+        let max_step = self
+            .max_step(options)?
+            .min(sys.shortest_delay().unwrap_or(f64::INFINITY));
         let topts = TransientOptions {
             reltol: options.reltol,
             abstol: abstol.iter().copied().fold(DEFAULT_ABSTOL, f64::min),
