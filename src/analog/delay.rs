@@ -79,6 +79,17 @@ fn hermite(ta: f64, xa: f64, da: f64, tb: f64, xb: f64, db: f64, tau: f64) -> f6
     h00 * xa + h10 * h * da + h01 * xb + h11 * h * db
 }
 
+/// Signal-slot layout after the design's signals: the source scale, then the "history
+/// ready" flag (0 at the quiescent point, where `Q'delayed(T) = Q`), then one slot per line
+/// holding its delayed value at the time being evaluated.
+pub fn ready_slot(design_signals: usize) -> usize {
+    design_signals + 1
+}
+
+pub fn history_slot(design_signals: usize, line: usize) -> usize {
+    design_signals + 2 + line
+}
+
 #[cfg(test)]
 mod tests {
     use super::DelayLine;
@@ -128,15 +139,4 @@ mod tests {
         assert_eq!(line.points.back().map(|p| p.0), Some(9.5));
         assert!(line.points.iter().all(|p| p.0 <= 9.5));
     }
-}
-
-/// Signal-slot layout after the design's signals: the source scale, then the "history
-/// ready" flag (0 at the quiescent point, where `Q'delayed(T) = Q`), then one slot per line
-/// holding its delayed value at the time being evaluated.
-pub fn ready_slot(design_signals: usize) -> usize {
-    design_signals + 1
-}
-
-pub fn history_slot(design_signals: usize, line: usize) -> usize {
-    design_signals + 2 + line
 }

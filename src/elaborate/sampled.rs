@@ -104,9 +104,9 @@ impl<'a> Elab<'a> {
             Some(e) => self.static_real(sc, e, "the initial delay")?,
             None => 0.0,
         };
-        if !(period > 0.0 && period.is_finite())
-            || !(initial_delay >= 0.0 && initial_delay.is_finite())
-        {
+        let valid =
+            period > 0.0 && period.is_finite() && initial_delay >= 0.0 && initial_delay.is_finite();
+        if !valid {
             return Err(self.error(ElabError::invalid(
                 span,
                 "the sampling period must be positive and the initial delay non-negative",
