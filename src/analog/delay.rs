@@ -117,7 +117,7 @@ mod tests {
 
     #[test]
     fn discontinuities_keep_the_value_after() {
-        let mut line = DelayLine::new(0, 1.0);
+        let mut line = DelayLine::new(0, 5.0);
         line.record(0.0, 0.0, 0.0);
         line.record(1.0, 0.0, 0.0);
         line.record(1.0, 5.0, 0.0);
