@@ -35,6 +35,7 @@ mod process;
 mod sampled;
 mod scope;
 mod simultaneous;
+mod slew;
 mod synth;
 #[cfg(test)]
 mod tests;

@@ -347,6 +347,58 @@ fn ramp_and_slew_of_a_signal_step_are_linear_between_breakpoints() {
 }
 
 #[test]
+fn slew_of_a_quantity_limits_its_slope() {
+    let result = run("slew_quantity", options(3e-3));
+    assert_eq!(result.outcome, Outcome::Finished);
+    let w = &result.waveforms;
+    let y = &w.column("y").expect("y recorded").values;
+    let x = &w.column("x").expect("x recorded").values;
+    let (mut tracked, mut slewed) = (0, 0);
+    for k in 1..w.times.len() {
+        let h = w.times[k] - w.times[k - 1];
+        // Steps of no length (event rows) and the femtosecond step before the first switch
+        // (the quiescent point has x'dot = 0, so the switch is located just after t = 0).
+        if h <= 0.0 || (y[k] - y[k - 1]).abs() < 1e-9 {
+            continue;
+        }
+        let slope = (y[k] - y[k - 1]) / h;
+        assert!(
+            slope.abs() < 5000.0 * (1.0 + 1e-6),
+            "slope {slope} at {}",
+            w.times[k]
+        );
+        if (y[k] - x[k]).abs() < 1e-9 {
+            tracked += 1;
+        } else {
+            slewed += 1;
+        }
+    }
+    assert!(
+        tracked > 10 && slewed > 10,
+        "tracked {tracked}, slewed {slewed}"
+    );
+    // From 0 the sine rises at 6283/s: the output rises at exactly 5000/s until it meets the
+    // sine, at sin(2 pi 1000 t) = 5000 t, where the sine is slower and is tracked.
+    let pi2k = 2.0 * std::f64::consts::PI * 1e3;
+    let (mut lo, mut hi) = (0.1e-3, 0.25e-3);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if (pi2k * mid).sin() > 5000.0 * mid {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let meet = lo;
+    let err = worst_error(&result, "y", 1e-9, meet * 0.999, |t| 5000.0 * t);
+    assert!(err < 1e-9, "rising segment error {err}");
+    assert!(
+        w.times.iter().any(|&t| (t - meet).abs() < 1e-9),
+        "no switch at the meeting point {meet}"
+    );
+}
+
+#[test]
 fn zoh_of_a_ramp_is_a_staircase_and_ztf_accumulates() {
     let result = run("zoh_ramp", options(4.9e-3));
     assert_eq!(result.outcome, Outcome::Finished);

@@ -76,12 +76,7 @@ impl Origin {
             }
             Origin::Delayed(k) => {
                 let d = &design.delays[k];
-                format!(
-                    "{} == {}'delayed({})",
-                    design.quantities[d.output.index()].name,
-                    design.quantities[d.input.index()].name,
-                    d.delay
-                )
+                format!("history of {}", design.quantities[d.output.index()].name)
             }
         }
     }

@@ -45,6 +45,7 @@ pub fn listing(sys: &AnalogSystem, design: &Design, sources: &SourceMap) -> Stri
         .iter()
         .map(|origin| match *origin {
             Origin::User(k) => location(design.equations[k].span, sources),
+            Origin::Delayed(k) => location(design.delays[k].span, sources),
             other => other.describe(design),
         })
         .collect();

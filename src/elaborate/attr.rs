@@ -94,6 +94,13 @@ impl<'a> Elab<'a> {
             }
             "ltf" | "zoh" | "ztf" | "delayed" => {
                 let p = self.expr(sc, prefix, None)?;
+                if let (Expr::Signal(_), "delayed") = (&p.e, name) {
+                    return Err(self.error(ElabError::unsupported(
+                        attr.span,
+                        "the signal attribute `'delayed`",
+                        "assign a delayed copy in a process: `d <= transport s after 1 ms;`",
+                    )));
+                }
                 let Expr::Quantity(q) = p.e else {
                     return Err(self.wrong_class(prefix, &p, "a quantity", name));
                 };
@@ -111,13 +118,9 @@ impl<'a> Elab<'a> {
                     Expr::Signal(s) if p.ty.same(&Ty::Real) => {
                         self.signal_follow_attribute(sc, s, name, args, span)?
                     }
-                    Expr::Quantity(_) => {
-                        return Err(self.error(ElabError::unsupported(
-                            attr.span,
-                            format!("`'{name}` of a quantity"),
-                            "vams supports 'ramp and 'slew of real signals; for a quantity, write the \
-                             slope limit as an equation",
-                        )));
+                    Expr::Quantity(q) if name == "slew" => self.quantity_slew_attribute(sc, q, args, span)?,
+                    _ if name == "slew" => {
+                        return Err(self.wrong_class(prefix, &p, "a real signal or a quantity", name));
                     }
                     _ => return Err(self.wrong_class(prefix, &p, "a real signal", name)),
                 };
@@ -154,7 +157,7 @@ impl<'a> Elab<'a> {
                 Err(self.error(ElabError::unsupported(
                     attr.span,
                     format!("the attribute `'{name}`"),
-                    "vams supports 'dot, 'integ, 'above, 'delayed, 'ltf, 'zoh and 'ztf on quantities and 'event, 'active, 'last_value, 'last_event, 'ramp and 'slew on signals",
+                    "vams supports 'dot, 'integ, 'above, 'delayed, 'slew, 'ltf, 'zoh and 'ztf on quantities and 'event, 'active, 'last_value, 'last_event, 'ramp and 'slew on signals",
                 )))
             }
             _ => Err(self.error(ElabError::unsupported(
