@@ -16,6 +16,7 @@ use crate::design::{Design, QuantityId, SignalId, SignalKind};
 use crate::solver::{DaeSystem, OpOptions, SolveError};
 
 mod build;
+mod delay;
 mod deriv;
 mod error;
 mod listing;
@@ -63,6 +64,11 @@ pub struct AnalogSystem {
     last_xdot: Vec<f64>,
     /// Per unknown, the absolute tolerance of its tolerance group, when known.
     group_abstol: Vec<Option<f64>>,
+    /// `Q'delayed` histories, by index into `Design::delays`; their values go to the signal
+    /// slots after the source scale (see `delay::history_slot`).
+    delay_lines: Vec<delay::DelayLine>,
+    /// Number of design signals (the source scale's slot).
+    design_signals: usize,
 }
 
 /// Multiplies every top-level additive term of `e` that reads no unknown by the source-scale
@@ -148,8 +154,11 @@ impl AnalogSystem {
         let mut reads = vec![false; design.signals.len()];
         for r in &asm.residuals {
             r.visit(&mut |e| {
-                if let Sym::Signal(s) = e {
-                    reads[*s] = true;
+                // Slots past the design's signals are the scale and the delay histories.
+                if let Sym::Signal(s) = e
+                    && let Some(flag) = reads.get_mut(*s)
+                {
+                    *flag = true;
                 }
             });
         }
@@ -182,6 +191,14 @@ impl AnalogSystem {
             .map(|s| s.init.as_f64().unwrap_or(0.0))
             .collect();
         signals.push(1.0);
+        // History not ready: `Q'delayed(T) = Q` (the quiescent domain).
+        signals.push(0.0);
+        signals.extend(design.delays.iter().map(|_| 0.0));
+        let delay_lines = design
+            .delays
+            .iter()
+            .map(|d| delay::DelayLine::new(asm.quantity_slot[d.input.index()], d.delay))
+            .collect();
         let group_abstol = tolerance::per_unknown(design, &asm.unknowns);
         Ok(AnalogSystem {
             names: asm.names,
@@ -201,6 +218,8 @@ impl AnalogSystem {
             roots_tape: roots.finish(),
             last_xdot: vec![0.0; n],
             group_abstol,
+            delay_lines,
+            design_signals: design.signals.len(),
         })
     }
 
@@ -249,10 +268,37 @@ impl AnalogSystem {
     /// Sets the value that equations read for signal `s` (booleans and enums as positions).
     /// Signals of another design are ignored.
     pub fn set_signal(&mut self, s: SignalId, value: f64) {
-        // The last slot is the source scale, not a signal.
-        let n = self.signals.len() - 1;
-        if s.index() < n {
+        // Slots from `design_signals` on are the source scale and the delay histories.
+        if s.index() < self.design_signals {
             self.signals[s.index()] = value;
+        }
+    }
+
+    /// Records an accepted point `(t, x, x')` in the `Q'delayed` histories; from the first
+    /// one on, delayed quantities read their history instead of equalling their input.
+    pub fn record_history(&mut self, t: f64, x: &[f64], xdot: &[f64]) {
+        if self.delay_lines.is_empty() {
+            return;
+        }
+        for line in &mut self.delay_lines {
+            line.record(t, x[line.input], xdot[line.input]);
+        }
+        self.signals[delay::ready_slot(self.design_signals)] = 1.0;
+    }
+
+    /// The shortest `Q'delayed` delay: the integrator's step must not exceed it, so that
+    /// every delayed value comes from accepted history.
+    pub fn shortest_delay(&self) -> Option<f64> {
+        self.delay_lines.iter().map(|l| l.delay).reduce(f64::min)
+    }
+
+    /// Puts each line's value at `t - delay` in its signal slot, before a tape evaluation.
+    fn load_delays(&mut self, t: f64) {
+        for (k, line) in self.delay_lines.iter().enumerate() {
+            if !line.is_empty() {
+                self.signals[delay::history_slot(self.design_signals, k)] =
+                    line.value_at(t - line.delay);
+            }
         }
     }
 
@@ -308,6 +354,7 @@ impl AnalogSystem {
         dot_columns: &[bool],
         out: &mut [f64],
     ) {
+        self.load_delays(t);
         self.jacobian_tape.eval(t, x, xdot, &self.signals);
         for (k, o) in out.iter_mut().enumerate() {
             let part = if dot_columns[self.pattern[k].1] {
@@ -334,6 +381,7 @@ impl DaeSystem for AnalogSystem {
     }
 
     fn residual(&mut self, t: f64, x: &[f64], xdot: &[f64], out: &mut [f64]) {
+        self.load_delays(t);
         self.residual_tape.eval(t, x, xdot, &self.signals);
         for (i, o) in out.iter_mut().enumerate().take(self.residuals.len()) {
             *o = self.residual_tape.output(i);
@@ -344,6 +392,7 @@ impl DaeSystem for AnalogSystem {
     }
 
     fn jacobian(&mut self, t: f64, x: &[f64], xdot: &[f64], alpha: f64, out: &mut [f64]) {
+        self.load_delays(t);
         self.jacobian_tape.eval(t, x, xdot, &self.signals);
         let tape = &self.jacobian_tape;
         for ((o, dx), ddot) in out.iter_mut().zip(&self.jac_dx).zip(&self.jac_ddot) {
@@ -361,6 +410,7 @@ impl DaeSystem for AnalogSystem {
     }
 
     fn roots(&mut self, t: f64, x: &[f64], out: &mut [f64]) {
+        self.load_delays(t);
         self.roots_tape.eval(t, x, &self.last_xdot, &self.signals);
         for (i, o) in out.iter_mut().enumerate().take(self.above.len()) {
             *o = self.roots_tape.output(i);
@@ -368,8 +418,8 @@ impl DaeSystem for AnalogSystem {
     }
 
     fn set_source_scale(&mut self, s: f64) {
-        // The last signal slot is the source scale (see `scale_sources`).
-        if let Some(scale) = self.signals.last_mut() {
+        // The slot after the design's signals is the source scale (see `scale_sources`).
+        if let Some(scale) = self.signals.get_mut(self.design_signals) {
             *scale = s;
         }
     }

@@ -68,6 +68,8 @@ pub struct Design {
     /// User-defined functions and procedures with bodies, one per distinct set of actual
     /// signals of their signal parameters (those are bound at elaboration).
     pub subprograms: Vec<Subprogram>,
+    /// `Q'delayed(T)` lines: each defines its output quantity from the input's history.
+    pub delays: Vec<Delay>,
 }
 
 /// A function or procedure lowered like a process: its frame is `vars` (the variable
@@ -101,6 +103,19 @@ pub enum ParamMode {
     Out,
     /// Starts at the actual's value; copied back on return.
     InOut,
+}
+
+/// `output == input'delayed(delay)`: the input's value `delay` seconds ago, interpolated from
+/// the integrator's accepted points (before time 0, its quiescent value). In the quiescent
+/// domain the output equals the input (LRM 1076.1, 14.1). The analog engine owns the history
+/// and generates the defining equation.
+#[derive(Clone, Debug)]
+pub struct Delay {
+    pub output: QuantityId,
+    pub input: QuantityId,
+    /// Seconds, positive.
+    pub delay: f64,
+    pub span: Span,
 }
 
 /// A scalar nature, e.g. `electrical is voltage across current through electrical_ref reference`.
@@ -184,6 +199,9 @@ pub enum SignalKind {
     /// by the analog solver. `quantity` and `level` are analog expressions (`level` usually a
     /// constant).
     Above { quantity: Expr, level: Expr },
+    /// A signal of a process that elaboration generates (the state of `S'ramp`, `S'slew`,
+    /// `Q'zoh`, `Q'ztf`): driven like a declared one, but not a probe of its own.
+    Implicit,
 }
 
 /// A process (explicit, or the equivalent process of a concurrent statement: signal

@@ -326,3 +326,215 @@ fn endless_recursion_is_a_runtime_error_naming_the_process() {
     assert!(text.contains("nested subprogram calls"), "{text}");
     assert!(text.contains("`forever`"), "{text}");
 }
+
+/// Largest deviation of `name` from `exact` over the recorded points in `[from, to]`.
+fn worst_error(
+    result: &SimResult,
+    name: &str,
+    from: f64,
+    to: f64,
+    exact: impl Fn(f64) -> f64,
+) -> f64 {
+    let w = &result.waveforms;
+    let col = w.column(name).unwrap_or_else(|| panic!("{name} recorded"));
+    w.times
+        .iter()
+        .zip(&col.values)
+        .filter(|(t, _)| (from..=to).contains(*t))
+        .map(|(&t, &v)| (v - exact(t)).abs())
+        .fold(0.0, f64::max)
+}
+
+fn options(stop: f64) -> SimOptions {
+    SimOptions {
+        stop,
+        reltol: 1e-6,
+        ..SimOptions::default()
+    }
+}
+
+#[test]
+fn ltf_first_order_low_pass_step() {
+    let result = run("ltf_first_order", options(6e-3));
+    assert_eq!(result.outcome, Outcome::Finished);
+    let tau = 1e-3;
+    // Before the step: the quiescent value 0; after: 1 - exp(-(t - 1 ms) / tau). BDF at
+    // reltol 1e-6: global error under 1e-4 on a unit step.
+    let before = worst_error(&result, "y", 0.0, 0.999e-3, |_| 0.0);
+    assert!(before < 1e-12, "before the step: {before}");
+    let err = worst_error(&result, "y", 1.0001e-3, 6e-3, |t| {
+        1.0 - (-(t - 1e-3) / tau).exp()
+    });
+    assert!(err < 1e-4, "step response error {err}");
+}
+
+#[test]
+fn ltf_second_order_underdamped_step() {
+    let result = run("ltf_second_order", options(11e-3));
+    assert_eq!(result.outcome, Outcome::Finished);
+    let (w, zeta) = (1e3_f64, 0.2_f64);
+    let wd = w * (1.0 - zeta * zeta).sqrt();
+    let exact = |t: f64| {
+        let s = t - 1e-3;
+        1.0 - (-zeta * w * s).exp() * ((wd * s).cos() + zeta * w / wd * (wd * s).sin())
+    };
+    let err = worst_error(&result, "y", 1.0001e-3, 11e-3, exact);
+    // Overshoot 1 + exp(-pi zeta / sqrt(1 - zeta^2)) = 1.53: 5e-4 absolute is 0.1 %.
+    assert!(err < 5e-4, "step response error {err}");
+}
+
+#[test]
+fn delayed_sine_is_the_shifted_sine() {
+    let result = run("delayed_sine", options(3e-3));
+    assert_eq!(result.outcome, Outcome::Finished);
+    let (f, d) = (1e3, 0.25e-3);
+    let pi2 = 2.0 * std::f64::consts::PI;
+    let early = worst_error(&result, "y", 0.0, d * 0.999, |_| 0.0);
+    assert!(early < 1e-9, "before the delay: {early}");
+    // Interpolated history of a BDF solution: 1e-3 of the amplitude.
+    let err = worst_error(&result, "y", d * 1.01, 3e-3, |t| (pi2 * f * (t - d)).sin());
+    assert!(err < 1e-3, "delayed sine error {err}");
+}
+
+#[test]
+fn ramp_and_slew_of_a_signal_step_are_linear_between_breakpoints() {
+    let result = run("ramp_step", options(5e-3));
+    assert_eq!(result.outcome, Outcome::Finished);
+    let shape = |t: f64| {
+        if t < 1e-3 {
+            0.0
+        } else if t < 1.5e-3 {
+            (t - 1e-3) / 0.5e-3
+        } else if t < 3e-3 {
+            1.0
+        } else if t < 4e-3 {
+            1.0 - (t - 3e-3) / 1e-3
+        } else {
+            0.0
+        }
+    };
+    for name in ["r", "l"] {
+        let err = worst_error(&result, name, 0.0, 5e-3, shape);
+        assert!(err < 1e-9, "{name}: error {err}");
+        // The breakpoints are recorded points: the ramp's corners land exactly.
+        let w = &result.waveforms;
+        for corner in [1e-3, 1.5e-3, 3e-3, 4e-3] {
+            assert!(
+                w.times.iter().any(|&t| (t - corner).abs() < 1e-12),
+                "{name}: no point at {corner}"
+            );
+        }
+    }
+    let instant = |t: f64| if (1e-3..3e-3).contains(&t) { 1.0 } else { 0.0 };
+    let w = &result.waveforms;
+    let i = w.column("i").expect("i recorded");
+    for (&t, &v) in w.times.iter().zip(&i.values) {
+        // At the event times both the value before and after are recorded.
+        if [1e-3, 3e-3].iter().all(|e: &f64| (t - e).abs() > 1e-12) {
+            assert!((v - instant(t)).abs() < 1e-9, "i at {t}: {v}");
+        }
+    }
+}
+
+#[test]
+fn slew_of_a_quantity_limits_its_slope() {
+    let result = run("slew_quantity", options(3e-3));
+    assert_eq!(result.outcome, Outcome::Finished);
+    let w = &result.waveforms;
+    let y = &w.column("y").expect("y recorded").values;
+    let x = &w.column("x").expect("x recorded").values;
+    let (mut tracked, mut slewed) = (0, 0);
+    for k in 1..w.times.len() {
+        let h = w.times[k] - w.times[k - 1];
+        // Steps of no length (event rows) and the femtosecond step before the first switch
+        // (the quiescent point has x'dot = 0, so the switch is located just after t = 0).
+        if h <= 0.0 || (y[k] - y[k - 1]).abs() < 1e-9 {
+            continue;
+        }
+        let slope = (y[k] - y[k - 1]) / h;
+        assert!(
+            slope.abs() < 5000.0 * (1.0 + 1e-6),
+            "slope {slope} at {}",
+            w.times[k]
+        );
+        if (y[k] - x[k]).abs() < 1e-9 {
+            tracked += 1;
+        } else {
+            slewed += 1;
+        }
+    }
+    assert!(
+        tracked > 10 && slewed > 10,
+        "tracked {tracked}, slewed {slewed}"
+    );
+    // From 0 the sine rises at 6283/s: the output rises at exactly 5000/s until it meets the
+    // sine, at sin(2 pi 1000 t) = 5000 t, where the sine is slower and is tracked.
+    let pi2k = 2.0 * std::f64::consts::PI * 1e3;
+    let (mut lo, mut hi) = (0.1e-3, 0.25e-3);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if (pi2k * mid).sin() > 5000.0 * mid {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let meet = lo;
+    let err = worst_error(&result, "y", 1e-9, meet * 0.999, |t| 5000.0 * t);
+    assert!(err < 1e-9, "rising segment error {err}");
+    assert!(
+        w.times.iter().any(|&t| (t - meet).abs() < 1e-9),
+        "no switch at the meeting point {meet}"
+    );
+}
+
+#[test]
+fn zoh_of_a_ramp_is_a_staircase_and_ztf_accumulates() {
+    let result = run("zoh_ramp", options(4.9e-3));
+    assert_eq!(result.outcome, Outcome::Finished);
+    let w = &result.waveforms;
+    // Just before and after each sample (at 0.5 ms + k ms): the previous and new stair.
+    for k in 0..4 {
+        let ts = 0.5e-3 + k as f64 * 1e-3;
+        let mid = ts + 0.5e-3;
+        let held = w.value_at("held", mid).expect("held recorded");
+        assert!((held - 1000.0 * ts).abs() < 1e-9, "held at {mid}: {held}");
+        // The accumulator samples at k ms: k + 1 after the k-th sample.
+        let acc = w.value_at("acc", ts).expect("acc recorded");
+        assert!((acc - (k + 1) as f64).abs() < 1e-12, "acc at {ts}: {acc}");
+    }
+    let before = w.value_at("held", 0.4e-3).expect("held recorded");
+    assert!(
+        before.abs() < 1e-12,
+        "held before the first sample: {before}"
+    );
+}
+
+#[test]
+fn dot_dot_and_integ_of_a_second_order_step() {
+    let result = run("integ_dotdot", options(11e-3));
+    assert_eq!(result.outcome, Outcome::Finished);
+    let (w, zeta) = (1e3_f64, 0.2_f64);
+    let wd = w * (1.0 - zeta * zeta).sqrt();
+    let exact = |t: f64| {
+        let s = t - 1e-3;
+        1.0 - (-zeta * w * s).exp() * ((wd * s).cos() + zeta * w / wd * (wd * s).sin())
+    };
+    let err = worst_error(&result, "x", 1.0001e-3, 11e-3, exact);
+    assert!(err < 5e-4, "x'dot'dot equation: step response error {err}");
+    // x'integ against the closed-form integral of the step response from 1 ms:
+    // s - 2 zeta / w + exp(-zeta w s) (2 zeta / w cos(wd s) + (2 zeta^2 - 1) / wd sin(wd s)).
+    let integral = |t: f64| {
+        let s = t - 1e-3;
+        if s <= 0.0 {
+            return 0.0;
+        }
+        let e = (-zeta * w * s).exp();
+        s - 2.0 * zeta / w
+            + e * (2.0 * zeta / w * (wd * s).cos()
+                + (2.0 * zeta * zeta - 1.0) / wd * (wd * s).sin())
+    };
+    let err = worst_error(&result, "xi", 0.0, 11e-3, integral);
+    // The integral reaches 0.01 s: 1e-6 s absolute is 1e-4 relative.
+    assert!(err < 1e-6, "x'integ error {err}");
+}

@@ -10,6 +10,7 @@
 use petgraph::graph::{NodeIndex, UnGraph};
 use petgraph::visit::Dfs;
 
+use super::delay;
 use super::error::AnalogError;
 use super::lower::lower;
 use super::sym::Sym;
@@ -32,6 +33,9 @@ pub enum Origin {
     Across(QuantityId),
     /// Sum of through quantities leaving the terminal minus those entering.
     Conservation(TerminalId),
+    /// Index into [`Design::delays`]: `output - input(t - delay) = 0` (`output - input` at the
+    /// quiescent point).
+    Delayed(usize),
 }
 
 /// Unknowns and residuals, not yet compiled.
@@ -51,6 +55,7 @@ impl Origin {
             Origin::User(i) => design.equations[i].span,
             Origin::Across(q) => design.quantities[q.index()].span,
             Origin::Conservation(t) => design.terminals[t.index()].span,
+            Origin::Delayed(k) => design.delays[k].span,
         }
     }
 
@@ -68,6 +73,10 @@ impl Origin {
             Origin::Across(q) => format!("across {}", design.quantities[q.index()].name),
             Origin::Conservation(t) => {
                 format!("conservation at {}", design.terminals[t.index()].name)
+            }
+            Origin::Delayed(k) => {
+                let d = &design.delays[k];
+                format!("history of {}", design.quantities[d.output.index()].name)
             }
         }
     }
@@ -144,6 +153,15 @@ fn check_indices(design: &Design) -> Result<(), AnalogError> {
     for eq in &design.equations {
         check_expr(&eq.residual, eq.span)?;
     }
+    for d in &design.delays {
+        let n = design.quantities.len();
+        if d.output.index() >= n || d.input.index() >= n {
+            return Err(malformed(
+                d.span,
+                "a 'delayed names an unknown quantity".into(),
+            ));
+        }
+    }
     for s in &design.signals {
         if let crate::design::SignalKind::Above { quantity, level } = &s.kind {
             check_expr(quantity, s.span)?;
@@ -205,6 +223,16 @@ pub fn assemble(design: &Design) -> Result<Assembled, Vec<AnalogError>> {
     }
     if !errors.is_empty() {
         return Err(errors);
+    }
+    for (k, d) in design.delays.iter().enumerate() {
+        let n = design.signals.len();
+        let delayed = Sym::cond(
+            Sym::Signal(delay::ready_slot(n)),
+            Sym::Signal(delay::history_slot(n, k)),
+            Sym::X(quantity_slot[d.input.index()]),
+        );
+        residuals.push(Sym::sub(Sym::X(quantity_slot[d.output.index()]), delayed));
+        origins.push(Origin::Delayed(k));
     }
     let potential = |t: TerminalId| match potential_slot[t.index()] {
         Some(slot) => Sym::X(slot),

@@ -45,6 +45,7 @@ pub fn listing(sys: &AnalogSystem, design: &Design, sources: &SourceMap) -> Stri
         .iter()
         .map(|origin| match *origin {
             Origin::User(k) => location(design.equations[k].span, sources),
+            Origin::Delayed(k) => location(design.delays[k].span, sources),
             other => other.describe(design),
         })
         .collect();
@@ -165,7 +166,12 @@ impl Printer<'_> {
             }
             Sym::Signal(s) => match self.design.signals.get(*s) {
                 Some(sig) => out.push_str(&sig.name),
-                None => out.push_str("<source scale>"),
+                // Past the design's signals: the source scale, then the delay histories.
+                None => match *s - self.design.signals.len() {
+                    0 => out.push_str("<source scale>"),
+                    1 => out.push_str("<history ready>"),
+                    k => out.push_str(&format!("<history {}>", k - 2)),
+                },
             },
             Sym::Now => out.push_str("now"),
             Sym::Un(op @ (Un::Neg | Un::Not), a) => {

@@ -364,9 +364,18 @@ impl<'a> Elab<'a> {
         Ok(())
     }
 
-    fn aux_quantity(&mut self, of: QuantityId, suffix: &str) -> QuantityId {
+    pub(super) fn aux_quantity(&mut self, of: QuantityId, suffix: &str) -> QuantityId {
         let base = &self.design.quantities[of.index()];
-        let (name, span) = (format!("{}'{suffix}", base.name), base.span);
+        let (mut name, span) = (format!("{}'{suffix}", base.name), base.span);
+        // A second `q'ltf(...)` or `q'slew(...)` with other arguments: `q'ltf#2`.
+        let taken = |n: &str| self.design.quantities.iter().any(|q| q.name == n);
+        if taken(&name) {
+            let mut k = 2;
+            while taken(&format!("{name}#{k}")) {
+                k += 1;
+            }
+            name = format!("{name}#{k}");
+        }
         let id = QuantityId(self.design.quantities.len() as u32);
         self.design.quantities.push(Quantity {
             name,

@@ -1,5 +1,6 @@
-//! Attributes: `Q'dot`, `Q'integ`, `Q'above(E)` on quantities, `'event`, `'active`,
-//! `'last_value`, `'last_event` on signals, `T'image(x)`, and the static `'high`, `'low`,
+//! Attributes: `Q'dot`, `Q'integ`, `Q'above(E)` on quantities (and the AMS attributes
+//! lowered in `ltf`, `sampled`, `follow` and `delay`), `'event`, `'active`, `'last_value`,
+//! `'last_event` on signals, `T'image(x)`, and the static `'high`, `'low`,
 //! `'left`, `'right`, `'length`, `'ascending`; ranges, including `a'range`.
 
 use std::rc::Rc;
@@ -15,12 +16,6 @@ use super::types::{Sub, Ty};
 use super::{Elab, R, Reported};
 
 const ANALOG_UNSUPPORTED: &[&str] = &[
-    "delayed",
-    "ltf",
-    "ztf",
-    "ramp",
-    "slew",
-    "zoh",
     "tolerance",
     "contribution",
     "reference",
@@ -34,7 +29,6 @@ const SIGNAL_UNSUPPORTED: &[&str] = &[
     "last_active",
     "driving",
     "driving_value",
-    "delayed",
 ];
 
 impl<'a> Elab<'a> {
@@ -98,6 +92,40 @@ impl<'a> Elab<'a> {
                 let s = self.above_signal(q, level.e, span);
                 Ok(Typed { e: Expr::Signal(s), ty: Ty::Boolean })
             }
+            "ltf" | "zoh" | "ztf" | "delayed" => {
+                let p = self.expr(sc, prefix, None)?;
+                if let (Expr::Signal(_), "delayed") = (&p.e, name) {
+                    return Err(self.error(ElabError::unsupported(
+                        attr.span,
+                        "the signal attribute `'delayed`",
+                        "assign a delayed copy in a process: `d <= transport s after 1 ms;`",
+                    )));
+                }
+                let Expr::Quantity(q) = p.e else {
+                    return Err(self.wrong_class(prefix, &p, "a quantity", name));
+                };
+                let e = match name {
+                    "ltf" => self.ltf_attribute(sc, q, args, span)?,
+                    "zoh" => self.zoh_attribute(sc, q, args, span)?,
+                    "ztf" => self.ztf_attribute(sc, q, args, span)?,
+                    _ => self.delayed_attribute(sc, q, args, span)?,
+                };
+                Ok(Typed { e, ty: Ty::Real })
+            }
+            "ramp" | "slew" => {
+                let p = self.expr(sc, prefix, None)?;
+                let e = match p.e {
+                    Expr::Signal(s) if p.ty.same(&Ty::Real) => {
+                        self.signal_follow_attribute(sc, s, name, args, span)?
+                    }
+                    Expr::Quantity(q) if name == "slew" => self.quantity_slew_attribute(sc, q, args, span)?,
+                    _ if name == "slew" => {
+                        return Err(self.wrong_class(prefix, &p, "a real signal or a quantity", name));
+                    }
+                    _ => return Err(self.wrong_class(prefix, &p, "a real signal", name)),
+                };
+                Ok(Typed { e, ty: Ty::Real })
+            }
             "event" | "active" | "last_value" | "last_event" => {
                 let p = self.expr(sc, prefix, None)?;
                 let Expr::Signal(s) = p.e else {
@@ -129,13 +157,13 @@ impl<'a> Elab<'a> {
                 Err(self.error(ElabError::unsupported(
                     attr.span,
                     format!("the attribute `'{name}`"),
-                    "vams supports 'dot, 'integ and 'above on quantities and 'event, 'active, 'last_value and 'last_event on signals",
+                    "vams supports 'dot, 'integ, 'above, 'delayed, 'slew, 'ltf, 'zoh and 'ztf on quantities and 'event, 'active, 'last_value, 'last_event, 'ramp and 'slew on signals",
                 )))
             }
             _ => Err(self.error(ElabError::unsupported(
                 attr.span,
                 format!("the attribute `'{name}`"),
-                "supported: 'dot 'integ 'above 'event 'active 'last_value 'last_event 'image 'high 'low 'left 'right 'length 'range",
+                "supported: 'dot 'integ 'above 'delayed 'ltf 'zoh 'ztf 'ramp 'slew 'event 'active 'last_value 'last_event 'image 'high 'low 'left 'right 'length 'range",
             ))),
         }
     }

@@ -18,6 +18,12 @@ pub(crate) trait AnalogModel: DaeSystem {
     fn equation_site(&self, _design: &Design, _row: usize) -> Option<(String, Span)> {
         None
     }
+    /// Records an accepted point for `Q'delayed` (systems without delays ignore it).
+    fn record_history(&mut self, _t: f64, _x: &[f64], _xdot: &[f64]) {}
+    /// The shortest `Q'delayed` delay, a bound on the step.
+    fn shortest_delay(&self) -> Option<f64> {
+        None
+    }
     #[allow(clippy::too_many_arguments)]
     fn quiescent_point(
         &mut self,
@@ -51,6 +57,12 @@ impl AnalogModel for AnalogSystem {
     }
     fn equation_site(&self, design: &Design, row: usize) -> Option<(String, Span)> {
         AnalogSystem::equation_site(self, design, row)
+    }
+    fn record_history(&mut self, t: f64, x: &[f64], xdot: &[f64]) {
+        AnalogSystem::record_history(self, t, x, xdot)
+    }
+    fn shortest_delay(&self) -> Option<f64> {
+        AnalogSystem::shortest_delay(self)
     }
     fn quiescent_point(
         &mut self,

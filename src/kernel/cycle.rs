@@ -149,7 +149,10 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                 self.kernel.signals.force(s, value);
             }
         }
-        let max_step = self.max_step(options)?;
+        // `Q'delayed` reads accepted history only if no step is longer than its delay.
+        let max_step = self
+            .max_step(options)?
+            .min(sys.shortest_delay().unwrap_or(f64::INFINITY));
         let topts = TransientOptions {
             reltol: options.reltol,
             abstol: abstol.iter().copied().fold(DEFAULT_ABSTOL, f64::min),
@@ -195,10 +198,12 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         Ok(h)
     }
 
-    /// Copies the integrator's state into the per-quantity values processes read.
+    /// Copies the integrator's state into the per-quantity values processes read, and into
+    /// the `Q'delayed` histories (every caller has just accepted a point).
     fn refresh(&mut self) {
-        if let Some(a) = &self.analog {
+        if let Some(a) = &mut self.analog {
             let (x, xd) = (a.integ.state(), a.integ.derivative());
+            a.sys.record_history(a.integ.time(), x, xd);
             for (q, &slot) in a.slots.iter().enumerate() {
                 self.values[q] = x[slot];
                 self.derivatives[q] = xd[slot];

@@ -304,6 +304,9 @@ pub(crate) fn builtin(f: Builtin, args: &[Value]) -> Result<Value, EvalError> {
         return match args[0] {
             Value::Integer(i) => Ok(Value::Real(i as f64)),
             Value::Real(x) => Ok(Value::Real(x)),
+            // Only generated code converts a time (`now` in seconds, for the AMS attributes):
+            // the elaborator refuses `real(t)` in models.
+            Value::Time(t) => Ok(Value::Real(t)),
             ref v => Err(EvalError::new(format!("real() of {}", kind(v)), TYPE_HELP)),
         };
     }
