@@ -21,6 +21,7 @@ use crate::source::{FileId, SourceMap, Span};
 
 mod analog;
 mod attr;
+mod candidates;
 mod decls;
 mod error;
 mod expr;
@@ -35,6 +36,7 @@ mod simultaneous;
 mod tests;
 mod types;
 
+pub use candidates::TopCandidate;
 pub use error::ElabError;
 
 use library::{Library, canonical_library};
@@ -69,6 +71,11 @@ pub fn elaborate(
 /// Entities of library `work` that no architecture instantiates: the candidates for `--top`.
 pub fn find_tops(sources: &SourceMap, files: &[(FileId, DesignFile)]) -> Vec<String> {
     Library::index(sources, files).tops()
+}
+
+/// The candidates of [`find_tops`] with what keeps each from being elaborated alone.
+pub fn top_candidates(sources: &SourceMap, files: &[(FileId, DesignFile)]) -> Vec<TopCandidate> {
+    candidates::candidates(&Library::index(sources, files))
 }
 
 /// Marks a failure whose diagnostic is already in `Elab::errors`.
