@@ -125,6 +125,9 @@ fn check_top(top: &TopCandidate, loaded: &Loaded, max: usize, tally: &mut Tally)
         );
         return;
     }
+    if design.quantities.is_empty() {
+        return; // A digital design has no analog system (as in the kernel).
+    }
     tally.analog_checked += 1;
     if let Err(errors) = AnalogSystem::new(&design) {
         tally.analog += tally.print(&errors, loaded, max);
