@@ -13,6 +13,7 @@ pub mod extract;
 pub mod load;
 pub mod op;
 pub mod params;
+pub mod progress;
 pub mod render;
 pub mod run;
 pub mod stop;

@@ -21,6 +21,7 @@ use crate::source::{FileId, SourceMap, Span};
 
 mod analog;
 mod attr;
+mod candidates;
 mod decls;
 mod delay;
 mod error;
@@ -43,6 +44,7 @@ mod synth;
 mod tests;
 mod types;
 
+pub use candidates::TopCandidate;
 pub use error::ElabError;
 
 use library::{Library, canonical_library};
@@ -77,6 +79,48 @@ pub fn elaborate(
 /// Entities of library `work` that no architecture instantiates: the candidates for `--top`.
 pub fn find_tops(sources: &SourceMap, files: &[(FileId, DesignFile)]) -> Vec<String> {
     Library::index(sources, files).tops()
+}
+
+/// The candidates of [`find_tops`] with what keeps each from being elaborated alone.
+pub fn top_candidates(sources: &SourceMap, files: &[(FileId, DesignFile)]) -> Vec<TopCandidate> {
+    candidates::candidates(&Library::index(sources, files))
+}
+
+/// The library and the context clauses as text (`work;l:ieee;u:ieee.math_real.all;`), or
+/// `None` when a clause names something other than a dotted name.
+fn context_key(library: &str, contexts: &[&[ContextItem]]) -> Option<String> {
+    fn dotted(e: &crate::ast::Expr, out: &mut String) -> Option<()> {
+        match &e.kind {
+            ExprKind::Name(id) => out.push_str(&id.name),
+            ExprKind::Selected(prefix, suffix) => {
+                dotted(prefix, out)?;
+                out.push('.');
+                out.push_str(&suffix.name);
+            }
+            _ => return None,
+        }
+        Some(())
+    }
+    let mut key = format!("{library};");
+    for item in contexts.iter().flat_map(|c| c.iter()) {
+        match item {
+            ContextItem::Library(names, _) => {
+                for n in names {
+                    key.push_str("l:");
+                    key.push_str(&n.name);
+                    key.push(';');
+                }
+            }
+            ContextItem::Use(names, _) => {
+                for n in names {
+                    key.push_str("u:");
+                    dotted(n, &mut key)?;
+                    key.push(';');
+                }
+            }
+        }
+    }
+    Some(key)
 }
 
 /// Marks a failure whose diagnostic is already in `Elab::errors`.
@@ -118,6 +162,8 @@ struct Elab<'a> {
     native_names: Option<HashSet<String>>,
     /// Errors in stdlib declarations poison the names instead of being reported.
     quiet: bool,
+    /// Use regions already built, by [`context_key`].
+    use_regions: HashMap<String, scope::Region<'a>>,
 }
 
 impl<'a> Elab<'a> {
@@ -138,6 +184,7 @@ impl<'a> Elab<'a> {
             unlabelled: HashMap::new(),
             native_names: None,
             quiet: false,
+            use_regions: HashMap::new(),
         }
     }
 
@@ -165,8 +212,15 @@ impl<'a> Elab<'a> {
     }
 
     /// A new scope with the implicit context (`library std, work; use std.standard.all`) and
-    /// the unit's own context clause.
+    /// the unit's own context clause. The use region is built once per distinct clause text and
+    /// library (every copy of a model says `use ieee.electrical_systems.all;`), unless building
+    /// it reported an error, so that the error is reported wherever the clause is.
     fn unit_scope(&mut self, library: &str, contexts: &[&'a [ContextItem]]) -> Scope<'a> {
+        let key = context_key(library, contexts);
+        if let Some(region) = key.as_ref().and_then(|k| self.use_regions.get(k)) {
+            return Scope::with_use_region(region.clone());
+        }
+        let errors_before = self.errors.len();
         let mut sc = Scope::new();
         sc.import("std", Item::Library("std".into()));
         sc.import("work", Item::Library(library.to_string()));
@@ -192,6 +246,11 @@ impl<'a> Elab<'a> {
                     }
                 }
             }
+        }
+        if let Some(key) = key
+            && self.errors.len() == errors_before
+        {
+            self.use_regions.insert(key, sc.regions[0].clone());
         }
         sc
     }
@@ -347,7 +406,7 @@ impl<'a> Elab<'a> {
             body_sc.push();
             self.decls(&mut body_sc, &body.unit.decls);
             if let Some(region) = body_sc.regions.last() {
-                for (n, items) in &region.items {
+                for (n, items) in region.items.iter() {
                     let deferred =
                         sc.regions
                             .last()
@@ -368,7 +427,7 @@ impl<'a> Elab<'a> {
         let region = sc.regions.pop().unwrap_or_default();
         let pkg = Rc::new(PackageScope {
             name: key.1.clone(),
-            items: region.items,
+            items: Rc::unwrap_or_clone(region.items),
         });
         self.packages.insert(key, pkg.clone());
         Ok(pkg)

@@ -25,6 +25,7 @@ mod events;
 mod image;
 mod ops;
 mod process;
+mod progress;
 mod record;
 mod signals;
 mod solve_error;
@@ -33,6 +34,7 @@ mod solve_error;
 mod tests;
 
 pub use error::SimError;
+pub use progress::ProgressHook;
 
 use cycle::Simulation;
 use record::Recorder;
@@ -49,6 +51,8 @@ pub struct SimOptions {
     pub max_step: Option<f64>,
     /// Names to record (hierarchical, lower case); empty: every quantity and explicit signal.
     pub probes: Vec<String>,
+    /// Told the simulated time as the run advances (a progress bar), if given.
+    pub progress: Option<ProgressHook>,
 }
 
 impl Default for SimOptions {
@@ -59,6 +63,7 @@ impl Default for SimOptions {
             abstol: None,
             max_step: None,
             probes: Vec::new(),
+            progress: None,
         }
     }
 }

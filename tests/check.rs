@@ -1,6 +1,6 @@
 //! `vams check` end to end: the bundled stdlib and the models are clean; each kind of mistake
-//! in `tests/diagnostics/` renders the diagnostic recorded in its snapshot; bad input of every
-//! kind exits 1 without a panic.
+//! in `tests/diagnostics/` (syntax) and `tests/check/` (elaboration, analog structure) renders
+//! the diagnostics recorded in its snapshot; bad input of every kind exits 1 without a panic.
 
 use std::path::Path;
 
@@ -49,6 +49,89 @@ fn diagnostics_match_their_snapshots() {
         insta::assert_snapshot!(name, rendered);
         vams().arg("check").arg(&path).assert().code(1);
     }
+}
+
+/// Each file of `tests/check/` fails `vams check` with the whole stderr in its snapshot.
+#[test]
+fn semantic_and_structural_errors_match_their_snapshots() {
+    let mut files: Vec<_> = std::fs::read_dir("tests/check")
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "vhd"))
+        .collect();
+    files.sort();
+    assert_eq!(files.len(), 4);
+    for path in files {
+        let name = path.file_stem().unwrap().to_str().unwrap().to_string();
+        let output = vams().arg("check").arg(&path).output().unwrap();
+        assert_eq!(output.status.code(), Some(1), "{name}");
+        let stderr = String::from_utf8(output.stderr).unwrap();
+        insta::assert_snapshot!(format!("check_{name}"), stderr);
+    }
+}
+
+/// Entities that cannot stand alone are noted, not failed; an error in an entity that two tops
+/// instantiate is printed once.
+#[test]
+fn lone_components_are_noted_and_shared_errors_printed_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let component = dir.path().join("component.vhd");
+    std::fs::write(
+        &component,
+        "library ieee; use ieee.electrical_systems.all;
+entity res is
+  generic (r : real := 1.0);
+  port (terminal p, n : electrical);
+end entity;
+architecture a of res is
+  quantity v across i through p to n;
+begin
+  v == r * i;
+end architecture;
+entity scaled is generic (k : real); end entity;
+architecture a of scaled is begin end architecture;
+",
+    )
+    .unwrap();
+    vams()
+        .arg("check")
+        .arg(&component)
+        .assert()
+        .success()
+        .stderr(predicates::str::contains(
+            "note: the analog system of `res` is not checked alone: port(s) `p`, `n` would be open",
+        ))
+        .stderr(predicates::str::contains(
+            "note: `scaled` is not elaborated: no default for generic(s) `k`",
+        ))
+        .stderr(predicates::str::contains(
+            "1 top(s) elaborated, 0 analog system(s) built: no errors",
+        ));
+    let shared = dir.path().join("shared.vhd");
+    std::fs::write(
+        &shared,
+        "entity leaf is end entity;
+architecture a of leaf is
+  signal s : bit;
+begin
+  s <= not t;
+end architecture;
+entity top_a is end entity;
+architecture a of top_a is begin u : entity work.leaf; end architecture;
+entity top_b is end entity;
+architecture a of top_b is begin u : entity work.leaf; end architecture;
+",
+    )
+    .unwrap();
+    let output = vams().arg("check").arg(&shared).output().unwrap();
+    assert_eq!(output.status.code(), Some(1));
+    let stderr = String::from_utf8(output.stderr).unwrap();
+    assert_eq!(stderr.matches("`t` is not declared").count(), 1, "{stderr}");
+    assert!(stderr.contains("2 top(s) elaborated"), "{stderr}");
+    assert!(
+        stderr.contains("0 syntax, 1 elaboration and 0 analog error(s)"),
+        "{stderr}"
+    );
 }
 
 #[test]

@@ -2,15 +2,27 @@
 //! and `.ams` files, recursively) together with the bundled stdlib, and reports every
 //! diagnostic with file, line, column and a help line. Exit 0 when clean, 1 on any error.
 //!
-//! Today this runs the lexer and the parser; semantic analysis is the next stage to plug in.
+//! Three stages, each only when the one before it is clean: parsing every file; elaborating
+//! every top candidate (an entity of `work` that nothing instantiates) with its default
+//! generics; building the analog system of each elaborated top (equation count, matching,
+//! floating terminals). Candidates that cannot stand alone are skipped with a note: generics
+//! without a default have no value, and open terminal or quantity ports would make the analog
+//! checks report what is only the missing surroundings. Their bodies are checked as part of
+//! any top that instantiates them. A diagnostic that several tops share is printed once.
 
+use std::collections::HashSet;
 use std::path::PathBuf;
 
 use clap::Args;
 use miette::Report;
 
+use crate::analog::AnalogSystem;
+use crate::diagnostics::Located;
+use crate::elaborate::{ElabOptions, TopCandidate, elaborate, top_candidates};
+
 use super::error::CliError;
-use super::load::load;
+use super::load::{Loaded, load};
+use super::render::render_located;
 
 /// Arguments of `vams check`.
 #[derive(Debug, Args)]
@@ -18,23 +30,134 @@ pub struct CheckArgs {
     /// Source files or directories.
     #[arg(required = true)]
     pub paths: Vec<PathBuf>,
-    /// Show at most this many diagnostics per file.
+    /// Show at most this many diagnostics per file (syntax) or per top entity.
     #[arg(long, default_value_t = 20)]
     pub max_errors: usize,
+}
+
+/// What the check found, stage by stage.
+#[derive(Debug, Default)]
+struct Tally {
+    syntax: usize,
+    elaboration: usize,
+    analog: usize,
+    /// Tops elaborated, and those whose analog system was built.
+    elaborated: usize,
+    analog_checked: usize,
+    /// Rendered diagnostics already printed (tops share instantiated entities).
+    printed: HashSet<String>,
+}
+
+impl Tally {
+    fn errors(&self) -> usize {
+        self.syntax + self.elaboration + self.analog
+    }
+
+    /// Prints the diagnostics not printed before, at most `max`; returns how many were new.
+    fn print<D: Located>(&mut self, errors: &[D], loaded: &Loaded, max: usize) -> usize {
+        let mut new = 0;
+        for e in errors {
+            let text = render_located(e, &loaded.sources);
+            if self.printed.insert(text.clone()) {
+                if new < max {
+                    eprint!("{text}");
+                }
+                new += 1;
+            }
+        }
+        if new > max {
+            eprintln!("  ... and {} more\n", new - max);
+        }
+        new
+    }
 }
 
 /// Runs the check; every diagnostic goes to stderr.
 pub fn run(args: &CheckArgs) -> Result<(), Report> {
     let loaded = load(&args.paths)?;
     loaded.print_syntax_errors(args.max_errors);
-    let count = loaded.error_count();
-    if count > 0 {
-        return Err(CliError::CheckFailed { count }.into());
+    let mut tally = Tally {
+        syntax: loaded.error_count(),
+        ..Tally::default()
+    };
+    if tally.syntax == 0 {
+        for candidate in top_candidates(&loaded.sources, &loaded.files) {
+            check_top(&candidate, &loaded, args.max_errors, &mut tally);
+        }
+    } else {
+        eprintln!("note: nothing was elaborated because of the syntax errors");
     }
-    eprintln!(
-        "checked {} file(s), {} design unit(s): no errors",
+    eprintln!("{}", summary(&loaded, &tally));
+    match tally.errors() {
+        0 => Ok(()),
+        count => Err(CliError::CheckFailed { count }.into()),
+    }
+}
+
+/// Elaborates one candidate and builds its analog system, counting and printing the errors.
+fn check_top(top: &TopCandidate, loaded: &Loaded, max: usize, tally: &mut Tally) {
+    if !top.can_elaborate() {
+        eprintln!(
+            "note: `{}` is not elaborated: no default for generic(s) {}; it is checked where \
+             it is instantiated",
+            top.name,
+            quoted(&top.generics_without_default)
+        );
+        return;
+    }
+    let options = ElabOptions {
+        top: top.name.clone(),
+        generics: Vec::new(),
+    };
+    tally.elaborated += 1;
+    let design = match elaborate(&loaded.sources, &loaded.files, &options) {
+        Ok(design) => design,
+        Err(errors) => {
+            tally.elaboration += tally.print(&errors, loaded, max);
+            return;
+        }
+    };
+    if !top.is_closed() {
+        eprintln!(
+            "note: the analog system of `{}` is not checked alone: port(s) {} would be open",
+            top.name,
+            quoted(&top.analog_ports)
+        );
+        return;
+    }
+    if design.quantities.is_empty() {
+        return; // A digital design has no analog system (as in the kernel).
+    }
+    tally.analog_checked += 1;
+    if let Err(errors) = AnalogSystem::new(&design) {
+        tally.analog += tally.print(&errors, loaded, max);
+    }
+}
+
+/// `a`, `b`
+fn quoted(names: &[String]) -> String {
+    names
+        .iter()
+        .map(|n| format!("`{n}`"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// The closing line: what was checked and the error counts by stage.
+fn summary(loaded: &Loaded, tally: &Tally) -> String {
+    let checked = format!(
+        "checked {} file(s), {} design unit(s), {} top(s) elaborated, {} analog system(s) built",
         loaded.sources.len(),
-        loaded.unit_count()
+        loaded.unit_count(),
+        tally.elaborated,
+        tally.analog_checked
     );
-    Ok(())
+    if tally.errors() == 0 {
+        format!("{checked}: no errors")
+    } else {
+        format!(
+            "{checked}: {} syntax, {} elaboration and {} analog error(s)",
+            tally.syntax, tally.elaboration, tally.analog
+        )
+    }
 }

@@ -16,6 +16,7 @@ use crate::waveform::Waveforms;
 
 use super::compile::{DesignArgs, compile};
 use super::error::CliError;
+use super::progress::ProgressBar;
 use super::render::{format_report, render_located, render_sim_error};
 use super::stop::{declaring_file, panel_comments, stop_comment};
 use super::time::{format_time, parse_positive_time};
@@ -159,15 +160,26 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
         },
     };
     let panels = panel_groups(&args.panel);
+    let bar = ProgressBar::for_stderr(stop);
     let options = SimOptions {
         stop,
         reltol: args.reltol,
         abstol: args.abstol,
         max_step: args.max_step,
         probes: probe_list(&args.probe, &panels),
+        progress: bar.as_ref().map(ProgressBar::hook),
     };
-    let mut print = |r: &crate::kernel::Report| eprintln!("{}", format_report(r, &loaded.sources));
-    let result = simulate(design, &options, &mut print).map_err(|e| {
+    let mut print = |r: &crate::kernel::Report| {
+        if let Some(bar) = &bar {
+            bar.clear();
+        }
+        eprintln!("{}", format_report(r, &loaded.sources));
+    };
+    let result = simulate(design, &options, &mut print);
+    if let Some(bar) = &bar {
+        bar.clear();
+    }
+    let result = result.map_err(|e| {
         eprint!("{}", render_sim_error(&e, &loaded.sources));
         CliError::Simulation {
             top: design.top.clone(),

@@ -157,10 +157,11 @@ pub struct PackageScope<'a> {
     pub items: HashMap<String, Vec<Item<'a>>>,
 }
 
-/// One declarative region.
+/// One declarative region. The items are shared until written (`Rc::make_mut`), so that the
+/// use region of a context clause is built once and handed to every instance that has it.
 #[derive(Debug, Default, Clone)]
 pub struct Region<'a> {
-    pub items: HashMap<String, Vec<Item<'a>>>,
+    pub items: Rc<HashMap<String, Vec<Item<'a>>>>,
 }
 
 #[derive(Debug, Default, Clone)]
@@ -172,6 +173,13 @@ impl<'a> Scope<'a> {
     pub fn new() -> Scope<'a> {
         Scope {
             regions: vec![Region::default()],
+        }
+    }
+
+    /// A scope whose use region is `used` (shared, copied only if written).
+    pub fn with_use_region(used: Region<'a>) -> Scope<'a> {
+        Scope {
+            regions: vec![used],
         }
     }
 
@@ -188,7 +196,9 @@ impl<'a> Scope<'a> {
     pub fn declare(&mut self, name: &str, item: Item<'a>) -> bool {
         // Invariant: a scope always has at least its use region.
         let region = self.regions.last_mut().expect("scope has a region");
-        let entry = region.items.entry(name.to_string()).or_default();
+        let entry = Rc::make_mut(&mut region.items)
+            .entry(name.to_string())
+            .or_default();
         let clash = entry.iter().any(|old| {
             !(matches!(old, Item::Poison(_)) || old.overloadable() && item.overloadable())
         });
@@ -203,14 +213,17 @@ impl<'a> Scope<'a> {
     /// Makes `item` use-visible (outermost region); repeated imports are harmless.
     pub fn import(&mut self, name: &str, item: Item<'a>) {
         let region = &mut self.regions[0];
-        region.items.entry(name.to_string()).or_default().push(item);
+        Rc::make_mut(&mut region.items)
+            .entry(name.to_string())
+            .or_default()
+            .push(item);
     }
 
     /// Replaces the items of `name` in the innermost region that declares it.
     pub fn replace(&mut self, name: &str, items: Vec<Item<'a>>) {
         for region in self.regions.iter_mut().rev() {
-            if let Some(slot) = region.items.get_mut(name) {
-                *slot = items;
+            if region.items.contains_key(name) {
+                Rc::make_mut(&mut region.items).insert(name.to_string(), items);
                 return;
             }
         }

@@ -62,7 +62,16 @@ fn mode(m: Option<Mode>) -> ParamMode {
 fn body_scope<'a>(sc: &Scope<'a>) -> Scope<'a> {
     let mut out = sc.clone();
     for region in &mut out.regions {
-        for items in region.items.values_mut() {
+        // Only regions that hold a variable are copied (the rest stay shared).
+        let has_variable = region
+            .items
+            .values()
+            .flatten()
+            .any(|i| matches!(i, Item::Variable { .. }));
+        if !has_variable {
+            continue;
+        }
+        for items in std::rc::Rc::make_mut(&mut region.items).values_mut() {
             for item in items.iter_mut() {
                 if matches!(item, Item::Variable { .. }) {
                     *item = Item::Poison(Some(

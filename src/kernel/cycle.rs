@@ -16,6 +16,7 @@ use super::analog_model::AnalogModel;
 use super::error::SimError;
 use super::eval::{Env, eval};
 use super::events::{AnalogView, EventKernel};
+use super::progress::Throttle;
 use super::record::Recorder;
 use super::solve_error::solve_error;
 use super::{Outcome, Report, SimOptions, SimResult, SimStats};
@@ -48,6 +49,7 @@ pub(crate) struct Simulation<'d, A> {
     changed: Vec<SignalId>,
     breaks: Vec<(QuantityId, f64)>,
     outcome: Option<Outcome>,
+    progress: Throttle,
 }
 
 impl<'d, A: AnalogModel> Simulation<'d, A> {
@@ -83,6 +85,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             changed: Vec::new(),
             breaks: Vec::new(),
             outcome,
+            progress: Throttle::new(options.progress.clone()),
         };
         if let Some(sys) = analog {
             this.analog = Some(this.quiescent(sys, options)?);
@@ -265,6 +268,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                 true => self.advance(t, target, &mut recorder)?,
                 false => target,
             };
+            self.progress.tick(t);
         }
         // Digital-only runs end with the last event: close the record at the end time.
         if recorder.last_time().is_some_and(|last| last < t) {
@@ -293,6 +297,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                     self.refresh();
                     let crossed = self.sync_above(t1);
                     recorder.record(t1, &self.values, &self.kernel.signals.states);
+                    self.progress.tick(t1);
                     if crossed {
                         return Ok(t1);
                     }

@@ -219,3 +219,48 @@ fn generic_overrides_are_checked() {
         )
     );
 }
+
+/// Use regions are shared between units with the same context clause, but a clause that fails
+/// is reported for every unit that has it, and a shared region written by a nested `use`
+/// stays unchanged for the others.
+#[test]
+fn shared_use_regions_keep_errors_and_visibility_per_unit() {
+    let text = "
+use ieee.no_such_package.all;
+entity a is end entity;
+architecture x of a is begin end architecture;
+use ieee.no_such_package.all;
+entity b is end entity;
+architecture x of b is begin end architecture;
+entity top is end entity;
+architecture x of top is begin
+  ua : entity work.a;
+  ub : entity work.b;
+end architecture;
+";
+    let (_, r) = run(text, "top", &[]);
+    let errors = r.expect_err("the package does not exist");
+    assert_eq!(errors.len(), 2, "{errors:?}");
+    let text = "
+library ieee;
+entity c is end entity;
+architecture x of c is
+  use ieee.math_real.all;
+  constant k : real := math_pi;
+begin end architecture;
+library ieee;
+entity d is end entity;
+architecture x of d is
+  constant k : real := math_pi;
+begin end architecture;
+entity top is end entity;
+architecture x of top is begin
+  uc : entity work.c;
+  ud : entity work.d;
+end architecture;
+";
+    let (_, r) = run(text, "top", &[]);
+    let errors = r.expect_err("math_pi is not visible in d");
+    assert_eq!(errors.len(), 1, "{errors:?}");
+    assert!(format!("{:?}", errors[0]).contains("math_pi"));
+}

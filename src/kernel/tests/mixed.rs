@@ -190,6 +190,29 @@ fn rc_low_pass_follows_the_exponential_with_the_analog_system() {
     check_rc(&simulate(&d, &rc_options(), &mut |_| {}).expect("runs"));
 }
 
+/// With a zero interval the progress hook sees every accepted step: times rise to the stop
+/// time, and the results are those of a run without a hook.
+#[test]
+fn progress_hook_follows_the_simulated_time() {
+    use crate::kernel::ProgressHook;
+    use std::sync::{Arc, Mutex};
+    let d = rc_design();
+    let seen = Arc::new(Mutex::new(Vec::new()));
+    let sink = seen.clone();
+    let options = SimOptions {
+        progress: Some(ProgressHook::every(std::time::Duration::ZERO, move |t| {
+            sink.lock().expect("one writer").push(t)
+        })),
+        ..rc_options()
+    };
+    let r = simulate(&d, &options, &mut |_| {}).expect("runs");
+    check_rc(&r);
+    let times = seen.lock().expect("run finished").clone();
+    assert!(times.len() > 10, "{} calls", times.len());
+    assert!(times.windows(2).all(|w| w[0] <= w[1]), "{times:?}");
+    assert_eq!(times.last().copied(), Some(rc_options().stop));
+}
+
 // ---- Bouncing ball -------------------------------------------------------------------------
 
 const H0: f64 = 1.0;
