@@ -4,42 +4,29 @@
 //! `'integ`, an LC tank's energy over 100 periods, and a diode's operating point against the
 //! Shockley equation solved by bisection.
 
-use vams::ast::DesignFile;
+use std::path::PathBuf;
+
+use vams::cli::load::load;
 use vams::design::Design;
 use vams::elaborate::{ElabOptions, elaborate};
 use vams::kernel::{Outcome, SimOptions, SimResult, operating_point, simulate};
-use vams::source::{FileId, SourceMap};
-use vams::{parser, stdlib};
 
 const ROOT: &str = env!("CARGO_MANIFEST_DIR");
 
 /// Elaborates `tests/analog/<name>.vhd` (with the given models) as top `name`.
 fn design(name: &str, models: &[&str]) -> Design {
-    let mut sources = SourceMap::new();
-    let mut ids = stdlib::load(&mut sources);
-    let mut paths: Vec<String> = models
+    let mut paths: Vec<PathBuf> = models
         .iter()
-        .map(|m| format!("{ROOT}/models/{m}.vhd"))
+        .map(|m| PathBuf::from(format!("{ROOT}/models/{m}.vhd")))
         .collect();
-    paths.push(format!("{ROOT}/tests/analog/{name}.vhd"));
-    for p in paths {
-        let text = std::fs::read_to_string(&p).expect("source exists");
-        ids.push(sources.add(p, "work", text));
-    }
-    let files: Vec<(FileId, DesignFile)> = ids
-        .iter()
-        .map(|&id| {
-            let text = sources.file(id).text.clone();
-            let (ast, errors) = parser::parse(id, &text);
-            assert!(errors.is_empty(), "{errors:?}");
-            (id, ast)
-        })
-        .collect();
+    paths.push(PathBuf::from(format!("{ROOT}/tests/analog/{name}.vhd")));
+    let loaded = load(&paths).expect("sources exist");
+    assert_eq!(loaded.error_count(), 0, "{:?}", loaded.syntax_errors);
     let options = ElabOptions {
         top: name.into(),
         generics: Vec::new(),
     };
-    elaborate(&sources, &files, &options).unwrap_or_else(|e| panic!("{e:?}"))
+    elaborate(&loaded.sources, &loaded.files, &options).unwrap_or_else(|e| panic!("{e:?}"))
 }
 
 fn run(name: &str, models: &[&str], stop: f64) -> SimResult {

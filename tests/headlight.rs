@@ -4,41 +4,22 @@
 //! times and 1-2 mV on the feedback (the reference's own step-size error is of that order), and
 //! the testbenches' own assertions must all pass.
 
-use vams::ast::DesignFile;
+use std::path::PathBuf;
+
+use vams::cli::load::load;
 use vams::elaborate::{ElabOptions, elaborate};
 use vams::kernel::{Outcome, SimOptions, SimResult, simulate};
-use vams::source::{FileId, SourceMap};
 use vams::waveform::Waveforms;
-use vams::{parser, stdlib};
 
 fn run(top: &str, stop: f64, reltol: f64) -> SimResult {
-    let mut sources = SourceMap::new();
-    let mut ids = stdlib::load(&mut sources);
-    let dir = format!("{}/models", env!("CARGO_MANIFEST_DIR"));
-    let mut paths: Vec<_> = std::fs::read_dir(&dir)
-        .expect("models/ exists")
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "vhd"))
-        .collect();
-    paths.sort();
-    for p in paths {
-        let text = std::fs::read_to_string(&p).expect("model readable");
-        ids.push(sources.add(p.display().to_string(), "work", text));
-    }
-    let files: Vec<(FileId, DesignFile)> = ids
-        .iter()
-        .map(|&id| {
-            let text = sources.file(id).text.clone();
-            let (ast, errors) = parser::parse(id, &text);
-            assert!(errors.is_empty(), "{errors:?}");
-            (id, ast)
-        })
-        .collect();
+    let models = PathBuf::from(format!("{}/models", env!("CARGO_MANIFEST_DIR")));
+    let loaded = load(&[models]).expect("models/ readable");
+    assert_eq!(loaded.error_count(), 0, "{:?}", loaded.syntax_errors);
     let options = ElabOptions {
         top: top.into(),
         generics: Vec::new(),
     };
-    let design = elaborate(&sources, &files, &options).expect("elaborates");
+    let design = elaborate(&loaded.sources, &loaded.files, &options).expect("elaborates");
     let sim = SimOptions {
         stop,
         reltol,

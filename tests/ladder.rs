@@ -3,11 +3,11 @@
 //! stability limit. The output node must follow the reference within 1e-3 V (of the 1 V step)
 //! at every recorded sample.
 
-use vams::ast::DesignFile;
+use std::path::PathBuf;
+
+use vams::cli::load::load;
 use vams::elaborate::{ElabOptions, elaborate};
 use vams::kernel::{Outcome, SimOptions, simulate};
-use vams::source::{FileId, SourceMap};
-use vams::{parser, stdlib};
 
 const SECTIONS: usize = 50;
 const R_TOTAL: f64 = 1.0e3;
@@ -78,24 +78,13 @@ fn fifty_section_ladder_matches_rk4_within_a_millivolt() {
         "{}/tests/simulate/rc_ladder.vhd",
         env!("CARGO_MANIFEST_DIR")
     );
-    let text = std::fs::read_to_string(&path).expect("ladder model exists");
-    let mut sources = SourceMap::new();
-    let mut ids = stdlib::load(&mut sources);
-    ids.push(sources.add(path, "work", text));
-    let files: Vec<(FileId, DesignFile)> = ids
-        .iter()
-        .map(|&id| {
-            let text = sources.file(id).text.clone();
-            let (ast, errors) = parser::parse(id, &text);
-            assert!(errors.is_empty(), "syntax errors: {errors:?}");
-            (id, ast)
-        })
-        .collect();
+    let loaded = load(&[PathBuf::from(path)]).expect("ladder model exists");
+    assert_eq!(loaded.error_count(), 0, "{:?}", loaded.syntax_errors);
     let options = ElabOptions {
         top: "rc_ladder".into(),
         generics: vec![("n".into(), SECTIONS.to_string())],
     };
-    let design = elaborate(&sources, &files, &options).expect("ladder elaborates");
+    let design = elaborate(&loaded.sources, &loaded.files, &options).expect("ladder elaborates");
     let sim = SimOptions {
         stop: STOP,
         reltol: 1e-4,

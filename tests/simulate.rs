@@ -1,11 +1,11 @@
 //! End-to-end simulations of small `.vhd` files in `tests/simulate/`, checked against closed-form
 //! solutions with stated tolerances: source text -> parse -> elaborate -> simulate.
 
-use vams::ast::DesignFile;
+use std::path::PathBuf;
+
+use vams::cli::load::load;
 use vams::elaborate::{ElabOptions, elaborate};
 use vams::kernel::{Outcome, Severity, SimError, SimOptions, SimResult, simulate};
-use vams::source::{FileId, SourceMap};
-use vams::{parser, stdlib};
 
 /// Runs `tests/simulate/<name>.vhd` with top entity `name`.
 fn run(name: &str, options: SimOptions) -> SimResult {
@@ -15,28 +15,13 @@ fn run(name: &str, options: SimOptions) -> SimResult {
 /// Like [`run`], for runs that end in a simulation error.
 fn try_run(name: &str, options: SimOptions) -> Result<SimResult, SimError> {
     let path = format!("{}/tests/simulate/{name}.vhd", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(&path).expect("test source exists");
-    let mut sources = SourceMap::new();
-    let mut ids = stdlib::load(&mut sources);
-    ids.push(sources.add(path, "work", text));
-    let files: Vec<(FileId, DesignFile)> = ids
-        .iter()
-        .map(|&id| {
-            let text = sources.file(id).text.clone();
-            let (ast, errors) = parser::parse(id, &text);
-            assert!(
-                errors.is_empty(),
-                "syntax errors in {}: {errors:?}",
-                sources.file(id).name
-            );
-            (id, ast)
-        })
-        .collect();
+    let loaded = load(&[PathBuf::from(path)]).expect("test source exists");
+    assert_eq!(loaded.error_count(), 0, "{:?}", loaded.syntax_errors);
     let options_elab = ElabOptions {
         top: name.to_string(),
         generics: Vec::new(),
     };
-    let design = match elaborate(&sources, &files, &options_elab) {
+    let design = match elaborate(&loaded.sources, &loaded.files, &options_elab) {
         Ok(d) => d,
         Err(errors) => panic!("elaboration failed: {errors:?}"),
     };
