@@ -44,6 +44,8 @@ pub struct AnalogSystem {
     names: Vec<String>,
     unknowns: Vec<Unknown>,
     origins: Vec<Origin>,
+    /// Assembly row of each solver row.
+    row_source: Vec<usize>,
     quantity_slot: Vec<usize>,
     /// The residuals as assembled (before source scaling), for listings.
     residuals: Vec<Sym>,
@@ -134,9 +136,30 @@ impl AnalogSystem {
             },
         )?;
 
+        // Solver row j is the equation matched to unknown j: the diagonal is then a structural
+        // nonzero (gmin stamps a real entry), and the sparse LU's fill-reducing order sees no
+        // spurious couplings between an unrelated equation and unknown that happen to share an
+        // index (on an RC ladder those made the fill grow with the square of the size).
+        let matching = structure::maximum_matching(&inc);
+        let row_source: Vec<usize> = match matching.col_match.iter().copied().collect() {
+            Some(rows) if n == n_eq => rows,
+            // `check` passed, so the matching is perfect; keep assembly order otherwise.
+            _ => (0..n_eq).collect(),
+        };
+        let mut solver_row = vec![0; n_eq];
+        for (new, &old) in row_source.iter().enumerate() {
+            solver_row[old] = new;
+        }
+        for entry in &mut pattern {
+            entry.0 = solver_row[entry.0];
+        }
+
         let scale = design.signals.len();
         let mut rb = TapeBuilder::default();
-        for (r, origin) in asm.residuals.iter().zip(&asm.origins) {
+        for (r, origin) in row_source
+            .iter()
+            .map(|&old| (&asm.residuals[old], &asm.origins[old]))
+        {
             let r = match origin {
                 Origin::User(_) => scale_sources(r.clone(), scale),
                 _ => r.clone(),
@@ -204,6 +227,7 @@ impl AnalogSystem {
             names: asm.names,
             unknowns: asm.unknowns,
             origins: asm.origins,
+            row_source,
             quantity_slot: asm.quantity_slot,
             residuals: asm.residuals,
             differential,
@@ -233,9 +257,16 @@ impl AnalogSystem {
         &self.unknowns
     }
 
-    /// Where each equation (residual row) comes from.
+    /// Where each equation comes from, in assembly order (user equations, across definitions,
+    /// conservation laws: the order `vams dae` lists them); solver row `j` is assembly row
+    /// [`Self::row_source`]`[j]`.
     pub fn origins(&self) -> &[Origin] {
         &self.origins
+    }
+
+    /// The assembly row of each solver row (solver row `j` is matched to unknown `j`).
+    pub fn row_source(&self) -> &[usize] {
+        &self.row_source
     }
 
     /// Description and span of equation `row` (a [`SolveError`]'s row index), for messages:
@@ -245,7 +276,7 @@ impl AnalogSystem {
         design: &Design,
         row: usize,
     ) -> Option<(String, crate::source::Span)> {
-        let origin = *self.origins.get(row)?;
+        let origin = *self.origins.get(*self.row_source.get(row)?)?;
         Some((origin.describe(design), origin.span(design)))
     }
 
