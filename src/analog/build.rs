@@ -245,27 +245,31 @@ pub fn assemble(design: &Design) -> Result<Assembled, Vec<AnalogError>> {
             origins.push(Origin::Across(QuantityId(i as u32)));
         }
     }
+    // The through quantities at each terminal, in quantity order: (slot, leaves the terminal).
+    // One pass over the quantities, so building the laws stays linear in the design's size.
+    let mut incident: Vec<Vec<(usize, bool)>> = vec![Vec::new(); design.terminals.len()];
+    for (i, q) in design.quantities.iter().enumerate() {
+        if let QuantityKind::Through { plus, minus } = q.kind {
+            incident[plus.index()].push((quantity_slot[i], true));
+            if minus != plus {
+                incident[minus.index()].push((quantity_slot[i], false));
+            }
+        }
+    }
     for (t, slot) in potential_slot.iter().enumerate() {
         if slot.is_none() {
             continue;
         }
-        let mut sum: Option<Sym> = None;
-        for (i, q) in design.quantities.iter().enumerate() {
-            if let QuantityKind::Through { plus, minus } = q.kind {
-                let x = Sym::X(quantity_slot[i]);
-                let term = if plus.index() == t {
-                    x
-                } else if minus.index() == t {
-                    Sym::neg(x)
+        let sum = incident[t]
+            .iter()
+            .map(|&(x, leaves)| {
+                if leaves {
+                    Sym::X(x)
                 } else {
-                    continue;
-                };
-                sum = Some(match sum {
-                    None => term,
-                    Some(s) => Sym::add(s, term),
-                });
-            }
-        }
+                    Sym::neg(Sym::X(x))
+                }
+            })
+            .reduce(Sym::add);
         if let Some(s) = sum {
             residuals.push(s);
             origins.push(Origin::Conservation(TerminalId(t as u32)));
