@@ -50,12 +50,18 @@ pub fn maximum_matching(inc: &Incidence) -> Matching {
     }
     // parent_col[c] = the row from which column c was reached in this search.
     let mut parent = vec![usize::MAX; nc];
+    let mut reached: Vec<usize> = Vec::new();
     let mut queue = VecDeque::new();
     for start in 0..nr {
         if row_match[start].is_some() {
             continue;
         }
-        parent.fill(usize::MAX);
+        // Reset only the columns the last search reached: a full fill per search would make
+        // the matching quadratic in the system size.
+        for &c in &reached {
+            parent[c] = usize::MAX;
+        }
+        reached.clear();
         queue.clear();
         queue.push_back(start);
         let mut free_col = None;
@@ -65,6 +71,7 @@ pub fn maximum_matching(inc: &Incidence) -> Matching {
                     continue;
                 }
                 parent[c] = r;
+                reached.push(c);
                 match col_match[c] {
                     None => {
                         free_col = Some(c);

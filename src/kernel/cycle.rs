@@ -114,12 +114,17 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         }
         self.kernel.take_breaks(&mut self.breaks);
         // A later break value for the same quantity replaces an earlier one.
+        // (A position per slot keeps this linear: a ladder has one break per capacitor.)
         let mut fixed: Vec<(usize, f64)> = Vec::new();
+        let mut position: Vec<Option<usize>> = vec![None; n];
         for &(q, v) in &self.breaks {
             let slot = slots[q.index()];
-            match fixed.iter_mut().find(|(s, _)| *s == slot) {
-                Some(entry) => entry.1 = v,
-                None => fixed.push((slot, v)),
+            match position[slot] {
+                Some(k) => fixed[k].1 = v,
+                None => {
+                    position[slot] = Some(fixed.len());
+                    fixed.push((slot, v));
+                }
             }
         }
         let abstol = match options.abstol {
