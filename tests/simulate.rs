@@ -330,6 +330,15 @@ fn worst_error(
         .fold(0.0, f64::max)
 }
 
+/// Unit step response at `t0` of `w^2 / (s^2 + 2 zeta w s + w^2)`, underdamped.
+fn second_order_step(w: f64, zeta: f64, t0: f64) -> impl Fn(f64) -> f64 {
+    let wd = w * (1.0 - zeta * zeta).sqrt();
+    move |t| {
+        let s = t - t0;
+        1.0 - (-zeta * w * s).exp() * ((wd * s).cos() + zeta * w / wd * (wd * s).sin())
+    }
+}
+
 fn options(stop: f64) -> SimOptions {
     SimOptions {
         stop,
@@ -358,11 +367,7 @@ fn ltf_second_order_underdamped_step() {
     let result = run("ltf_second_order", options(11e-3));
     assert_eq!(result.outcome, Outcome::Finished);
     let (w, zeta) = (1e3_f64, 0.2_f64);
-    let wd = w * (1.0 - zeta * zeta).sqrt();
-    let exact = |t: f64| {
-        let s = t - 1e-3;
-        1.0 - (-zeta * w * s).exp() * ((wd * s).cos() + zeta * w / wd * (wd * s).sin())
-    };
+    let exact = second_order_step(w, zeta, 1e-3);
     let err = worst_error(&result, "y", 1.0001e-3, 11e-3, exact);
     // Overshoot 1 + exp(-pi zeta / sqrt(1 - zeta^2)) = 1.53: 5e-4 absolute is 0.1 %.
     assert!(err < 5e-4, "step response error {err}");
@@ -501,10 +506,7 @@ fn dot_dot_and_integ_of_a_second_order_step() {
     assert_eq!(result.outcome, Outcome::Finished);
     let (w, zeta) = (1e3_f64, 0.2_f64);
     let wd = w * (1.0 - zeta * zeta).sqrt();
-    let exact = |t: f64| {
-        let s = t - 1e-3;
-        1.0 - (-zeta * w * s).exp() * ((wd * s).cos() + zeta * w / wd * (wd * s).sin())
-    };
+    let exact = second_order_step(w, zeta, 1e-3);
     let err = worst_error(&result, "x", 1.0001e-3, 11e-3, exact);
     assert!(err < 5e-4, "x'dot'dot equation: step response error {err}");
     // x'integ against the closed-form integral of the step response from 1 ms:
