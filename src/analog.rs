@@ -12,7 +12,7 @@
 //! terminals) -> `deriv` (symbolic dF/dx and dF/dx') -> `structure` (count rule, matching,
 //! Dulmage-Mendelsohn) -> `tape` (residuals and Jacobian entries as flat programs).
 
-use crate::design::{Design, QuantityId, SignalId, SignalKind};
+use crate::design::{Design, Expr, Instr, QuantityId, SignalId, SignalKind};
 use crate::solver::{DaeSystem, OpOptions, SolveError};
 
 mod build;
@@ -22,6 +22,7 @@ mod error;
 mod listing;
 mod lower;
 mod quiescent;
+mod reduce;
 mod structure;
 mod sym;
 mod tape;
@@ -46,9 +47,12 @@ pub struct AnalogSystem {
     origins: Vec<Origin>,
     /// Assembly row of each solver row.
     row_source: Vec<usize>,
-    quantity_slot: Vec<usize>,
-    /// The residuals as assembled (before source scaling), for listings.
-    residuals: Vec<Sym>,
+    /// Solver index of each quantity, `None` when eliminated.
+    quantity_slot: Vec<Option<usize>>,
+    /// The quantities `quantity_values` fills and where each comes from.
+    fill: Vec<(u32, QuantitySource)>,
+    /// The eliminated unknowns, for listings.
+    eliminated: Vec<Eliminated>,
     differential: Vec<bool>,
     pattern: Vec<(usize, usize)>,
     residual_tape: Tape,
@@ -57,6 +61,8 @@ pub struct AnalogSystem {
     /// Per pattern entry, the jacobian tape outputs of dF/dx and dF/dx' (if nonzero).
     jac_dx: Vec<Option<usize>>,
     jac_ddot: Vec<Option<usize>>,
+    /// Values and `'dot`s of eliminated quantities (see `quantity_output`).
+    outputs_tape: Tape,
     /// Signal values read by equations; the last slot is the source scale.
     signals: Vec<f64>,
     reads: Vec<bool>,
@@ -66,11 +72,35 @@ pub struct AnalogSystem {
     last_xdot: Vec<f64>,
     /// Per unknown, the absolute tolerance of its tolerance group, when known.
     group_abstol: Vec<Option<f64>>,
+    /// Per unknown, the largest `|c|` of an eliminated quantity `c * x` without a tolerance
+    /// group: the default absolute tolerance applies to `x` divided by it.
+    alias_scale: Vec<f64>,
     /// `Q'delayed` histories, by index into `Design::delays`; their values go to the signal
     /// slots after the source scale (see `delay::history_slot`).
     delay_lines: Vec<delay::DelayLine>,
     /// Number of design signals (the source scale's slot).
     design_signals: usize,
+}
+
+/// An unknown solved for and substituted (indices of the system as assembled).
+pub struct Eliminated {
+    /// Index among the assembled unknowns.
+    pub unknown: usize,
+    /// The quantity, unless the unknown is a terminal potential.
+    pub quantity: Option<QuantityId>,
+    /// Assembly row of the equation it was solved from.
+    pub solved_from: usize,
+    /// Its value in terms of the solver's unknowns.
+    replacement: Sym,
+}
+
+/// Where `quantity_values` takes a quantity's value and `'dot` from.
+#[derive(Clone, Copy, Debug)]
+enum QuantitySource {
+    /// Solver unknown.
+    State(u32),
+    /// Outputs-tape entries of an eliminated quantity.
+    Output(u32, u32),
 }
 
 /// Multiplies every top-level additive term of `e` that reads no unknown by the source-scale
@@ -91,87 +121,150 @@ fn scale_sources(e: Sym, scale: usize) -> Sym {
     }
 }
 
+/// Choices made when compiling a design.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct AnalogOptions {
+    /// Solve equations for unknowns they give explicitly and substitute them (see
+    /// `reduce`): branch quantities of circuits disappear from the solver's system.
+    pub eliminate: bool,
+}
+
+impl Default for AnalogOptions {
+    fn default() -> Self {
+        AnalogOptions { eliminate: true }
+    }
+}
+
+/// Symbolic derivatives of `residuals` by every unknown they read (`x` and `x'`): the
+/// structural nonzeros, which unknowns appear differentiated, and the derivative expressions.
+struct Derivatives {
+    pattern: Vec<(usize, usize)>,
+    differential: Vec<bool>,
+    exprs: Vec<(Option<Sym>, Option<Sym>)>,
+}
+
+fn derivatives(residuals: &[Sym], n: usize) -> Derivatives {
+    let mut differential = vec![false; n];
+    let mut pattern = Vec::new();
+    let mut exprs = Vec::new();
+    let mut cols = Vec::new();
+    for (row, r) in residuals.iter().enumerate() {
+        cols.clear();
+        r.visit(&mut |e| match e {
+            Sym::X(j) => cols.push(*j),
+            Sym::Dot(j) => {
+                differential[*j] = true;
+                cols.push(*j);
+            }
+            _ => {}
+        });
+        cols.sort_unstable();
+        cols.dedup();
+        for &col in &cols {
+            let nonzero = |d: Sym| (d.as_const() != Some(0.0)).then_some(d);
+            let dx = nonzero(derivative(r, Var::X(col)));
+            let ddot = nonzero(derivative(r, Var::Dot(col)));
+            if dx.is_some() || ddot.is_some() {
+                pattern.push((row, col));
+                exprs.push((dx, ddot));
+            }
+        }
+    }
+    Derivatives {
+        pattern,
+        differential,
+        exprs,
+    }
+}
+
+/// Unknowns the elimination must keep: break targets (their value is set from outside), the
+/// inputs of `'delayed` (their history is recorded from the state), and quantities whose
+/// `'dot` something other than an equation reads (processes, thresholds, subprograms).
+fn protected_unknowns(design: &Design, quantity_slot: &[usize], n: usize) -> Vec<bool> {
+    let mut protected = vec![false; n];
+    let mut protect = |q: QuantityId| {
+        if let Some(&slot) = quantity_slot.get(q.index()) {
+            protected[slot] = true;
+        }
+    };
+    let mut dots = Vec::new();
+    let mut read_dots = |e: &Expr| {
+        e.visit(&mut |e| {
+            if let Expr::Dot(q) = e {
+                dots.push(*q);
+            }
+        })
+    };
+    let code = design
+        .processes
+        .iter()
+        .flat_map(|p| &p.code)
+        .chain(design.subprograms.iter().flat_map(|s| &s.code));
+    for instr in code {
+        instr.visit_exprs(&mut read_dots);
+        if let Instr::Break { reinit, .. } = instr {
+            for r in reinit {
+                protect(r.selector);
+                protect(r.quantity);
+            }
+        }
+    }
+    for s in &design.signals {
+        if let SignalKind::Above { quantity, level } = &s.kind {
+            read_dots(quantity);
+            read_dots(level);
+        }
+    }
+    for l in &design.limits {
+        read_dots(&l.max_step);
+    }
+    for d in &design.delays {
+        protect(d.input);
+    }
+    for q in dots {
+        protect(q);
+    }
+    protected
+}
+
 impl AnalogSystem {
-    /// Builds unknowns and equations, checks the structure, compiles residuals and Jacobians.
+    /// Builds unknowns and equations, checks the structure, eliminates explicit unknowns and
+    /// compiles residuals and Jacobians.
     pub fn new(design: &Design) -> Result<AnalogSystem, Vec<AnalogError>> {
+        AnalogSystem::with_options(design, &AnalogOptions::default())
+    }
+
+    /// [`AnalogSystem::new`] with explicit choices.
+    pub fn with_options(
+        design: &Design,
+        options: &AnalogOptions,
+    ) -> Result<AnalogSystem, Vec<AnalogError>> {
         let asm = build::assemble(design)?;
         let n = asm.unknowns.len();
         let n_eq = asm.residuals.len();
 
-        // Symbolic derivatives: every unknown a residual reads, by x and by x'.
-        let mut differential = vec![false; n];
-        let mut pattern = Vec::new();
-        let mut jac_exprs: Vec<(Option<Sym>, Option<Sym>)> = Vec::new();
-        for (row, r) in asm.residuals.iter().enumerate() {
-            let mut cols = Vec::new();
-            r.visit(&mut |e| match e {
-                Sym::X(j) => cols.push(*j),
-                Sym::Dot(j) => {
-                    differential[*j] = true;
-                    cols.push(*j);
-                }
-                _ => {}
-            });
-            cols.sort_unstable();
-            cols.dedup();
-            for col in cols {
-                let nonzero = |d: Sym| (d.as_const() != Some(0.0)).then_some(d);
-                let dx = nonzero(derivative(r, Var::X(col)));
-                let ddot = nonzero(derivative(r, Var::Dot(col)));
-                if dx.is_some() || ddot.is_some() {
-                    pattern.push((row, col));
-                    jac_exprs.push((dx, ddot));
-                }
-            }
-        }
-
-        let inc = structure::Incidence::new(n_eq, n, &pattern);
-        structure::check(
-            &inc,
-            &structure::Names {
-                design,
-                unknowns: &asm.unknowns,
-                names: &asm.names,
-                origins: &asm.origins,
-            },
-        )?;
-
-        // Solver row j is the equation matched to unknown j: the diagonal is then a structural
-        // nonzero (gmin stamps a real entry), and the sparse LU's fill-reducing order sees no
-        // spurious couplings between an unrelated equation and unknown that happen to share an
-        // index (on an RC ladder those made the fill grow with the square of the size).
-        let matching = structure::maximum_matching(&inc);
-        let row_source: Vec<usize> = match matching.col_match.iter().copied().collect() {
-            Some(rows) if n == n_eq => rows,
-            // `check` passed, so the matching is perfect; keep assembly order otherwise.
-            _ => (0..n_eq).collect(),
-        };
-        let mut solver_row = vec![0; n_eq];
-        for (new, &old) in row_source.iter().enumerate() {
-            solver_row[old] = new;
-        }
-        for entry in &mut pattern {
-            entry.0 = solver_row[entry.0];
-        }
-
-        let scale = design.signals.len();
-        let mut rb = TapeBuilder::default();
-        for (r, origin) in row_source
-            .iter()
-            .map(|&old| (&asm.residuals[old], &asm.origins[old]))
+        // Structural analysis on the system as written, so diagnostics name the model's own
+        // equations and quantities.
         {
-            let r = match origin {
-                Origin::User(_) => scale_sources(r.clone(), scale),
-                _ => r.clone(),
-            };
-            rb.push(&r);
-        }
-        let mut jb = TapeBuilder::default();
-        let mut jac_dx = Vec::with_capacity(pattern.len());
-        let mut jac_ddot = Vec::with_capacity(pattern.len());
-        for (dx, ddot) in &jac_exprs {
-            jac_dx.push(dx.as_ref().map(|d| jb.push(d)));
-            jac_ddot.push(ddot.as_ref().map(|d| jb.push(d)));
+            let mut full_pattern = Vec::new();
+            let mut cols = Vec::new();
+            for (row, r) in asm.residuals.iter().enumerate() {
+                cols.clear();
+                r.structural_unknowns(&mut cols);
+                cols.sort_unstable();
+                cols.dedup();
+                full_pattern.extend(cols.iter().map(|&c| (row, c)));
+            }
+            let inc = structure::Incidence::new(n_eq, n, &full_pattern);
+            structure::check(
+                &inc,
+                &structure::Names {
+                    design,
+                    unknowns: &asm.unknowns,
+                    names: &asm.names,
+                    origins: &asm.origins,
+                },
+            )?;
         }
 
         let mut reads = vec![false; design.signals.len()];
@@ -186,6 +279,121 @@ impl AnalogSystem {
             });
         }
 
+        // Source scaling before elimination, so that a source's value keeps its scale factor
+        // wherever substitution carries it.
+        let scale = design.signals.len();
+        let scaled: Vec<Sym> = asm
+            .residuals
+            .into_iter()
+            .zip(&asm.origins)
+            .map(|(r, origin)| match origin {
+                Origin::User(_) => scale_sources(r, scale),
+                _ => r,
+            })
+            .collect();
+        let protected = if options.eliminate {
+            let mut protected = protected_unknowns(design, &asm.quantity_slot, n);
+            for r in &scaled {
+                reduce::mark_nonlinear(r, &mut protected);
+            }
+            protected
+        } else {
+            vec![true; n]
+        };
+        let potential: Vec<bool> = asm
+            .unknowns
+            .iter()
+            .map(|u| matches!(u, Unknown::Potential(_)))
+            .collect();
+        let elim = reduce::eliminate(
+            scaled,
+            &reduce::Candidates {
+                protected: &protected,
+                potential: &potential,
+            },
+        );
+
+        // Survivors, renumbered in their original order.
+        let mut live = vec![usize::MAX; n];
+        let mut names = Vec::new();
+        let mut unknowns = Vec::new();
+        let all_unknowns = asm.unknowns.clone();
+        for (j, (name, unknown)) in asm.names.into_iter().zip(asm.unknowns).enumerate() {
+            if elim.replacement[j].is_none() {
+                live[j] = unknowns.len();
+                names.push(name);
+                unknowns.push(unknown);
+            }
+        }
+        let n = unknowns.len();
+        let renumber = |e: &Sym| reduce::renumber(e, &|k| live[k]);
+        let kept_rows: Vec<usize> = elim.kept.iter().map(|(row, _)| *row).collect();
+        let residuals: Vec<Sym> = elim.kept.iter().map(|(_, r)| renumber(r)).collect();
+        let n_eq = residuals.len();
+        let Derivatives {
+            mut pattern,
+            differential,
+            exprs: jac_exprs,
+        } = derivatives(&residuals, n);
+
+        // Solver row j is the equation matched to unknown j: the diagonal is then a structural
+        // nonzero (gmin stamps a real entry), and the sparse LU's fill-reducing order sees no
+        // spurious couplings between an unrelated equation and unknown that happen to share an
+        // index (on an RC ladder those made the fill grow with the square of the size).
+        let inc = structure::Incidence::new(n_eq, n, &pattern);
+        let matching = structure::maximum_matching(&inc);
+        let order: Vec<usize> = match matching.col_match.iter().copied().collect() {
+            Some(rows) if n == n_eq => rows,
+            // The full system passed `check`; keep this order if elimination lost the
+            // structure (the factorisation then reports the singular row).
+            _ => (0..n_eq).collect(),
+        };
+        let mut solver_row = vec![0; n_eq];
+        for (new, &old) in order.iter().enumerate() {
+            solver_row[old] = new;
+        }
+        for entry in &mut pattern {
+            entry.0 = solver_row[entry.0];
+        }
+        let row_source: Vec<usize> = order.iter().map(|&k| kept_rows[k]).collect();
+
+        let mut rb = TapeBuilder::default();
+        for &k in &order {
+            rb.push(&residuals[k]);
+        }
+        drop(residuals);
+        let mut jb = TapeBuilder::default();
+        let mut jac_dx = Vec::with_capacity(pattern.len());
+        let mut jac_ddot = Vec::with_capacity(pattern.len());
+        for (dx, ddot) in &jac_exprs {
+            jac_dx.push(dx.as_ref().map(|d| jb.push(d)));
+            jac_ddot.push(ddot.as_ref().map(|d| jb.push(d)));
+        }
+        drop(jac_exprs);
+
+        // Eliminated quantities are evaluated from the survivors for output and processes.
+        let quantity_slot: Vec<Option<usize>> = asm
+            .quantity_slot
+            .iter()
+            .map(|&j| (live[j] != usize::MAX).then_some(live[j]))
+            .collect();
+        let eliminated: Vec<Eliminated> = elim
+            .replacement
+            .iter()
+            .enumerate()
+            .filter_map(|(j, r)| {
+                Some(Eliminated {
+                    unknown: j,
+                    quantity: match all_unknowns[j] {
+                        Unknown::Quantity(q) => Some(q),
+                        Unknown::Potential(_) => None,
+                    },
+                    solved_from: elim.solved_from[j].unwrap_or(usize::MAX),
+                    replacement: renumber(r.as_ref()?),
+                })
+            })
+            .collect();
+
         let slot_of = |q: usize| asm.quantity_slot[q];
         let mut above = Vec::new();
         let mut roots = TapeBuilder::default();
@@ -194,7 +402,7 @@ impl AnalogSystem {
             if let SignalKind::Above { quantity, level } = &s.kind {
                 match (lower(quantity, &slot_of), lower(level, &slot_of)) {
                     (Ok(q), Ok(l)) => {
-                        roots.push(&Sym::sub(q, l));
+                        roots.push(&renumber(&elim.apply(&Sym::sub(q, l))));
                         above.push(SignalId(i as u32));
                     }
                     (Err(e), _) | (_, Err(e)) => errors.push(AnalogError::NotAnalog {
@@ -217,34 +425,103 @@ impl AnalogSystem {
         // History not ready: `Q'delayed(T) = Q` (the quiescent domain).
         signals.push(0.0);
         signals.extend(design.delays.iter().map(|_| 0.0));
+        // Delay inputs are protected, so they survive elimination.
         let delay_lines = design
             .delays
             .iter()
-            .map(|d| delay::DelayLine::new(asm.quantity_slot[d.input.index()], d.delay))
+            .map(|d| delay::DelayLine::new(live[asm.quantity_slot[d.input.index()]], d.delay))
             .collect();
-        let group_abstol = tolerance::per_unknown(design, &asm.unknowns);
-        Ok(AnalogSystem {
-            names: asm.names,
-            unknowns: asm.unknowns,
+        // An unknown that is a scaled alias of an eliminated quantity (`y = c * x`) inherits
+        // that quantity's absolute tolerance divided by `|c|`, so the error control stays as
+        // strict as it was on the quantity (a transfer function's internal state is often
+        // scaled far below its output).
+        let full_abstol = tolerance::per_unknown(design, &all_unknowns);
+        let mut group_abstol: Vec<Option<f64>> = (0..all_unknowns.len())
+            .filter(|&j| live[j] != usize::MAX)
+            .map(|j| full_abstol[j])
+            .collect();
+        let mut alias_scale = vec![1.0_f64; n];
+        for (j, r) in elim.replacement.iter().enumerate() {
+            let Some(terms) = r.as_ref().and_then(reduce::affine) else {
+                continue;
+            };
+            let [(k, c)] = terms[..] else { continue };
+            let (k, c) = (live[k], c.abs());
+            if !(c.is_finite() && c > 0.0) {
+                continue;
+            }
+            match full_abstol[j] {
+                Some(a) => {
+                    let scaled = a / c;
+                    group_abstol[k] = Some(group_abstol[k].map_or(scaled, |own| own.min(scaled)));
+                }
+                None => alias_scale[k] = alias_scale[k].max(c),
+            }
+        }
+        let mut system = AnalogSystem {
+            names,
+            unknowns,
             origins: asm.origins,
             row_source,
-            quantity_slot: asm.quantity_slot,
-            residuals: asm.residuals,
+            quantity_slot,
+            fill: Vec::new(),
+            eliminated,
             differential,
             pattern,
             residual_tape: rb.finish(),
             jacobian_tape: jb.finish(),
             jac_dx,
             jac_ddot,
+            outputs_tape: Tape::default(),
             signals,
             reads,
             above,
             roots_tape: roots.finish(),
             last_xdot: vec![0.0; n],
             group_abstol,
+            alias_scale,
             delay_lines,
             design_signals: design.signals.len(),
-        })
+        };
+        system.select_quantities(&vec![true; design.quantities.len()]);
+        Ok(system)
+    }
+
+    /// Chooses the quantities [`AnalogSystem::quantity_values`] fills (by `QuantityId`; all by
+    /// default): eliminated quantities cost an evaluation at every accepted step, so a run
+    /// asks only for those it records or its processes read.
+    pub fn select_quantities(&mut self, wanted: &[bool]) {
+        let mut ob = TapeBuilder::default();
+        let mut output = vec![None; self.quantity_slot.len()];
+        for e in &self.eliminated {
+            let Some(q) = e.quantity else { continue };
+            if !wanted.get(q.index()).copied().unwrap_or(false) {
+                continue;
+            }
+            // The `'dot` of a quantity whose expression reads `'dot`s or `now` is not
+            // available (NaN); quantities whose `'dot` is read elsewhere are never eliminated.
+            let dot = match e.replacement.reads_time_or_dot() {
+                false => reduce::time_derivative(&e.replacement).unwrap_or(Sym::Const(f64::NAN)),
+                true => Sym::Const(f64::NAN),
+            };
+            output[q.index()] = Some((ob.push(&e.replacement) as u32, ob.push(&dot) as u32));
+        }
+        self.fill = self
+            .quantity_slot
+            .iter()
+            .zip(output)
+            .enumerate()
+            .filter(|(q, _)| wanted.get(*q).copied().unwrap_or(false))
+            .filter_map(|(q, (slot, out))| {
+                let source = match (slot, out) {
+                    (Some(j), _) => QuantitySource::State(*j as u32),
+                    (None, Some((v, d))) => QuantitySource::Output(v, d),
+                    (None, None) => return None,
+                };
+                Some((q as u32, source))
+            })
+            .collect();
+        self.outputs_tape = ob.finish();
     }
 
     /// Names of the unknowns in solver order (quantity names; `v(t)` for terminal potentials).
@@ -290,10 +567,44 @@ impl AnalogSystem {
         Some((self.names[col].clone(), unknown.span(design)))
     }
 
-    /// Index of quantity `q` in the unknown vector (`q` must belong to the design the system
-    /// was built from).
-    pub fn quantity_slot(&self, q: QuantityId) -> usize {
-        self.quantity_slot[q.index()]
+    /// Index of quantity `q` in the unknown vector; `None` when `q` was eliminated or belongs
+    /// to another design.
+    pub fn quantity_slot(&self, q: QuantityId) -> Option<usize> {
+        self.quantity_slot.get(q.index()).copied().flatten()
+    }
+
+    /// The unknowns solved for and substituted before compiling.
+    pub fn eliminated(&self) -> &[Eliminated] {
+        &self.eliminated
+    }
+
+    /// The selected quantities' values and `'dot`s at the state `(t, x, x')` (see
+    /// [`AnalogSystem::select_quantities`]; others are left as they are): surviving ones read
+    /// from the state, eliminated ones evaluated (a `'dot` that cannot be, because the quantity's
+    /// expression reads `'dot`s or `now`, is NaN; such quantities are kept when read).
+    pub fn quantity_values(
+        &mut self,
+        t: f64,
+        x: &[f64],
+        xdot: &[f64],
+        values: &mut [f64],
+        derivatives: &mut [f64],
+    ) {
+        if !self.outputs_tape.is_empty() {
+            self.load_delays(t);
+            self.outputs_tape.eval(t, x, xdot, &self.signals);
+        }
+        for &(q, source) in &self.fill {
+            let (v, d) = match source {
+                QuantitySource::State(j) => (x[j as usize], xdot[j as usize]),
+                QuantitySource::Output(v, d) => (
+                    self.outputs_tape.output(v as usize),
+                    self.outputs_tape.output(d as usize),
+                ),
+            };
+            values[q as usize] = v;
+            derivatives[q as usize] = d;
+        }
     }
 
     /// Sets the value that equations read for signal `s` (booleans and enums as positions).
@@ -349,7 +660,8 @@ impl AnalogSystem {
     pub fn abstol(&self, default: f64) -> Vec<f64> {
         self.group_abstol
             .iter()
-            .map(|a| a.unwrap_or(default))
+            .zip(&self.alias_scale)
+            .map(|(a, scale)| a.unwrap_or(default).min(default / scale))
             .collect()
     }
 
@@ -414,7 +726,7 @@ impl DaeSystem for AnalogSystem {
     fn residual(&mut self, t: f64, x: &[f64], xdot: &[f64], out: &mut [f64]) {
         self.load_delays(t);
         self.residual_tape.eval(t, x, xdot, &self.signals);
-        for (i, o) in out.iter_mut().enumerate().take(self.residuals.len()) {
+        for (i, o) in out.iter_mut().enumerate().take(self.names.len()) {
             *o = self.residual_tape.output(i);
         }
         if !self.above.is_empty() {

@@ -461,6 +461,55 @@ pub enum Instr {
     Return(Option<Expr>),
 }
 
+impl Instr {
+    /// Calls `f` on each expression the instruction holds (not their sub-expressions).
+    pub fn visit_exprs(&self, f: &mut impl FnMut(&Expr)) {
+        match self {
+            Instr::SetVar { value, .. } => f(value),
+            Instr::SetVarElement { index, value, .. } => {
+                f(index);
+                f(value);
+            }
+            Instr::Assign {
+                waveform,
+                mechanism,
+                ..
+            } => {
+                for (v, d) in waveform {
+                    f(v);
+                    f(d);
+                }
+                if let DelayMechanism::Inertial {
+                    reject: Some(reject),
+                } = mechanism
+                {
+                    f(reject);
+                }
+            }
+            Instr::Wait { until, timeout, .. } => {
+                until.iter().chain(timeout).for_each(f);
+            }
+            Instr::JumpIfNot { cond, .. } => f(cond),
+            Instr::Assert {
+                cond,
+                report,
+                severity,
+                ..
+            } => {
+                cond.iter().chain(report).for_each(&mut *f);
+                f(severity);
+            }
+            Instr::Break { reinit, when, .. } => {
+                reinit.iter().for_each(|r| f(&r.value));
+                when.iter().for_each(f);
+            }
+            Instr::Call { args, .. } => args.iter().for_each(f),
+            Instr::Return(value) => value.iter().for_each(f),
+            Instr::Jump(_) | Instr::Stop | Instr::Halt => {}
+        }
+    }
+}
+
 /// `q => value` in a break list, or `for selector use q => value` (`selector` is the quantity
 /// whose `'dot` equation is replaced; equal to `quantity` for the plain form).
 #[derive(Clone, Debug)]

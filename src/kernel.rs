@@ -11,7 +11,7 @@
 //! May use `design`, `analog`, `solver`, `waveform`, `source`. Never looks at the AST. Designs
 //! without quantities never build an analog system.
 
-use crate::analog::AnalogSystem;
+use crate::analog::{AnalogOptions, AnalogSystem};
 use crate::design::Design;
 use crate::source::Span;
 use crate::waveform::Waveforms;
@@ -53,6 +53,9 @@ pub struct SimOptions {
     pub probes: Vec<String>,
     /// Told the simulated time as the run advances (a progress bar), if given.
     pub progress: Option<ProgressHook>,
+    /// Solve for every unknown of the model instead of eliminating those an equation gives
+    /// explicitly (slower; for comparisons and for debugging a model).
+    pub keep_unknowns: bool,
 }
 
 impl Default for SimOptions {
@@ -64,6 +67,7 @@ impl Default for SimOptions {
             max_step: None,
             probes: Vec::new(),
             progress: None,
+            keep_unknowns: false,
         }
     }
 }
@@ -151,7 +155,10 @@ pub fn simulate(
     on_report: &mut dyn FnMut(&Report),
 ) -> Result<SimResult, SimError> {
     let recorder = Recorder::new(design, &options.probes)?;
-    let analog = analog_system(design)?;
+    let mut analog = analog_system(design, options)?;
+    if let Some(a) = analog.as_mut() {
+        a.select_quantities(&wanted_quantities(design, &recorder));
+    }
     Simulation::start(design, options, analog, on_report)?.run(recorder, on_report)
 }
 
@@ -161,17 +168,49 @@ pub fn operating_point(
     design: &Design,
     options: &SimOptions,
 ) -> Result<Vec<(String, f64)>, SimError> {
-    let analog = analog_system(design)?;
+    let analog = analog_system(design, options)?;
     let sim = Simulation::start(design, options, analog, &mut |_| {})?;
     Ok(sim.operating_point())
 }
 
+/// The quantities a run needs each accepted step: those recorded and those processes read.
+fn wanted_quantities(design: &Design, recorder: &Recorder) -> Vec<bool> {
+    let mut wanted = vec![false; design.quantities.len()];
+    for q in recorder.quantities() {
+        wanted[q.index()] = true;
+    }
+    let mut mark = |e: &crate::design::Expr| {
+        e.visit(&mut |e| {
+            if let crate::design::Expr::Quantity(q) | crate::design::Expr::Dot(q) = e
+                && let Some(w) = wanted.get_mut(q.index())
+            {
+                *w = true;
+            }
+        })
+    };
+    let code = design
+        .processes
+        .iter()
+        .flat_map(|p| &p.code)
+        .chain(design.subprograms.iter().flat_map(|s| &s.code));
+    for instr in code {
+        instr.visit_exprs(&mut mark);
+    }
+    for l in &design.limits {
+        mark(&l.max_step);
+    }
+    wanted
+}
+
 /// The analog system, or `None` for a design without quantities.
-fn analog_system(design: &Design) -> Result<Option<AnalogSystem>, SimError> {
+fn analog_system(design: &Design, options: &SimOptions) -> Result<Option<AnalogSystem>, SimError> {
     if design.quantities.is_empty() {
         return Ok(None);
     }
-    AnalogSystem::new(design)
+    let analog = AnalogOptions {
+        eliminate: !options.keep_unknowns,
+    };
+    AnalogSystem::with_options(design, &analog)
         .map(Some)
         .map_err(|errors| SimError::Analog { errors })
 }

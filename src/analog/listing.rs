@@ -6,7 +6,7 @@
 use std::fmt::Write;
 
 use super::AnalogSystem;
-use super::build::Origin;
+use super::build::{self, Origin};
 use super::sym::{Bin, Sym, Un};
 use crate::design::Design;
 use crate::source::{SourceMap, Span};
@@ -23,24 +23,37 @@ fn location(span: Span, sources: &SourceMap) -> String {
 
 pub fn listing(sys: &AnalogSystem, design: &Design, sources: &SourceMap) -> String {
     let mut out = String::new();
-    let n = sys.names.len();
-    let width = sys.names.iter().map(String::len).max().unwrap_or(0);
+    // `sys` was built from `design`, so assembling it again succeeds; the system keeps only
+    // the reduced equations, and the listing shows the model's own.
+    let Ok(asm) = build::assemble(design) else {
+        return out;
+    };
+    let n = asm.names.len();
+    let mut differential = vec![false; n];
+    for r in &asm.residuals {
+        r.visit(&mut |e| {
+            if let Sym::Dot(j) = e {
+                differential[*j] = true;
+            }
+        });
+    }
+    let width = asm.names.iter().map(String::len).max().unwrap_or(0);
     // Writing into a String cannot fail.
     let _ = writeln!(out, "unknowns ({n}):");
-    for (i, name) in sys.names.iter().enumerate() {
-        let kind = if sys.differential[i] {
+    for (i, name) in asm.names.iter().enumerate() {
+        let kind = if differential[i] {
             "differential"
         } else {
             "algebraic"
         };
         let _ = writeln!(out, "  {i:>3}  {name:<width$}  {kind}");
     }
-    let _ = writeln!(out, "equations ({}):", sys.residuals.len());
+    let _ = writeln!(out, "equations ({}):", asm.residuals.len());
     let printer = Printer {
-        names: &sys.names,
+        names: &asm.names,
         design,
     };
-    let origins: Vec<String> = sys
+    let origins: Vec<String> = asm
         .origins
         .iter()
         .map(|origin| match *origin {
@@ -50,10 +63,40 @@ pub fn listing(sys: &AnalogSystem, design: &Design, sources: &SourceMap) -> Stri
         })
         .collect();
     let width = origins.iter().map(String::len).max().unwrap_or(0);
-    for (i, (r, from)) in sys.residuals.iter().zip(&origins).enumerate() {
+    for (i, (r, from)) in asm.residuals.iter().zip(&origins).enumerate() {
         let mut formula = String::new();
         printer.print(r, 0, &mut formula);
         let _ = writeln!(out, "  {i:>3}  {from:<width$}  {formula} = 0");
+    }
+    if sys.eliminated.is_empty() {
+        return out;
+    }
+    let _ = writeln!(
+        out,
+        "solver unknowns ({} of {n}): {}",
+        sys.names.len(),
+        sys.names.join(", ")
+    );
+    let _ = writeln!(out, "eliminated ({}):", sys.eliminated.len());
+    let printer = Printer {
+        names: &sys.names,
+        design,
+    };
+    let width = sys
+        .eliminated
+        .iter()
+        .map(|e| asm.names[e.unknown].len())
+        .max()
+        .unwrap_or(0);
+    for e in &sys.eliminated {
+        let mut formula = String::new();
+        printer.print(&e.replacement, 0, &mut formula);
+        let name = &asm.names[e.unknown];
+        let _ = writeln!(
+            out,
+            "  {:>3}  {name:<width$} = {formula}   (equation {})",
+            e.unknown, e.solved_from
+        );
     }
     out
 }

@@ -107,6 +107,7 @@ fn bool01(b: bool) -> f64 {
 }
 
 /// Value of a one-argument operation; domain errors give NaN (Newton rejects the step).
+#[inline]
 pub fn apply_unary(op: Un, a: f64) -> f64 {
     match op {
         Un::Neg => -a,
@@ -146,6 +147,7 @@ pub fn apply_unary(op: Un, a: f64) -> f64 {
 }
 
 /// Value of a two-argument operation (division by zero gives inf or NaN, never a panic).
+#[inline]
 pub fn apply_binary(op: Bin, a: f64, b: f64) -> f64 {
     match op {
         Bin::Add => a + b,
@@ -202,6 +204,8 @@ impl Sym {
         match (op, a) {
             (_, Sym::Const(v)) => Sym::Const(apply_unary(op, v)),
             (Un::Neg, Sym::Un(Un::Neg, inner)) => *inner,
+            // -(a - b) is b - a exactly (rounding is symmetric).
+            (Un::Neg, Sym::Bin(Bin::Sub, a, b)) => Sym::Bin(Bin::Sub, b, a),
             (op, a) => Sym::Un(op, Box::new(a)),
         }
     }
@@ -260,6 +264,34 @@ impl Sym {
             return a;
         }
         Sym::If(Box::new(c), Box::new(a), Box::new(b))
+    }
+
+    /// True when the expression reads `now` or a `'dot`.
+    pub fn reads_time_or_dot(&self) -> bool {
+        let mut found = false;
+        self.visit(&mut |e| found |= matches!(e, Sym::Now | Sym::Dot(_)));
+        found
+    }
+
+    /// Pushes the unknowns (`X` and `Dot` slots) the value can depend on smoothly: those not
+    /// only under a condition, a comparison, logic or rounding, which have zero derivative.
+    /// This is the structural incidence, without forming derivatives.
+    pub fn structural_unknowns(&self, out: &mut Vec<usize>) {
+        match self {
+            Sym::X(j) | Sym::Dot(j) => out.push(*j),
+            Sym::Const(_) | Sym::Signal(_) | Sym::Now => {}
+            Sym::Un(Un::Not | Un::Floor | Un::Ceil | Un::Round | Un::Trunc | Un::Sign, _) => {}
+            Sym::Un(_, a) => a.structural_unknowns(out),
+            Sym::Bin(op, _, _) if op.is_logical() => {}
+            Sym::Bin(_, a, b) => {
+                a.structural_unknowns(out);
+                b.structural_unknowns(out);
+            }
+            Sym::If(_, a, b) => {
+                a.structural_unknowns(out);
+                b.structural_unknowns(out);
+            }
+        }
     }
 
     /// Calls `f` on every node, this one first.

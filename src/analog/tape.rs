@@ -161,6 +161,12 @@ impl Tape {
                 Op::Dot(i) => xdot[i as usize],
                 Op::Signal(s) => signals[s as usize],
                 Op::Now => t,
+                // The arithmetic that dominates circuit equations, without a second dispatch.
+                Op::Bin(Bin::Add, a, b) => r[a as usize] + r[b as usize],
+                Op::Bin(Bin::Sub, a, b) => r[a as usize] - r[b as usize],
+                Op::Bin(Bin::Mul, a, b) => r[a as usize] * r[b as usize],
+                Op::Bin(Bin::Div, a, b) => r[a as usize] / r[b as usize],
+                Op::Un(Un::Neg, a) => -r[a as usize],
                 Op::Un(op, a) => apply_unary(op, r[a as usize]),
                 Op::Bin(op, a, b) => apply_binary(op, r[a as usize], r[b as usize]),
                 Op::Select(c, a, b) => {
@@ -173,6 +179,11 @@ impl Tape {
             };
             self.regs[base + k] = v;
         }
+    }
+
+    /// True for a tape without outputs.
+    pub fn is_empty(&self) -> bool {
+        self.outputs.is_empty()
     }
 
     /// Output `i` of the last [`Tape::eval`].

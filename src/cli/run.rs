@@ -54,6 +54,10 @@ pub struct RunArgs {
     /// Largest analog time step.
     #[arg(long, value_name = "TIME", value_parser = parse_positive_time)]
     pub max_step: Option<f64>,
+    /// Solve for every unknown of the model, without eliminating those an equation gives
+    /// explicitly (slower; to compare, or to debug a model).
+    #[arg(long)]
+    pub keep_unknowns: bool,
     /// Record this quantity or signal (hierarchical name, e.g. dut.u_motor.i); repeatable.
     /// Default: every quantity and explicit signal.
     #[arg(long, value_name = "NAME")]
@@ -168,6 +172,7 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
         max_step: args.max_step,
         probes: probe_list(&args.probe, &panels),
         progress: bar.as_ref().map(ProgressBar::hook),
+        keep_unknowns: args.keep_unknowns,
     };
     let mut print = |r: &crate::kernel::Report| {
         if let Some(bar) = &bar {
@@ -378,6 +383,7 @@ mod tests {
             abstol: None,
             max_step: None,
             probe: vec![],
+            keep_unknowns: false,
             panel: vec![],
             stats: false,
         }

@@ -9,7 +9,24 @@ use crate::source::Span;
 /// The analog system as the kernel drives it (see [`AnalogSystem`] for each method's contract).
 pub(crate) trait AnalogModel: DaeSystem {
     fn unknown_names(&self) -> &[String];
-    fn quantity_slot(&self, q: QuantityId) -> usize;
+    /// Solver index of quantity `q`, `None` when the analog side eliminated it.
+    fn quantity_slot(&self, q: QuantityId) -> Option<usize>;
+    /// Every quantity's value and `'dot` at the state `(t, x, x')`, by `QuantityId`.
+    fn quantity_values(
+        &mut self,
+        _t: f64,
+        x: &[f64],
+        xdot: &[f64],
+        values: &mut [f64],
+        derivatives: &mut [f64],
+    ) {
+        for (q, (v, d)) in values.iter_mut().zip(derivatives.iter_mut()).enumerate() {
+            if let Some(j) = self.quantity_slot(QuantityId(q as u32)) {
+                *v = x[j];
+                *d = xdot[j];
+            }
+        }
+    }
     fn set_signal(&mut self, s: SignalId, value: f64);
     fn reads_signal(&self, s: SignalId) -> bool;
     fn above_signals(&self) -> &[SignalId];
@@ -40,8 +57,18 @@ impl AnalogModel for AnalogSystem {
     fn unknown_names(&self) -> &[String] {
         AnalogSystem::unknown_names(self)
     }
-    fn quantity_slot(&self, q: QuantityId) -> usize {
+    fn quantity_slot(&self, q: QuantityId) -> Option<usize> {
         AnalogSystem::quantity_slot(self, q)
+    }
+    fn quantity_values(
+        &mut self,
+        t: f64,
+        x: &[f64],
+        xdot: &[f64],
+        values: &mut [f64],
+        derivatives: &mut [f64],
+    ) {
+        AnalogSystem::quantity_values(self, t, x, xdot, values, derivatives)
     }
     fn set_signal(&mut self, s: SignalId, value: f64) {
         AnalogSystem::set_signal(self, s, value)

@@ -27,8 +27,8 @@ pub(crate) const DEFAULT_ABSTOL: f64 = 1e-9;
 /// The analog half: the system, its integrator and reused buffers.
 struct Analog<A> {
     sys: A,
-    /// Unknown index of each quantity, by `QuantityId`.
-    slots: Vec<usize>,
+    /// Unknown index of each quantity, by `QuantityId` (`None`: eliminated).
+    slots: Vec<Option<usize>>,
     /// The `'above` signal of each root function.
     above: Vec<SignalId>,
     integ: Transient,
@@ -104,13 +104,15 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                 sys.set_signal(s, number(self.kernel.value(s)));
             }
         }
-        let slots: Vec<usize> = (0..design.quantities.len())
+        let slots: Vec<Option<usize>> = (0..design.quantities.len())
             .map(|q| sys.quantity_slot(QuantityId(q as u32)))
             .collect();
         let n = sys.len();
         let mut guess = vec![0.0; n];
-        for (q, &slot) in design.quantities.iter().zip(&slots) {
-            guess[slot] = q.initial_guess.unwrap_or(0.0);
+        for (q, slot) in design.quantities.iter().zip(&slots) {
+            if let Some(slot) = *slot {
+                guess[slot] = q.initial_guess.unwrap_or(0.0);
+            }
         }
         self.kernel.take_breaks(&mut self.breaks);
         // A later break value for the same quantity replaces an earlier one.
@@ -118,7 +120,10 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         let mut fixed: Vec<(usize, f64)> = Vec::new();
         let mut position: Vec<Option<usize>> = vec![None; n];
         for &(q, v) in &self.breaks {
-            let slot = slots[q.index()];
+            // Break targets are never eliminated (see `analog::reduce`).
+            let Some(slot) = slots[q.index()] else {
+                continue;
+            };
             match position[slot] {
                 Some(k) => fixed[k].1 = v,
                 None => {
@@ -211,11 +216,10 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
     fn refresh(&mut self) {
         if let Some(a) = &mut self.analog {
             let (x, xd) = (a.integ.state(), a.integ.derivative());
-            a.sys.record_history(a.integ.time(), x, xd);
-            for (q, &slot) in a.slots.iter().enumerate() {
-                self.values[q] = x[slot];
-                self.derivatives[q] = xd[slot];
-            }
+            let t = a.integ.time();
+            a.sys.record_history(t, x, xd);
+            a.sys
+                .quantity_values(t, x, xd, &mut self.values, &mut self.derivatives);
         }
     }
 
@@ -394,7 +398,10 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         }
         a.x.copy_from_slice(a.integ.state());
         for &(q, v) in &self.breaks {
-            a.x[a.slots[q.index()]] = v;
+            // Break targets are never eliminated (see `analog::reduce`).
+            if let Some(slot) = a.slots[q.index()] {
+                a.x[slot] = v;
+            }
         }
         a.integ.restart(&mut a.sys, t, &a.x).map_err(|e| {
             solve_error(e, t, a.sys.unknown_names(), &a.slots, design, &a.equations)

@@ -72,6 +72,14 @@ impl Recorder {
         }
     }
 
+    /// The recorded quantities.
+    pub fn quantities(&self) -> impl Iterator<Item = QuantityId> + '_ {
+        self.probes.iter().filter_map(|p| match *p {
+            Probe::Quantity(q) => Some(q),
+            Probe::Signal(_) => None,
+        })
+    }
+
     /// Time of the last row.
     pub fn last_time(&self) -> Option<f64> {
         self.waveforms.times.last().copied()

@@ -13,7 +13,7 @@ pub(crate) fn solve_error(
     cause: SolveError,
     now: f64,
     names: &[String],
-    slots: &[usize],
+    slots: &[Option<usize>],
     design: &Design,
     equations: &[Option<(String, Span)>],
 ) -> SimError {
@@ -26,7 +26,7 @@ pub(crate) fn solve_error(
     let span = unknown.and_then(|i| {
         slots
             .iter()
-            .position(|&s| s == i)
+            .position(|&s| s == Some(i))
             .map(|q| design.quantities[q].span)
     });
     SimError::Solve {

@@ -78,6 +78,9 @@ pub struct Transient {
     stats: Stats,
 }
 
+/// Newton failures (fresh Jacobian) in one step after which the step's Newton is damped.
+const RESCUE_AFTER: usize = 3;
+
 impl Transient {
     /// Sets up the integrator at `(t0, x0)` and computes consistent initial values: algebraic
     /// unknowns and `x'` of the differential ones, with the differential unknowns held.
@@ -280,6 +283,7 @@ impl Transient {
         }
         let mut last_err: Option<SolveError> = None;
         let mut failures = 0usize;
+        let mut newton_failures = 0usize;
         loop {
             let bp = self.breakpoints.last().copied().unwrap_or(f64::INFINITY);
             let stop = t_out.min(bp);
@@ -300,8 +304,16 @@ impl Transient {
                     worst_unknown: 0,
                 }));
             }
+            // After repeated Newton failures (a diode switching on from far away, where
+            // undamped Newton overshoots on the exponential however small the step), damp
+            // the iteration and give it more room; the fast undamped mode resumes afterwards.
+            let rescue = newton_failures >= RESCUE_AFTER;
+            self.newton_opts.line_search = rescue;
+            self.newton_opts.max_iter = if rescue { 30 } else { 4 };
             match self.try_step(sys, t_new)? {
                 step::Attempt::Accepted { err } => {
+                    self.newton_opts.line_search = false;
+                    self.newton_opts.max_iter = 4;
                     self.accept(sys, t_new, h, err, failures > 0);
                     break;
                 }
@@ -323,6 +335,7 @@ impl Transient {
                     self.c0_factored = 0.0;
                     if !stale {
                         failures += 1;
+                        newton_failures += 1;
                         self.h = 0.25 * h;
                     }
                     last_err = Some(err);

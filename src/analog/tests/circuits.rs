@@ -28,7 +28,7 @@ fn rc_charging_matches_the_exponential() {
     b.equation("ic == 1.0e-6 * vc'dot;", q(ic), mul(c(cap), dot(vc)));
     let (d, _) = b.finish();
     let mut sys = system(&d);
-    let slot = sys.quantity_slot(vc);
+    let slot = sys.quantity_slot(vc).expect("kept");
     assert!(sys.differential()[slot]);
     let tau = r * cap;
     let times = [0.25e-3, 0.5e-3, 1e-3, 2e-3, 3e-3, 5e-3];
@@ -53,7 +53,7 @@ fn rl_current_rises_with_time_constant_l_over_r() {
     b.equation("vl == 10.0e-3 * il'dot;", q(vl), mul(c(l), dot(il)));
     let (d, _) = b.finish();
     let mut sys = system(&d);
-    let slot = sys.quantity_slot(il);
+    let slot = sys.quantity_slot(il).expect("kept");
     let tau = l / r;
     let times = [0.3e-3, 1e-3, 2e-3, 4e-3];
     let states = simulate(&mut sys, &[(slot, 0.0)], 1e-4, &times);
@@ -116,9 +116,9 @@ fn diode_operating_point_matches_a_hand_newton_solution() {
         let df = -1.0 / r - is_sat / nvt * (u / nvt).exp();
         u -= f / df;
     }
-    let got = x[sys.quantity_slot(vd)];
+    let got = x[sys.quantity_slot(vd).expect("kept")];
     assert!((got - u).abs() < 1e-9 * u, "vd = {got}, hand Newton {u}");
-    let i_got = x[sys.quantity_slot(id)];
+    let i_got = x[sys.quantity_slot(id).expect("kept")];
     assert!((i_got - (v - u) / r).abs() < 1e-9 * (v - u) / r);
 }
 
@@ -131,7 +131,10 @@ fn quiescent_point_holds_break_values_and_solves_their_derivatives() {
     b.equation("ic == 1.0e-6 * vc'dot;", q(ic), mul(c(cap), dot(vc)));
     let (d, _) = b.finish();
     let mut sys = system(&d);
-    let (sv, si) = (sys.quantity_slot(vc), sys.quantity_slot(ic));
+    let (sv, si) = (
+        sys.quantity_slot(vc).expect("kept"),
+        sys.quantity_slot(ic).expect("kept"),
+    );
     let abstol = sys.abstol(1e-9);
     let guess = vec![0.0; sys.len()];
     let opts = OpOptions::default();

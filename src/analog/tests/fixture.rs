@@ -2,7 +2,7 @@
 //! something readable in diagnostic snapshots, plus expression shorthands and an integrator
 //! loop.
 
-use crate::analog::AnalogSystem;
+use crate::analog::{AnalogOptions, AnalogSystem};
 use crate::design::*;
 use crate::solver::{Advance, DaeSystem, OpOptions, Transient, TransientOptions};
 use crate::source::{FileId, SourceMap, Span};
@@ -205,7 +205,7 @@ pub fn call(f: Builtin, a: Expr) -> Expr {
 
 /// Builds the system or fails the test with the diagnostics.
 pub fn system(design: &Design) -> AnalogSystem {
-    match AnalogSystem::new(design) {
+    match AnalogSystem::with_options(design, &AnalogOptions { eliminate: false }) {
         Ok(s) => s,
         Err(e) => panic!("analog system rejected: {e:?}"),
     }

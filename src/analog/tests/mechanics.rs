@@ -35,7 +35,10 @@ fn series_inductors_follow_the_combined_time_constant() {
     b.equation("vw == 0.0;", q(vw), c(0.0));
     let (d, _) = b.finish();
     let mut sys = system(&d);
-    let (s1, s2) = (sys.quantity_slot(i1), sys.quantity_slot(i2));
+    let (s1, s2) = (
+        sys.quantity_slot(i1).expect("kept"),
+        sys.quantity_slot(i2).expect("kept"),
+    );
     assert!(sys.differential()[s1] && sys.differential()[s2]);
     let tau = (l1 + l2) / (r1 + r2);
     let times = [0.1 * tau, 0.5 * tau, tau, 3.0 * tau, 6.0 * tau];
@@ -83,9 +86,9 @@ fn gear_coupled_inertia_and_spring_mass_oscillate_at_the_closed_form_frequency()
     let (d, _) = b.finish();
     let mut sys = system(&d);
     let (sw, sv, sx) = (
-        sys.quantity_slot(w),
-        sys.quantity_slot(v_m),
-        sys.quantity_slot(x),
+        sys.quantity_slot(w).expect("kept"),
+        sys.quantity_slot(v_m).expect("kept"),
+        sys.quantity_slot(x).expect("kept"),
     );
     assert!(sys.differential()[sw] && sys.differential()[sv] && sys.differential()[sx]);
 
@@ -161,9 +164,9 @@ fn headlight_drive_reaches_the_closed_form_steady_speed() {
     let (design, _) = b.finish();
     let mut sys = system(&design);
     let (si, sw, sv) = (
-        sys.quantity_slot(im),
-        sys.quantity_slot(w),
-        sys.quantity_slot(vr),
+        sys.quantity_slot(im).expect("kept"),
+        sys.quantity_slot(w).expect("kept"),
+        sys.quantity_slot(vr).expect("kept"),
     );
     // `break i => 0, w => 0` as the motor model does.
     let states = simulate(&mut sys, &[(si, 0.0), (sw, 0.0)], 1e-4, &[1.0]);
@@ -179,5 +182,5 @@ fn headlight_drive_reaches_the_closed_form_steady_speed() {
         ratio * w_ss
     );
     assert!(close(x[si], i_ss), "i = {} vs {i_ss}", x[si]);
-    assert!(close(x[sys.quantity_slot(ih)], i_ss));
+    assert!(close(x[sys.quantity_slot(ih).expect("kept")], i_ss));
 }

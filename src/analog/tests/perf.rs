@@ -40,7 +40,10 @@ fn rc_ladder_residual_and_jacobian_are_right_and_cheap() {
     // The capacitor rows: ic - 1e-6 vc'dot.
     for (k, (vc, ic)) in caps.iter().enumerate() {
         let row = solver_row(2 + 2 * k);
-        let (sv, si) = (sys.quantity_slot(*vc), sys.quantity_slot(*ic));
+        let (sv, si) = (
+            sys.quantity_slot(*vc).expect("kept"),
+            sys.quantity_slot(*ic).expect("kept"),
+        );
         assert_eq!(out[row], x[si] - 1e-6 * xdot[sv]);
     }
     let mut jac = vec![0.0; sys.pattern().len()];
@@ -48,7 +51,7 @@ fn rc_ladder_residual_and_jacobian_are_right_and_cheap() {
     for (k, &(row, col)) in sys.pattern().iter().enumerate() {
         if let Some(p) = caps
             .iter()
-            .position(|&(vc, _)| sys.quantity_slot(vc) == col)
+            .position(|&(vc, _)| sys.quantity_slot(vc).expect("kept") == col)
             && row == solver_row(2 + 2 * p)
         {
             assert_eq!(jac[k], -1e-6 * 1e5);

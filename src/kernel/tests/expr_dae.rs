@@ -227,8 +227,8 @@ impl AnalogModel for ExprDae {
     fn unknown_names(&self) -> &[String] {
         &self.names
     }
-    fn quantity_slot(&self, q: QuantityId) -> usize {
-        q.index()
+    fn quantity_slot(&self, q: QuantityId) -> Option<usize> {
+        Some(q.index())
     }
     fn set_signal(&mut self, s: SignalId, value: f64) {
         self.signals[s.index()] = value;

@@ -190,7 +190,9 @@ impl Transient {
                     }
                 }
             }
-            Err(SolveError::SingularJacobian { .. }) => {
+            // Holding the state left the matrix singular, or Newton on `x'` diverged (a
+            // switched diode whose current must jump: the held state is far from consistent).
+            Err(SolveError::SingularJacobian { .. } | SolveError::NewtonDiverged { .. }) => {
                 // The tiny step is badly conditioned (entries of 1/h beside O(1) ones); if its
                 // Newton stalls in rounding, start from the held state with `x' = 0`: `x'` only
                 // feeds the first predictor, and the first BDF1 step, of a size the error test

@@ -1,0 +1,488 @@
+//! Elimination of unknowns that an equation gives explicitly: before compiling, every
+//! equation that is linear in some unknown with a constant coefficient (`v - r * i = 0`, an
+//! across definition `v - (v(p) - v(m)) = 0`, a conservation law) may be solved for it, and
+//! the unknown substituted everywhere else. A circuit's branch voltages and currents then
+//! disappear and the solver integrates about one unknown per node, as modified nodal analysis
+//! does, while the model keeps all its quantities (their values are evaluated from the
+//! survivors after each accepted step).
+//!
+//! The reduced system is exactly equivalent, also after BDF discretisation: each step is a
+//! block elimination with a constant nonzero pivot. Rules that keep it so:
+//! * the unknown occurs exactly once in the equation, only under `+`, `-`, negation and
+//!   multiplication or division by a constant, and its `'dot` does not occur there;
+//! * an unknown whose `'dot` occurs anywhere is eliminated only as a constant multiple of one
+//!   other unknown (plus a constant), so its `'dot` becomes that multiple of the other's;
+//! * unknowns that occur nonlinearly (a diode's junction voltage inside `exp`) stay, so that
+//!   Newton's convergence test measures them: a value derived from the survivors can move
+//!   far more than they do (an inductor's voltage is `L / h` times its current's update);
+//! * protected unknowns (break targets, `'delayed` inputs, quantities whose `'dot` processes or
+//!   thresholds read) stay;
+//! * an unknown is never replaced by an expression of `now` (the error control must see it);
+//! * replacements stay small (`MAX_REPLACEMENT` nodes), so substitution cannot blow up.
+//!
+//! Preference: quantities before terminal potentials (so node potentials, not branch
+//! quantities, remain), algebraic before differential.
+
+use super::sym::{Bin, Sym, Un};
+
+/// Largest replacement expression (nodes) worth substituting.
+const MAX_REPLACEMENT: usize = 48;
+
+/// The result of [`eliminate`], over the original unknown indices.
+pub struct Elimination {
+    /// For each original unknown, its replacement when eliminated (fully resolved: it reads
+    /// only surviving unknowns).
+    pub replacement: Vec<Option<Sym>>,
+    /// The equation (assembly row) each eliminated unknown was solved from.
+    pub solved_from: Vec<Option<usize>>,
+    /// Assembly rows that remain equations, in assembly order, with their resolved residuals.
+    pub kept: Vec<(usize, Sym)>,
+}
+
+/// What may be eliminated, per original unknown.
+pub struct Candidates<'a> {
+    /// Never eliminate these.
+    pub protected: &'a [bool],
+    /// True for terminal potentials (eliminated only after quantities).
+    pub potential: &'a [bool],
+}
+
+/// Solves equations for unknowns where the rules above allow it, in assembly order.
+pub fn eliminate(residuals: Vec<Sym>, candidates: &Candidates<'_>) -> Elimination {
+    let n = candidates.protected.len();
+    let mut differentiated = vec![false; n];
+    for r in &residuals {
+        r.visit(&mut |e| {
+            if let Sym::Dot(j) = e {
+                differentiated[*j] = true;
+            }
+        });
+    }
+    let mut state = Resolver {
+        replacement: vec![None; n],
+    };
+    let mut solved_from = vec![None; n];
+    let mut kept = Vec::new();
+    for (row, r) in residuals.into_iter().enumerate() {
+        let r = state.resolve(&r);
+        match choose(&r, candidates, &differentiated) {
+            Some((j, replacement)) => {
+                if differentiated[j] {
+                    replacement.visit(&mut |e| {
+                        if let Sym::X(k) = e {
+                            differentiated[*k] = true;
+                        }
+                    });
+                }
+                state.replacement[j] = Some(replacement);
+                solved_from[j] = Some(row);
+            }
+            None => kept.push((row, r)),
+        }
+    }
+    // Equations kept early may read unknowns eliminated later.
+    for (_, r) in &mut kept {
+        *r = state.resolve(r);
+    }
+    for j in 0..n {
+        if let Some(r) = state.replacement[j].take() {
+            state.replacement[j] = Some(state.resolve(&r));
+        }
+    }
+    Elimination {
+        replacement: state.replacement,
+        solved_from,
+        kept,
+    }
+}
+
+impl Elimination {
+    /// `e` with every eliminated unknown replaced.
+    pub fn apply(&self, e: &Sym) -> Sym {
+        // Stored replacements are resolved, so one pass suffices.
+        let go = |e: &Sym| self.apply(e);
+        match e {
+            Sym::X(j) => match &self.replacement[*j] {
+                Some(r) => r.clone(),
+                None => e.clone(),
+            },
+            Sym::Dot(j) => match &self.replacement[*j] {
+                Some(r) => time_derivative(r).unwrap_or(Sym::Const(f64::NAN)),
+                None => e.clone(),
+            },
+            Sym::Const(_) | Sym::Signal(_) | Sym::Now => e.clone(),
+            Sym::Un(op, a) => Sym::un(*op, go(a)),
+            Sym::Bin(op, a, b) => Sym::bin(*op, go(a), go(b)),
+            Sym::If(c, a, b) => Sym::cond(go(c), go(a), go(b)),
+        }
+    }
+}
+
+struct Resolver {
+    replacement: Vec<Option<Sym>>,
+}
+
+impl Resolver {
+    /// `e` with every eliminated unknown replaced (recursively); stores resolved replacements
+    /// back so that chains are walked once.
+    fn resolve(&mut self, e: &Sym) -> Sym {
+        match e {
+            Sym::X(j) => match self.resolved(*j) {
+                Some(r) => r,
+                None => e.clone(),
+            },
+            Sym::Dot(j) => match self.resolved(*j) {
+                // Only affine replacements are stored for differentiated unknowns.
+                Some(r) => time_derivative(&r).unwrap_or(Sym::Const(f64::NAN)),
+                None => e.clone(),
+            },
+            Sym::Const(_) | Sym::Signal(_) | Sym::Now => e.clone(),
+            Sym::Un(op, a) => Sym::un(*op, self.resolve(a)),
+            Sym::Bin(op, a, b) => Sym::bin(*op, self.resolve(a), self.resolve(b)),
+            Sym::If(c, a, b) => Sym::cond(self.resolve(c), self.resolve(a), self.resolve(b)),
+        }
+    }
+
+    fn resolved(&mut self, j: usize) -> Option<Sym> {
+        let r = self.replacement[j].take()?;
+        let r = self.resolve(&r);
+        self.replacement[j] = Some(r.clone());
+        Some(r)
+    }
+}
+
+/// The unknown to solve `e = 0` for and its replacement, if any qualifies.
+fn choose(e: &Sym, candidates: &Candidates<'_>, differentiated: &[bool]) -> Option<(usize, Sym)> {
+    // Occurrences of each unknown as x and as x' (equations are small: a linear scan).
+    let mut seen: Vec<(usize, u32, u32)> = Vec::new();
+    e.visit(&mut |node| {
+        let (j, is_dot) = match node {
+            Sym::X(j) => (*j, false),
+            Sym::Dot(j) => (*j, true),
+            _ => return,
+        };
+        let entry = match seen.iter().position(|s| s.0 == j) {
+            Some(k) => &mut seen[k],
+            None => {
+                seen.push((j, 0, 0));
+                seen.last_mut().expect("just pushed")
+            }
+        };
+        if is_dot {
+            entry.2 += 1;
+        } else {
+            entry.1 += 1;
+        }
+    });
+    let rank = |j: usize| usize::from(candidates.potential[j]) * 2 + usize::from(differentiated[j]);
+    let mut best: Option<(usize, usize, Sym)> = None;
+    for &(j, xs, dots) in &seen {
+        if xs != 1 || dots != 0 || candidates.protected[j] {
+            continue;
+        }
+        if best.as_ref().is_some_and(|b| b.0 <= rank(j)) {
+            continue;
+        }
+        let Some(a) = coefficient(e, j) else {
+            continue;
+        };
+        if !(a.is_finite() && a != 0.0) {
+            continue;
+        }
+        let rest = substitute_zero(e, j);
+        let replacement = if a == 1.0 {
+            Sym::neg(rest)
+        } else if a == -1.0 {
+            rest
+        } else {
+            Sym::div(Sym::neg(rest), Sym::Const(a))
+        };
+        // A quantity given as a function of time stays an unknown: the step-size control
+        // must see how fast it moves (a source driving nothing else would otherwise allow
+        // arbitrarily long steps, and its threshold crossings would be missed).
+        if size(&replacement) > MAX_REPLACEMENT || reads_now(&replacement) {
+            continue;
+        }
+        // A differentiated unknown goes only as a scaled copy of one other (`v = 2e-6 * w`
+        // behind a gear): its `'dot` then moves to that unknown alone. Spreading it over
+        // several would make algebraic survivors differential, which a restart then holds
+        // (a capacitor's voltage as a diode's junction voltage that must be free to jump).
+        if differentiated[j] && affine(&replacement).is_none_or(|t| t.len() > 1) {
+            continue;
+        }
+        best = Some((rank(j), j, replacement));
+    }
+    best.map(|(_, j, r)| (j, r))
+}
+
+/// The constant coefficient of `X(j)` in `e`, when its single occurrence is in a linear
+/// position (under `+`, `-`, negation, and products or quotients by constants).
+fn coefficient(e: &Sym, j: usize) -> Option<f64> {
+    match e {
+        Sym::X(k) if *k == j => Some(1.0),
+        Sym::Un(Un::Neg, a) => coefficient(a, j).map(|c| -c),
+        Sym::Bin(Bin::Add, a, b) => coefficient(a, j).or_else(|| coefficient(b, j)),
+        Sym::Bin(Bin::Sub, a, b) => coefficient(a, j).or_else(|| coefficient(b, j).map(|c| -c)),
+        Sym::Bin(Bin::Mul, a, b) => match (a.as_const(), b.as_const()) {
+            (Some(k), _) => coefficient(b, j).map(|c| k * c),
+            (_, Some(k)) => coefficient(a, j).map(|c| k * c),
+            _ => None,
+        },
+        Sym::Bin(Bin::Div, a, b) => b.as_const().and_then(|k| coefficient(a, j).map(|c| c / k)),
+        _ => None,
+    }
+}
+
+/// `e` with `X(j)` set to zero.
+fn substitute_zero(e: &Sym, j: usize) -> Sym {
+    match e {
+        Sym::X(k) if *k == j => Sym::Const(0.0),
+        Sym::Const(_) | Sym::X(_) | Sym::Dot(_) | Sym::Signal(_) | Sym::Now => e.clone(),
+        Sym::Un(op, a) => Sym::un(*op, substitute_zero(a, j)),
+        Sym::Bin(op, a, b) => Sym::bin(*op, substitute_zero(a, j), substitute_zero(b, j)),
+        Sym::If(c, a, b) => Sym::cond(
+            substitute_zero(c, j),
+            substitute_zero(a, j),
+            substitute_zero(b, j),
+        ),
+    }
+}
+
+fn reads_now(e: &Sym) -> bool {
+    let mut found = false;
+    e.visit(&mut |n| found |= matches!(n, Sym::Now));
+    found
+}
+
+/// Marks the unknowns that occur in `e` in a nonlinear position: anywhere but under sums,
+/// negation, products and quotients by factors that read no unknown, and branches of a
+/// condition that reads no unknown.
+pub fn mark_nonlinear(e: &Sym, out: &mut [bool]) {
+    fn all(e: &Sym, out: &mut [bool]) {
+        e.visit(&mut |n| {
+            if let Sym::X(j) | Sym::Dot(j) = n {
+                out[*j] = true;
+            }
+        });
+    }
+    let free = |e: &Sym| {
+        let mut reads = false;
+        e.visit(&mut |n| reads |= matches!(n, Sym::X(_) | Sym::Dot(_)));
+        !reads
+    };
+    match e {
+        Sym::X(_) | Sym::Dot(_) | Sym::Const(_) | Sym::Signal(_) | Sym::Now => {}
+        Sym::Un(Un::Neg, a) => mark_nonlinear(a, out),
+        Sym::Bin(Bin::Add | Bin::Sub, a, b) => {
+            mark_nonlinear(a, out);
+            mark_nonlinear(b, out);
+        }
+        Sym::Bin(Bin::Mul, a, b) if free(a) => mark_nonlinear(b, out),
+        Sym::Bin(Bin::Mul, a, b) if free(b) => mark_nonlinear(a, out),
+        Sym::Bin(Bin::Div, a, b) if free(b) => mark_nonlinear(a, out),
+        Sym::If(c, a, b) if free(c) => {
+            mark_nonlinear(a, out);
+            mark_nonlinear(b, out);
+        }
+        _ => all(e, out),
+    }
+}
+
+/// Number of nodes of `e`.
+pub fn size(e: &Sym) -> usize {
+    let mut n = 0;
+    e.visit(&mut |_| n += 1);
+    n
+}
+
+/// `e` as `c0 + sum c_k x_k` with constant coefficients, if it has that form.
+pub fn affine(e: &Sym) -> Option<Vec<(usize, f64)>> {
+    let mut terms = Vec::new();
+    collect_affine(e, 1.0, &mut terms).then_some(terms)
+}
+
+fn collect_affine(e: &Sym, scale: f64, terms: &mut Vec<(usize, f64)>) -> bool {
+    match e {
+        Sym::Const(_) => true,
+        Sym::X(k) => {
+            terms.push((*k, scale));
+            true
+        }
+        Sym::Un(Un::Neg, a) => collect_affine(a, -scale, terms),
+        Sym::Bin(Bin::Add, a, b) => {
+            collect_affine(a, scale, terms) && collect_affine(b, scale, terms)
+        }
+        Sym::Bin(Bin::Sub, a, b) => {
+            collect_affine(a, scale, terms) && collect_affine(b, -scale, terms)
+        }
+        Sym::Bin(Bin::Mul, a, b) => match (a.as_const(), b.as_const()) {
+            (Some(k), _) => collect_affine(b, scale * k, terms),
+            (_, Some(k)) => collect_affine(a, scale * k, terms),
+            _ => false,
+        },
+        Sym::Bin(Bin::Div, a, b) => match b.as_const() {
+            Some(k) => collect_affine(a, scale / k, terms),
+            None => false,
+        },
+        _ => false,
+    }
+}
+
+/// `d e / dt` for an affine `e` (a combination of `'dot`s), else `None`.
+pub fn time_derivative(e: &Sym) -> Option<Sym> {
+    let terms = affine(e)?;
+    Some(
+        terms
+            .into_iter()
+            .map(|(k, c)| Sym::mul(Sym::Const(c), Sym::Dot(k)))
+            .fold(Sym::Const(0.0), Sym::add),
+    )
+}
+
+/// `e` with unknown `k` renamed to `map(k)` (for `X` and `Dot`).
+pub fn renumber(e: &Sym, map: &dyn Fn(usize) -> usize) -> Sym {
+    match e {
+        Sym::X(k) => Sym::X(map(*k)),
+        Sym::Dot(k) => Sym::Dot(map(*k)),
+        Sym::Const(_) | Sym::Signal(_) | Sym::Now => e.clone(),
+        Sym::Un(op, a) => Sym::Un(*op, Box::new(renumber(a, map))),
+        Sym::Bin(op, a, b) => Sym::Bin(*op, Box::new(renumber(a, map)), Box::new(renumber(b, map))),
+        Sym::If(c, a, b) => Sym::If(
+            Box::new(renumber(c, map)),
+            Box::new(renumber(a, map)),
+            Box::new(renumber(b, map)),
+        ),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn x(j: usize) -> Sym {
+        Sym::X(j)
+    }
+
+    fn c(v: f64) -> Sym {
+        Sym::Const(v)
+    }
+
+    fn free(n: usize) -> (Vec<bool>, Vec<bool>) {
+        (vec![false; n], vec![false; n])
+    }
+
+    #[test]
+    fn coefficient_follows_linear_positions_only() {
+        // 2 * (x0 - 3 * x1) / 4
+        let e = Sym::div(
+            Sym::mul(c(2.0), Sym::sub(x(0), Sym::mul(c(3.0), x(1)))),
+            c(4.0),
+        );
+        assert_eq!(coefficient(&e, 0), Some(0.5));
+        assert_eq!(coefficient(&e, 1), Some(-1.5));
+        let nonlinear = Sym::mul(x(0), x(1));
+        assert_eq!(coefficient(&nonlinear, 0), None);
+        let switched = Sym::cond(Sym::bin(Bin::Gt, x(0), c(0.0)), x(1), c(1.0));
+        assert_eq!(coefficient(&switched, 0), None);
+    }
+
+    #[test]
+    fn resistor_and_across_definition_leave_the_node_potentials() {
+        // unknowns: 0 v(a), 1 v(b), 2 r.v, 3 r.i; equations: r.v - 2 r.i, r.v - (v(a) - v(b)),
+        // v(a) - 1, r.i + v(b) (a made-up closure so the system is square).
+        let residuals = vec![
+            Sym::sub(x(2), Sym::mul(c(2.0), x(3))),
+            Sym::sub(x(2), Sym::sub(x(0), x(1))),
+            Sym::sub(x(0), c(1.0)),
+            Sym::add(x(3), x(1)),
+        ];
+        let (protected, mut potential) = free(4);
+        potential[0] = true;
+        potential[1] = true;
+        let out = eliminate(
+            residuals,
+            &Candidates {
+                protected: &protected,
+                potential: &potential,
+            },
+        );
+        let eliminated: Vec<bool> = out.replacement.iter().map(Option::is_some).collect();
+        assert_eq!(eliminated, [true, false, true, true]);
+        assert_eq!(out.kept.len(), 1);
+        // The kept equation is r.i + v(b) with r.i = (1 - v(b)) / 2: (1 - v(b)) / 2 + v(b).
+        let (row, r) = &out.kept[0];
+        assert_eq!(*row, 3);
+        let value = |vb: f64| r.eval(0.0, &[f64::NAN, vb, f64::NAN, f64::NAN], &[0.0; 4], &[]);
+        assert!((value(-1.0) - 0.0).abs() < 1e-15);
+        assert!((value(0.0) - 0.5).abs() < 1e-15);
+    }
+
+    #[test]
+    fn differentiated_unknowns_need_affine_replacements() {
+        // x0' + x0 = 0 keeps x0; x1 - x0 * x0 = 0 with x1' read elsewhere keeps x1.
+        let residuals = vec![
+            Sym::add(Sym::Dot(0), x(0)),
+            Sym::sub(x(1), Sym::mul(x(0), x(0))),
+            Sym::sub(Sym::Dot(1), c(1.0)),
+        ];
+        let (protected, potential) = free(2);
+        let out = eliminate(
+            residuals,
+            &Candidates {
+                protected: &protected,
+                potential: &potential,
+            },
+        );
+        assert!(out.replacement.iter().all(Option::is_none));
+        assert_eq!(out.kept.len(), 3);
+    }
+
+    #[test]
+    fn scaled_copy_carries_the_derivative() {
+        // x0 - 2 x1 = 0 with x0' used and x1 a potential: x0' becomes 2 x1'.
+        let residuals = vec![Sym::sub(x(0), Sym::mul(c(2.0), x(1))), Sym::Dot(0)];
+        let protected = [false; 2];
+        let potential = [false, true];
+        let out = eliminate(
+            residuals,
+            &Candidates {
+                protected: &protected,
+                potential: &potential,
+            },
+        );
+        assert!(out.replacement[0].is_some());
+        let r = &out.kept[0].1;
+        assert_eq!(r.eval(0.0, &[0.0; 2], &[0.0, 5.0], &[]), 10.0);
+    }
+
+    #[test]
+    fn differentiated_unknowns_are_not_spread_over_several() {
+        // x0 - (x1 - x2) = 0 with x0' used: x1 goes (x1 = x0 + x2), x0 stays differential.
+        let residuals = vec![Sym::sub(x(0), Sym::sub(x(1), x(2))), Sym::Dot(0)];
+        let protected = [false; 3];
+        let potential = [false, true, true];
+        let out = eliminate(
+            residuals,
+            &Candidates {
+                protected: &protected,
+                potential: &potential,
+            },
+        );
+        let eliminated: Vec<bool> = out.replacement.iter().map(Option::is_some).collect();
+        assert_eq!(eliminated, [false, true, false]);
+    }
+
+    #[test]
+    fn protected_unknowns_stay() {
+        let residuals = vec![Sym::sub(x(0), c(1.0))];
+        let out = eliminate(
+            residuals,
+            &Candidates {
+                protected: &[true],
+                potential: &[false],
+            },
+        );
+        assert!(out.replacement[0].is_none());
+        assert_eq!(out.kept.len(), 1);
+    }
+}
