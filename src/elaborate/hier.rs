@@ -2,7 +2,7 @@
 //! maps, generate statements and blocks. Ports are aliases of their actuals; an unconnected
 //! port gets a fresh object named `instance.port`.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 
 use crate::ast::{
     self, Actual, Architecture, Assoc, ConcKind, ConcStmt, Entity, InstantiatedUnit, InterfaceDecl,
@@ -129,8 +129,8 @@ impl<'a> Elab<'a> {
         map: &'x [Assoc],
         what: &'static str,
         unit: &str,
-    ) -> HashMap<String, &'x Assoc> {
-        let mut out = HashMap::new();
+    ) -> FxHashMap<String, &'x Assoc> {
+        let mut out = FxHashMap::default();
         let names: Vec<String> = formals.iter().map(|(n, _)| n.name.clone()).collect();
         for (k, a) in map.iter().enumerate() {
             let name = match &a.formal {
@@ -199,7 +199,7 @@ impl<'a> Elab<'a> {
         let generics = flatten(&ent.generics);
         let ports = flatten(&ent.ports);
         let (gmap, pmap, parent) = match &actuals {
-            Actuals::Top(_) => (HashMap::new(), HashMap::new(), None),
+            Actuals::Top(_) => (FxHashMap::default(), FxHashMap::default(), None),
             Actuals::Map {
                 parent,
                 generics: g,
