@@ -70,7 +70,9 @@ pub fn elaborate(
     let mut elab = Elab::new(sources, files);
     elab.top(options);
     if elab.errors.is_empty() {
-        Ok(elab.design)
+        let mut design = elab.design;
+        design.shrink_to_fit();
+        Ok(design)
     } else {
         Err(elab.errors)
     }
@@ -101,7 +103,10 @@ fn context_key(library: &str, contexts: &[&[ContextItem]]) -> Option<String> {
         }
         Some(())
     }
-    let mut key = format!("{library};");
+    // Built once per instance: room for a typical clause, so that it is one allocation.
+    let mut key = String::with_capacity(128);
+    key.push_str(library);
+    key.push(';');
     for item in contexts.iter().flat_map(|c| c.iter()) {
         match item {
             ContextItem::Library(names, _) => {

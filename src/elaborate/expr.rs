@@ -2,6 +2,7 @@
 //! conversion between integer and real), overload resolution by argument and expected types,
 //! and folding of every static sub-expression.
 
+use std::borrow::Cow;
 use std::rc::Rc;
 
 use crate::ast::{self, Actual, ExprKind, Literal};
@@ -104,8 +105,9 @@ impl<'a> Elab<'a> {
     /// Every item a (simple or selected) name denotes.
     pub(super) fn lookup(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<Vec<Item<'a>>> {
         let items = match &e.kind {
+            // Borrowed: only the usable items are copied out, once.
             ExprKind::Name(id) => match sc.lookup(&id.name) {
-                Some(items) => items.to_vec(),
+                Some(items) => Cow::Borrowed(items),
                 None => {
                     let help = sc.suggest(&id.name).map(|s| format!("did you mean `{s}`?"));
                     return Err(self.error(ElabError::Undeclared {
@@ -123,10 +125,10 @@ impl<'a> Elab<'a> {
                     Some(Item::Library(lib)) => {
                         let lib = lib.clone();
                         let pkg = self.package(&lib, &suffix.name, Some(suffix.span))?;
-                        vec![Item::Package(pkg)]
+                        Cow::Owned(vec![Item::Package(pkg)])
                     }
                     Some(Item::Package(pkg)) => match pkg.items.get(&suffix.name) {
-                        Some(items) => items.clone(),
+                        Some(items) => Cow::Owned(items.clone()),
                         None => {
                             return Err(self.error(ElabError::Undeclared {
                                 span: suffix.span,
