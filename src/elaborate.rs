@@ -216,11 +216,16 @@ impl<'a> Elab<'a> {
 
     /// The source text of a span with whitespace collapsed.
     fn text(&self, span: Span) -> String {
-        self.sources
-            .snippet(span)
-            .split_whitespace()
-            .collect::<Vec<_>>()
-            .join(" ")
+        // Written in place: one allocation per equation of every instance.
+        let snippet = self.sources.snippet(span);
+        let mut text = String::with_capacity(snippet.len());
+        for word in snippet.split_whitespace() {
+            if !text.is_empty() {
+                text.push(' ');
+            }
+            text.push_str(word);
+        }
+        text
     }
 
     /// A new scope with the implicit context (`library std, work; use std.standard.all`) and

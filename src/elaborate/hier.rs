@@ -102,24 +102,25 @@ impl<'a> Elab<'a> {
             (Some(a), None) => a.last().cloned(),
             (None, _) => None,
         };
+        if let Some(found) = found {
+            return Ok(found);
+        }
         let known: Vec<String> = archs
             .map(|a| a.iter().map(|u| u.unit.name.name.clone()).collect())
             .unwrap_or_default();
-        found.ok_or_else(|| {
-            self.error(ElabError::NoArchitecture {
-                span,
-                entity: key.1.clone(),
-                named: named.map(|n| format!(" `{}`", n.name)).unwrap_or_default(),
-                help: Some(if known.is_empty() {
-                    format!(
-                        "write `architecture a of {} is ... end architecture;` and pass its file",
-                        key.1
-                    )
-                } else {
-                    format!("its architectures are {}", list_names(&known))
-                }),
-            })
-        })
+        Err(self.error(ElabError::NoArchitecture {
+            span,
+            entity: key.1.clone(),
+            named: named.map(|n| format!(" `{}`", n.name)).unwrap_or_default(),
+            help: Some(if known.is_empty() {
+                format!(
+                    "write `architecture a of {} is ... end architecture;` and pass its file",
+                    key.1
+                )
+            } else {
+                format!("its architectures are {}", list_names(&known))
+            }),
+        }))
     }
 
     /// Matches a map's associations to the formals: `formal name -> actual`.
@@ -668,8 +669,11 @@ impl<'a> Elab<'a> {
             .label
             .as_ref()
             .map_or_else(|| name.clone(), |l| l.name.clone());
-        let saved = (self.path.clone(), self.instance.clone());
-        self.path = self.hier_name(&label);
+        let path = self.hier_name(&label);
+        let saved = (
+            std::mem::replace(&mut self.path, path),
+            std::mem::take(&mut self.instance),
+        );
         self.instance = self.path.clone();
         let r = self.instance_body(
             &entity,

@@ -891,7 +891,7 @@ impl<'a> Elab<'a> {
     }
 
     fn break_instr(&mut self, sc: &Scope<'a>, b: &BreakStmt, span: Span) -> R<Instr> {
-        let mut reinit = Vec::new();
+        let mut reinit = Vec::with_capacity(b.elements.len());
         for el in &b.elements {
             let quantity = self.quantity_name(sc, &el.quantity)?;
             let selector = match &el.selector {
