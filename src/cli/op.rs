@@ -8,7 +8,7 @@ use rustc_hash::FxHashMap;
 use crate::design::{Design, Type};
 use crate::kernel::{SimOptions, operating_point};
 
-use super::compile::{DesignArgs, compile};
+use super::compile::{DesignArgs, compile, discard_at_exit};
 use super::error::CliError;
 use super::render::render_sim_error;
 use super::time::format_time;
@@ -94,6 +94,7 @@ pub fn run(args: &OpArgs) -> Result<(), Report> {
         }
     })?;
     print!("{}", format_point(&compiled.design, &point));
+    discard_at_exit(compiled);
     Ok(())
 }
 
