@@ -178,9 +178,19 @@ impl<'a> Elab<'a> {
     pub(super) fn expr(&mut self, sc: &Scope<'a>, e: &ast::Expr, want: Option<&Ty>) -> R<Typed> {
         match &e.kind {
             ExprKind::Literal(lit) => self.literal(sc, lit, e.span, want),
-            ExprKind::Name(_) | ExprKind::Selected(..) => {
+            ExprKind::Name(id) => match sc.lookup(&id.name) {
+                // The usual case, read in place: [`Elab::lookup`] would copy the same items.
+                Some(items) if !items.iter().any(|i| matches!(i, Item::Poison(_))) => {
+                    self.object(sc, items, e, want)
+                }
+                _ => {
+                    let items = self.lookup(sc, e)?;
+                    self.object(sc, &items, e, want)
+                }
+            },
+            ExprKind::Selected(..) => {
                 let items = self.lookup(sc, e)?;
-                self.object(sc, items, e, want)
+                self.object(sc, &items, e, want)
             }
             ExprKind::Paren(inner) => self.expr(sc, inner, want),
             ExprKind::Qualified(mark, inner) => {
@@ -222,7 +232,7 @@ impl<'a> Elab<'a> {
                         self.conversion(sc, &target, args, e.span)
                     }
                     _ => {
-                        let array = self.object(sc, items, prefix, None)?;
+                        let array = self.object(sc, &items, prefix, None)?;
                         self.index(sc, array, args, e.span)
                     }
                 }
@@ -438,7 +448,7 @@ impl<'a> Elab<'a> {
     fn object(
         &mut self,
         sc: &Scope<'a>,
-        items: Vec<Item<'a>>,
+        items: &[Item<'a>],
         e: &ast::Expr,
         want: Option<&Ty>,
     ) -> R<Typed> {
@@ -448,7 +458,7 @@ impl<'a> Elab<'a> {
             Item::Signal { id, ty } => Typed::new(Expr::Signal(id), ty),
             Item::Quantity(id) => Typed::new(Expr::Quantity(id), Ty::Real),
             Item::Variable { id, ty, .. } => Typed::new(Expr::Var(id), ty),
-            Item::EnumLiteral { .. } => return self.enum_literal(&items, want, e.span),
+            Item::EnumLiteral { .. } => return self.enum_literal(items, want, e.span),
             Item::Subprogram(_) => {
                 let subs = items
                     .iter()
