@@ -20,6 +20,8 @@
 //! Names are hierarchical paths relative to the top, lower case, dot separated: `vref`,
 //! `dut.u_motor.i`, `dut.u_ic.up`.
 
+use std::sync::Arc;
+
 use crate::source::Span;
 
 macro_rules! id_type {
@@ -70,6 +72,22 @@ pub struct Design {
     pub subprograms: Vec<Subprogram>,
     /// `Q'delayed(T)` lines: each defines its output quantity from the input's history.
     pub delays: Vec<Delay>,
+}
+
+impl Design {
+    /// Gives back the spare capacity of every table: they grew by doubling during elaboration,
+    /// and a large design otherwise carries up to half of each unused into simulation.
+    pub fn shrink_to_fit(&mut self) {
+        self.natures.shrink_to_fit();
+        self.terminals.shrink_to_fit();
+        self.quantities.shrink_to_fit();
+        self.equations.shrink_to_fit();
+        self.signals.shrink_to_fit();
+        self.processes.shrink_to_fit();
+        self.limits.shrink_to_fit();
+        self.subprograms.shrink_to_fit();
+        self.delays.shrink_to_fit();
+    }
 }
 
 /// A function or procedure lowered like a process: its frame is `vars` (the variable
@@ -147,8 +165,9 @@ pub struct Quantity {
     pub kind: QuantityKind,
     /// Tolerance group from the quantity's subtype (`"DEFAULT_CURRENT"`), if any.
     pub tolerance: Option<String>,
-    /// Name of the quantity's subtype (`voltage`, `angular_velocity`, `real`).
-    pub subtype: String,
+    /// Name of the quantity's subtype (`voltage`, `angular_velocity`, `real`), shared by the
+    /// quantities of that subtype (`Arc`: a design is sent to the test runner's threads).
+    pub subtype: Arc<str>,
     /// Unit symbol from the subtype's `symbol` attribute (`"V"`, `"rad/s"`), if declared.
     pub unit: Option<String>,
     /// The `:= expr` default, used as the Newton starting guess (not an initial condition).

@@ -12,7 +12,7 @@
 //!
 //! May use `ast`, `source`, `design`, `diagnostics`. Never touches the solver or the kernel.
 
-use std::collections::{HashMap, HashSet};
+use rustc_hash::{FxHashMap, FxHashSet};
 use std::rc::Rc;
 
 use crate::ast::{ContextItem, DesignFile, ExprKind};
@@ -70,7 +70,9 @@ pub fn elaborate(
     let mut elab = Elab::new(sources, files);
     elab.top(options);
     if elab.errors.is_empty() {
-        Ok(elab.design)
+        let mut design = elab.design;
+        design.shrink_to_fit();
+        Ok(design)
     } else {
         Err(elab.errors)
     }
@@ -101,7 +103,10 @@ fn context_key(library: &str, contexts: &[&[ContextItem]]) -> Option<String> {
         }
         Some(())
     }
-    let mut key = format!("{library};");
+    // Built once per instance: room for a typical clause, so that it is one allocation.
+    let mut key = String::with_capacity(128);
+    key.push_str(library);
+    key.push(';');
     for item in contexts.iter().flat_map(|c| c.iter()) {
         match item {
             ContextItem::Library(names, _) => {
@@ -144,26 +149,27 @@ struct Elab<'a> {
     lib: Library<'a>,
     design: Design,
     errors: Vec<ElabError>,
-    packages: HashMap<(String, String), Rc<PackageScope<'a>>>,
-    packages_in_progress: HashSet<(String, String)>,
+    packages: FxHashMap<(String, String), Rc<PackageScope<'a>>>,
+    packages_in_progress: FxHashSet<(String, String)>,
     natures: Vec<NatureInfo>,
     /// Implicit `Q'above(level)` signals, one per distinct pair.
     above: Vec<(QuantityId, Expr, SignalId)>,
     /// Auxiliary quantities of `Q'dot'dot` and `Q'integ`, by the quantity they derive from.
-    dot_aux: HashMap<QuantityId, QuantityId>,
-    integ_aux: HashMap<QuantityId, QuantityId>,
+    dot_aux: FxHashMap<QuantityId, QuantityId>,
+    integ_aux: FxHashMap<QuantityId, QuantityId>,
     /// Hierarchical prefix of the objects being declared (`""` at the top, `dut.u_motor`).
     path: String,
     /// Instance path of the architecture being elaborated (no block or generate labels).
     instance: String,
-    /// Unlabelled processes so far, per path (for `_pN` names).
-    unlabelled: HashMap<String, usize>,
+    /// Unlabelled processes so far, per path (for `_pN` names): the current path and the
+    /// paths enclosing it, outermost first.
+    unlabelled: Vec<(String, usize)>,
     /// While elaborating a stdlib package: its subprograms that have no body (native ones).
-    native_names: Option<HashSet<String>>,
+    native_names: Option<FxHashSet<String>>,
     /// Errors in stdlib declarations poison the names instead of being reported.
     quiet: bool,
     /// Use regions already built, by [`context_key`].
-    use_regions: HashMap<String, scope::Region<'a>>,
+    use_regions: FxHashMap<String, scope::Region<'a>>,
 }
 
 impl<'a> Elab<'a> {
@@ -173,18 +179,18 @@ impl<'a> Elab<'a> {
             lib: Library::index(sources, files),
             design: Design::default(),
             errors: Vec::new(),
-            packages: HashMap::new(),
-            packages_in_progress: HashSet::new(),
+            packages: FxHashMap::default(),
+            packages_in_progress: FxHashSet::default(),
             natures: Vec::new(),
             above: Vec::new(),
-            dot_aux: HashMap::new(),
-            integ_aux: HashMap::new(),
+            dot_aux: FxHashMap::default(),
+            integ_aux: FxHashMap::default(),
             path: String::new(),
             instance: String::new(),
-            unlabelled: HashMap::new(),
+            unlabelled: Vec::new(),
             native_names: None,
             quiet: false,
-            use_regions: HashMap::new(),
+            use_regions: FxHashMap::default(),
         }
     }
 
@@ -198,17 +204,28 @@ impl<'a> Elab<'a> {
         if self.path.is_empty() {
             name.to_string()
         } else {
-            format!("{}.{}", self.path, name)
+            // Exact capacity: a design holds one such name per object, and `format!` would
+            // leave up to half of each deep hierarchical name unused.
+            let mut full = String::with_capacity(self.path.len() + 1 + name.len());
+            full.push_str(&self.path);
+            full.push('.');
+            full.push_str(name);
+            full
         }
     }
 
     /// The source text of a span with whitespace collapsed.
     fn text(&self, span: Span) -> String {
-        self.sources
-            .snippet(span)
-            .split_whitespace()
-            .collect::<Vec<_>>()
-            .join(" ")
+        // Written in place: one allocation per equation of every instance.
+        let snippet = self.sources.snippet(span);
+        let mut text = String::with_capacity(snippet.len());
+        for word in snippet.split_whitespace() {
+            if !text.is_empty() {
+                text.push(' ');
+            }
+            text.push_str(word);
+        }
+        text
     }
 
     /// A new scope with the implicit context (`library std, work; use std.standard.all`) and
@@ -361,7 +378,7 @@ impl<'a> Elab<'a> {
         );
         self.quiet = stdlib;
         if stdlib {
-            let with_body: HashSet<String> = body
+            let with_body: FxHashSet<String> = body
                 .iter()
                 .flat_map(|b| b.unit.decls.iter())
                 .filter_map(|d| match &d.kind {
@@ -371,7 +388,7 @@ impl<'a> Elab<'a> {
                     _ => None,
                 })
                 .collect();
-            let native: HashSet<String> = unit
+            let native: FxHashSet<String> = unit
                 .unit
                 .decls
                 .iter()

@@ -6,7 +6,7 @@ use miette::Report;
 
 use crate::analog::AnalogSystem;
 
-use super::compile::{DesignArgs, compile};
+use super::compile::{DesignArgs, compile, discard_at_exit};
 use super::error::CliError;
 use super::render::render_located;
 
@@ -33,5 +33,6 @@ pub fn run(args: &DaeArgs) -> Result<(), Report> {
         "{}",
         system.listing(&compiled.design, &compiled.loaded.sources)
     );
+    discard_at_exit((compiled, system));
     Ok(())
 }

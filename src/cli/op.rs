@@ -3,11 +3,12 @@
 
 use clap::Args;
 use miette::Report;
+use rustc_hash::FxHashMap;
 
 use crate::design::{Design, Type};
 use crate::kernel::{SimOptions, operating_point};
 
-use super::compile::{DesignArgs, compile};
+use super::compile::{DesignArgs, compile, discard_at_exit};
 use super::error::CliError;
 use super::render::render_sim_error;
 use super::time::format_time;
@@ -21,38 +22,65 @@ pub struct OpArgs {
     pub design: DesignArgs,
 }
 
-/// A value as text: quantities with their unit symbol; signals by their type (booleans and
-/// enumeration literals by name).
-pub fn format_value(design: &Design, name: &str, value: f64) -> String {
-    if let Some(q) = design.quantities.iter().find(|q| q.name == name) {
-        return match &q.unit {
-            Some(unit) => format!("{} {unit}", csv_number(value)),
-            None => csv_number(value),
-        };
+/// What decides how a name's value is printed: a quantity's unit or a signal's type.
+enum Kind<'d> {
+    Quantity(Option<&'d str>),
+    Signal(&'d Type),
+}
+
+/// The quantities and signals of a design by name, looked up once per printed value (a
+/// search through the design per value made the listing quadratic in its size).
+pub struct ValueFormats<'d> {
+    by_name: FxHashMap<&'d str, Kind<'d>>,
+}
+
+impl<'d> ValueFormats<'d> {
+    pub fn new(design: &'d Design) -> ValueFormats<'d> {
+        let mut by_name = FxHashMap::default();
+        by_name.reserve(design.quantities.len() + design.signals.len());
+        // Quantities first: they win over a signal of the same name.
+        for q in &design.quantities {
+            by_name
+                .entry(q.name.as_str())
+                .or_insert(Kind::Quantity(q.unit.as_deref()));
+        }
+        for s in &design.signals {
+            by_name
+                .entry(s.name.as_str())
+                .or_insert(Kind::Signal(&s.ty));
+        }
+        ValueFormats { by_name }
     }
-    let ty = design
-        .signals
-        .iter()
-        .find(|s| s.name == name)
-        .map(|s| &s.ty);
-    match ty {
-        Some(Type::Boolean) => (if value > 0.5 { "true" } else { "false" }).into(),
-        Some(Type::Enum { literals, .. }) => literals
-            .get(value.round().max(0.0) as usize)
-            .cloned()
-            .unwrap_or_else(|| csv_number(value)),
-        Some(Type::Integer) => format!("{}", value.round() as i64),
-        Some(Type::Time) => format_time(value),
-        _ => csv_number(value),
+
+    /// A value as text: quantities with their unit symbol; signals by their type (booleans
+    /// and enumeration literals by name).
+    pub fn format(&self, name: &str, value: f64) -> String {
+        let ty = match self.by_name.get(name) {
+            Some(Kind::Quantity(Some(unit))) => return format!("{} {unit}", csv_number(value)),
+            Some(Kind::Quantity(None)) => return csv_number(value),
+            Some(Kind::Signal(ty)) => Some(*ty),
+            None => None,
+        };
+        match ty {
+            Some(Type::Boolean) => (if value > 0.5 { "true" } else { "false" }).into(),
+            Some(Type::Enum { literals, .. }) => literals
+                .get(value.round().max(0.0) as usize)
+                .cloned()
+                .unwrap_or_else(|| csv_number(value)),
+            Some(Type::Integer) => format!("{}", value.round() as i64),
+            Some(Type::Time) => format_time(value),
+            _ => csv_number(value),
+        }
     }
 }
 
 /// The listing: names padded to one column.
 pub fn format_point(design: &Design, point: &[(String, f64)]) -> String {
+    let formats = ValueFormats::new(design);
     let width = point.iter().map(|(n, _)| n.len()).max().unwrap_or(0);
     point
         .iter()
-        .map(|(name, v)| format!("{name:<width$}  {}\n", format_value(design, name, *v)))
+        .map(|(name, v)| format!("{name:<width$}  {}\n", formats.format(name, *v)))
         .collect()
 }
 
@@ -66,6 +94,7 @@ pub fn run(args: &OpArgs) -> Result<(), Report> {
         }
     })?;
     print!("{}", format_point(&compiled.design, &point));
+    discard_at_exit(compiled);
     Ok(())
 }
 

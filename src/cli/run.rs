@@ -14,7 +14,7 @@ use crate::output::vcd::write_vcd;
 use crate::output::waveplot::{default_groups, named_groups, plot_waveforms};
 use crate::waveform::Waveforms;
 
-use super::compile::{DesignArgs, compile};
+use super::compile::{DesignArgs, compile, discard_at_exit};
 use super::error::CliError;
 use super::progress::ProgressBar;
 use super::render::{format_report, render_located, render_sim_error};
@@ -216,14 +216,16 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
     if args.stats {
         eprint!("{}", stats_table(&result.stats));
     }
-    if let Outcome::Failed { time } = result.outcome {
-        let message = result
-            .reports
-            .iter()
-            .rev()
-            .find(|r| r.severity == crate::kernel::Severity::Failure)
-            .map(|r| r.message.clone())
-            .unwrap_or_else(|| "assertion of severity failure".into());
+    let outcome = result.outcome;
+    let failure = result
+        .reports
+        .iter()
+        .rev()
+        .find(|r| r.severity == crate::kernel::Severity::Failure)
+        .map(|r| r.message.clone());
+    discard_at_exit((compiled, result));
+    if let Outcome::Failed { time } = outcome {
+        let message = failure.unwrap_or_else(|| "assertion of severity failure".into());
         return Err(CliError::RunFailed {
             time: format_time(time),
             message,

@@ -209,7 +209,7 @@ impl<'a> Elab<'a> {
             },
             DeclKind::Subtype { name, subtype } => {
                 let mut sub = (*self.subtype_indication(sc, subtype)?).clone();
-                sub.name = name.name.clone();
+                sub.name = name.name.as_str().into();
                 self.declare(sc, name, Item::Type(Rc::new(sub)))
             }
             DeclKind::Nature { name, def } => self.nature_decl(sc, name, def, d.span),

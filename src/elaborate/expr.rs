@@ -2,6 +2,7 @@
 //! conversion between integer and real), overload resolution by argument and expected types,
 //! and folding of every static sub-expression.
 
+use std::borrow::Cow;
 use std::rc::Rc;
 
 use crate::ast::{self, Actual, ExprKind, Literal};
@@ -104,8 +105,9 @@ impl<'a> Elab<'a> {
     /// Every item a (simple or selected) name denotes.
     pub(super) fn lookup(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<Vec<Item<'a>>> {
         let items = match &e.kind {
+            // Borrowed: only the usable items are copied out, once.
             ExprKind::Name(id) => match sc.lookup(&id.name) {
-                Some(items) => items.to_vec(),
+                Some(items) => Cow::Borrowed(items),
                 None => {
                     let help = sc.suggest(&id.name).map(|s| format!("did you mean `{s}`?"));
                     return Err(self.error(ElabError::Undeclared {
@@ -123,10 +125,10 @@ impl<'a> Elab<'a> {
                     Some(Item::Library(lib)) => {
                         let lib = lib.clone();
                         let pkg = self.package(&lib, &suffix.name, Some(suffix.span))?;
-                        vec![Item::Package(pkg)]
+                        Cow::Owned(vec![Item::Package(pkg)])
                     }
                     Some(Item::Package(pkg)) => match pkg.items.get(&suffix.name) {
-                        Some(items) => items.clone(),
+                        Some(items) => Cow::Owned(items.clone()),
                         None => {
                             return Err(self.error(ElabError::Undeclared {
                                 span: suffix.span,
@@ -176,9 +178,19 @@ impl<'a> Elab<'a> {
     pub(super) fn expr(&mut self, sc: &Scope<'a>, e: &ast::Expr, want: Option<&Ty>) -> R<Typed> {
         match &e.kind {
             ExprKind::Literal(lit) => self.literal(sc, lit, e.span, want),
-            ExprKind::Name(_) | ExprKind::Selected(..) => {
+            ExprKind::Name(id) => match sc.lookup(&id.name) {
+                // The usual case, read in place: [`Elab::lookup`] would copy the same items.
+                Some(items) if !items.iter().any(|i| matches!(i, Item::Poison(_))) => {
+                    self.object(sc, items, e, want)
+                }
+                _ => {
+                    let items = self.lookup(sc, e)?;
+                    self.object(sc, &items, e, want)
+                }
+            },
+            ExprKind::Selected(..) => {
                 let items = self.lookup(sc, e)?;
-                self.object(sc, items, e, want)
+                self.object(sc, &items, e, want)
             }
             ExprKind::Paren(inner) => self.expr(sc, inner, want),
             ExprKind::Qualified(mark, inner) => {
@@ -220,7 +232,7 @@ impl<'a> Elab<'a> {
                         self.conversion(sc, &target, args, e.span)
                     }
                     _ => {
-                        let array = self.object(sc, items, prefix, None)?;
+                        let array = self.object(sc, &items, prefix, None)?;
                         self.index(sc, array, args, e.span)
                     }
                 }
@@ -436,7 +448,7 @@ impl<'a> Elab<'a> {
     fn object(
         &mut self,
         sc: &Scope<'a>,
-        items: Vec<Item<'a>>,
+        items: &[Item<'a>],
         e: &ast::Expr,
         want: Option<&Ty>,
     ) -> R<Typed> {
@@ -446,7 +458,7 @@ impl<'a> Elab<'a> {
             Item::Signal { id, ty } => Typed::new(Expr::Signal(id), ty),
             Item::Quantity(id) => Typed::new(Expr::Quantity(id), Ty::Real),
             Item::Variable { id, ty, .. } => Typed::new(Expr::Var(id), ty),
-            Item::EnumLiteral { .. } => return self.enum_literal(&items, want, e.span),
+            Item::EnumLiteral { .. } => return self.enum_literal(items, want, e.span),
             Item::Subprogram(_) => {
                 let subs = items
                     .iter()

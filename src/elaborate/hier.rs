@@ -2,7 +2,7 @@
 //! maps, generate statements and blocks. Ports are aliases of their actuals; an unconnected
 //! port gets a fresh object named `instance.port`.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 
 use crate::ast::{
     self, Actual, Architecture, Assoc, ConcKind, ConcStmt, Entity, InstantiatedUnit, InterfaceDecl,
@@ -102,24 +102,25 @@ impl<'a> Elab<'a> {
             (Some(a), None) => a.last().cloned(),
             (None, _) => None,
         };
+        if let Some(found) = found {
+            return Ok(found);
+        }
         let known: Vec<String> = archs
             .map(|a| a.iter().map(|u| u.unit.name.name.clone()).collect())
             .unwrap_or_default();
-        found.ok_or_else(|| {
-            self.error(ElabError::NoArchitecture {
-                span,
-                entity: key.1.clone(),
-                named: named.map(|n| format!(" `{}`", n.name)).unwrap_or_default(),
-                help: Some(if known.is_empty() {
-                    format!(
-                        "write `architecture a of {} is ... end architecture;` and pass its file",
-                        key.1
-                    )
-                } else {
-                    format!("its architectures are {}", list_names(&known))
-                }),
-            })
-        })
+        Err(self.error(ElabError::NoArchitecture {
+            span,
+            entity: key.1.clone(),
+            named: named.map(|n| format!(" `{}`", n.name)).unwrap_or_default(),
+            help: Some(if known.is_empty() {
+                format!(
+                    "write `architecture a of {} is ... end architecture;` and pass its file",
+                    key.1
+                )
+            } else {
+                format!("its architectures are {}", list_names(&known))
+            }),
+        }))
     }
 
     /// Matches a map's associations to the formals: `formal name -> actual`.
@@ -129,8 +130,8 @@ impl<'a> Elab<'a> {
         map: &'x [Assoc],
         what: &'static str,
         unit: &str,
-    ) -> HashMap<String, &'x Assoc> {
-        let mut out = HashMap::new();
+    ) -> FxHashMap<String, &'x Assoc> {
+        let mut out = FxHashMap::default();
         let names: Vec<String> = formals.iter().map(|(n, _)| n.name.clone()).collect();
         for (k, a) in map.iter().enumerate() {
             let name = match &a.formal {
@@ -199,7 +200,7 @@ impl<'a> Elab<'a> {
         let generics = flatten(&ent.generics);
         let ports = flatten(&ent.ports);
         let (gmap, pmap, parent) = match &actuals {
-            Actuals::Top(_) => (HashMap::new(), HashMap::new(), None),
+            Actuals::Top(_) => (FxHashMap::default(), FxHashMap::default(), None),
             Actuals::Map {
                 parent,
                 generics: g,
@@ -668,8 +669,11 @@ impl<'a> Elab<'a> {
             .label
             .as_ref()
             .map_or_else(|| name.clone(), |l| l.name.clone());
-        let saved = (self.path.clone(), self.instance.clone());
-        self.path = self.hier_name(&label);
+        let path = self.hier_name(&label);
+        let saved = (
+            std::mem::replace(&mut self.path, path),
+            std::mem::take(&mut self.instance),
+        );
         self.instance = self.path.clone();
         let r = self.instance_body(
             &entity,

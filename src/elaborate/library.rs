@@ -1,6 +1,8 @@
 //! The library index: every design unit of every file by (library, name), in analysis order.
 
-use std::collections::{BTreeSet, HashMap};
+use std::collections::BTreeSet;
+
+use rustc_hash::FxHashMap;
 
 use crate::ast::{
     Architecture, ConcKind, ConcStmt, ContextItem, DesignFile, Entity, ExprKind, InstantiatedUnit,
@@ -11,11 +13,11 @@ use crate::source::{FileId, SourceMap};
 /// Design units of one compilation. Library `ieee_proposed` is an alias of `ieee`.
 #[derive(Default)]
 pub struct Library<'a> {
-    pub entities: HashMap<(String, String), Unit<'a, Entity>>,
+    pub entities: FxHashMap<(String, String), Unit<'a, Entity>>,
     /// Architectures of each entity in analysis order (the last is the default).
-    pub architectures: HashMap<(String, String), Vec<Unit<'a, Architecture>>>,
-    pub packages: HashMap<(String, String), Unit<'a, Package>>,
-    pub bodies: HashMap<(String, String), Unit<'a, PackageBody>>,
+    pub architectures: FxHashMap<(String, String), Vec<Unit<'a, Architecture>>>,
+    pub packages: FxHashMap<(String, String), Unit<'a, Package>>,
+    pub bodies: FxHashMap<(String, String), Unit<'a, PackageBody>>,
 }
 
 /// A unit with its context clause and library.

@@ -129,18 +129,34 @@ impl<'a> Elab<'a> {
         let name = match label {
             Some(l) => self.hier_name(&l.name),
             None => {
-                let n = self.unlabelled.entry(self.path.clone()).or_insert(0);
-                let name = format!("_p{n}");
-                *n += 1;
-                self.hier_name(&name)
+                let n = self.next_unlabelled();
+                self.hier_name(&format!("_p{n}"))
             }
         };
+        // A design may hold one process per instance: no spare capacity in each.
+        let (mut vars, mut code) = (p.vars, p.code);
+        vars.shrink_to_fit();
+        code.shrink_to_fit();
         self.design.processes.push(Process {
             name,
-            vars: p.vars,
-            code: p.code,
+            vars,
+            code,
             span,
         });
+    }
+
+    /// The number of the next unlabelled process under the current path. Only the counters of
+    /// the current path and of the paths enclosing it are kept: labels are unique, so a region
+    /// once left never comes back, and a design's worth of paths is never held.
+    fn next_unlabelled(&mut self) -> usize {
+        let path = self.path.as_str();
+        self.unlabelled.retain(|(p, _)| encloses(p, path));
+        if let Some((_, n)) = self.unlabelled.iter_mut().find(|(p, _)| p == path) {
+            *n += 1;
+            return *n - 1;
+        }
+        self.unlabelled.push((path.to_string(), 1));
+        0
     }
 
     /// An explicit process statement.
@@ -875,7 +891,7 @@ impl<'a> Elab<'a> {
     }
 
     fn break_instr(&mut self, sc: &Scope<'a>, b: &BreakStmt, span: Span) -> R<Instr> {
-        let mut reinit = Vec::new();
+        let mut reinit = Vec::with_capacity(b.elements.len());
         for el in &b.elements {
             let quantity = self.quantity_name(sc, &el.quantity)?;
             let selector = match &el.selector {
@@ -1049,5 +1065,30 @@ fn contains_wait(s: &SeqStmt) -> bool {
             .any(|(_, b)| b.iter().any(contains_wait)),
         SeqKind::Loop { body, .. } => body.iter().any(contains_wait),
         _ => false,
+    }
+}
+
+/// Whether hierarchical path `outer` is `inner` or encloses it (`a` encloses `a.b` and `a(1)`,
+/// not `ab`).
+fn encloses(outer: &str, inner: &str) -> bool {
+    outer.is_empty()
+        || inner
+            .strip_prefix(outer)
+            .is_some_and(|rest| rest.is_empty() || rest.starts_with(['.', '(']))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::encloses;
+
+    #[test]
+    fn a_path_encloses_itself_and_its_nested_regions_only() {
+        assert!(encloses("", "dut.u1"));
+        assert!(encloses("dut", "dut"));
+        assert!(encloses("dut", "dut.u1"));
+        assert!(encloses("dut.g", "dut.g(3).b"));
+        assert!(!encloses("dut", "dut2"));
+        assert!(!encloses("dut.u1", "dut"));
+        assert!(!encloses("dut.g(1)", "dut.g(2)"));
     }
 }

@@ -4,8 +4,8 @@
 //! made visible. A name found in an inner region hides the outer ones (LRM 12.3), except that
 //! overloadable items (subprograms, enumeration literals) of the same region are all returned.
 
+use rustc_hash::FxHashMap;
 use std::cell::RefCell;
-use std::collections::HashMap;
 use std::rc::Rc;
 
 use crate::ast;
@@ -154,14 +154,14 @@ pub enum Native {
 #[derive(Debug, Default)]
 pub struct PackageScope<'a> {
     pub name: String,
-    pub items: HashMap<String, Vec<Item<'a>>>,
+    pub items: FxHashMap<String, Vec<Item<'a>>>,
 }
 
 /// One declarative region. The items are shared until written (`Rc::make_mut`), so that the
 /// use region of a context clause is built once and handed to every instance that has it.
 #[derive(Debug, Default, Clone)]
 pub struct Region<'a> {
-    pub items: Rc<HashMap<String, Vec<Item<'a>>>>,
+    pub items: Rc<FxHashMap<String, Vec<Item<'a>>>>,
 }
 
 #[derive(Debug, Default, Clone)]

@@ -3,6 +3,7 @@
 
 use std::fmt;
 use std::rc::Rc;
+use std::sync::Arc;
 
 use crate::design::{Type, Value};
 
@@ -156,8 +157,9 @@ impl fmt::Display for Ty {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Sub {
     pub ty: Ty,
-    /// The subtype's own name (`voltage`), for `Quantity::subtype`.
-    pub name: String,
+    /// The subtype's own name (`voltage`), for `Quantity::subtype` (shared, not copied, by each
+    /// quantity).
+    pub name: Arc<str>,
     /// `tolerance "DEFAULT_VOLTAGE"`.
     pub tolerance: Option<String>,
     /// The `symbol` attribute (`"V"`).
@@ -170,7 +172,7 @@ impl Sub {
     pub fn of(ty: Ty, name: &str) -> Sub {
         Sub {
             ty,
-            name: name.to_string(),
+            name: name.into(),
             tolerance: None,
             unit: None,
             range: None,

@@ -157,6 +157,19 @@ fn concurrent_statements_become_processes() {
 }
 
 #[test]
+fn unlabelled_processes_count_per_region_around_nested_ones() {
+    let text = "entity leaf is end;\narchitecture a of leaf is\n  signal s : boolean;\nbegin\n  s <= true;\nend;\nentity t is end;\narchitecture a of t is\n  signal a : boolean;\nbegin\n  a <= true;\n  b : block begin\n    a <= false;\n  end block b;\n  u : entity work.leaf;\n  a <= a;\n  g : for i in 1 to 2 generate\n    a <= a;\n  end generate g;\n  a <= not a;\nend;\n";
+    let d = ok(&src(text), "t");
+    let names: Vec<&str> = d.processes.iter().map(|p| p.name.as_str()).collect();
+    assert_eq!(
+        names,
+        [
+            "_p0", "b._p0", "u._p0", "_p1", "g(1)._p0", "g(2)._p0", "_p2"
+        ]
+    );
+}
+
+#[test]
 fn integer_and_real_do_not_mix() {
     let e = errors(
         &src(

@@ -73,7 +73,7 @@ fn tracking_bench_elaborates() {
     // i_motor is a quantity port of headlight_system: an alias, not a copy.
     assert!(!d.quantities.iter().any(|q| q.name == "dut.i_motor"));
     let i = &d.quantities[quantity(&d, "dut.u_motor.i")];
-    assert_eq!(i.subtype, "current");
+    assert_eq!(&*i.subtype, "current");
     assert_eq!(i.unit.as_deref(), Some("A"));
     assert_eq!(i.tolerance.as_deref(), Some("DEFAULT_CURRENT"));
     assert!(matches!(i.kind, QuantityKind::Through { .. }));
