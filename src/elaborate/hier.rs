@@ -11,6 +11,7 @@ use crate::ast::{
 use crate::design::{QuantityKind, Value};
 use crate::source::Span;
 
+use super::arrays::NatureMark;
 use super::error::ElabError;
 use super::generics::parse_literal;
 use super::library::{Unit, canonical_library};
@@ -346,10 +347,24 @@ impl<'a> Elab<'a> {
         };
         let item = match class {
             ObjectClass::Terminal => {
-                let nature = self.nature_mark(sc, &decl.subtype)?;
+                let nature = match self.nature_indication(sc, &decl.subtype)? {
+                    NatureMark::Scalar(n) => n,
+                    NatureMark::Array(array) => {
+                        let item = self.terminal_array_port(name, &array, actual_expr)?;
+                        sc.declare(&name.name, item);
+                        return Ok(());
+                    }
+                };
                 match actual_expr {
                     Some((e, p)) => {
-                        let items = self.lookup(p, e)?;
+                        let items = match &e.kind {
+                            ast::ExprKind::Apply(prefix, args) => {
+                                let (id, nature) =
+                                    self.indexed_terminal(p, prefix, args, e.span)?;
+                                vec![Item::Terminal { id, nature }]
+                            }
+                            _ => self.lookup(p, e)?,
+                        };
                         let (id, n) = match items[0] {
                             Item::Terminal { id, nature } => (id, nature),
                             Item::RefTerminal { nature } => {
