@@ -11,7 +11,7 @@ use crate::source::Span;
 
 use super::error::ElabError;
 use super::scope::{Item, Scope};
-use super::types::{Sub, Ty};
+use super::types::{ArrayTy, Sub, Ty};
 use super::{Elab, R};
 
 /// `nature electrical_vector is array (natural range <>) of electrical;` and its constrained
@@ -46,6 +46,21 @@ impl<T: Copy> Elements<T> {
         usize::try_from(pos)
             .ok()
             .and_then(|p| self.ids.get(p).copied())
+    }
+
+    /// An array type with the object's bounds, for `'range`, `'length`, `'left`, ...
+    pub fn ty(&self) -> Ty {
+        let last = self.ids.len() as i64 - 1;
+        let right = match self.ascending {
+            true => self.left + last,
+            false => self.left - last,
+        };
+        Ty::Array(Rc::new(ArrayTy {
+            name: self.name.clone(),
+            element: Ty::Real,
+            bounds: Some((self.left, right, self.ascending)),
+            index_low: self.left.min(right),
+        }))
     }
 
     /// The index range as written: `0 to 10`, `3 downto 0`.
@@ -247,7 +262,7 @@ impl<'a> Elab<'a> {
         let Ty::Array(arr) = &vector.ty else {
             return Err(super::Reported);
         };
-        let ty = Ty::Array(Rc::new(super::types::ArrayTy {
+        let ty = Ty::Array(Rc::new(ArrayTy {
             name: arr.name.clone(),
             element: Ty::Real,
             bounds,
