@@ -6,7 +6,7 @@
 use std::rc::Rc;
 
 use crate::ast::{self, Actual, ExprKind, Ident, IndexDef};
-use crate::design::{Expr, QuantityId, QuantityKind, TerminalId, Value};
+use crate::design::{QuantityId, QuantityKind, TerminalId, Value};
 use crate::source::Span;
 
 use super::error::ElabError;
@@ -403,9 +403,9 @@ impl<'a> Elab<'a> {
         elements: &Elements<QuantityId>,
         args: &[ast::Assoc],
         span: Span,
-    ) -> R<Expr> {
+    ) -> R<QuantityId> {
         let (index, index_span) = self.static_index(sc, args, &elements.name, span)?;
-        Ok(Expr::Quantity(self.element(elements, index, index_span)?))
+        self.element(elements, index, index_span)
     }
 
     /// A terminal port of an array nature: the actual's elements (whole-array association,

@@ -221,7 +221,7 @@ impl<'a> Elab<'a> {
                     }
                     Some(Item::QuantityArray(elements)) => {
                         let q = self.indexed_quantity(sc, elements, args, e.span)?;
-                        Ok(Typed::new(q, Ty::Real))
+                        Ok(Typed::new(Expr::Quantity(q), Ty::Real))
                     }
                     _ => {
                         let array = self.object(sc, items, prefix, None)?;
