@@ -97,6 +97,15 @@ fn terminal_and_quantity_arrays_expand_into_scalar_objects() {
         branch_ends(&d, "both.v23"),
         ("down(0)".to_string(), "down(1)".to_string())
     );
+    // Element by element: b(1) => ends(1), b(2) => node(3), b(3) => electrical_ref.
+    assert_eq!(
+        branch_ends(&d, "pick.v12"),
+        ("ends(1)".to_string(), "node(3)".to_string())
+    );
+    assert_eq!(
+        branch_ends(&d, "pick.v23"),
+        ("electrical_ref".to_string(), "node(3)".to_string())
+    );
     assert_eq!(
         branch_ends(&d, "e.v"),
         ("ends(0)".to_string(), "ends(1)".to_string())

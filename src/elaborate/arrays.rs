@@ -12,7 +12,7 @@ use crate::source::Span;
 use super::error::ElabError;
 use super::scope::{Item, Scope};
 use super::types::{ArrayTy, Sub, Ty};
-use super::{Elab, R};
+use super::{Elab, R, Reported};
 
 /// `nature electrical_vector is array (natural range <>) of electrical;` and its constrained
 /// subnatures.
@@ -479,6 +479,113 @@ impl<'a> Elab<'a> {
                 left,
                 ascending,
                 ids: actual.ids.clone(),
+            }),
+            nature: nature.element,
+        })
+    }
+
+    /// A terminal port of a constrained array nature associated element by element,
+    /// `port map (t(1) => a, t(2) => b)`: each element exactly once, formal indexes and actuals
+    /// read in the instantiating scope `parent`.
+    pub(super) fn terminal_port_elements(
+        &mut self,
+        sc: &Scope<'a>,
+        parent: &Scope<'a>,
+        name: &Ident,
+        decl: &ast::InterfaceDecl,
+        assocs: &[&ast::Assoc],
+    ) -> R<Item<'a>> {
+        let first = assocs.first().map_or(name.span, |a| a.span);
+        if decl.class != Some(ast::ObjectClass::Terminal) {
+            return Err(self.error(ElabError::unsupported(
+                first,
+                format!("element associations of port `{}`", name.name),
+                "only terminal array ports are associated element by element; associate the whole port",
+            )));
+        }
+        let NatureMark::Array(nature) = self.nature_indication(sc, &decl.subtype)? else {
+            return Err(self.error(ElabError::invalid(
+                first,
+                format!(
+                    "port `{}` is a scalar terminal: it has no elements",
+                    name.name
+                ),
+                Some(format!("associate it whole: `{} => p`", name.name)),
+            )));
+        };
+        let bounds = self.object_bounds(&nature, name.span)?;
+        let count = indexes(bounds).len();
+        // Index -> position, through the same lookup as the elements themselves.
+        let positions = Elements {
+            name: name.name.clone(),
+            left: bounds.0,
+            ascending: bounds.2,
+            ids: (0..count).collect(),
+        };
+        let mut ids: Vec<Option<TerminalId>> = vec![None; count];
+        for a in assocs {
+            let (Some(formal), Actual::Expr(actual)) = (&a.formal, &a.actual) else {
+                return Err(self.error(ElabError::invalid(
+                    a.span,
+                    format!("an element of port `{}` needs a terminal", name.name),
+                    Some("connect a terminal to each element: `t(1) => n(0)`".into()),
+                )));
+            };
+            let ExprKind::Apply(_, args) = &formal.kind else {
+                return Err(Reported);
+            };
+            let (index, index_span) = self.static_index(parent, args, &name.name, formal.span)?;
+            let pos = self.element(&positions, index, index_span)?;
+            let (id, actual_nature) = self.terminal(parent, actual)?;
+            if actual_nature != nature.element {
+                let (a, b) = (
+                    self.natures[nature.element].name.clone(),
+                    self.natures[actual_nature].name.clone(),
+                );
+                return Err(self.error(ElabError::TypeMismatch {
+                    span: actual.span,
+                    expected: format!("a terminal of nature {a}"),
+                    found: format!("a terminal of nature {b}"),
+                    help: Some("a terminal port connects to a terminal of the same nature".into()),
+                }));
+            }
+            if ids[pos].replace(id).is_some() {
+                return Err(self.error(ElabError::invalid(
+                    formal.span,
+                    format!("`{}({index})` is associated twice", name.name),
+                    Some("associate each element of the port once".into()),
+                )));
+            }
+        }
+        let mut complete = Vec::with_capacity(count);
+        for (pos, id) in ids.into_iter().enumerate() {
+            match id {
+                Some(id) => complete.push(id),
+                None => {
+                    let index = match bounds.2 {
+                        true => bounds.0 + pos as i64,
+                        false => bounds.0 - pos as i64,
+                    };
+                    return Err(self.error(ElabError::invalid(
+                        first,
+                        format!(
+                            "element `{}({index})` of port `{}` is not associated",
+                            name.name, name.name
+                        ),
+                        Some(format!(
+                            "associate every element of `{}`, or the whole port: `{} => n`",
+                            name.name, name.name
+                        )),
+                    )));
+                }
+            }
+        }
+        Ok(Item::TerminalArray {
+            elements: Rc::new(Elements {
+                name: name.name.clone(),
+                left: bounds.0,
+                ascending: bounds.2,
+                ids: complete,
             }),
             nature: nature.element,
         })

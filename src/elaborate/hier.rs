@@ -32,6 +32,15 @@ enum Actuals<'x, 'a> {
     },
 }
 
+/// Element associations of port arrays (`t(1) => a, t(2) => b`), by formal name.
+type Elementwise<'x> = HashMap<String, Vec<&'x Assoc>>;
+
+/// What a port is associated with: the whole formal (or nothing), or its elements one by one.
+enum PortActual<'x> {
+    Whole(Option<&'x Assoc>),
+    Elements(&'x [&'x Assoc]),
+}
+
 /// Interface names in declaration order with their declarations.
 fn flatten(decls: &[InterfaceDecl]) -> Vec<(&ast::Ident, &InterfaceDecl)> {
     decls
@@ -123,20 +132,31 @@ impl<'a> Elab<'a> {
         })
     }
 
-    /// Matches a map's associations to the formals: `formal name -> actual`.
+    /// Matches a map's associations to the formals: `formal name -> actual`, and the element
+    /// associations of port arrays (`t(1) => a`) by formal name.
     fn associate<'x>(
         &mut self,
         formals: &[(&ast::Ident, &InterfaceDecl)],
         map: &'x [Assoc],
         what: &'static str,
         unit: &str,
-    ) -> HashMap<String, &'x Assoc> {
+    ) -> (HashMap<String, &'x Assoc>, Elementwise<'x>) {
         let mut out = HashMap::new();
+        let mut elementwise: Elementwise<'x> = HashMap::new();
         let names: Vec<String> = formals.iter().map(|(n, _)| n.name.clone()).collect();
         for (k, a) in map.iter().enumerate() {
             let name = match &a.formal {
                 Some(f) => match &f.kind {
                     ast::ExprKind::Name(id) => id.name.clone(),
+                    ast::ExprKind::Apply(prefix, _)
+                        if what == "port"
+                            && matches!(&prefix.kind, ast::ExprKind::Name(id) if names.contains(&id.name)) =>
+                    {
+                        if let ast::ExprKind::Name(id) = &prefix.kind {
+                            elementwise.entry(id.name.clone()).or_default().push(a);
+                        }
+                        continue;
+                    }
                     _ => {
                         self.error(ElabError::unsupported(
                             f.span,
@@ -184,7 +204,7 @@ impl<'a> Elab<'a> {
             }
             out.insert(name, a);
         }
-        out
+        (out, elementwise)
     }
 
     fn instance_body(
@@ -199,14 +219,14 @@ impl<'a> Elab<'a> {
         sc.push();
         let generics = flatten(&ent.generics);
         let ports = flatten(&ent.ports);
-        let (gmap, pmap, parent) = match &actuals {
-            Actuals::Top(_) => (HashMap::new(), HashMap::new(), None),
+        let (gmap, (pmap, elementwise), parent) = match &actuals {
+            Actuals::Top(_) => (HashMap::new(), Default::default(), None),
             Actuals::Map {
                 parent,
                 generics: g,
                 ports: p,
             } => {
-                let gm = self.associate(&generics, g, "generic", &ent.name.name);
+                let (gm, _) = self.associate(&generics, g, "generic", &ent.name.name);
                 let pm = self.associate(&ports, p, "port", &ent.name.name);
                 (gm, pm, Some(*parent))
             }
@@ -229,9 +249,23 @@ impl<'a> Elab<'a> {
             return Err(Reported);
         }
         for (name, decl) in &ports {
-            ok &= self
-                .port(&mut sc, name, decl, pmap.get(&name.name).copied(), parent)
-                .is_ok();
+            let actual = match (elementwise.get(&name.name), pmap.get(&name.name)) {
+                (Some(_), Some(whole)) => {
+                    self.error(ElabError::invalid(
+                        whole.span,
+                        format!(
+                            "port `{}` is associated both whole and by element",
+                            name.name
+                        ),
+                        Some("keep either `t => n` or `t(1) => a, t(2) => b`".into()),
+                    ));
+                    ok = false;
+                    continue;
+                }
+                (Some(elements), None) => PortActual::Elements(elements),
+                (None, whole) => PortActual::Whole(whole.copied()),
+            };
+            ok &= self.port(&mut sc, name, decl, actual, parent).is_ok();
         }
         if !ok {
             return Err(Reported);
@@ -305,9 +339,18 @@ impl<'a> Elab<'a> {
         sc: &mut Scope<'a>,
         name: &ast::Ident,
         decl: &InterfaceDecl,
-        actual: Option<&Assoc>,
+        actual: PortActual<'_>,
         parent: Option<&Scope<'a>>,
     ) -> R<()> {
+        let actual = match (actual, parent) {
+            (PortActual::Whole(a), _) => a,
+            (PortActual::Elements(elements), Some(parent)) => {
+                let item = self.terminal_port_elements(sc, parent, name, decl, elements)?;
+                sc.declare(&name.name, item);
+                return Ok(());
+            }
+            (PortActual::Elements(_), None) => None,
+        };
         let actual_expr = match (actual, parent) {
             (
                 Some(Assoc {

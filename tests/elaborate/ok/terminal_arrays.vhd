@@ -1,7 +1,8 @@
 -- top: t
 -- Array natures (the stdlib's electrical_vector, a constrained one of our own, subnatures of
 -- both), terminal arrays with indexed names in port maps and branch quantities, whole-array
--- terminal ports (unconstrained, and constrained with other bounds than the actual), and
+-- terminal ports (unconstrained, and constrained with other bounds than the actual), element
+-- associations of a port array, and
 -- quantity arrays read and written by index.
 library ieee;
 use ieee.electrical_systems.all;
@@ -78,6 +79,7 @@ begin
   end generate chain;
   gnd : entity work.ground_all port map (t => node);
   both : entity work.top_two port map (b => down);
+  pick : entity work.top_two port map (b(1) => ends(1), b(3) => electrical_ref, b(2) => node(last));
   e : entity work.res port map (p => ends(0), m => ends(1));
   q(1) == 2.0 * q(2);
   q(2) == 1.0;
