@@ -11,9 +11,9 @@ use vams::elaborate::{ElabOptions, elaborate};
 use vams::parser::parse;
 use vams::source::SourceMap;
 
-/// Elaborates `tests/elaborate/ok/<name>.vhd` with top entity `t`; panics with the rendered
+/// Elaborates `tests/elaborate/ok/<name>.vhd` with top entity `top`; panics with the rendered
 /// diagnostics when it fails.
-fn elaborate_ok(name: &str) -> Design {
+fn elaborate_ok(name: &str, top: &str) -> Design {
     let path = format!("tests/elaborate/ok/{name}.vhd");
     let text = std::fs::read_to_string(&path).expect("readable test file");
     let mut sources = SourceMap::new();
@@ -27,7 +27,7 @@ fn elaborate_ok(name: &str) -> Design {
         files.push((id, ast));
     }
     let options = ElabOptions {
-        top: "t".into(),
+        top: top.into(),
         generics: Vec::new(),
     };
     match elaborate(&sources, &files, &options) {
@@ -56,7 +56,7 @@ fn branch_ends(d: &Design, name: &str) -> (String, String) {
 
 #[test]
 fn terminal_and_quantity_arrays_expand_into_scalar_objects() {
-    let d = elaborate_ok("terminal_arrays");
+    let d = elaborate_ok("terminal_arrays", "t");
     let terminals: Vec<&str> = d
         .terminals
         .iter()
@@ -125,6 +125,22 @@ fn terminal_and_quantity_arrays_expand_into_scalar_objects() {
     assert_eq!(q("u(2)").unit.as_deref(), Some("V"));
     let texts: Vec<&str> = d.equations.iter().map(|e| e.text.as_str()).collect();
     assert!(texts.contains(&"q(1) == 2.0 * q(2);"), "{texts:?}");
+}
+
+#[test]
+fn pre_standard_vector_subnatures_and_across_vector_subtypes_elaborate() {
+    let d = elaborate_ok("terminal_arrays", "shafts");
+    assert_eq!(
+        branch_ends(&d, "w"),
+        ("s(1)".to_string(), "s(2)".to_string())
+    );
+    let speed = d
+        .quantities
+        .iter()
+        .find(|q| q.name == "speeds(2)")
+        .expect("speeds(2) declared");
+    assert_eq!(speed.kind, QuantityKind::Free);
+    assert_eq!(speed.tolerance.as_deref(), Some("DEFAULT_ANGULAR_VELOCITY"));
 }
 
 #[test]

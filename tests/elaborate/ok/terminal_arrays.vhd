@@ -86,3 +86,21 @@ begin
   u(1) == q(1);
   u(2) == 0.0;
 end architecture a;
+
+library ieee;
+use ieee.mechanical_systems.all;
+
+-- The pre-standard vector subnature and an across subtype of an array nature.
+entity shafts is
+end entity shafts;
+
+architecture a of shafts is
+  terminal s : rotational_v_vector(1 to 2);
+  quantity w across tq through s(1) to s(2);
+  quantity speeds : angular_velocity_vector(1 to 2);
+begin
+  w == 1.0;
+  tq == 0.0;
+  speeds(1) == w;
+  speeds(2) == 2.0 * w;
+end architecture a;
