@@ -442,6 +442,13 @@ impl<'a> Elab<'a> {
             }
             ObjectClass::Quantity => {
                 let sub = self.subtype_indication(sc, &decl.subtype)?;
+                if sub.ty != Ty::Real {
+                    return Err(self.error(ElabError::unsupported(
+                        decl.subtype.span,
+                        format!("quantity ports of type {}", sub.ty),
+                        "declare one scalar quantity port per element",
+                    )));
+                }
                 match actual_expr {
                     Some((e, p)) => {
                         let items = self.lookup(p, e)?;
