@@ -20,6 +20,7 @@ use crate::design::{Design, Expr, QuantityId, SignalId};
 use crate::source::{FileId, SourceMap, Span};
 
 mod analog;
+mod arrays;
 mod attr;
 mod candidates;
 mod decls;

@@ -75,6 +75,48 @@ fn rc_charge_follows_the_exponential() {
 }
 
 #[test]
+fn terminal_array_rc_follows_the_exponential_and_its_integral() {
+    let result = run(
+        "terminal_array_rc",
+        SimOptions {
+            stop: 5e-3,
+            reltol: 1e-5,
+            ..SimOptions::default()
+        },
+    );
+    assert_eq!(result.outcome, Outcome::Finished);
+    let w = &result.waveforms;
+    assert!(w.times.len() > 10, "too few points: {}", w.times.len());
+    let tau = 1e-3;
+    let v_c = w.column("v_c").expect("v_c recorded");
+    let integral = w.column("w(2)").expect("w(2) recorded");
+    let v_s = w.column("v_s").expect("v_s recorded");
+    // As for rc_charge: the BDF global error is about 10 x reltol, inside 5e-4 V on a 1 V
+    // step; the integral accumulates it over at most 5 tau (5e-4 V x 5 ms).
+    for (k, &t) in w.times.iter().enumerate() {
+        let exact = 1.0 - (-t / tau).exp();
+        let exact_integral = t - tau * (1.0 - (-t / tau).exp());
+        assert!(
+            (v_s.values[k] - 1.0).abs() < 1e-9,
+            "t = {t}: v_s = {}",
+            v_s.values[k]
+        );
+        assert!(
+            (v_c.values[k] - exact).abs() < 5e-4,
+            "t = {t}: v_c = {}, exact {exact}",
+            v_c.values[k]
+        );
+        assert!(
+            (integral.values[k] - exact_integral).abs() < 2.5e-6,
+            "t = {t}: w(2) = {}, exact {exact_integral}",
+            integral.values[k]
+        );
+    }
+    // Not vacuous: the capacitor charges to within 1 % of the source by 5 tau.
+    assert!(*v_c.values.last().expect("rows") > 0.99);
+}
+
+#[test]
 fn bouncing_ball_impacts_at_the_analytic_times() {
     let result = run(
         "bouncing_ball",

@@ -11,6 +11,7 @@ use crate::design::{
 };
 use crate::source::Span;
 
+use super::arrays::NatureMark;
 use super::error::ElabError;
 use super::scope::{Item, Scope};
 use super::types::{Sub, Ty};
@@ -24,17 +25,22 @@ impl<'a> Elab<'a> {
         def: &NatureDef,
         span: Span,
     ) -> R<()> {
-        let NatureDef::Scalar {
-            across,
-            through,
-            reference,
-        } = def
-        else {
-            return Err(self.error(ElabError::unsupported(
-                span,
-                "array and record natures",
-                "declare scalar terminals, one per element",
-            )));
+        let (across, through, reference) = match def {
+            NatureDef::Scalar {
+                across,
+                through,
+                reference,
+            } => (across, through, reference),
+            NatureDef::Array { indexes, element } => {
+                return self.array_nature_decl(sc, name, indexes, element, span);
+            }
+            NatureDef::Record(_) => {
+                return Err(self.error(ElabError::unsupported(
+                    span,
+                    "record natures",
+                    "declare scalar terminals, one per field",
+                )));
+            }
         };
         let across = self.type_mark(sc, across)?;
         let through = self.type_mark(sc, through)?;
@@ -101,30 +107,21 @@ impl<'a> Elab<'a> {
         id
     }
 
-    /// The nature table index a nature mark denotes.
-    pub(super) fn nature_mark(&mut self, sc: &Scope<'a>, si: &ast::SubtypeIndication) -> R<usize> {
-        let items = self.lookup(sc, &si.type_mark)?;
-        match items[0] {
-            Item::Nature(n) => Ok(n),
-            ref other => Err(self.error(ElabError::WrongClass {
-                span: si.type_mark.span,
-                name: self.sources.snippet(si.type_mark.span).into(),
-                found: other.class().into(),
-                expected: "a nature".into(),
-                help: Some(
-                    "terminals are declared with a nature: `terminal p : electrical;`".into(),
-                ),
-            })),
-        }
-    }
-
     pub(super) fn terminal_decl(
         &mut self,
         sc: &mut Scope<'a>,
         names: &[Ident],
         nature: &ast::SubtypeIndication,
     ) -> R<()> {
-        let n = self.nature_mark(sc, nature)?;
+        let n = match self.nature_indication(sc, nature)? {
+            NatureMark::Scalar(n) => n,
+            NatureMark::Array(array) => {
+                for name in names {
+                    self.terminal_array_decl(sc, name, &array)?;
+                }
+                return Ok(());
+            }
+        };
         for name in names {
             let id = self.new_terminal(&name.name, n, name.span);
             if !sc.declare(&name.name, Item::Terminal { id, nature: n }) {
@@ -139,6 +136,9 @@ impl<'a> Elab<'a> {
 
     /// A terminal named in a branch quantity or a port map: `(id, nature)`.
     pub(super) fn terminal(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<(TerminalId, usize)> {
+        if let ast::ExprKind::Apply(prefix, args) = &e.kind {
+            return self.indexed_terminal(sc, prefix, args, e.span);
+        }
         let items = self.lookup(sc, e)?;
         match items[0] {
             Item::Terminal { id, nature } => Ok((id, nature)),
@@ -175,7 +175,7 @@ impl<'a> Elab<'a> {
         id
     }
 
-    fn tolerance_and_init(
+    pub(super) fn tolerance_and_init(
         &mut self,
         sc: &Scope<'a>,
         tolerance: Option<&ast::Expr>,
@@ -216,6 +216,9 @@ impl<'a> Elab<'a> {
                 value,
             } => {
                 let sub = self.subtype_indication(sc, subtype)?;
+                if matches!(&sub.ty, Ty::Array(arr) if arr.element == Ty::Real) {
+                    return self.quantity_array_decl(sc, names, subtype, &sub, value.as_ref());
+                }
                 if sub.ty != Ty::Real {
                     return Err(self.error(ElabError::unsupported(
                         subtype.span,

@@ -202,6 +202,8 @@ impl<'a> Elab<'a> {
         let items = self.lookup(sc, prefix)?;
         let (ty, range) = match &items[0] {
             Item::Type(sub) => (sub.ty.clone(), sub.range.clone()),
+            Item::TerminalArray { elements, .. } => (elements.ty(), None),
+            Item::QuantityArray(elements) => (elements.ty(), None),
             _ => (self.expr(sc, prefix, None)?.ty, None),
         };
         if let Ty::Array(a) = &ty {
@@ -303,6 +305,8 @@ impl<'a> Elab<'a> {
                 let items = self.lookup(sc, prefix)?;
                 let (ty, range) = match &items[0] {
                     Item::Type(sub) => (sub.ty.clone(), sub.range.clone()),
+                    Item::TerminalArray { elements, .. } => (elements.ty(), None),
+                    Item::QuantityArray(elements) => (elements.ty(), None),
                     _ => (self.expr(sc, prefix, None)?.ty, None),
                 };
                 let (l, r, asc) = match (&ty, range) {

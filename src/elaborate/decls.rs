@@ -8,6 +8,7 @@ use crate::ast::{
 };
 use crate::design::{Builtin, Signal, SignalId, SignalKind, Value};
 
+use super::arrays::NatureMark;
 use super::error::ElabError;
 use super::expr::constrain;
 use super::scope::{Item, Native, Scope};
@@ -214,17 +215,11 @@ impl<'a> Elab<'a> {
             }
             DeclKind::Nature { name, def } => self.nature_decl(sc, name, def, d.span),
             DeclKind::Subnature { name, nature } => {
-                let items = self.lookup(sc, &nature.type_mark)?;
-                match items[0] {
-                    Item::Nature(n) => self.declare(sc, name, Item::Nature(n)),
-                    _ => Err(self.error(ElabError::WrongClass {
-                        span: nature.type_mark.span,
-                        name: self.sources.snippet(nature.type_mark.span).into(),
-                        found: items[0].class().into(),
-                        expected: "a nature".into(),
-                        help: None,
-                    })),
-                }
+                let item = match self.nature_indication(sc, nature)? {
+                    NatureMark::Scalar(n) => Item::Nature(n),
+                    NatureMark::Array(a) => Item::ArrayNature(a),
+                };
+                self.declare(sc, name, item)
             }
             DeclKind::Terminal { names, nature } => self.terminal_decl(sc, names, nature),
             DeclKind::Quantity(q) => self.quantity_decl(sc, q, d.span),
@@ -476,12 +471,8 @@ impl<'a> Elab<'a> {
                     ..(*sub).clone()
                 })
             }
-            ast::ExprKind::Attribute(_, attr) => {
-                return Err(self.error(ElabError::unsupported(
-                    si.span,
-                    format!("subtypes of the form `nature'{}`", attr.name),
-                    "array natures are not supported; use scalar quantities",
-                )));
+            ast::ExprKind::Attribute(prefix, attr) => {
+                self.nature_subtype(sc, prefix, attr, si.span)?
             }
             _ => self.type_mark(sc, &si.type_mark)?,
         };

@@ -185,6 +185,20 @@ pub enum ElabError {
         help: Option<String>,
     },
 
+    /// `n(11)` where `n` is declared `(0 to 10)`.
+    #[error("index {index} is out of the range of `{name}` ({range})")]
+    #[diagnostic(
+        code(vams::elab::index_range),
+        help("`{name}` is indexed {range}: use an index in that range, or widen its declaration")
+    )]
+    IndexRange {
+        #[label("out of range")]
+        span: Span,
+        name: String,
+        index: i64,
+        range: String,
+    },
+
     /// A name declared twice in the same region.
     #[error("`{name}` is already declared in this region")]
     #[diagnostic(
@@ -226,6 +240,7 @@ impl Located for ElabError {
             | ElabError::NotStatic { span, .. }
             | ElabError::BranchEquations { span, .. }
             | ElabError::Invalid { span, .. }
+            | ElabError::IndexRange { span, .. }
             | ElabError::Redeclared { span, .. }
             | ElabError::Unsupported { span, .. } => *span,
         }

@@ -231,6 +231,10 @@ impl<'a> Elab<'a> {
                         let target = sub.ty.clone();
                         self.conversion(sc, &target, args, e.span)
                     }
+                    Some(Item::QuantityArray(elements)) => {
+                        let q = self.indexed_quantity(sc, elements, args, e.span)?;
+                        Ok(Typed::new(Expr::Quantity(q), Ty::Real))
+                    }
                     _ => {
                         let array = self.object(sc, &items, prefix, None)?;
                         self.index(sc, array, args, e.span)

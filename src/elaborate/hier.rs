@@ -11,6 +11,7 @@ use crate::ast::{
 use crate::design::{QuantityKind, Value};
 use crate::source::Span;
 
+use super::arrays::NatureMark;
 use super::error::ElabError;
 use super::generics::parse_literal;
 use super::library::{Unit, canonical_library};
@@ -29,6 +30,15 @@ enum Actuals<'x, 'a> {
         generics: &'a [Assoc],
         ports: &'a [Assoc],
     },
+}
+
+/// Element associations of port arrays (`t(1) => a, t(2) => b`), by formal name.
+type Elementwise<'x> = FxHashMap<String, Vec<&'x Assoc>>;
+
+/// What a port is associated with: the whole formal (or nothing), or its elements one by one.
+enum PortActual<'x> {
+    Whole(Option<&'x Assoc>),
+    Elements(&'x [&'x Assoc]),
 }
 
 /// Interface names in declaration order with their declarations.
@@ -123,20 +133,31 @@ impl<'a> Elab<'a> {
         }))
     }
 
-    /// Matches a map's associations to the formals: `formal name -> actual`.
+    /// Matches a map's associations to the formals: `formal name -> actual`, and the element
+    /// associations of port arrays (`t(1) => a`) by formal name.
     fn associate<'x>(
         &mut self,
         formals: &[(&ast::Ident, &InterfaceDecl)],
         map: &'x [Assoc],
         what: &'static str,
         unit: &str,
-    ) -> FxHashMap<String, &'x Assoc> {
+    ) -> (FxHashMap<String, &'x Assoc>, Elementwise<'x>) {
         let mut out = FxHashMap::default();
+        let mut elementwise: Elementwise<'x> = FxHashMap::default();
         let names: Vec<String> = formals.iter().map(|(n, _)| n.name.clone()).collect();
         for (k, a) in map.iter().enumerate() {
             let name = match &a.formal {
                 Some(f) => match &f.kind {
                     ast::ExprKind::Name(id) => id.name.clone(),
+                    ast::ExprKind::Apply(prefix, _)
+                        if what == "port"
+                            && matches!(&prefix.kind, ast::ExprKind::Name(id) if names.contains(&id.name)) =>
+                    {
+                        if let ast::ExprKind::Name(id) = &prefix.kind {
+                            elementwise.entry(id.name.clone()).or_default().push(a);
+                        }
+                        continue;
+                    }
                     _ => {
                         self.error(ElabError::unsupported(
                             f.span,
@@ -184,7 +205,7 @@ impl<'a> Elab<'a> {
             }
             out.insert(name, a);
         }
-        out
+        (out, elementwise)
     }
 
     fn instance_body(
@@ -199,14 +220,14 @@ impl<'a> Elab<'a> {
         sc.push();
         let generics = flatten(&ent.generics);
         let ports = flatten(&ent.ports);
-        let (gmap, pmap, parent) = match &actuals {
-            Actuals::Top(_) => (FxHashMap::default(), FxHashMap::default(), None),
+        let (gmap, (pmap, elementwise), parent) = match &actuals {
+            Actuals::Top(_) => (FxHashMap::default(), Default::default(), None),
             Actuals::Map {
                 parent,
                 generics: g,
                 ports: p,
             } => {
-                let gm = self.associate(&generics, g, "generic", &ent.name.name);
+                let (gm, _) = self.associate(&generics, g, "generic", &ent.name.name);
                 let pm = self.associate(&ports, p, "port", &ent.name.name);
                 (gm, pm, Some(*parent))
             }
@@ -229,9 +250,23 @@ impl<'a> Elab<'a> {
             return Err(Reported);
         }
         for (name, decl) in &ports {
-            ok &= self
-                .port(&mut sc, name, decl, pmap.get(&name.name).copied(), parent)
-                .is_ok();
+            let actual = match (elementwise.get(&name.name), pmap.get(&name.name)) {
+                (Some(_), Some(whole)) => {
+                    self.error(ElabError::invalid(
+                        whole.span,
+                        format!(
+                            "port `{}` is associated both whole and by element",
+                            name.name
+                        ),
+                        Some("keep either `t => n` or `t(1) => a, t(2) => b`".into()),
+                    ));
+                    ok = false;
+                    continue;
+                }
+                (Some(elements), None) => PortActual::Elements(elements),
+                (None, whole) => PortActual::Whole(whole.copied()),
+            };
+            ok &= self.port(&mut sc, name, decl, actual, parent).is_ok();
         }
         if !ok {
             return Err(Reported);
@@ -305,9 +340,18 @@ impl<'a> Elab<'a> {
         sc: &mut Scope<'a>,
         name: &ast::Ident,
         decl: &InterfaceDecl,
-        actual: Option<&Assoc>,
+        actual: PortActual<'_>,
         parent: Option<&Scope<'a>>,
     ) -> R<()> {
+        let actual = match (actual, parent) {
+            (PortActual::Whole(a), _) => a,
+            (PortActual::Elements(elements), Some(parent)) => {
+                let item = self.terminal_port_elements(sc, parent, name, decl, elements)?;
+                sc.declare(&name.name, item);
+                return Ok(());
+            }
+            (PortActual::Elements(_), None) => None,
+        };
         let actual_expr = match (actual, parent) {
             (
                 Some(Assoc {
@@ -347,10 +391,24 @@ impl<'a> Elab<'a> {
         };
         let item = match class {
             ObjectClass::Terminal => {
-                let nature = self.nature_mark(sc, &decl.subtype)?;
+                let nature = match self.nature_indication(sc, &decl.subtype)? {
+                    NatureMark::Scalar(n) => n,
+                    NatureMark::Array(array) => {
+                        let item = self.terminal_array_port(name, &array, actual_expr)?;
+                        sc.declare(&name.name, item);
+                        return Ok(());
+                    }
+                };
                 match actual_expr {
                     Some((e, p)) => {
-                        let items = self.lookup(p, e)?;
+                        let items = match &e.kind {
+                            ast::ExprKind::Apply(prefix, args) => {
+                                let (id, nature) =
+                                    self.indexed_terminal(p, prefix, args, e.span)?;
+                                vec![Item::Terminal { id, nature }]
+                            }
+                            _ => self.lookup(p, e)?,
+                        };
                         let (id, n) = match items[0] {
                             Item::Terminal { id, nature } => (id, nature),
                             Item::RefTerminal { nature } => {
@@ -385,6 +443,13 @@ impl<'a> Elab<'a> {
             }
             ObjectClass::Quantity => {
                 let sub = self.subtype_indication(sc, &decl.subtype)?;
+                if sub.ty != Ty::Real {
+                    return Err(self.error(ElabError::unsupported(
+                        decl.subtype.span,
+                        format!("quantity ports of type {}", sub.ty),
+                        "declare one scalar quantity port per element",
+                    )));
+                }
                 match actual_expr {
                     Some((e, p)) => {
                         let items = self.lookup(p, e)?;

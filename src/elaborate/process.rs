@@ -913,10 +913,17 @@ impl<'a> Elab<'a> {
     }
 
     fn quantity_name(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<crate::design::QuantityId> {
-        let items = self.lookup(sc, e)?;
-        match &items[0] {
-            Item::Quantity(q) => Ok(*q),
-            other => Err(self.error(ElabError::WrongClass {
+        let (name, index) = match &e.kind {
+            ast::ExprKind::Apply(prefix, args) => (&**prefix, Some(args)),
+            _ => (e, None),
+        };
+        let items = self.lookup(sc, name)?;
+        match (&items[0], index) {
+            (Item::Quantity(q), None) => Ok(*q),
+            (Item::QuantityArray(elements), Some(args)) => {
+                self.indexed_quantity(sc, elements, args, e.span)
+            }
+            (other, _) => Err(self.error(ElabError::WrongClass {
                 span: e.span,
                 name: self.sources.snippet(e.span).into(),
                 found: other.class().into(),

@@ -14,6 +14,7 @@ use crate::design::{
 };
 use crate::source::Span;
 
+use super::arrays::{ArrayNature, Elements};
 use super::types::{Sub, Ty};
 
 /// What a name denotes.
@@ -34,6 +35,13 @@ pub enum Item<'a> {
         id: TerminalId,
         nature: usize,
     },
+    /// A terminal array, expanded into scalar terminals of the element nature.
+    TerminalArray {
+        elements: Rc<Elements<TerminalId>>,
+        nature: usize,
+    },
+    /// A quantity array (`real_vector(1 to 3)`), expanded into scalar quantities.
+    QuantityArray(Rc<Elements<QuantityId>>),
     /// A nature's reference terminal, created in the design on first use.
     RefTerminal {
         nature: usize,
@@ -47,6 +55,7 @@ pub enum Item<'a> {
     Type(Rc<Sub>),
     /// Index into the elaborator's nature table.
     Nature(usize),
+    ArrayNature(Rc<ArrayNature>),
     EnumLiteral {
         ty: Ty,
         pos: u32,
@@ -73,6 +82,9 @@ impl Item<'_> {
             Item::Constant { .. } => "a constant",
             Item::Signal { .. } => "a signal",
             Item::Quantity(_) => "a quantity",
+            Item::QuantityArray(_) => "a quantity array",
+            Item::TerminalArray { .. } => "a terminal array",
+            Item::ArrayNature(_) => "an array nature",
             Item::Terminal { .. } | Item::RefTerminal { .. } => "a terminal",
             Item::Variable { .. } => "a variable",
             Item::Type(_) => "a type",

@@ -119,6 +119,8 @@ package mechanical_systems is
   -- of their own): the same natures and reference terminals under other names.
   subnature translational_v is translational_velocity;
   subnature rotational_v    is rotational_velocity;
+  subnature translational_v_vector is translational_velocity_vector;
+  subnature rotational_v_vector    is rotational_velocity_vector;
 
   alias translational_v_ref is translational_velocity_ref;
   alias rotational_v_ref    is rotational_velocity_ref;

@@ -1,8 +1,8 @@
 -- RC ladder of n sections charged from a 1 V source switched on at t = 0 (every capacitor
 -- starts at 0 V). The line's total resistance and capacitance are fixed, so each section has
--- r_total / n and c_total / n and the waveform at `output` tends to the distributed line's as
--- n grows. vams has no terminal arrays yet, so the chain is built by halving: `rc_chain` of n
--- sections is two chains of n / 2 joined at a fresh terminal (instance depth log2 n).
+-- r_total / n and c_total / n and the waveform at `node(n)` tends to the distributed line's as
+-- n grows. The sections are one for-generate over the terminal array `node`: section k joins
+-- node(k - 1) to node(k) through its resistor and node(k) to ground through its capacitor.
 library ieee;
 use ieee.electrical_systems.all;
 
@@ -35,39 +35,22 @@ end architecture ideal;
 library ieee;
 use ieee.electrical_systems.all;
 
-entity rc_chain is
-  generic (n : positive; r, c : real);
-  port (terminal a, b : electrical);
-end entity rc_chain;
-
-architecture halves of rc_chain is
-begin
-  one : if n = 1 generate
-    res : entity work.ladder_resistor generic map (r => r) port map (p => a, m => b);
-    cap : entity work.ladder_capacitor generic map (c => c) port map (p => b, m => electrical_ref);
-  end generate one;
-  two : if n > 1 generate
-    terminal mid : electrical;
-  begin
-    left : entity work.rc_chain generic map (n => n / 2, r => r, c => c) port map (a => a, b => mid);
-    right : entity work.rc_chain generic map (n => n - n / 2, r => r, c => c) port map (a => mid, b => b);
-  end generate two;
-end architecture halves;
-
-library ieee;
-use ieee.electrical_systems.all;
-
 entity rc_ladder is
   generic (n : positive := 10; r_total : real := 1.0e3; c_total : real := 1.0e-6);
 end entity rc_ladder;
 
 architecture bench of rc_ladder is
-  terminal input, output : electrical;
-  quantity v_in across i_in through input to electrical_ref;
-  quantity v_out across output to electrical_ref;
+  terminal node : electrical_vector(0 to n);
+  quantity v_in across i_in through node(0) to electrical_ref;
+  quantity v_out across node(n) to electrical_ref;
 begin
   v_in == 1.0;
-  chain : entity work.rc_chain
-    generic map (n => n, r => r_total / real(n), c => c_total / real(n))
-    port map (a => input, b => output);
+  ladder : for k in 1 to n generate
+    res : entity work.ladder_resistor
+      generic map (r => r_total / real(n))
+      port map (p => node(k - 1), m => node(k));
+    cap : entity work.ladder_capacitor
+      generic map (c => c_total / real(n))
+      port map (p => node(k), m => electrical_ref);
+  end generate ladder;
 end architecture bench;

@@ -1,0 +1,703 @@
+//! Array natures, terminal arrays and quantity arrays. The design stays scalar: an array object
+//! is expanded at its declaration into one scalar terminal or quantity per element, named
+//! `name(i)` like generate instances (`gen(3).x`), and an indexed name `n(k)` with a static
+//! index denotes that element wherever a terminal or a quantity is expected.
+
+use std::rc::Rc;
+
+use crate::ast::{self, Actual, ExprKind, Ident, IndexDef};
+use crate::design::{QuantityId, QuantityKind, TerminalId, Value};
+use crate::source::Span;
+
+use super::error::ElabError;
+use super::scope::{Item, Scope};
+use super::types::{ArrayTy, Sub, Ty};
+use super::{Elab, R, Reported};
+
+/// `nature electrical_vector is array (natural range <>) of electrical;` and its constrained
+/// subnatures.
+#[derive(Debug)]
+pub struct ArrayNature {
+    pub name: String,
+    /// The element nature (index into the elaborator's nature table).
+    pub element: usize,
+    /// `(left, right, ascending)` when constrained.
+    pub bounds: Option<(i64, i64, bool)>,
+}
+
+/// The scalar design objects of an expanded array, from left to right.
+#[derive(Debug)]
+pub struct Elements<T> {
+    /// The declared name, for messages.
+    pub name: String,
+    pub left: i64,
+    pub ascending: bool,
+    pub ids: Vec<T>,
+}
+
+impl<T: Copy> Elements<T> {
+    /// The element at `index`, if it is in range.
+    pub fn get(&self, index: i64) -> Option<T> {
+        let pos = if self.ascending {
+            index.checked_sub(self.left)?
+        } else {
+            self.left.checked_sub(index)?
+        };
+        usize::try_from(pos)
+            .ok()
+            .and_then(|p| self.ids.get(p).copied())
+    }
+
+    /// An array type with the object's bounds, for `'range`, `'length`, `'left`, ...
+    pub fn ty(&self) -> Ty {
+        let last = self.ids.len() as i64 - 1;
+        let right = match self.ascending {
+            true => self.left + last,
+            false => self.left - last,
+        };
+        Ty::Array(Rc::new(ArrayTy {
+            name: self.name.clone(),
+            element: Ty::Real,
+            bounds: Some((self.left, right, self.ascending)),
+            index_low: self.left.min(right),
+        }))
+    }
+
+    /// The index range as written: `0 to 10`, `3 downto 0`.
+    pub fn range_text(&self) -> String {
+        let n = self.ids.len() as i64 - 1;
+        match self.ascending {
+            true => format!("{} to {}", self.left, self.left + n),
+            false => format!("{} downto {}", self.left, self.left - n),
+        }
+    }
+}
+
+/// What a nature indication denotes.
+pub enum NatureMark {
+    Scalar(usize),
+    Array(Rc<ArrayNature>),
+}
+
+/// The indexes of a range, left to right (empty for a null range).
+fn indexes((left, right, ascending): (i64, i64, bool)) -> Vec<i64> {
+    if ascending {
+        (left..=right).collect()
+    } else {
+        (right..=left).rev().collect()
+    }
+}
+
+impl<'a> Elab<'a> {
+    pub(super) fn array_nature_decl(
+        &mut self,
+        sc: &mut Scope<'a>,
+        name: &Ident,
+        index_defs: &[IndexDef],
+        element: &ast::SubtypeIndication,
+        span: Span,
+    ) -> R<()> {
+        let [index] = index_defs else {
+            return Err(self.error(ElabError::unsupported(
+                span,
+                "multi-dimensional array natures",
+                "use a one-dimensional array nature",
+            )));
+        };
+        let NatureMark::Scalar(element) = self.nature_indication(sc, element)? else {
+            return Err(self.error(ElabError::unsupported(
+                span,
+                "array natures of array natures",
+                "use a one-dimensional array of a scalar nature",
+            )));
+        };
+        let bounds = match index {
+            IndexDef::Unconstrained(mark) => {
+                if self.type_mark(sc, mark)?.ty != Ty::Integer {
+                    return Err(self.error(ElabError::unsupported(
+                        mark.span,
+                        "array natures indexed by a non-integer type",
+                        "index the nature with `natural range <>` or an integer range",
+                    )));
+                }
+                None
+            }
+            IndexDef::Constrained(r) => Some(self.discrete_range(sc, r)?),
+        };
+        let nature = ArrayNature {
+            name: name.name.clone(),
+            element,
+            bounds,
+        };
+        if sc.declare(&name.name, Item::ArrayNature(Rc::new(nature))) {
+            Ok(())
+        } else {
+            Err(self.error(ElabError::Redeclared {
+                span: name.span,
+                name: name.name.clone(),
+            }))
+        }
+    }
+
+    /// A nature mark, possibly with an index constraint: `electrical`,
+    /// `electrical_vector(0 to n)`.
+    pub(super) fn nature_indication(
+        &mut self,
+        sc: &Scope<'a>,
+        si: &ast::SubtypeIndication,
+    ) -> R<NatureMark> {
+        let (mark, constraint) = match &si.type_mark.kind {
+            ExprKind::Apply(mark, args) => (&**mark, Some(args)),
+            _ => (&si.type_mark, None),
+        };
+        let items = self.lookup(sc, mark)?;
+        let nature = match &items[0] {
+            Item::Nature(n) if constraint.is_none() => return Ok(NatureMark::Scalar(*n)),
+            Item::ArrayNature(a) => a.clone(),
+            other => {
+                let (found, help) = match other {
+                    Item::Nature(_) => (
+                        "a scalar nature".to_string(),
+                        "only array natures take an index range".to_string(),
+                    ),
+                    _ => (
+                        other.class().to_string(),
+                        "terminals are declared with a nature: `terminal p : electrical;`"
+                            .to_string(),
+                    ),
+                };
+                return Err(self.error(ElabError::WrongClass {
+                    span: mark.span,
+                    name: self.sources.snippet(mark.span).into(),
+                    found,
+                    expected: "a nature".into(),
+                    help: Some(help),
+                }));
+            }
+        };
+        let Some(args) = constraint else {
+            return Ok(NatureMark::Array(nature));
+        };
+        if nature.bounds.is_some() {
+            return Err(self.error(ElabError::invalid(
+                si.type_mark.span,
+                format!("`{}` is already constrained", nature.name),
+                Some(format!("use `{}` without an index range", nature.name)),
+            )));
+        }
+        let bounds = self.index_constraint(sc, args, si.type_mark.span)?;
+        Ok(NatureMark::Array(Rc::new(ArrayNature {
+            name: nature.name.clone(),
+            element: nature.element,
+            bounds: Some(bounds),
+        })))
+    }
+
+    /// The one range of an index constraint `(0 to n)` (or `(v'range)`).
+    fn index_constraint(
+        &mut self,
+        sc: &Scope<'a>,
+        args: &[ast::Assoc],
+        span: Span,
+    ) -> R<(i64, i64, bool)> {
+        let [ast::Assoc { actual, .. }] = args else {
+            return Err(self.error(ElabError::unsupported(
+                span,
+                "multi-dimensional index constraints",
+                "use one range",
+            )));
+        };
+        match actual {
+            Actual::Range(r) => self.range_bounds(sc, r),
+            Actual::Expr(e) => self.range_bounds(sc, &ast::Range::Attribute(Box::new(e.clone()))),
+            Actual::Open(s) => Err(self.error(ElabError::invalid(*s, "expected a range", None))),
+        }
+    }
+
+    /// `electrical'across`, `electrical_vector'through`: the across or through subtype of a
+    /// nature; of an array nature, a `real_vector` subtype with the element's tolerance and unit.
+    pub(super) fn nature_subtype(
+        &mut self,
+        sc: &Scope<'a>,
+        prefix: &ast::Expr,
+        attr: &Ident,
+        span: Span,
+    ) -> R<Rc<Sub>> {
+        let items = self.lookup(sc, prefix)?;
+        let (element, bounds) = match &items[0] {
+            Item::Nature(n) => (*n, None),
+            Item::ArrayNature(a) => (a.element, Some(a.bounds)),
+            other => {
+                return Err(self.error(ElabError::WrongClass {
+                    span: prefix.span,
+                    name: self.sources.snippet(prefix.span).into(),
+                    found: other.class().into(),
+                    expected: "a nature".into(),
+                    help: Some("`'across` and `'through` name the subtypes of a nature".into()),
+                }));
+            }
+        };
+        let info = &self.natures[element];
+        let scalar = match attr.name.as_str() {
+            "across" => info.across.clone(),
+            "through" => info.through.clone(),
+            _ => {
+                return Err(self.error(ElabError::unsupported(
+                    span,
+                    format!("subtypes of the form `nature'{}`", attr.name),
+                    "a subtype of a nature is `N'across` or `N'through`",
+                )));
+            }
+        };
+        let Some(bounds) = bounds else {
+            return Ok(scalar);
+        };
+        let Some([Item::Type(vector)]) = sc.lookup("real_vector") else {
+            return Err(self.error(ElabError::unsupported(
+                span,
+                "the across or through subtype of an array nature where `real_vector` is not visible",
+                "use `std.standard.real_vector` directly",
+            )));
+        };
+        let Ty::Array(arr) = &vector.ty else {
+            return Err(super::Reported);
+        };
+        let ty = Ty::Array(Rc::new(ArrayTy {
+            name: arr.name.clone(),
+            element: Ty::Real,
+            bounds,
+            index_low: arr.index_low,
+        }));
+        Ok(Rc::new(Sub {
+            ty,
+            name: format!("{}'{}", self.sources.snippet(prefix.span), attr.name).into(),
+            tolerance: scalar.tolerance.clone(),
+            unit: scalar.unit.clone(),
+            range: None,
+        }))
+    }
+
+    /// The bounds an array object of `nature` is declared with; unconstrained is an error.
+    fn object_bounds(&mut self, nature: &ArrayNature, span: Span) -> R<(i64, i64, bool)> {
+        nature.bounds.ok_or_else(|| {
+            self.error(ElabError::invalid(
+                span,
+                format!(
+                    "`{}` is unconstrained: this terminal needs an index range",
+                    nature.name
+                ),
+                Some(format!("give the range: `{}(0 to 7)`", nature.name)),
+            ))
+        })
+    }
+
+    /// `terminal n : electrical_vector(0 to 3);`: the scalar terminals `n(0)` ... `n(3)`.
+    pub(super) fn terminal_array_decl(
+        &mut self,
+        sc: &mut Scope<'a>,
+        name: &Ident,
+        nature: &ArrayNature,
+    ) -> R<()> {
+        let bounds = self.object_bounds(nature, name.span)?;
+        let elements = self.new_terminal_array(&name.name, nature.element, bounds, name.span);
+        let item = Item::TerminalArray {
+            elements,
+            nature: nature.element,
+        };
+        if sc.declare(&name.name, item) {
+            Ok(())
+        } else {
+            Err(self.error(ElabError::Redeclared {
+                span: name.span,
+                name: name.name.clone(),
+            }))
+        }
+    }
+
+    fn new_terminal_array(
+        &mut self,
+        name: &str,
+        nature: usize,
+        bounds: (i64, i64, bool),
+        span: Span,
+    ) -> Rc<Elements<TerminalId>> {
+        let ids = indexes(bounds)
+            .into_iter()
+            .map(|i| self.new_terminal(&format!("{name}({i})"), nature, span))
+            .collect();
+        Rc::new(Elements {
+            name: name.to_string(),
+            left: bounds.0,
+            ascending: bounds.2,
+            ids,
+        })
+    }
+
+    /// The element `index` of `elements`, with a diagnostic at `span` when out of range.
+    fn element<T: Copy>(&mut self, elements: &Elements<T>, index: i64, span: Span) -> R<T> {
+        elements.get(index).ok_or_else(|| {
+            self.error(ElabError::IndexRange {
+                span,
+                name: elements.name.clone(),
+                index,
+                range: elements.range_text(),
+            })
+        })
+    }
+
+    /// The static index of `prefix(args)`: one positional expression.
+    fn static_index(
+        &mut self,
+        sc: &Scope<'a>,
+        args: &[ast::Assoc],
+        name: &str,
+        span: Span,
+    ) -> R<(i64, Span)> {
+        let [
+            ast::Assoc {
+                formal: None,
+                actual: Actual::Expr(ie),
+                ..
+            },
+        ] = args
+        else {
+            return Err(self.error(ElabError::unsupported(
+                span,
+                format!("slices of `{name}` and multi-dimensional indexing"),
+                "index one element: `n(k)`",
+            )));
+        };
+        let what = format!("the index of `{name}`");
+        Ok((self.static_int(sc, ie, &what)?, ie.span))
+    }
+
+    /// `n(k)` where `n` is a terminal array: `(element, nature)`.
+    pub(super) fn indexed_terminal(
+        &mut self,
+        sc: &Scope<'a>,
+        prefix: &ast::Expr,
+        args: &[ast::Assoc],
+        span: Span,
+    ) -> R<(TerminalId, usize)> {
+        let items = self.lookup(sc, prefix)?;
+        let Item::TerminalArray { elements, nature } = &items[0] else {
+            return Err(self.error(ElabError::WrongClass {
+                span: prefix.span,
+                name: self.sources.snippet(prefix.span).into(),
+                found: items[0].class().into(),
+                expected: "a terminal array".into(),
+                help: Some(
+                    "only terminal arrays are indexed here: `terminal n : electrical_vector(0 to 3);`"
+                        .into(),
+                ),
+            }));
+        };
+        let (index, index_span) = self.static_index(sc, args, &elements.name, span)?;
+        Ok((self.element(elements, index, index_span)?, *nature))
+    }
+
+    /// `q(k)` where `q` is a quantity array.
+    pub(super) fn indexed_quantity(
+        &mut self,
+        sc: &Scope<'a>,
+        elements: &Elements<QuantityId>,
+        args: &[ast::Assoc],
+        span: Span,
+    ) -> R<QuantityId> {
+        let (index, index_span) = self.static_index(sc, args, &elements.name, span)?;
+        self.element(elements, index, index_span)
+    }
+
+    /// A terminal port of an array nature: the actual's elements (whole-array association,
+    /// matched by position), or fresh terminals when it is open.
+    pub(super) fn terminal_array_port(
+        &mut self,
+        name: &Ident,
+        nature: &ArrayNature,
+        actual: Option<(&ast::Expr, &Scope<'a>)>,
+    ) -> R<Item<'a>> {
+        let Some((e, parent)) = actual else {
+            let bounds = self.object_bounds(nature, name.span)?;
+            let elements = self.new_terminal_array(&name.name, nature.element, bounds, name.span);
+            return Ok(Item::TerminalArray {
+                elements,
+                nature: nature.element,
+            });
+        };
+        let items = self.lookup(parent, e)?;
+        let Item::TerminalArray {
+            elements: actual,
+            nature: actual_nature,
+        } = &items[0]
+        else {
+            return Err(self.error(ElabError::PortClass {
+                span: e.span,
+                port: name.name.clone(),
+                expected: format!("terminal array ({})", nature.name),
+                found: items[0].class().into(),
+                help: Some(format!(
+                    "connect a terminal of nature {} (or `open`) to `{}`",
+                    nature.name, name.name
+                )),
+            }));
+        };
+        if *actual_nature != nature.element {
+            let (a, b) = (
+                self.natures[nature.element].name.clone(),
+                self.natures[*actual_nature].name.clone(),
+            );
+            return Err(self.error(ElabError::TypeMismatch {
+                span: e.span,
+                expected: format!("a terminal array of nature {a}"),
+                found: format!("a terminal array of nature {b}"),
+                help: Some("a terminal port connects to a terminal of the same nature".into()),
+            }));
+        }
+        let (left, ascending) = match nature.bounds {
+            None => (actual.left, actual.ascending),
+            Some(bounds) => {
+                let len = indexes(bounds).len();
+                if len != actual.ids.len() {
+                    return Err(self.error(ElabError::invalid(
+                        e.span,
+                        format!(
+                            "port `{}` has {len} elements, but `{}` has {} ({})",
+                            name.name,
+                            actual.name,
+                            actual.ids.len(),
+                            actual.range_text()
+                        ),
+                        Some("connect an array of the same length".into()),
+                    )));
+                }
+                (bounds.0, bounds.2)
+            }
+        };
+        Ok(Item::TerminalArray {
+            elements: Rc::new(Elements {
+                name: name.name.clone(),
+                left,
+                ascending,
+                ids: actual.ids.clone(),
+            }),
+            nature: nature.element,
+        })
+    }
+
+    /// A terminal port of a constrained array nature associated element by element,
+    /// `port map (t(1) => a, t(2) => b)`: each element exactly once, formal indexes and actuals
+    /// read in the instantiating scope `parent`.
+    pub(super) fn terminal_port_elements(
+        &mut self,
+        sc: &Scope<'a>,
+        parent: &Scope<'a>,
+        name: &Ident,
+        decl: &ast::InterfaceDecl,
+        assocs: &[&ast::Assoc],
+    ) -> R<Item<'a>> {
+        let first = assocs.first().map_or(name.span, |a| a.span);
+        if decl.class != Some(ast::ObjectClass::Terminal) {
+            return Err(self.error(ElabError::unsupported(
+                first,
+                format!("element associations of port `{}`", name.name),
+                "only terminal array ports are associated element by element; associate the whole port",
+            )));
+        }
+        let NatureMark::Array(nature) = self.nature_indication(sc, &decl.subtype)? else {
+            return Err(self.error(ElabError::invalid(
+                first,
+                format!(
+                    "port `{}` is a scalar terminal: it has no elements",
+                    name.name
+                ),
+                Some(format!("associate it whole: `{} => p`", name.name)),
+            )));
+        };
+        let bounds = self.object_bounds(&nature, name.span)?;
+        let count = indexes(bounds).len();
+        // Index -> position, through the same lookup as the elements themselves.
+        let positions = Elements {
+            name: name.name.clone(),
+            left: bounds.0,
+            ascending: bounds.2,
+            ids: (0..count).collect(),
+        };
+        let mut ids: Vec<Option<TerminalId>> = vec![None; count];
+        for a in assocs {
+            let (Some(formal), Actual::Expr(actual)) = (&a.formal, &a.actual) else {
+                return Err(self.error(ElabError::invalid(
+                    a.span,
+                    format!("an element of port `{}` needs a terminal", name.name),
+                    Some("connect a terminal to each element: `t(1) => n(0)`".into()),
+                )));
+            };
+            let ExprKind::Apply(_, args) = &formal.kind else {
+                return Err(Reported);
+            };
+            let (index, index_span) = self.static_index(parent, args, &name.name, formal.span)?;
+            let pos = self.element(&positions, index, index_span)?;
+            let (id, actual_nature) = self.terminal(parent, actual)?;
+            if actual_nature != nature.element {
+                let (a, b) = (
+                    self.natures[nature.element].name.clone(),
+                    self.natures[actual_nature].name.clone(),
+                );
+                return Err(self.error(ElabError::TypeMismatch {
+                    span: actual.span,
+                    expected: format!("a terminal of nature {a}"),
+                    found: format!("a terminal of nature {b}"),
+                    help: Some("a terminal port connects to a terminal of the same nature".into()),
+                }));
+            }
+            if ids[pos].replace(id).is_some() {
+                return Err(self.error(ElabError::invalid(
+                    formal.span,
+                    format!("`{}({index})` is associated twice", name.name),
+                    Some("associate each element of the port once".into()),
+                )));
+            }
+        }
+        let mut complete = Vec::with_capacity(count);
+        for (pos, id) in ids.into_iter().enumerate() {
+            match id {
+                Some(id) => complete.push(id),
+                None => {
+                    let index = match bounds.2 {
+                        true => bounds.0 + pos as i64,
+                        false => bounds.0 - pos as i64,
+                    };
+                    return Err(self.error(ElabError::invalid(
+                        first,
+                        format!(
+                            "element `{}({index})` of port `{}` is not associated",
+                            name.name, name.name
+                        ),
+                        Some(format!(
+                            "associate every element of `{}`, or the whole port: `{} => n`",
+                            name.name, name.name
+                        )),
+                    )));
+                }
+            }
+        }
+        Ok(Item::TerminalArray {
+            elements: Rc::new(Elements {
+                name: name.name.clone(),
+                left: bounds.0,
+                ascending: bounds.2,
+                ids: complete,
+            }),
+            nature: nature.element,
+        })
+    }
+
+    /// `quantity q : real_vector(1 to 3) := (others => 0.5);`: the scalar free quantities
+    /// `q(1)` ... `q(3)`, each with its element of the initial value.
+    pub(super) fn quantity_array_decl(
+        &mut self,
+        sc: &mut Scope<'a>,
+        names: &[Ident],
+        subtype: &ast::SubtypeIndication,
+        sub: &Sub,
+        value: Option<&ast::Expr>,
+    ) -> R<()> {
+        let Some(bounds) = (match &sub.ty {
+            Ty::Array(arr) => arr.bounds,
+            _ => None,
+        }) else {
+            return Err(self.error(ElabError::invalid(
+                subtype.span,
+                format!(
+                    "`{}` is unconstrained: this quantity needs an index range",
+                    sub.name
+                ),
+                Some(format!("give the range: `{}(1 to 3)`", sub.name)),
+            )));
+        };
+        let (tolerance, _) = self.tolerance_and_init(sc, subtype.tolerance.as_ref(), None)?;
+        let indexes = indexes(bounds);
+        let inits: Vec<Option<f64>> = match value {
+            None => vec![None; indexes.len()],
+            Some(v) => match self.static_value(sc, v, &sub.ty, "a quantity's initial value")? {
+                Value::Array(items) if items.len() == indexes.len() => {
+                    items.iter().map(Value::as_f64).collect()
+                }
+                _ => {
+                    return Err(self.error(ElabError::invalid(
+                        v.span,
+                        format!("the initial value needs {} elements", indexes.len()),
+                        Some("give one value per element: `(others => 0.0)`".into()),
+                    )));
+                }
+            },
+        };
+        // The elements are reals with the array subtype's unit and tolerance.
+        let element = Sub {
+            name: "real".into(),
+            ty: Ty::Real,
+            ..sub.clone()
+        };
+        for name in names {
+            let ids = indexes
+                .iter()
+                .zip(&inits)
+                .map(|(i, init)| {
+                    let elem_name = format!("{}({i})", name.name);
+                    let kind = QuantityKind::Free;
+                    let tol = tolerance.clone();
+                    self.new_quantity(&elem_name, kind, &element, tol, *init, name.span)
+                })
+                .collect();
+            let elements = Rc::new(Elements {
+                name: name.name.clone(),
+                left: bounds.0,
+                ascending: bounds.2,
+                ids,
+            });
+            if !sc.declare(&name.name, Item::QuantityArray(elements)) {
+                return Err(self.error(ElabError::Redeclared {
+                    span: name.span,
+                    name: name.name.clone(),
+                }));
+            }
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn elements_are_found_by_index_in_both_directions() {
+        let up = Elements {
+            name: "n".into(),
+            left: 2,
+            ascending: true,
+            ids: vec![10, 11, 12],
+        };
+        assert_eq!(up.get(2), Some(10));
+        assert_eq!(up.get(4), Some(12));
+        assert_eq!(up.get(5), None);
+        assert_eq!(up.get(1), None);
+        assert_eq!(up.range_text(), "2 to 4");
+        let down = Elements {
+            name: "n".into(),
+            left: 3,
+            ascending: false,
+            ids: vec![7, 6, 5, 4],
+        };
+        assert_eq!(down.get(3), Some(7));
+        assert_eq!(down.get(0), Some(4));
+        assert_eq!(down.get(-1), None);
+        assert_eq!(down.get(i64::MIN), None);
+        assert_eq!(down.range_text(), "3 downto 0");
+    }
+
+    #[test]
+    fn null_ranges_have_no_indexes() {
+        assert!(indexes((3, 2, true)).is_empty());
+        assert_eq!(indexes((2, 0, false)), vec![2, 1, 0]);
+    }
+}
