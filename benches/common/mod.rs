@@ -1,8 +1,11 @@
 //! What the ngspice comparisons (`hbridge`, `motor`) share: loading vams models, running a
-//! deck in `ngspice -b` with its own counters (`rusage all`), and best-of-n timing.
+//! deck in `ngspice -b` with its own counters (`rusage all`), and mean timing over n runs.
 //!
 //! Without ngspice on the PATH, [`run_ngspice`] says so and the benchmarks run the vams part
 //! only (`benches/ngspice/install.sh` installs it).
+
+// Each benchmark compiles its own copy of this module and uses only part of it.
+#![allow(dead_code)]
 
 use std::path::PathBuf;
 use std::process::Command;
@@ -28,28 +31,28 @@ pub fn design(paths: &[&str], top: &str, generics: &[(&str, String)]) -> Design 
     elaborate(&loaded.sources, &loaded.files, &options).expect("benchmark model elaborates")
 }
 
-/// The shortest of `n` runs of `f`, and the last result.
-pub fn best_of<T>(n: usize, mut f: impl FnMut() -> T) -> (Duration, T) {
-    let mut best = Duration::MAX;
-    let mut last = None;
-    for _ in 0..n.max(1) {
-        let start = Instant::now();
-        let out = f();
-        best = best.min(start.elapsed());
-        last = Some(out);
+/// The mean time of `n` runs of `f`, and the last result.
+pub fn mean_of<T>(n: usize, mut f: impl FnMut() -> T) -> (Duration, T) {
+    let n = n.max(1);
+    let start = Instant::now();
+    let mut last = f();
+    for _ in 1..n {
+        last = f();
     }
-    (best, last.expect("at least one run"))
+    (start.elapsed() / n as u32, last)
 }
 
-/// One ngspice run: wall time of the process, ngspice's own figures, and the data rows.
+/// `n` runs of one deck in one `ngspice -b` process: wall time of the process, ngspice's own
+/// figures per run, and the data rows of the last run.
 pub struct NgspiceRun {
-    /// The whole `ngspice -b` process, start-up and deck parsing included.
+    /// The whole `ngspice -b` process, start-up, deck parsing and all `n` runs included.
     pub wall: Duration,
-    /// "Transient analysis time" of `rusage all`, in seconds (1 ms resolution).
+    /// "Transient analysis time" of `rusage all` over `n` (it has 1 ms resolution, hence the
+    /// repeats), in seconds.
     pub analysis: Option<f64>,
-    /// "Accepted timepoints".
+    /// "Accepted timepoints" of one run.
     pub accepted: Option<usize>,
-    /// "Transient iterations" (Newton iterations of the transient analysis).
+    /// "Transient iterations" (Newton iterations) of one run.
     pub iterations: Option<usize>,
     /// "Circuit Equations": the size of ngspice's matrix.
     pub equations: Option<usize>,
@@ -57,13 +60,25 @@ pub struct NgspiceRun {
     pub rows: Vec<Vec<f64>>,
 }
 
-/// Runs `netlist` (elements and `.model`/`.options` lines) with `tran` (e.g. `tran 1u 20m
-/// uic`) and writes `vectors` (e.g. `i(vsense)`) at every accepted time point.
-pub fn run_ngspice(netlist: &str, tran: &str, vectors: &[&str]) -> Result<NgspiceRun, String> {
+/// Runs `netlist` (elements and `.model`/`.options` lines) `n` times with `tran` (e.g. `tran
+/// 1u 20m uic`) and writes `vectors` (e.g. `i(vsense)`) at every accepted time point of the
+/// last run. ngspice's counters add up over the runs; they are divided by `n`.
+pub fn run_ngspice(
+    netlist: &str,
+    tran: &str,
+    vectors: &[&str],
+    n: usize,
+) -> Result<NgspiceRun, String> {
+    let n = n.max(1);
     let dir = tempfile::tempdir().map_err(|e| e.to_string())?;
     let (cir, data) = (dir.path().join("deck.cir"), dir.path().join("out.txt"));
+    let warm = if n > 1 {
+        format!("repeat {}\n{tran}\ndestroy\nend\n", n - 1)
+    } else {
+        String::new()
+    };
     let deck = format!(
-        "* vams benchmark\n{netlist}\n.control\nset wr_singlescale\nset numdgt=12\n{tran}\n\
+        "* vams benchmark\n{netlist}\n.control\nset wr_singlescale\nset numdgt=12\n{warm}{tran}\n\
          wrdata {} {}\nrusage all\nquit\n.endc\n.end\n",
         data.display(),
         vectors.join(" ")
@@ -98,11 +113,12 @@ pub fn run_ngspice(netlist: &str, tran: &str, vectors: &[&str]) -> Result<Ngspic
         String::from_utf8_lossy(&out.stdout),
         String::from_utf8_lossy(&out.stderr)
     );
+    let per_run = |name: &str| figure(&log, name).map(|x| x / n as f64);
     Ok(NgspiceRun {
         wall,
-        analysis: figure(&log, "Transient analysis time"),
-        accepted: figure(&log, "Accepted timepoints").map(|x| x as usize),
-        iterations: figure(&log, "Transient iterations").map(|x| x as usize),
+        analysis: per_run("Transient analysis time"),
+        accepted: per_run("Accepted timepoints").map(|x| x.round() as usize),
+        iterations: per_run("Transient iterations").map(|x| x.round() as usize),
         equations: figure(&log, "Circuit Equations").map(|x| x as usize),
         rows,
     })
@@ -114,22 +130,4 @@ fn figure(log: &str, name: &str) -> Option<f64> {
         .filter_map(|l| l.trim().strip_prefix(name))
         .filter_map(|rest| rest.trim().strip_prefix('='))
         .find_map(|v| v.split_whitespace().next()?.parse().ok())
-}
-
-/// The best of `n` ngspice runs by analysis time (by wall time when it prints none).
-pub fn best_ngspice(
-    n: usize,
-    netlist: &str,
-    tran: &str,
-    vectors: &[&str],
-) -> Result<NgspiceRun, String> {
-    let mut best: Option<NgspiceRun> = None;
-    for _ in 0..n.max(1) {
-        let run = run_ngspice(netlist, tran, vectors)?;
-        let key = |r: &NgspiceRun| r.analysis.unwrap_or(r.wall.as_secs_f64());
-        if best.as_ref().is_none_or(|b| key(&run) < key(b)) {
-            best = Some(run);
-        }
-    }
-    best.ok_or_else(|| "no run".into())
 }
