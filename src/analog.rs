@@ -49,8 +49,9 @@ pub struct AnalogSystem {
     row_source: Vec<usize>,
     /// Solver index of each quantity, `None` when eliminated.
     quantity_slot: Vec<Option<usize>>,
-    /// The quantities `quantity_values` fills and where each comes from.
-    fill: Vec<(u32, QuantitySource)>,
+    /// The quantities `quantity_values` fills and where each comes from (all of them until
+    /// `select_quantities` says otherwise; built on first use).
+    fill: Option<Vec<(u32, QuantitySource)>>,
     /// The eliminated unknowns, for listings.
     eliminated: Vec<Eliminated>,
     differential: Vec<bool>,
@@ -73,7 +74,7 @@ pub struct AnalogSystem {
     /// Per unknown, the absolute tolerance of its tolerance group, when known.
     group_abstol: Vec<Option<f64>>,
     /// Per unknown, the largest `|c|` of an eliminated quantity `c * x` without a tolerance
-    /// group: the default absolute tolerance applies to `x` divided by it.
+    /// group (0 if none): the default absolute tolerance divided by it bounds `x`'s.
     alias_scale: Vec<f64>,
     /// `Q'delayed` histories, by index into `Design::delays`; their values go to the signal
     /// slots after the source scale (see `delay::history_slot`).
@@ -305,7 +306,7 @@ impl AnalogSystem {
             .iter()
             .map(|u| matches!(u, Unknown::Potential(_)))
             .collect();
-        let elim = reduce::eliminate(
+        let mut elim = reduce::eliminate(
             scaled,
             &reduce::Candidates {
                 protected: &protected,
@@ -328,7 +329,13 @@ impl AnalogSystem {
         let n = unknowns.len();
         let renumber = |e: &Sym| reduce::renumber(e, &|k| live[k]);
         let kept_rows: Vec<usize> = elim.kept.iter().map(|(row, _)| *row).collect();
-        let residuals: Vec<Sym> = elim.kept.iter().map(|(_, r)| renumber(r)).collect();
+        let residuals: Vec<Sym> = std::mem::take(&mut elim.kept)
+            .into_iter()
+            .map(|(_, mut r)| {
+                reduce::renumber_in_place(&mut r, &|k| live[k]);
+                r
+            })
+            .collect();
         let n_eq = residuals.len();
         let Derivatives {
             mut pattern,
@@ -377,23 +384,6 @@ impl AnalogSystem {
             .iter()
             .map(|&j| (live[j] != usize::MAX).then_some(live[j]))
             .collect();
-        let eliminated: Vec<Eliminated> = elim
-            .replacement
-            .iter()
-            .enumerate()
-            .filter_map(|(j, r)| {
-                Some(Eliminated {
-                    unknown: j,
-                    quantity: match all_unknowns[j] {
-                        Unknown::Quantity(q) => Some(q),
-                        Unknown::Potential(_) => None,
-                    },
-                    solved_from: elim.solved_from[j].unwrap_or(usize::MAX),
-                    replacement: renumber(r.as_ref()?),
-                })
-            })
-            .collect();
-
         let slot_of = |q: usize| asm.quantity_slot[q];
         let mut above = Vec::new();
         let mut roots = TapeBuilder::default();
@@ -440,7 +430,7 @@ impl AnalogSystem {
             .filter(|&j| live[j] != usize::MAX)
             .map(|j| full_abstol[j])
             .collect();
-        let mut alias_scale = vec![1.0_f64; n];
+        let mut alias_scale = vec![0.0_f64; n];
         for (j, r) in elim.replacement.iter().enumerate() {
             let Some(terms) = r.as_ref().and_then(reduce::affine) else {
                 continue;
@@ -458,13 +448,32 @@ impl AnalogSystem {
                 None => alias_scale[k] = alias_scale[k].max(c),
             }
         }
-        let mut system = AnalogSystem {
+        let solved_from = elim.solved_from;
+        let eliminated: Vec<Eliminated> = elim
+            .replacement
+            .into_iter()
+            .enumerate()
+            .filter_map(|(j, r)| {
+                let mut replacement = r?;
+                reduce::renumber_in_place(&mut replacement, &|k| live[k]);
+                Some(Eliminated {
+                    unknown: j,
+                    quantity: match all_unknowns[j] {
+                        Unknown::Quantity(q) => Some(q),
+                        Unknown::Potential(_) => None,
+                    },
+                    solved_from: solved_from[j].unwrap_or(usize::MAX),
+                    replacement,
+                })
+            })
+            .collect();
+        let system = AnalogSystem {
             names,
             unknowns,
             origins: asm.origins,
             row_source,
             quantity_slot,
-            fill: Vec::new(),
+            fill: None,
             eliminated,
             differential,
             pattern,
@@ -483,7 +492,6 @@ impl AnalogSystem {
             delay_lines,
             design_signals: design.signals.len(),
         };
-        system.select_quantities(&vec![true; design.quantities.len()]);
         Ok(system)
     }
 
@@ -506,21 +514,22 @@ impl AnalogSystem {
             };
             output[q.index()] = Some((ob.push(&e.replacement) as u32, ob.push(&dot) as u32));
         }
-        self.fill = self
-            .quantity_slot
-            .iter()
-            .zip(output)
-            .enumerate()
-            .filter(|(q, _)| wanted.get(*q).copied().unwrap_or(false))
-            .filter_map(|(q, (slot, out))| {
-                let source = match (slot, out) {
-                    (Some(j), _) => QuantitySource::State(*j as u32),
-                    (None, Some((v, d))) => QuantitySource::Output(v, d),
-                    (None, None) => return None,
-                };
-                Some((q as u32, source))
-            })
-            .collect();
+        self.fill = Some(
+            self.quantity_slot
+                .iter()
+                .zip(output)
+                .enumerate()
+                .filter(|(q, _)| wanted.get(*q).copied().unwrap_or(false))
+                .filter_map(|(q, (slot, out))| {
+                    let source = match (slot, out) {
+                        (Some(j), _) => QuantitySource::State(*j as u32),
+                        (None, Some((v, d))) => QuantitySource::Output(v, d),
+                        (None, None) => return None,
+                    };
+                    Some((q as u32, source))
+                })
+                .collect(),
+        );
         self.outputs_tape = ob.finish();
     }
 
@@ -590,11 +599,15 @@ impl AnalogSystem {
         values: &mut [f64],
         derivatives: &mut [f64],
     ) {
+        if self.fill.is_none() {
+            self.select_quantities(&vec![true; self.quantity_slot.len()]);
+        }
         if !self.outputs_tape.is_empty() {
             self.load_delays(t);
             self.outputs_tape.eval(t, x, xdot, &self.signals);
         }
-        for &(q, source) in &self.fill {
+        let fill = self.fill.as_deref().unwrap_or_default();
+        for &(q, source) in fill {
             let (v, d) = match source {
                 QuantitySource::State(j) => (x[j as usize], xdot[j as usize]),
                 QuantitySource::Output(v, d) => (
@@ -661,6 +674,7 @@ impl AnalogSystem {
         self.group_abstol
             .iter()
             .zip(&self.alias_scale)
+            // A scale of 0 (no such alias) divides to infinity: no bound.
             .map(|(a, scale)| a.unwrap_or(default).min(default / scale))
             .collect()
     }

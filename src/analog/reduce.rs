@@ -126,6 +126,9 @@ impl Resolver {
     /// `e` with every eliminated unknown replaced (recursively); stores resolved replacements
     /// back so that chains are walked once.
     fn resolve(&mut self, e: &Sym) -> Sym {
+        if !self.reads_eliminated(e) {
+            return e.clone();
+        }
         match e {
             Sym::X(j) => match self.resolved(*j) {
                 Some(r) => r,
@@ -144,10 +147,26 @@ impl Resolver {
     }
 
     fn resolved(&mut self, j: usize) -> Option<Sym> {
+        let stored = self.replacement[j].as_ref()?;
+        if !self.reads_eliminated(stored) {
+            return Some(stored.clone());
+        }
         let r = self.replacement[j].take()?;
         let r = self.resolve(&r);
         self.replacement[j] = Some(r.clone());
         Some(r)
+    }
+
+    /// True when `e` reads an eliminated unknown (most trees do not: checking is cheaper
+    /// than rebuilding them).
+    fn reads_eliminated(&self, e: &Sym) -> bool {
+        let mut found = false;
+        e.visit(&mut |n| {
+            if let Sym::X(j) | Sym::Dot(j) = n {
+                found |= self.replacement[*j].is_some();
+            }
+        });
+        found
     }
 }
 
@@ -337,6 +356,24 @@ pub fn time_derivative(e: &Sym) -> Option<Sym> {
             .map(|(k, c)| Sym::mul(Sym::Const(c), Sym::Dot(k)))
             .fold(Sym::Const(0.0), Sym::add),
     )
+}
+
+/// Renames unknown `k` to `map(k)` (for `X` and `Dot`) in place.
+pub fn renumber_in_place(e: &mut Sym, map: &dyn Fn(usize) -> usize) {
+    match e {
+        Sym::X(k) | Sym::Dot(k) => *k = map(*k),
+        Sym::Const(_) | Sym::Signal(_) | Sym::Now => {}
+        Sym::Un(_, a) => renumber_in_place(a, map),
+        Sym::Bin(_, a, b) => {
+            renumber_in_place(a, map);
+            renumber_in_place(b, map);
+        }
+        Sym::If(c, a, b) => {
+            renumber_in_place(c, map);
+            renumber_in_place(a, map);
+            renumber_in_place(b, map);
+        }
+    }
 }
 
 /// `e` with unknown `k` renamed to `map(k)` (for `X` and `Dot`).

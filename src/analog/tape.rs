@@ -7,7 +7,7 @@
 //! Evaluation is one pass over the instructions: no allocation, no tree walking. `If` evaluates
 //! both branches and selects (a NaN in the branch not taken is harmless).
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 
 use super::sym::{Bin, Sym, Un, apply_binary, apply_unary};
 
@@ -36,8 +36,8 @@ pub struct Tape {
 pub struct TapeBuilder {
     ops: Vec<Op>,
     consts: Vec<f64>,
-    const_index: HashMap<u64, u32>,
-    op_index: HashMap<Op, u32>,
+    const_index: FxHashMap<u64, u32>,
+    op_index: FxHashMap<Op, u32>,
     outputs: Vec<u32>,
 }
 

@@ -9,8 +9,7 @@
 //! the analog system, break values replace quantities, and the integrator restarts (order 1).
 
 use crate::design::{Design, QuantityId, SignalId, Value};
-use crate::solver::{Advance, OpOptions, SolveError, Transient, TransientOptions};
-use crate::source::Span;
+use crate::solver::{Advance, OpOptions, Transient, TransientOptions};
 
 use super::analog_model::AnalogModel;
 use super::error::SimError;
@@ -34,8 +33,6 @@ struct Analog<A> {
     integ: Transient,
     x: Vec<f64>,
     g: Vec<f64>,
-    /// What each equation is and where it comes from, for failure messages.
-    equations: Vec<Option<(String, Span)>>,
 }
 
 pub(crate) struct Simulation<'d, A> {
@@ -136,20 +133,15 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             Some(a) => vec![a; n],
             None => sys.abstol(DEFAULT_ABSTOL),
         };
-        let names = sys.unknown_names().to_vec();
-        let equations: Vec<Option<(String, Span)>> =
-            (0..n).map(|r| sys.equation_site(design, r)).collect();
-        let fail = |e: SolveError| solve_error(e, 0.0, &names, &slots, design, &equations);
-        let (x, _) = sys
-            .quiescent_point(
-                0.0,
-                &guess,
-                &fixed,
-                options.reltol,
-                &abstol,
-                &OpOptions::default(),
-            )
-            .map_err(fail)?;
+        let point = sys.quiescent_point(
+            0.0,
+            &guess,
+            &fixed,
+            options.reltol,
+            &abstol,
+            &OpOptions::default(),
+        );
+        let (x, _) = point.map_err(|e| solve_error(e, 0.0, &sys, &slots, design))?;
         let above = sys.above_signals().to_vec();
         let mut g = vec![0.0; sys.root_count().max(above.len())];
         sys.roots(0.0, &x, &mut g);
@@ -173,7 +165,8 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             max_step,
             ..TransientOptions::default()
         };
-        let integ = Transient::new(&mut sys, 0.0, &x, topts).map_err(fail)?;
+        let integ = Transient::new(&mut sys, 0.0, &x, topts);
+        let integ = integ.map_err(|e| solve_error(e, 0.0, &sys, &slots, design))?;
         Ok(Analog {
             sys,
             slots,
@@ -181,7 +174,6 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             integ,
             x: vec![0.0; n],
             g,
-            equations,
         })
     }
 
@@ -343,7 +335,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         };
         a.integ
             .advance(&mut a.sys, target)
-            .map_err(|e| solve_error(e, t, a.sys.unknown_names(), &a.slots, design, &a.equations))
+            .map_err(|e| solve_error(e, t, &a.sys, &a.slots, design))
     }
 
     /// Schedules the new value of the `'above` signal of root function `index`.
@@ -403,9 +395,9 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                 a.x[slot] = v;
             }
         }
-        a.integ.restart(&mut a.sys, t, &a.x).map_err(|e| {
-            solve_error(e, t, a.sys.unknown_names(), &a.slots, design, &a.equations)
-        })?;
+        a.integ
+            .restart(&mut a.sys, t, &a.x)
+            .map_err(|e| solve_error(e, t, &a.sys, &a.slots, design))?;
         self.refresh();
         self.sync_above(t);
         Ok(true)

@@ -4,21 +4,23 @@
 
 use crate::design::Design;
 use crate::solver::SolveError;
-use crate::source::Span;
 
+use super::analog_model::AnalogModel;
 use super::error::SimError;
 
 /// Maps a solver failure's indices to names (and the first named quantity's span).
-pub(crate) fn solve_error(
+/// Names and sites come from `sys` only now, on failure: building them for every equation up
+/// front cost as much as the analysis on large circuits.
+pub(crate) fn solve_error<A: AnalogModel + ?Sized>(
     cause: SolveError,
     now: f64,
-    names: &[String],
+    sys: &A,
     slots: &[Option<usize>],
     design: &Design,
-    equations: &[Option<(String, Span)>],
 ) -> SimError {
+    let names = sys.unknown_names();
     let (time, unknown) = indices(&cause);
-    let equation = equation_of(&cause).and_then(|r| equations.get(r).cloned().flatten());
+    let equation = equation_of(&cause).and_then(|r| sys.equation_site(design, r));
     let unknowns: Vec<String> = unknown
         .iter()
         .filter_map(|&i| names.get(i).cloned())
