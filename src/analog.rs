@@ -62,8 +62,12 @@ pub struct AnalogSystem {
     /// Per pattern entry, the jacobian tape outputs of dF/dx and dF/dx' (if nonzero).
     jac_dx: Vec<Option<usize>>,
     jac_ddot: Vec<Option<usize>>,
-    /// Values and `'dot`s of eliminated quantities (see `quantity_output`).
+    /// Values and `'dot`s of eliminated quantities (see `fill`).
     outputs_tape: Tape,
+    /// The arguments of every `exp` in the residuals, for `step_limit`, and scratch for it.
+    exp_tape: Tape,
+    exp_before: Vec<f64>,
+    x_trial: Vec<f64>,
     /// Signal values read by equations; the last slot is the source scale.
     signals: Vec<f64>,
     reads: Vec<bool>,
@@ -82,6 +86,10 @@ pub struct AnalogSystem {
     /// Number of design signals (the source scale's slot).
     design_signals: usize,
 }
+
+/// Exponential arguments below this are not limited (`exp(10)` is a diode well below
+/// conduction for any practical saturation current).
+const EXP_LIMIT_FROM: f64 = 10.0;
 
 /// An unknown solved for and substituted (indices of the system as assembled).
 pub struct Eliminated {
@@ -368,6 +376,15 @@ impl AnalogSystem {
         for &k in &order {
             rb.push(&residuals[k]);
         }
+        let mut eb = TapeBuilder::default();
+        for r in &residuals {
+            r.visit(&mut |e| {
+                if let Sym::Un(sym::Un::Exp, a) = e {
+                    eb.push(a);
+                }
+            });
+        }
+        let exp_tape = eb.finish();
         drop(residuals);
         let mut jb = TapeBuilder::default();
         let mut jac_dx = Vec::with_capacity(pattern.len());
@@ -482,6 +499,9 @@ impl AnalogSystem {
             jac_dx,
             jac_ddot,
             outputs_tape: Tape::default(),
+            exp_before: vec![0.0; exp_tape.len()],
+            exp_tape,
+            x_trial: vec![0.0; n],
             signals,
             reads,
             above,
@@ -772,6 +792,35 @@ impl DaeSystem for AnalogSystem {
         for (i, o) in out.iter_mut().enumerate().take(self.above.len()) {
             *o = self.roots_tape.output(i);
         }
+    }
+
+    /// Junction limiting in the spirit of SPICE's `pnjlim`, for any `exp(a)`: where the step
+    /// drives `a` past [`EXP_LIMIT_FROM`] by more than 2, `a` may grow only by `ln(1 + da)`
+    /// (or to `ln(a)` from below 0); the step is scaled to the most limited argument.
+    fn step_limit(&mut self, t: f64, x: &[f64], xdot: &[f64], dx: &[f64]) -> f64 {
+        if self.exp_before.is_empty() {
+            return 1.0;
+        }
+        self.load_delays(t);
+        self.exp_tape.eval(t, x, xdot, &self.signals);
+        for (k, b) in self.exp_before.iter_mut().enumerate() {
+            *b = self.exp_tape.output(k);
+        }
+        for ((xt, &x), &d) in self.x_trial.iter_mut().zip(x).zip(dx) {
+            *xt = x + d;
+        }
+        self.exp_tape.eval(t, &self.x_trial, xdot, &self.signals);
+        let mut lambda = 1.0_f64;
+        for (k, &a0) in self.exp_before.iter().enumerate() {
+            let a1 = self.exp_tape.output(k);
+            let da = a1 - a0;
+            if !(a1 > EXP_LIMIT_FROM && da > 2.0) {
+                continue;
+            }
+            let limited = if a0 > 0.0 { a0 + da.ln_1p() } else { a1.ln() };
+            lambda = lambda.min(((limited - a0) / da).clamp(0.0, 1.0));
+        }
+        lambda
     }
 
     fn set_source_scale(&mut self, s: f64) {

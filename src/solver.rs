@@ -49,6 +49,11 @@ pub trait DaeSystem {
     }
     /// `out = g(t, x)`, `root_count()` values.
     fn roots(&mut self, _t: f64, _x: &[f64], _out: &mut [f64]) {}
+    /// The fraction of the Newton step `x -> x + dx` (at `t`, with derivative `xdot`) that
+    /// keeps exponentials from overshooting (a diode switching on from far away), in `(0, 1]`.
+    fn step_limit(&mut self, _t: f64, _x: &[f64], _xdot: &[f64], _dx: &[f64]) -> f64 {
+        1.0
+    }
     /// Source scaling in `[0, 1]` for source stepping (independent sources multiply by it).
     fn set_source_scale(&mut self, _s: f64) {}
 }

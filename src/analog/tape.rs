@@ -181,6 +181,11 @@ impl Tape {
         }
     }
 
+    /// Number of outputs.
+    pub fn len(&self) -> usize {
+        self.outputs.len()
+    }
+
     /// True for a tape without outputs.
     pub fn is_empty(&self) -> bool {
         self.outputs.is_empty()

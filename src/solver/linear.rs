@@ -10,10 +10,8 @@
 //! and only grow if a different pivot sequence produces more fill).
 
 use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
-use faer::linalg::lu::partial_pivoting::{factor as dense_factor, solve as dense_solve};
-use faer::perm::PermRef;
 use faer::sparse::linalg::lu::simplicial;
-use faer::{Conj, Mat, MatMut, Par};
+use faer::{MatMut, Par};
 
 use super::SolveError;
 use sparse::Sparse;
@@ -72,10 +70,77 @@ enum Backend {
     Sparse(Box<Sparse>),
 }
 
+/// Row-major `n x n` LU with partial pivoting, in place: `a` holds `L` (unit diagonal, below)
+/// and `U`; row `k` of the factors is row `perm[k]` of the assembled matrix.
 struct Dense {
-    a: Mat<f64>,
+    a: Vec<f64>,
     perm: Vec<usize>,
-    perm_inv: Vec<usize>,
+    scratch: Vec<f64>,
+}
+
+impl Dense {
+    /// Factors `a` in place. Returns the pivot step `j` whose pivot is not above `tol *
+    /// col_max[j]` (the matrix counts as singular there), if any.
+    fn factor(&mut self, n: usize, pivot_tol: f64, col_max: &[f64]) -> Result<(), usize> {
+        let a = &mut self.a;
+        for (k, p) in self.perm.iter_mut().enumerate() {
+            *p = k;
+        }
+        for j in 0..n {
+            let mut p = j;
+            let mut best = a[j * n + j].abs();
+            for r in j + 1..n {
+                let v = a[r * n + j].abs();
+                if v > best {
+                    best = v;
+                    p = r;
+                }
+            }
+            if best.is_nan() || best <= pivot_tol * col_max[j] {
+                return Err(j);
+            }
+            if p != j {
+                for c in 0..n {
+                    a.swap(j * n + c, p * n + c);
+                }
+                self.perm.swap(j, p);
+            }
+            let pivot = a[j * n + j];
+            for r in j + 1..n {
+                let l = a[r * n + j] / pivot;
+                a[r * n + j] = l;
+                if l != 0.0 {
+                    for c in j + 1..n {
+                        a[r * n + c] -= l * a[j * n + c];
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    fn solve(&mut self, n: usize, rhs: &mut [f64]) {
+        let a = &self.a;
+        for (k, &p) in self.perm.iter().enumerate() {
+            self.scratch[k] = rhs[p];
+        }
+        let y = &mut self.scratch;
+        for r in 1..n {
+            let mut sum = y[r];
+            for c in 0..r {
+                sum -= a[r * n + c] * y[c];
+            }
+            y[r] = sum;
+        }
+        for r in (0..n).rev() {
+            let mut sum = y[r];
+            for c in r + 1..n {
+                sum -= a[r * n + c] * y[c];
+            }
+            y[r] = sum / a[r * n + r];
+        }
+        rhs.copy_from_slice(y);
+    }
 }
 
 impl LinearSolver {
@@ -94,16 +159,12 @@ impl LinearSolver {
         }
         let par = Par::Seq;
         let (backend, req) = if n <= options.dense_max {
-            let req = StackReq::any_of(&[
-                dense_factor::lu_in_place_scratch::<usize, f64>(n, n, par, Default::default()),
-                dense_solve::solve_in_place_scratch::<usize, f64>(n, 1, par),
-            ]);
             let dense = Dense {
-                a: Mat::zeros(n, n),
+                a: vec![0.0; n * n],
                 perm: vec![0; n],
-                perm_inv: vec![0; n],
+                scratch: vec![0.0; n],
             };
-            (Backend::Dense(dense), req)
+            (Backend::Dense(dense), StackReq::EMPTY)
         } else {
             let sparse = Sparse::new(n, pattern)?;
             let req = StackReq::any_of(&[
@@ -173,34 +234,24 @@ impl LinearSolver {
         let stack = MemStack::new(&mut self.mem);
         match &mut self.backend {
             Backend::Dense(d) => {
+                let n = self.n;
                 d.a.fill(0.0);
                 for (&(r, c), &v) in self.pattern.iter().zip(values) {
-                    d.a[(r, c)] += v;
+                    d.a[r * n + c] += v;
                 }
-                for i in 0..self.n {
-                    d.a[(i, i)] += diag_shift;
+                for i in 0..n {
+                    d.a[i * n + i] += diag_shift;
                 }
-                for c in 0..self.n {
-                    for r in 0..self.n {
-                        let v = d.a[(r, c)].abs();
+                for r in 0..n {
+                    for c in 0..n {
+                        let v = d.a[r * n + c].abs();
                         self.row_max[r] = self.row_max[r].max(v);
                         self.col_max[c] = self.col_max[c].max(v);
                     }
                 }
                 check_empty(&self.row_max, &self.col_max, &self.row_used, &self.col_used)?;
-                dense_factor::lu_in_place(
-                    d.a.as_mut(),
-                    &mut d.perm,
-                    &mut d.perm_inv,
-                    Par::Seq,
-                    stack,
-                    Default::default(),
-                );
-                for j in 0..self.n {
-                    let pivot = d.a[(j, j)].abs();
-                    if pivot.is_nan() || pivot <= self.pivot_tol * self.col_max[j] {
-                        return Err(singular(d.perm[j], j));
-                    }
+                if let Err(j) = d.factor(n, self.pivot_tol, &self.col_max) {
+                    return Err(singular(d.perm[j], j));
                 }
             }
             Backend::Sparse(s) => {
@@ -222,16 +273,11 @@ impl LinearSolver {
             });
         }
         let n = self.n;
-        let stack = MemStack::new(&mut self.mem);
-        let x = MatMut::from_column_major_slice_mut(rhs, n, 1);
-        match &self.backend {
-            Backend::Dense(d) => {
-                let perm = PermRef::new_checked(&d.perm, &d.perm_inv, n);
-                let a = d.a.as_ref();
-                dense_solve::solve_in_place_with_conj(a, a, perm, Conj::No, x, Par::Seq, stack);
-            }
+        match &mut self.backend {
+            Backend::Dense(d) => d.solve(n, rhs),
             Backend::Sparse(s) => {
-                s.solve(x, stack);
+                let stack = MemStack::new(&mut self.mem);
+                s.solve(MatMut::from_column_major_slice_mut(rhs, n, 1), stack);
             }
         }
         Ok(())

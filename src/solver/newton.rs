@@ -88,6 +88,12 @@ pub trait NonlinearProblem {
     fn diagonal_shift(&self) -> f64 {
         0.0
     }
+    /// The largest fraction of the step `x -> x + dx` worth taking (see
+    /// [`DaeSystem::step_limit`](crate::solver::DaeSystem::step_limit)); the damped iteration
+    /// starts its backtracking there.
+    fn step_limit(&mut self, _x: &[f64], _dx: &[f64]) -> f64 {
+        1.0
+    }
 }
 
 /// Newton's knobs. The defaults suit an operating point; the transient corrector uses
@@ -275,10 +281,11 @@ impl Newton {
             if !norm.is_finite() || (!opts.line_search && norm > opts.max_rate * prev_norm) {
                 break;
             }
-            let mut lambda = 1.0;
             // A step already within tolerance needs no damping (and rounding would defeat the
             // sufficient-decrease test there).
             if opts.line_search && norm > opts.tol {
+                // Backtracking starts where exponentials stop overshooting.
+                let mut lambda = p.step_limit(x, &self.dx).clamp(1e-9, 1.0);
                 let f0 = norm2(&self.r);
                 loop {
                     for ((xt, &x), &d) in self.x_trial.iter_mut().zip(x.iter()).zip(&self.dx) {

@@ -54,6 +54,11 @@ impl<S: DaeSystem + ?Sized> NonlinearProblem for EulerProblem<'_, S> {
         self.sys.residual(self.t + self.h, x, self.xdot, out);
     }
 
+    fn step_limit(&mut self, x: &[f64], dx: &[f64]) -> f64 {
+        self.derivative(x);
+        self.sys.step_limit(self.t + self.h, x, self.xdot, dx)
+    }
+
     fn jacobian(&mut self, x: &[f64], out: &mut [f64]) {
         self.derivative(x);
         self.sys
@@ -71,6 +76,8 @@ struct InitProblem<'a, S: ?Sized> {
     /// Column of each pattern entry.
     pub cols: &'a [usize],
     pub jac0: &'a mut [f64],
+    /// Scratch: the `x` part of a Newton step.
+    pub dx: &'a mut [f64],
 }
 
 impl<S: DaeSystem + ?Sized> InitProblem<'_, S> {
@@ -102,6 +109,15 @@ impl<S: DaeSystem + ?Sized> NonlinearProblem for InitProblem<'_, S> {
     fn residual(&mut self, z: &[f64], out: &mut [f64]) {
         self.assemble(z);
         self.sys.residual(self.t, self.x, self.xdot, out);
+    }
+
+    fn step_limit(&mut self, z: &[f64], dz: &[f64]) -> f64 {
+        self.assemble(z);
+        for ((d, &dzi), &diff) in self.dx.iter_mut().zip(dz).zip(self.diff) {
+            // Differential unknowns are held: only the algebraic ones move.
+            *d = if diff { 0.0 } else { dzi };
+        }
+        self.sys.step_limit(self.t, self.x, self.xdot, self.dx)
     }
 
     fn jacobian(&mut self, z: &[f64], out: &mut [f64]) {
@@ -167,6 +183,7 @@ impl Transient {
             xdot: &mut self.xdot,
             cols: &self.cols,
             jac0: &mut self.jac0,
+            dx: &mut self.x_new,
         };
         p.z_from(&mut self.scratch);
         let opts = NewtonOptions {

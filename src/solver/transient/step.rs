@@ -46,6 +46,10 @@ impl<S: DaeSystem + ?Sized> NonlinearProblem for Corrector<'_, S> {
         self.derivative(x);
         self.sys.jacobian(self.t, x, self.xdot, self.c0, out);
     }
+    fn step_limit(&mut self, x: &[f64], dx: &[f64]) -> f64 {
+        self.derivative(x);
+        self.sys.step_limit(self.t, x, self.xdot, dx)
+    }
 }
 
 /// Lagrange weights at `t` for nodes `tau` (`l_j(t)`), written into `out[..tau.len()]`.
