@@ -794,6 +794,18 @@ impl DaeSystem for AnalogSystem {
         }
     }
 
+    fn jacobian_parts(
+        &mut self,
+        t: f64,
+        x: &[f64],
+        xdot: &[f64],
+        dot_columns: &[bool],
+        out: &mut [f64],
+        _scratch: &mut [f64],
+    ) {
+        self.jacobian_columns(t, x, xdot, dot_columns, out);
+    }
+
     /// Junction limiting in the spirit of SPICE's `pnjlim`, for any `exp(a)`: where the step
     /// drives `a` past [`EXP_LIMIT_FROM`] by more than 2, `a` may grow only by `ln(1 + da)`
     /// (or to `ln(a)` from below 0); the step is scaled to the most limited argument.

@@ -43,6 +43,26 @@ pub trait DaeSystem {
     fn residual(&mut self, t: f64, x: &[f64], xdot: &[f64], out: &mut [f64]);
     /// Values of `dF/dx + alpha * dF/dx'` at each pattern entry, in pattern order.
     fn jacobian(&mut self, t: f64, x: &[f64], xdot: &[f64], alpha: f64, out: &mut [f64]);
+    /// Values of `dF/dx'` in the columns flagged in `dot_columns` and of `dF/dx` in the others,
+    /// at each pattern entry (what consistent initialisation solves with). The default takes
+    /// the difference of two [`DaeSystem::jacobian`] calls; systems that keep the parts apart
+    /// answer in one evaluation.
+    fn jacobian_parts(
+        &mut self,
+        t: f64,
+        x: &[f64],
+        xdot: &[f64],
+        dot_columns: &[bool],
+        out: &mut [f64],
+        scratch: &mut [f64],
+    ) {
+        self.jacobian(t, x, xdot, 0.0, scratch);
+        self.jacobian(t, x, xdot, 1.0, out);
+        let columns = self.pattern().iter().map(|&(_, c)| c);
+        for ((o, &j0), c) in out.iter_mut().zip(scratch.iter()).zip(columns) {
+            *o = if dot_columns[c] { *o - j0 } else { j0 };
+        }
+    }
     /// Root functions `g(t, x)` whose sign changes the integrator must locate.
     fn root_count(&self) -> usize {
         0

@@ -1,10 +1,12 @@
 //! LU factorisation of the Newton matrix, given as values in the system's pattern order.
 //!
-//! Two paths behind one type. Small systems use faer's dense LU with partial pivoting; large
-//! ones use faer's simplicial sparse LU (left-looking, partial pivoting, COLAMD column order),
-//! which suits circuit matrices: they are very sparse and produce little fill, so supernodes
-//! would not pay (the same choice KLU makes). The column ordering is computed once per pattern;
-//! each `factor` scatters the values into preallocated CSC storage and refactors numerically.
+//! Two paths behind one type. Small systems use a plain in-place LU with partial pivoting
+//! (faer's dense LU is blocked and recursive, built for large matrices: about 1 us at n = 8,
+//! where this loop takes 0.4 us); large ones use faer's simplicial sparse LU (left-looking,
+//! partial pivoting, COLAMD column order), which suits circuit matrices: they are very sparse
+//! and produce little fill, so supernodes would not pay (the same choice KLU makes). The column
+//! ordering is computed once per pattern; each `factor` scatters the values into preallocated
+//! CSC storage and refactors numerically.
 //! Scratch space for factor and solve is a `MemBuffer` sized at construction, so the steady state
 //! does not allocate (the simplicial factor's `Vec`s keep their capacity between refactorisations
 //! and only grow if a different pivot sequence produces more fill).
@@ -22,13 +24,12 @@ mod sparse;
 /// are factored densely.
 ///
 /// Measured with `cargo bench --bench solver -- crossover` (factor + solve of tridiagonal
-/// N-node ladder matrices, release build, shared 2-core x86-64 box; two runs, dense / sparse):
-/// N = 4: 0.25-0.30 / 0.38-0.50 us; N = 8: 0.72-0.88 / 0.65-1.01 us; N = 10: 0.94-1.05 /
-/// 0.78-0.79 us; N = 12: 1.28-1.30 / 0.91-0.94 us; N = 16: 2.2-2.4 / 1.3-1.4 us; N = 32:
-/// 8.7-10.6 / 2.4-2.6 us; N = 128: 131-141 / 9.1-9.6 us. The paths cross between 6 and 10
-/// unknowns (at 8 they tie within noise). A tridiagonal matrix is the sparse path's best case;
-/// denser circuit matrices move the point up somewhat.
-pub const DEFAULT_DENSE_MAX: usize = 8;
+/// N-node ladder matrices, release build, 2-core x86-64 box, dense / sparse): N = 4: 0.14 /
+/// 0.44 us; N = 8: 0.40 / 0.89 us; N = 12: 0.82 / 0.93 us; N = 16: 1.38 / 1.26 us; N = 24:
+/// 3.2 / 1.7 us; N = 32: 5.6 / 2.5 us; N = 128: 99 / 8.9 us. The paths cross near 16 on a
+/// tridiagonal matrix, the sparse path's best case; denser circuit matrices favour the dense
+/// path a little longer.
+pub const DEFAULT_DENSE_MAX: usize = 16;
 
 /// Tuning of the linear solver.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -39,7 +39,6 @@ pub struct Transient {
     newton_opts: NewtonOptions,
     newton: Newton,
     diff: Vec<bool>,
-    cols: Vec<usize>,
     t: f64,
     /// Step to try next; 0 until the first `advance` picks one.
     h: f64,
@@ -131,7 +130,6 @@ impl Transient {
         };
         let pattern = sys.pattern();
         let newton = Newton::new(n, pattern, options.linear)?;
-        let cols = pattern.iter().map(|&(_, c)| c).collect();
         let jac0 = vec![0.0; pattern.len()];
         let m = sys.root_count();
         let v = || vec![0.0; n];
@@ -149,7 +147,6 @@ impl Transient {
             },
             newton,
             diff: sys.differential().to_vec(),
-            cols,
             t: t0,
             h: 0.0,
             order: 1,

@@ -73,8 +73,6 @@ struct InitProblem<'a, S: ?Sized> {
     /// Held values (differential unknowns) and scratch for the assembled state.
     pub x: &'a mut [f64],
     pub xdot: &'a mut [f64],
-    /// Column of each pattern entry.
-    pub cols: &'a [usize],
     pub jac0: &'a mut [f64],
     /// Scratch: the `x` part of a Newton step.
     pub dx: &'a mut [f64],
@@ -122,15 +120,8 @@ impl<S: DaeSystem + ?Sized> NonlinearProblem for InitProblem<'_, S> {
 
     fn jacobian(&mut self, z: &[f64], out: &mut [f64]) {
         self.assemble(z);
-        self.sys.jacobian(self.t, self.x, self.xdot, 0.0, self.jac0);
-        self.sys.jacobian(self.t, self.x, self.xdot, 1.0, out);
-        for ((o, &j0), &c) in out.iter_mut().zip(self.jac0.iter()).zip(self.cols) {
-            if !self.diff[c] {
-                *o = j0;
-            } else {
-                *o -= j0;
-            }
-        }
+        self.sys
+            .jacobian_parts(self.t, self.x, self.xdot, self.diff, out, self.jac0);
     }
 }
 
@@ -181,7 +172,6 @@ impl Transient {
             diff: &self.diff,
             x: &mut self.hist_x[0],
             xdot: &mut self.xdot,
-            cols: &self.cols,
             jac0: &mut self.jac0,
             dx: &mut self.x_new,
         };
