@@ -212,6 +212,21 @@ fn a_failure_ends_the_run_and_errors_are_reported() {
     assert!((result.reports[0].time - 1e-3).abs() < 1e-12);
 }
 
+/// The PWM's edge times accumulate rounding (`wait for` a half period, 200 times), so the last
+/// one lands 1e-14 s short of 1 s: a stop time there must end the run, not underflow the step.
+#[test]
+fn a_stop_time_on_an_accumulated_event_time_is_reached() {
+    let result = run(
+        "pwm_rl",
+        SimOptions {
+            stop: 1.0,
+            ..SimOptions::default()
+        },
+    );
+    assert_eq!(result.outcome, Outcome::Finished);
+    assert_eq!(result.waveforms.times.last(), Some(&1.0));
+}
+
 #[test]
 fn pwm_rl_ripple_matches_the_steady_state() {
     let result = run(
