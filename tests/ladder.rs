@@ -72,8 +72,7 @@ impl Reference {
     }
 }
 
-#[test]
-fn fifty_section_ladder_matches_rk4_within_a_millivolt() {
+fn simulate_ladder(keep_unknowns: bool) -> vams::waveform::Waveforms {
     let path = format!(
         "{}/tests/simulate/rc_ladder.vhd",
         env!("CARGO_MANIFEST_DIR")
@@ -88,26 +87,44 @@ fn fifty_section_ladder_matches_rk4_within_a_millivolt() {
     let sim = SimOptions {
         stop: STOP,
         reltol: 1e-4,
-        probes: vec!["v_out".into()],
+        probes: vec!["v_out".into(), "i_in".into()],
+        keep_unknowns,
         ..SimOptions::default()
     };
     let result = simulate(&design, &sim, &mut |_| {}).expect("ladder simulates");
     assert_eq!(result.outcome, Outcome::Finished);
-    let w = &result.waveforms;
+    result.waveforms
+}
+
+/// Checks the output node against RK4 within 1 mV, and the source current (an eliminated
+/// quantity unless `keep_unknowns`) within 1e-3 of its 50 mA full scale.
+fn check_against_rk4(keep_unknowns: bool) {
+    let w = simulate_ladder(keep_unknowns);
     let v_out = &w.column("v_out").expect("v_out recorded").values;
+    let i_in = &w.column("i_in").expect("i_in recorded").values;
     assert!(w.times.len() > 20, "too few samples: {}", w.times.len());
 
     // Largest eigenvalue of the ladder about 4 g / c = 1e7 /s: RK4 is stable below 2.8e-7 s
     // and its error at 2e-8 s is far below the tolerance checked here.
     let mut reference = Reference::new(SECTIONS);
+    let full_scale = reference.g;
     let mut worst = (0.0_f64, 0.0);
-    for (&t, &v) in w.times.iter().zip(v_out) {
+    for ((&t, &v), &i) in w.times.iter().zip(v_out).zip(i_in) {
         let exact = reference.output_at(t, 2e-8);
         let err = (v - exact).abs();
         if err > worst.0 {
             worst = (err, t);
         }
         assert!(err < 1e-3, "t = {t}: v_out = {v}, RK4 {exact}");
+        // The source delivers the first resistor's current (i_in flows from the node into
+        // the source, hence the sign).
+        let i_exact = -reference.g * (1.0 - reference.v[0]);
+        if t > 0.0 {
+            assert!(
+                (i - i_exact).abs() < 1e-3 * full_scale,
+                "t = {t}: i_in = {i}, RK4 {i_exact}"
+            );
+        }
     }
     // The comparison is not vacuous: the output rises through the whole range.
     assert!(w.value_at("v_out", 0.05e-3).expect("sample") < 0.01);
@@ -118,4 +135,15 @@ fn fifty_section_ladder_matches_rk4_within_a_millivolt() {
         worst.0,
         worst.1
     );
+}
+
+#[test]
+fn fifty_section_ladder_matches_rk4_within_a_millivolt() {
+    check_against_rk4(false);
+}
+
+/// The same with every unknown kept: elimination must not change the answer.
+#[test]
+fn fifty_section_ladder_matches_rk4_with_every_unknown_kept() {
+    check_against_rk4(true);
 }
