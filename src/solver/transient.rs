@@ -233,7 +233,11 @@ impl Transient {
         if h * nd > 0.5 {
             h = 0.5 / nd;
         }
-        h
+        // The `x'` rule is conservative (BDF1's error grows as h^2 x'', not h x'): with a
+        // tight abstol on a state starting at 0 with a huge slope (the first section of a long
+        // RC ladder), it asks for steps below what the time axis resolves. Start where steps
+        // are still well resolved; the error test shrinks the step if it must.
+        h.max(64.0 * self.min_step(t_out))
     }
 
     /// The step floor: the option, but never below 16 ulp of the time span in play.
