@@ -335,7 +335,6 @@ impl AnalogSystem {
             }
         }
         let n = unknowns.len();
-        let renumber = |e: &Sym| reduce::renumber(e, &|k| live[k]);
         let kept_rows: Vec<usize> = elim.kept.iter().map(|(row, _)| *row).collect();
         let residuals: Vec<Sym> = std::mem::take(&mut elim.kept)
             .into_iter()
@@ -409,7 +408,9 @@ impl AnalogSystem {
             if let SignalKind::Above { quantity, level } = &s.kind {
                 match (lower(quantity, &slot_of), lower(level, &slot_of)) {
                     (Ok(q), Ok(l)) => {
-                        roots.push(&renumber(&elim.apply(&Sym::sub(q, l))));
+                        let mut root = elim.apply(&Sym::sub(q, l));
+                        reduce::renumber_in_place(&mut root, &|k| live[k]);
+                        roots.push(&root);
                         above.push(SignalId(i as u32));
                     }
                     (Err(e), _) | (_, Err(e)) => errors.push(AnalogError::NotAnalog {

@@ -97,23 +97,32 @@ pub fn eliminate(residuals: Vec<Sym>, candidates: &Candidates<'_>) -> Eliminatio
 }
 
 impl Elimination {
-    /// `e` with every eliminated unknown replaced.
+    /// `e` with every eliminated unknown replaced (stored replacements are resolved, so one
+    /// pass suffices).
     pub fn apply(&self, e: &Sym) -> Sym {
-        // Stored replacements are resolved, so one pass suffices.
-        let go = |e: &Sym| self.apply(e);
-        match e {
-            Sym::X(j) => match &self.replacement[*j] {
-                Some(r) => r.clone(),
-                None => e.clone(),
-            },
-            Sym::Dot(j) => match &self.replacement[*j] {
-                Some(r) => time_derivative(r).unwrap_or(Sym::Const(f64::NAN)),
-                None => e.clone(),
-            },
-            Sym::Const(_) | Sym::Signal(_) | Sym::Now => e.clone(),
-            Sym::Un(op, a) => Sym::un(*op, go(a)),
-            Sym::Bin(op, a, b) => Sym::bin(*op, go(a), go(b)),
-            Sym::If(c, a, b) => Sym::cond(go(c), go(a), go(b)),
+        substitute(e, &mut |j| self.replacement[j].clone())
+    }
+}
+
+/// `e` with `X(j)` replaced by `lookup(j)` where it gives one, and `Dot(j)` by that
+/// replacement's time derivative (only affine replacements are stored for differentiated
+/// unknowns, so it exists).
+fn substitute(e: &Sym, lookup: &mut dyn FnMut(usize) -> Option<Sym>) -> Sym {
+    match e {
+        Sym::X(j) => lookup(*j).unwrap_or_else(|| e.clone()),
+        Sym::Dot(j) => match lookup(*j) {
+            Some(r) => time_derivative(&r).unwrap_or(Sym::Const(f64::NAN)),
+            None => e.clone(),
+        },
+        Sym::Const(_) | Sym::Signal(_) | Sym::Now => e.clone(),
+        Sym::Un(op, a) => Sym::un(*op, substitute(a, lookup)),
+        Sym::Bin(op, a, b) => {
+            let a = substitute(a, lookup);
+            Sym::bin(*op, a, substitute(b, lookup))
+        }
+        Sym::If(c, a, b) => {
+            let (c, a) = (substitute(c, lookup), substitute(a, lookup));
+            Sym::cond(c, a, substitute(b, lookup))
         }
     }
 }
@@ -129,21 +138,7 @@ impl Resolver {
         if !self.reads_eliminated(e) {
             return e.clone();
         }
-        match e {
-            Sym::X(j) => match self.resolved(*j) {
-                Some(r) => r,
-                None => e.clone(),
-            },
-            Sym::Dot(j) => match self.resolved(*j) {
-                // Only affine replacements are stored for differentiated unknowns.
-                Some(r) => time_derivative(&r).unwrap_or(Sym::Const(f64::NAN)),
-                None => e.clone(),
-            },
-            Sym::Const(_) | Sym::Signal(_) | Sym::Now => e.clone(),
-            Sym::Un(op, a) => Sym::un(*op, self.resolve(a)),
-            Sym::Bin(op, a, b) => Sym::bin(*op, self.resolve(a), self.resolve(b)),
-            Sym::If(c, a, b) => Sym::cond(self.resolve(c), self.resolve(a), self.resolve(b)),
-        }
+        substitute(e, &mut |j| self.resolved(j))
     }
 
     fn resolved(&mut self, j: usize) -> Option<Sym> {
@@ -373,22 +368,6 @@ pub fn renumber_in_place(e: &mut Sym, map: &dyn Fn(usize) -> usize) {
             renumber_in_place(a, map);
             renumber_in_place(b, map);
         }
-    }
-}
-
-/// `e` with unknown `k` renamed to `map(k)` (for `X` and `Dot`).
-pub fn renumber(e: &Sym, map: &dyn Fn(usize) -> usize) -> Sym {
-    match e {
-        Sym::X(k) => Sym::X(map(*k)),
-        Sym::Dot(k) => Sym::Dot(map(*k)),
-        Sym::Const(_) | Sym::Signal(_) | Sym::Now => e.clone(),
-        Sym::Un(op, a) => Sym::Un(*op, Box::new(renumber(a, map))),
-        Sym::Bin(op, a, b) => Sym::Bin(*op, Box::new(renumber(a, map)), Box::new(renumber(b, map))),
-        Sym::If(c, a, b) => Sym::If(
-            Box::new(renumber(c, map)),
-            Box::new(renumber(a, map)),
-            Box::new(renumber(b, map)),
-        ),
     }
 }
 
