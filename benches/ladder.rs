@@ -6,19 +6,20 @@
 //!
 //! Run: `cargo bench --bench ladder` (sizes: `LADDER_SIZES=10,100 cargo bench --bench ladder`).
 
+mod common;
+
 use std::hint::black_box;
-use std::path::Path;
-use std::process::Command;
+use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
-use vams::ast::DesignFile;
+use vams::cli::load::{Loaded, load};
 use vams::design::Design;
 use vams::elaborate::{ElabOptions, elaborate};
 use vams::kernel::{SimOptions, simulate};
-use vams::source::{FileId, SourceMap};
 use vams::waveform::Waveforms;
-use vams::{parser, stdlib};
+
+use common::run_ngspice;
 
 const R_TOTAL: f64 = 1.0e3;
 const C_TOTAL: f64 = 1.0e-6;
@@ -34,23 +35,12 @@ fn sizes() -> Vec<usize> {
         .unwrap_or_else(|| vec![10, 100, 1000])
 }
 
-fn load() -> (SourceMap, Vec<(FileId, DesignFile)>) {
-    let mut sources = SourceMap::new();
-    let mut ids = stdlib::load(&mut sources);
-    let path = format!(
-        "{}/tests/simulate/rc_ladder.vhd",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    let text = std::fs::read_to_string(&path).expect("ladder model readable");
-    ids.push(sources.add(path, "work", text));
-    let files = ids
-        .iter()
-        .map(|&id| {
-            let text = sources.file(id).text.clone();
-            (id, parser::parse(id, &text).0)
-        })
-        .collect();
-    (sources, files)
+/// The ladder model with the stdlib, parsed once (each size elaborates it again).
+fn load_ladder() -> Loaded {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/simulate/rc_ladder.vhd");
+    let loaded = load(&[path]).expect("ladder model readable");
+    assert_eq!(loaded.error_count(), 0, "{:?}", loaded.syntax_errors);
+    loaded
 }
 
 fn elab_options(n: usize) -> ElabOptions {
@@ -75,55 +65,22 @@ fn run_vams(design: &Design) -> Waveforms {
         .waveforms
 }
 
-/// The same ladder as a SPICE deck: every capacitor starts at 0 V (`uic`), the source is 1 V.
-fn spice_deck(n: usize, data: &Path) -> String {
+/// The same ladder as SPICE elements: every capacitor starts at 0 V (`uic`), the source is 1 V.
+fn spice_netlist(n: usize) -> String {
     let (r, c) = (R_TOTAL / n as f64, C_TOTAL / n as f64);
-    let mut deck = format!("* RC ladder, {n} sections\nV1 n0 0 DC 1\n");
+    let mut netlist = format!("V1 n0 0 DC 1\n.options reltol={RELTOL:e}\n");
     for k in 1..=n {
-        deck += &format!("R{k} n{} n{k} {r:e}\nC{k} n{k} 0 {c:e} IC=0\n", k - 1);
+        netlist += &format!("R{k} n{} n{k} {r:e}\nC{k} n{k} 0 {c:e} IC=0\n", k - 1);
     }
-    deck += &format!(
-        ".options reltol={RELTOL:e}\n.control\nset wr_singlescale\nset numdgt=12\n\
-         tran {:e} {STOP:e} uic\nwrdata {} v(n{n})\nquit\n.endc\n.end\n",
-        STOP / 1000.0,
-        data.display()
-    );
-    deck
+    netlist
 }
 
-/// Runs ngspice on the ladder: wall time and `(t, v_out)` pairs, or why it could not.
-fn run_ngspice(n: usize) -> Result<(Duration, Vec<(f64, f64)>), String> {
-    let dir = tempfile::tempdir().map_err(|e| e.to_string())?;
-    let (cir, data) = (dir.path().join("ladder.cir"), dir.path().join("out.txt"));
-    std::fs::write(&cir, spice_deck(n, &data)).map_err(|e| e.to_string())?;
-    let start = Instant::now();
-    let out = Command::new("ngspice")
-        .arg("-b")
-        .arg(&cir)
-        .output()
-        .map_err(|e| format!("ngspice not runnable ({e})"))?;
-    let wall = start.elapsed();
-    let text = std::fs::read_to_string(&data).map_err(|_| {
-        format!(
-            "ngspice wrote no data: {}",
-            String::from_utf8_lossy(&out.stderr)
-        )
-    })?;
-    let points = text
-        .lines()
-        .filter_map(|l| {
-            let mut f = l.split_whitespace().map(str::parse::<f64>);
-            Some((f.next()?.ok()?, f.next()?.ok()?))
-        })
-        .collect();
-    Ok((wall, points))
-}
-
-fn compare_with_ngspice(sources: &SourceMap, files: &[(FileId, DesignFile)]) {
+fn compare_with_ngspice(loaded: &Loaded) {
     println!("RC ladder, stop {STOP} s, reltol {RELTOL}: vams vs ngspice -b (wall times, one run)");
     for n in sizes() {
         let start = Instant::now();
-        let design = elaborate(sources, files, &elab_options(n)).expect("ladder elaborates");
+        let design =
+            elaborate(&loaded.sources, &loaded.files, &elab_options(n)).expect("ladder elaborates");
         let elab = start.elapsed();
         let start = Instant::now();
         let w = run_vams(&design);
@@ -134,16 +91,18 @@ fn compare_with_ngspice(sources: &SourceMap, files: &[(FileId, DesignFile)]) {
             sim.as_secs_f64() * 1e3,
             w.times.len()
         );
-        match run_ngspice(n) {
-            Ok((wall, points)) => {
-                let worst = points
+        let tran = format!("tran {:e} {STOP:e} uic", STOP / 1000.0);
+        match run_ngspice(&spice_netlist(n), &tran, &[&format!("v(n{n})")], 1) {
+            Ok(run) => {
+                let worst = run
+                    .rows
                     .iter()
-                    .filter_map(|&(t, v)| Some((w.value_at("v_out", t)? - v).abs()))
+                    .filter_map(|row| Some((w.value_at("v_out", row[0])? - row[1]).abs()))
                     .fold(0.0_f64, f64::max);
                 println!(
                     "; ngspice {:>9.3} ms ({} points); max |v_out difference| {worst:.2e} V",
-                    wall.as_secs_f64() * 1e3,
-                    points.len()
+                    run.wall.as_secs_f64() * 1e3,
+                    run.rows.len()
                 );
             }
             Err(why) => println!("; no ngspice comparison: {why}"),
@@ -152,8 +111,9 @@ fn compare_with_ngspice(sources: &SourceMap, files: &[(FileId, DesignFile)]) {
 }
 
 fn ladder(c: &mut Criterion) {
-    let (sources, files) = load();
-    compare_with_ngspice(&sources, &files);
+    let loaded = load_ladder();
+    compare_with_ngspice(&loaded);
+    let (sources, files) = (&loaded.sources, &loaded.files);
     let mut group = c.benchmark_group("ladder");
     group
         .sample_size(10)
@@ -161,9 +121,9 @@ fn ladder(c: &mut Criterion) {
     for n in sizes() {
         let options = elab_options(n);
         group.bench_with_input(BenchmarkId::new("elaborate", n), &n, |b, _| {
-            b.iter(|| black_box(elaborate(&sources, &files, &options).expect("elaborates")))
+            b.iter(|| black_box(elaborate(sources, files, &options).expect("elaborates")))
         });
-        let design = elaborate(&sources, &files, &options).expect("elaborates");
+        let design = elaborate(sources, files, &options).expect("elaborates");
         group.bench_with_input(BenchmarkId::new("simulate", n), &n, |b, _| {
             b.iter(|| black_box(run_vams(&design)))
         });

@@ -1,4 +1,4 @@
-//! What the ngspice comparisons (`hbridge`, `motor`) share: loading vams models, running a
+//! What the ngspice comparisons (`hbridge`, `motor`, `ladder`) share: loading vams models, running a
 //! deck in `ngspice -b` with its own counters (`rusage all`), and mean timing over n runs.
 //!
 //! Without ngspice on the PATH, [`run_ngspice`] says so and the benchmarks run the vams part
