@@ -115,17 +115,12 @@ enum QuantitySource {
 /// Multiplies every top-level additive term of `e` that reads no unknown by the source-scale
 /// pseudo-signal `scale`, so that source stepping ramps the independent sources.
 fn scale_sources(e: Sym, scale: usize) -> Sym {
-    let reads_unknown = |e: &Sym| {
-        let mut found = false;
-        e.visit(&mut |n| found |= matches!(n, Sym::X(_) | Sym::Dot(_)));
-        found
-    };
     match e {
         Sym::Bin(op @ (Bin::Add | Bin::Sub), a, b) => {
             Sym::bin(op, scale_sources(*a, scale), scale_sources(*b, scale))
         }
         Sym::Un(sym::Un::Neg, a) => Sym::neg(scale_sources(*a, scale)),
-        e if !reads_unknown(&e) && e.as_const() != Some(0.0) => Sym::mul(e, Sym::Signal(scale)),
+        e if !e.reads_unknown() && e.as_const() != Some(0.0) => Sym::mul(e, Sym::Signal(scale)),
         e => e,
     }
 }
@@ -529,7 +524,7 @@ impl AnalogSystem {
             }
             // The `'dot` of a quantity whose expression reads `'dot`s or `now` is not
             // available (NaN); quantities whose `'dot` is read elsewhere are never eliminated.
-            let dot = match e.replacement.reads_time_or_dot() {
+            let dot = match e.replacement.any(|n| matches!(n, Sym::Now | Sym::Dot(_))) {
                 false => reduce::time_derivative(&e.replacement).unwrap_or(Sym::Const(f64::NAN)),
                 true => Sym::Const(f64::NAN),
             };

@@ -214,7 +214,7 @@ fn choose(e: &Sym, candidates: &Candidates<'_>, differentiated: &[bool]) -> Opti
         // A quantity given as a function of time stays an unknown: the step-size control
         // must see how fast it moves (a source driving nothing else would otherwise allow
         // arbitrarily long steps, and its threshold crossings would be missed).
-        if size(&replacement) > MAX_REPLACEMENT || reads_now(&replacement) {
+        if size(&replacement) > MAX_REPLACEMENT || replacement.any(|n| matches!(n, Sym::Now)) {
             continue;
         }
         // A differentiated unknown goes only as a scaled copy of one other (`v = 2e-6 * w`
@@ -262,12 +262,6 @@ fn substitute_zero(e: &Sym, j: usize) -> Sym {
     }
 }
 
-fn reads_now(e: &Sym) -> bool {
-    let mut found = false;
-    e.visit(&mut |n| found |= matches!(n, Sym::Now));
-    found
-}
-
 /// Marks the unknowns that occur in `e` in a nonlinear position: anywhere but under sums,
 /// negation, products and quotients by factors that read no unknown, and branches of a
 /// condition that reads no unknown.
@@ -279,11 +273,7 @@ pub fn mark_nonlinear(e: &Sym, out: &mut [bool]) {
             }
         });
     }
-    let free = |e: &Sym| {
-        let mut reads = false;
-        e.visit(&mut |n| reads |= matches!(n, Sym::X(_) | Sym::Dot(_)));
-        !reads
-    };
+    let free = |e: &Sym| !e.reads_unknown();
     match e {
         Sym::X(_) | Sym::Dot(_) | Sym::Const(_) | Sym::Signal(_) | Sym::Now => {}
         Sym::Un(Un::Neg, a) => mark_nonlinear(a, out),

@@ -266,11 +266,16 @@ impl Sym {
         Sym::If(Box::new(c), Box::new(a), Box::new(b))
     }
 
-    /// True when the expression reads `now` or a `'dot`.
-    pub fn reads_time_or_dot(&self) -> bool {
+    /// True when some node satisfies `pred` (`e.any(|n| matches!(n, Sym::Now))`).
+    pub fn any(&self, pred: impl Fn(&Sym) -> bool) -> bool {
         let mut found = false;
-        self.visit(&mut |e| found |= matches!(e, Sym::Now | Sym::Dot(_)));
+        self.visit(&mut |n| found |= pred(n));
         found
+    }
+
+    /// True when the expression reads an unknown (`x` or `x'`).
+    pub fn reads_unknown(&self) -> bool {
+        self.any(|n| matches!(n, Sym::X(_) | Sym::Dot(_)))
     }
 
     /// Pushes the unknowns (`X` and `Dot` slots) the value can depend on smoothly: those not
