@@ -2,7 +2,7 @@
 //!
 //! Two paths behind one type. Small systems use a plain in-place LU with partial pivoting
 //! (faer's dense LU is blocked and recursive, built for large matrices: about 1 us at n = 8,
-//! where this loop takes 0.4 us); large ones use faer's simplicial sparse LU (left-looking,
+//! where this loop takes 0.3 us); large ones use faer's simplicial sparse LU (left-looking,
 //! partial pivoting, COLAMD column order), which suits circuit matrices: they are very sparse
 //! and produce little fill, so supernodes would not pay (the same choice KLU makes). The column
 //! ordering is computed once per pattern; each `factor` scatters the values into preallocated
@@ -24,12 +24,12 @@ mod sparse;
 /// are factored densely.
 ///
 /// Measured with `cargo bench --bench solver -- crossover` (factor + solve of tridiagonal
-/// N-node ladder matrices, release build, 2-core x86-64 box, dense / sparse): N = 4: 0.14 /
-/// 0.44 us; N = 8: 0.40 / 0.89 us; N = 12: 0.82 / 0.93 us; N = 16: 1.38 / 1.26 us; N = 24:
-/// 3.2 / 1.7 us; N = 32: 5.6 / 2.5 us; N = 128: 99 / 8.9 us. The paths cross near 16 on a
+/// N-node ladder matrices, release build, 2-core x86-64 box, dense / sparse): N = 4: 0.11 /
+/// 0.38 us; N = 8: 0.29 / 0.66 us; N = 16: 0.80 / 1.18 us; N = 24: 1.55 / 1.74 us; N = 32:
+/// 2.5 / 2.4 us; N = 64: 8.8 / 4.3 us; N = 128: 35 / 8.8 us. The paths cross near 30 on a
 /// tridiagonal matrix, the sparse path's best case; denser circuit matrices favour the dense
 /// path a little longer.
-pub const DEFAULT_DENSE_MAX: usize = 16;
+pub const DEFAULT_DENSE_MAX: usize = 28;
 
 /// Tuning of the linear solver.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -72,47 +72,103 @@ enum Backend {
 }
 
 /// Row-major `n x n` LU with partial pivoting, in place: `a` holds `L` (unit diagonal, below)
-/// and `U`; row `k` of the factors is row `perm[k]` of the assembled matrix.
+/// and `U`; row `k` of the factors is row `perm[k]` of the assembled matrix. The loops run on
+/// row slices (no index arithmetic inside, so no bounds checks and the row updates vectorise):
+/// at n = 7 a factorisation is a few hundred flops, and overhead would dominate.
 struct Dense {
     a: Vec<f64>,
+    /// Position in `a` of each pattern entry.
+    at: Vec<usize>,
     perm: Vec<usize>,
+    /// `1 / U[k][k]`: back substitution multiplies (a division's latency, about 15 cycles,
+    /// would sit on the solve's serial dependency chain once per row).
+    inv_diag: Vec<f64>,
     scratch: Vec<f64>,
 }
 
 impl Dense {
+    fn new(n: usize, pattern: &[(usize, usize)]) -> Self {
+        Self {
+            a: vec![0.0; n * n],
+            at: pattern.iter().map(|&(r, c)| r * n + c).collect(),
+            perm: vec![0; n],
+            inv_diag: vec![0.0; n],
+            scratch: vec![0.0; n],
+        }
+    }
+
+    /// Sums `values` into `a` (plus `diag_shift` on the diagonal) and records the largest
+    /// magnitude of each row and column (over the structural entries: the rest are zero).
+    fn assemble(
+        &mut self,
+        n: usize,
+        pattern: &[(usize, usize)],
+        values: &[f64],
+        diag_shift: f64,
+        row_max: &mut [f64],
+        col_max: &mut [f64],
+    ) {
+        self.a.fill(0.0);
+        for (&k, &v) in self.at.iter().zip(values) {
+            self.a[k] += v;
+        }
+        let mut record = |r: usize, c: usize, v: f64| {
+            let v = v.abs();
+            if v > row_max[r] {
+                row_max[r] = v;
+            }
+            if v > col_max[c] {
+                col_max[c] = v;
+            }
+        };
+        if diag_shift != 0.0 {
+            for (i, d) in self.a.iter_mut().step_by(n + 1).enumerate() {
+                *d += diag_shift;
+                record(i, i, *d);
+            }
+        }
+        for (&(r, c), &k) in pattern.iter().zip(&self.at) {
+            record(r, c, self.a[k]);
+        }
+    }
+
     /// Factors `a` in place. Returns the pivot step `j` whose pivot is not above `tol *
     /// col_max[j]` (the matrix counts as singular there), if any.
+    // Rows are sliced by index rather than with `chunks_exact`, whose length division costs
+    // more than a 4 x 4 elimination step.
     fn factor(&mut self, n: usize, pivot_tol: f64, col_max: &[f64]) -> Result<(), usize> {
-        let a = &mut self.a;
         for (k, p) in self.perm.iter_mut().enumerate() {
             *p = k;
         }
+        let a = &mut self.a;
         for j in 0..n {
-            let mut p = j;
-            let mut best = a[j * n + j].abs();
-            for r in j + 1..n {
+            let (mut p, mut best) = (j, f64::NEG_INFINITY);
+            for r in j..n {
                 let v = a[r * n + j].abs();
-                if v > best {
-                    best = v;
-                    p = r;
+                if v > best || v.is_nan() {
+                    (p, best) = (r, v);
                 }
             }
             if best.is_nan() || best <= pivot_tol * col_max[j] {
                 return Err(j);
             }
+            let (top, bottom) = a.split_at_mut((j + 1) * n);
+            let pivot_row = &mut top[j * n..];
             if p != j {
-                for c in 0..n {
-                    a.swap(j * n + c, p * n + c);
-                }
+                let q = (p - j - 1) * n;
+                pivot_row.swap_with_slice(&mut bottom[q..q + n]);
                 self.perm.swap(j, p);
             }
-            let pivot = a[j * n + j];
-            for r in j + 1..n {
-                let l = a[r * n + j] / pivot;
-                a[r * n + j] = l;
+            let inv_pivot = 1.0 / pivot_row[j];
+            self.inv_diag[j] = inv_pivot;
+            let pivot_rest = &pivot_row[j + 1..];
+            for r in 0..n - j - 1 {
+                let row = &mut bottom[r * n + j..(r + 1) * n];
+                let l = row[0] * inv_pivot;
+                row[0] = l;
                 if l != 0.0 {
-                    for c in j + 1..n {
-                        a[r * n + c] -= l * a[j * n + c];
+                    for (x, &u) in row[1..].iter_mut().zip(pivot_rest) {
+                        *x -= l * u;
                     }
                 }
             }
@@ -121,24 +177,19 @@ impl Dense {
     }
 
     fn solve(&mut self, n: usize, rhs: &mut [f64]) {
-        let a = &self.a;
-        for (k, &p) in self.perm.iter().enumerate() {
-            self.scratch[k] = rhs[p];
+        let (a, y) = (&self.a, &mut self.scratch);
+        for (y, &p) in y.iter_mut().zip(&self.perm) {
+            *y = rhs[p];
         }
-        let y = &mut self.scratch;
         for r in 1..n {
-            let mut sum = y[r];
-            for c in 0..r {
-                sum -= a[r * n + c] * y[c];
-            }
-            y[r] = sum;
+            let row = &a[r * n..r * n + r];
+            let dot: f64 = row.iter().zip(&y[..r]).map(|(a, y)| a * y).sum();
+            y[r] -= dot;
         }
         for r in (0..n).rev() {
-            let mut sum = y[r];
-            for c in r + 1..n {
-                sum -= a[r * n + c] * y[c];
-            }
-            y[r] = sum / a[r * n + r];
+            let row = &a[r * n + r + 1..(r + 1) * n];
+            let dot: f64 = row.iter().zip(&y[r + 1..]).map(|(a, y)| a * y).sum();
+            y[r] = (y[r] - dot) * self.inv_diag[r];
         }
         rhs.copy_from_slice(y);
     }
@@ -160,12 +211,7 @@ impl LinearSolver {
         }
         let par = Par::Seq;
         let (backend, req) = if n <= options.dense_max {
-            let dense = Dense {
-                a: vec![0.0; n * n],
-                perm: vec![0; n],
-                scratch: vec![0.0; n],
-            };
-            (Backend::Dense(dense), StackReq::EMPTY)
+            (Backend::Dense(Dense::new(n, pattern)), StackReq::EMPTY)
         } else {
             let sparse = Sparse::new(n, pattern)?;
             let req = StackReq::any_of(&[
@@ -230,26 +276,25 @@ impl LinearSolver {
                 column,
             });
         }
+        if self.n == 0 {
+            // Nothing to factor (and row chunks of width 0 do not exist).
+            self.factored = true;
+            return Ok(());
+        }
         self.row_max.fill(0.0);
         self.col_max.fill(0.0);
         let stack = MemStack::new(&mut self.mem);
         match &mut self.backend {
             Backend::Dense(d) => {
                 let n = self.n;
-                d.a.fill(0.0);
-                for (&(r, c), &v) in self.pattern.iter().zip(values) {
-                    d.a[r * n + c] += v;
-                }
-                for i in 0..n {
-                    d.a[i * n + i] += diag_shift;
-                }
-                for r in 0..n {
-                    for c in 0..n {
-                        let v = d.a[r * n + c].abs();
-                        self.row_max[r] = self.row_max[r].max(v);
-                        self.col_max[c] = self.col_max[c].max(v);
-                    }
-                }
+                d.assemble(
+                    n,
+                    &self.pattern,
+                    values,
+                    diag_shift,
+                    &mut self.row_max,
+                    &mut self.col_max,
+                );
                 check_empty(&self.row_max, &self.col_max, &self.row_used, &self.col_used)?;
                 if let Err(j) = d.factor(n, self.pivot_tol, &self.col_max) {
                     return Err(singular(d.perm[j], j));
@@ -275,6 +320,7 @@ impl LinearSolver {
         }
         let n = self.n;
         match &mut self.backend {
+            _ if n == 0 => {}
             Backend::Dense(d) => d.solve(n, rhs),
             Backend::Sparse(s) => {
                 let stack = MemStack::new(&mut self.mem);
