@@ -1,16 +1,21 @@
 //! Flat instruction tapes: many [`Sym`] trees compiled into one straight-line program over a
 //! register file.
 //!
-//! Registers `0..consts` hold the folded constants (written once at compile time); instruction
-//! `k` writes register `consts + k`. Identical sub-expressions are compiled once (hash-consing
-//! on the instruction), so a residual and its derivatives share work when compiled together.
-//! Evaluation is one pass over the instructions: no allocation, no tree walking. `If` evaluates
-//! both branches and selects (a NaN in the branch not taken is harmless).
+//! Layout of the registers: the folded constants (written once at compile time), then the
+//! inputs the tape reads (each `x_i`, `x'_i`, signal and `now` once, gathered at the start of
+//! every evaluation), then one register per instruction. Identical sub-expressions are
+//! compiled once (hash-consing; operands of `+` and `*` in a canonical order), so a residual
+//! and its derivatives share work when compiled together. A few exact rewrites happen on the
+//! way (`a + -b` is `a - b`, `--a` is `a`, `x / 2^k` is `x * 2^-k`: the tape's values stay
+//! bitwise those of [`Sym::eval`]); instructions no output needs are dropped. Evaluation is one
+//! pass over a flat instruction enum: no allocation, no tree walking. `If` evaluates both
+//! branches and selects (a NaN in the branch not taken is harmless).
 
 use rustc_hash::FxHashMap;
 
 use super::sym::{Bin, Sym, Un, apply_binary, apply_unary};
 
+/// An instruction while compiling: loads are instructions too, so they are hash-consed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 enum Op {
     X(u32),
@@ -22,12 +27,32 @@ enum Op {
     Select(u32, u32, u32),
 }
 
+/// An instruction of the finished tape, operands as register numbers. The arithmetic that
+/// dominates circuit equations has its own variants, so dispatch is a single jump.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Instr {
+    Add(u32, u32),
+    Sub(u32, u32),
+    Mul(u32, u32),
+    Div(u32, u32),
+    Neg(u32),
+    Un(Un, u32),
+    Bin(Bin, u32, u32),
+    Select(u32, u32, u32),
+}
+
 /// A compiled set of expressions; output `i` is the value of the `i`-th compiled root.
 #[derive(Clone, Debug, Default)]
 pub struct Tape {
-    ops: Vec<Op>,
+    instrs: Vec<Instr>,
     regs: Vec<f64>,
-    consts: usize,
+    /// Register of the first input; inputs are gathered in this order: `x`, `x'`, signals,
+    /// `now`.
+    inputs: usize,
+    x_loads: Vec<u32>,
+    dot_loads: Vec<u32>,
+    signal_loads: Vec<u32>,
+    reads_now: bool,
     outputs: Vec<u32>,
 }
 
@@ -66,7 +91,46 @@ impl TapeBuilder {
         Slot::Const(id)
     }
 
+    /// The instruction behind an encoded operand, if it is one.
+    fn op_of(&self, r: u32) -> Option<Op> {
+        (r & CONST_TAG == 0).then(|| self.ops[r as usize])
+    }
+
     fn emit(&mut self, op: Op) -> Slot {
+        // Exact rewrites first; each returns an instruction emitted the usual way.
+        let neg_of = |r: u32| match self.op_of(r) {
+            Some(Op::Un(Un::Neg, a)) => Some(a),
+            _ => None,
+        };
+        let op = match op {
+            Op::Un(Un::Neg, a) => match neg_of(a) {
+                Some(inner) => return decode_slot(inner),
+                None => op,
+            },
+            Op::Bin(Bin::Add, a, b) => match (neg_of(a), neg_of(b)) {
+                (_, Some(nb)) => Op::Bin(Bin::Sub, a, nb),
+                (Some(na), None) => Op::Bin(Bin::Sub, b, na),
+                (None, None) if a > b => Op::Bin(Bin::Add, b, a),
+                (None, None) => op,
+            },
+            Op::Bin(Bin::Sub, a, b) => match neg_of(b) {
+                Some(nb) => return self.emit(Op::Bin(Bin::Add, a, nb)),
+                None => op,
+            },
+            Op::Bin(Bin::Div, a, b) if b & CONST_TAG != 0 => {
+                let c = self.consts[(b & !CONST_TAG) as usize];
+                let inv = 1.0 / c;
+                if exact_reciprocal(c, inv) {
+                    let c = encode(self.constant(inv));
+                    return self.emit(Op::Bin(Bin::Mul, a, c));
+                }
+                op
+            }
+            // `+` and `*` commute exactly: one canonical operand order lets both spellings
+            // share one instruction.
+            Op::Bin(Bin::Mul, a, b) if a > b => Op::Bin(Bin::Mul, b, a),
+            other => other,
+        };
         let next = self.ops.len() as u32;
         let id = *self.op_index.entry(op).or_insert(next);
         if id == next {
@@ -100,27 +164,111 @@ impl TapeBuilder {
         }
     }
 
-    /// Resolves the operand encoding to final register numbers.
+    /// Drops instructions no output needs, moves the loads into the input block and resolves
+    /// operands to final register numbers.
     pub fn finish(self) -> Tape {
-        let consts = self.consts.len() as u32;
-        let fix = |r: u32| decode(r, consts);
-        let ops = self
-            .ops
-            .iter()
-            .map(|op| match *op {
-                Op::Un(u, a) => Op::Un(u, fix(a)),
-                Op::Bin(b, x, y) => Op::Bin(b, fix(x), fix(y)),
-                Op::Select(c, a, b) => Op::Select(fix(c), fix(a), fix(b)),
-                other => other,
+        let consts = self.consts.len();
+        // Liveness: operands always precede their instruction, so one backward pass.
+        let mut live = vec![false; self.ops.len()];
+        for &r in &self.outputs {
+            if r & CONST_TAG == 0 {
+                live[r as usize] = true;
+            }
+        }
+        for k in (0..self.ops.len()).rev() {
+            if !live[k] {
+                continue;
+            }
+            let mut mark = |r: u32| {
+                if r & CONST_TAG == 0 {
+                    live[r as usize] = true;
+                }
+            };
+            match self.ops[k] {
+                Op::Un(_, a) => mark(a),
+                Op::Bin(_, a, b) => {
+                    mark(a);
+                    mark(b);
+                }
+                Op::Select(c, a, b) => {
+                    mark(c);
+                    mark(a);
+                    mark(b);
+                }
+                Op::X(_) | Op::Dot(_) | Op::Signal(_) | Op::Now => {}
+            }
+        }
+        let live_ops = || {
+            (0..self.ops.len())
+                .filter(|&k| live[k])
+                .map(|k| (k, self.ops[k]))
+        };
+        let (mut x_loads, mut dot_loads, mut signal_loads) = (vec![], vec![], vec![]);
+        let mut reads_now = false;
+        for (_, op) in live_ops() {
+            match op {
+                Op::X(i) => x_loads.push(i),
+                Op::Dot(i) => dot_loads.push(i),
+                Op::Signal(s) => signal_loads.push(s),
+                Op::Now => reads_now = true,
+                _ => {}
+            }
+        }
+        // Register of every live instruction: loads in the input block, the rest after it.
+        let mut reg = vec![u32::MAX; self.ops.len()];
+        let inputs = consts as u32;
+        let (mut next_x, mut next_dot) = (inputs, inputs + x_loads.len() as u32);
+        let mut next_signal = next_dot + dot_loads.len() as u32;
+        let now_reg = next_signal + signal_loads.len() as u32;
+        let mut next = now_reg + u32::from(reads_now);
+        let first_instr = next;
+        for (k, op) in live_ops() {
+            let counter = match op {
+                Op::X(_) => &mut next_x,
+                Op::Dot(_) => &mut next_dot,
+                Op::Signal(_) => &mut next_signal,
+                Op::Now => {
+                    reg[k] = now_reg;
+                    continue;
+                }
+                _ => &mut next,
+            };
+            reg[k] = *counter;
+            *counter += 1;
+        }
+        let fix = |r: u32| {
+            if r & CONST_TAG != 0 {
+                r & !CONST_TAG
+            } else {
+                reg[r as usize]
+            }
+        };
+        let instrs: Vec<Instr> = live_ops()
+            .filter_map(|(_, op)| {
+                Some(match op {
+                    Op::Un(Un::Neg, a) => Instr::Neg(fix(a)),
+                    Op::Un(u, a) => Instr::Un(u, fix(a)),
+                    Op::Bin(Bin::Add, a, b) => Instr::Add(fix(a), fix(b)),
+                    Op::Bin(Bin::Sub, a, b) => Instr::Sub(fix(a), fix(b)),
+                    Op::Bin(Bin::Mul, a, b) => Instr::Mul(fix(a), fix(b)),
+                    Op::Bin(Bin::Div, a, b) => Instr::Div(fix(a), fix(b)),
+                    Op::Bin(b, x, y) => Instr::Bin(b, fix(x), fix(y)),
+                    Op::Select(c, a, b) => Instr::Select(fix(c), fix(a), fix(b)),
+                    Op::X(_) | Op::Dot(_) | Op::Signal(_) | Op::Now => return None,
+                })
             })
-            .collect::<Vec<_>>();
+            .collect();
         let mut regs = self.consts;
-        regs.resize(regs.len() + ops.len(), 0.0);
+        regs.resize(first_instr as usize + instrs.len(), 0.0);
         Tape {
             outputs: self.outputs.iter().map(|&r| fix(r)).collect(),
-            ops,
+            instrs,
             regs,
-            consts: consts as usize,
+            inputs: consts,
+            x_loads,
+            dot_loads,
+            signal_loads,
+            reads_now,
         }
     }
 }
@@ -135,41 +283,59 @@ fn encode(s: Slot) -> u32 {
     }
 }
 
-fn decode(r: u32, consts: u32) -> u32 {
+/// True when `x / c == x * inv` for every `x`: `c` and `inv = 1 / c` are both normal powers
+/// of two, so both sides are the same exact scaling, rounded once.
+fn exact_reciprocal(c: f64, inv: f64) -> bool {
+    const MANTISSA: u64 = (1 << 52) - 1;
+    c.is_normal() && inv.is_normal() && c.to_bits() & MANTISSA == 0
+}
+
+/// The slot an encoded operand stands for.
+fn decode_slot(r: u32) -> Slot {
     if r & CONST_TAG != 0 {
-        r & !CONST_TAG
+        Slot::Const(r & !CONST_TAG)
     } else {
-        r + consts
+        Slot::Op(r)
     }
 }
 
 impl Tape {
-    /// Number of instructions (for tests and reports).
+    /// Number of computing instructions, loads not counted (for tests and reports).
     #[cfg(test)]
     pub fn instructions(&self) -> usize {
-        self.ops.len()
+        self.instrs.len()
     }
 
     /// Runs the tape. Indices inside were built from the same system's slots, so `x`, `xdot`
     /// and `signals` must have the system's sizes (the caller's invariant).
     pub fn eval(&mut self, t: f64, x: &[f64], xdot: &[f64], signals: &[f64]) {
-        let base = self.consts;
-        for k in 0..self.ops.len() {
-            let r = &self.regs;
-            let v = match self.ops[k] {
-                Op::X(i) => x[i as usize],
-                Op::Dot(i) => xdot[i as usize],
-                Op::Signal(s) => signals[s as usize],
-                Op::Now => t,
-                // The arithmetic that dominates circuit equations, without a second dispatch.
-                Op::Bin(Bin::Add, a, b) => r[a as usize] + r[b as usize],
-                Op::Bin(Bin::Sub, a, b) => r[a as usize] - r[b as usize],
-                Op::Bin(Bin::Mul, a, b) => r[a as usize] * r[b as usize],
-                Op::Bin(Bin::Div, a, b) => r[a as usize] / r[b as usize],
-                Op::Un(Un::Neg, a) => -r[a as usize],
-                Op::Un(op, a) => apply_unary(op, r[a as usize]),
-                Op::Bin(op, a, b) => apply_binary(op, r[a as usize], r[b as usize]),
-                Op::Select(c, a, b) => {
+        let regs = &mut self.regs;
+        let mut k = self.inputs;
+        for (loads, from) in [(&self.x_loads, x), (&self.dot_loads, xdot)] {
+            for &i in loads {
+                regs[k] = from[i as usize];
+                k += 1;
+            }
+        }
+        for &s in &self.signal_loads {
+            regs[k] = signals[s as usize];
+            k += 1;
+        }
+        if self.reads_now {
+            regs[k] = t;
+            k += 1;
+        }
+        for &instr in &self.instrs {
+            let r = &*regs;
+            let v = match instr {
+                Instr::Add(a, b) => r[a as usize] + r[b as usize],
+                Instr::Sub(a, b) => r[a as usize] - r[b as usize],
+                Instr::Mul(a, b) => r[a as usize] * r[b as usize],
+                Instr::Div(a, b) => r[a as usize] / r[b as usize],
+                Instr::Neg(a) => -r[a as usize],
+                Instr::Un(op, a) => apply_unary(op, r[a as usize]),
+                Instr::Bin(op, a, b) => apply_binary(op, r[a as usize], r[b as usize]),
+                Instr::Select(c, a, b) => {
                     if r[c as usize] != 0.0 {
                         r[a as usize]
                     } else {
@@ -177,7 +343,8 @@ impl Tape {
                     }
                 }
             };
-            self.regs[base + k] = v;
+            regs[k] = v;
+            k += 1;
         }
     }
 

@@ -337,6 +337,7 @@ pub fn stats_table(stats: &SimStats) -> String {
         ("rejected steps", stats.rejected_steps),
         ("Newton iterations", stats.newton_iterations),
         ("factorizations", stats.factorizations),
+        ("residual evaluations", stats.residual_evaluations),
         ("events", stats.events),
         ("delta cycles", stats.delta_cycles),
         ("breaks", stats.breaks),
@@ -460,7 +461,7 @@ mod tests {
             "simulated tb to 6 s in 0.50 s wall time: 1234 accepted steps, 5678 Newton iterations; wrote a.csv, p.svg"
         );
         let table = stats_table(&result.stats);
-        assert_eq!(table.lines().count(), 7);
+        assert_eq!(table.lines().count(), 8);
         assert!(table.contains("breaks") && table.contains("5678"));
     }
 }

@@ -414,6 +414,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             rejected_steps: solver.rejected_steps + solver.newton_failures,
             newton_iterations: solver.newton_iterations,
             factorizations: solver.factorizations,
+            residual_evaluations: solver.residual_evals,
             events: self.kernel.events,
             delta_cycles: self.kernel.delta_cycles,
             breaks: self.kernel.breaks_total,

@@ -137,7 +137,42 @@ fn the_tape_shares_common_subexpressions() {
     tb.push(&e);
     tb.push(&derivative(&e, Var::X(0)));
     let tape = tb.finish();
-    assert_eq!(tape.instructions(), 2); // load x, exp
+    assert_eq!(tape.instructions(), 1); // exp (the load of x is an input)
+}
+
+#[test]
+fn the_tape_rewrites_exactly_and_drops_dead_instructions() {
+    use crate::analog::sym::Bin;
+    let (x0, x1) = (Sym::X(0), Sym::X(1));
+    let raw = |op, a: Sym, b: Sym| Sym::Bin(op, Box::new(a), Box::new(b));
+    let neg = |a: Sym| Sym::Un(crate::analog::sym::Un::Neg, Box::new(a));
+    let roots = [
+        // x0 + -x1: one subtraction (the negation it came with is dead).
+        raw(Bin::Add, x0.clone(), neg(x1.clone())),
+        // --x0: no instruction at all.
+        neg(neg(x0.clone())),
+        // x0 * x1 and x1 * x0: one instruction. x0 / 4: a multiplication by 0.25.
+        raw(Bin::Mul, x0.clone(), x1.clone()),
+        raw(Bin::Mul, x1.clone(), x0.clone()),
+        raw(Bin::Div, x0.clone(), Sym::Const(4.0)),
+        // x0 / 3 stays a division (1/3 is not exact).
+        raw(Bin::Div, x0.clone(), Sym::Const(3.0)),
+    ];
+    let mut tb = TapeBuilder::default();
+    for r in &roots {
+        tb.push(r);
+    }
+    let mut tape = tb.finish();
+    // sub, mul (shared), mul by 0.25, div.
+    assert_eq!(tape.instructions(), 4);
+    let (x, xdot) = ([0.7, -1.3], [0.0; 2]);
+    tape.eval(0.0, &x, &xdot, &[]);
+    for (i, r) in roots.iter().enumerate() {
+        assert_eq!(
+            tape.output(i).to_bits(),
+            r.eval(0.0, &x, &xdot, &[]).to_bits()
+        );
+    }
 }
 
 #[test]
