@@ -176,20 +176,30 @@ impl Dense {
         Ok(())
     }
 
+    /// Forward and back substitution by columns: each solved `y[c]` updates the rows below
+    /// (above) it, independent updates the CPU overlaps, where row-wise dot products would be
+    /// one serial chain of multiply-adds per row.
     fn solve(&mut self, n: usize, rhs: &mut [f64]) {
         let (a, y) = (&self.a, &mut self.scratch);
         for (y, &p) in y.iter_mut().zip(&self.perm) {
             *y = rhs[p];
         }
-        for r in 1..n {
-            let row = &a[r * n..r * n + r];
-            let dot: f64 = row.iter().zip(&y[..r]).map(|(a, y)| a * y).sum();
-            y[r] -= dot;
+        for c in 0..n {
+            let yc = y[c];
+            if yc != 0.0 {
+                for r in c + 1..n {
+                    y[r] -= a[r * n + c] * yc;
+                }
+            }
         }
-        for r in (0..n).rev() {
-            let row = &a[r * n + r + 1..(r + 1) * n];
-            let dot: f64 = row.iter().zip(&y[r + 1..]).map(|(a, y)| a * y).sum();
-            y[r] = (y[r] - dot) * self.inv_diag[r];
+        for c in (0..n).rev() {
+            let yc = y[c] * self.inv_diag[c];
+            y[c] = yc;
+            if yc != 0.0 {
+                for r in 0..c {
+                    y[r] -= a[r * n + c] * yc;
+                }
+            }
         }
         rhs.copy_from_slice(y);
     }

@@ -222,8 +222,10 @@ impl Transient {
 
         // Candidate steps per order, uncapped: from the error estimate for the order used, from
         // divided differences for the other one. Switching needs a 20% gain.
-        let exp = -1.0 / (k as f64 + 1.0);
-        let mut h_next = h * 0.8 * err.max(1e-12).powf(exp);
+        // err^(-1/(k+1)) by sqrt and cbrt: `powf` costs several times more.
+        let err = err.max(1e-12);
+        let shrink = if k == 1 { err.sqrt() } else { err.cbrt() };
+        let mut h_next = h * 0.8 / shrink;
         let mut order = k;
         if k == 1 && self.opts.max_order >= 2 && self.nhist >= 4 {
             let d3 = self.divided_difference_norm(3);
@@ -259,6 +261,13 @@ impl Transient {
     /// (about `x^(m) / m!`), with the weights of the newest point.
     fn divided_difference_norm(&mut self, m: usize) -> f64 {
         let t = self.hist_t;
+        // The divisors depend on the times only: their reciprocals once, not per unknown.
+        let mut inv = [[0.0; 4]; 4];
+        for level in 1..=m {
+            for j in 0..=(m - level) {
+                inv[level][j] = 1.0 / (t[j] - t[j + level]);
+            }
+        }
         for i in 0..self.n {
             let mut f = [0.0; 4];
             for (j, fj) in f.iter_mut().enumerate().take(m + 1) {
@@ -266,7 +275,7 @@ impl Transient {
             }
             for level in 1..=m {
                 for j in 0..=(m - level) {
-                    f[j] = (f[j] - f[j + 1]) / (t[j] - t[j + level]);
+                    f[j] = (f[j] - f[j + 1]) * inv[level][j];
                 }
             }
             self.scratch[i] = f[0];
