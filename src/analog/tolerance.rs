@@ -42,9 +42,9 @@ pub fn group_abstol(group: &str) -> Option<f64> {
 pub fn per_unknown(design: &Design, unknowns: &[Unknown]) -> Vec<Option<f64>> {
     let nature_of =
         |t: crate::design::TerminalId| &design.natures[design.terminals[t.index()].nature.index()];
-    // Nearly every unknown names the same few group strings (its nature's): the last lookup
-    // is remembered by address, so a large circuit does not compare names case-insensitively
-    // against the table once per unknown.
+    // Nearly every unknown names the same group as the one before (each quantity holds its
+    // own copy of the name): the last lookup is remembered, so a large circuit compares one
+    // name exactly per unknown instead of searching the table case-insensitively.
     let mut last: Option<(&str, Option<f64>)> = None;
     unknowns
         .iter()
@@ -66,7 +66,7 @@ pub fn per_unknown(design: &Design, unknowns: &[Unknown]) -> Vec<Option<f64>> {
             };
             let group = group?;
             match last {
-                Some((name, abstol)) if std::ptr::eq(name, group) => abstol,
+                Some((name, abstol)) if name == group => abstol,
                 _ => {
                     let abstol = group_abstol(group);
                     last = Some((group, abstol));
