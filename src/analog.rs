@@ -151,23 +151,34 @@ fn derivatives(residuals: &[Sym], n: usize) -> Derivatives {
     let mut differential = vec![false; n];
     let mut pattern = Vec::new();
     let mut exprs = Vec::new();
-    let mut cols = Vec::new();
+    // (column, read as x', read as x) per occurrence: a tree that does not read `x_j` (or
+    // `x_j'`) has derivative 0 by it, so only the forms that occur are differentiated.
+    let mut cols: Vec<(usize, bool)> = Vec::new();
     for (row, r) in residuals.iter().enumerate() {
         cols.clear();
         r.visit(&mut |e| match e {
-            Sym::X(j) => cols.push(*j),
+            Sym::X(j) => cols.push((*j, false)),
             Sym::Dot(j) => {
                 differential[*j] = true;
-                cols.push(*j);
+                cols.push((*j, true));
             }
             _ => {}
         });
         cols.sort_unstable();
         cols.dedup();
-        for &col in &cols {
+        for (k, &(col, is_dot)) in cols.iter().enumerate() {
+            if k > 0 && cols[k - 1].0 == col {
+                continue; // (col, false) came first and handled both forms
+            }
+            let reads_x = !is_dot;
+            let reads_dot = is_dot || cols.get(k + 1) == Some(&(col, true));
             let nonzero = |d: Sym| (d.as_const() != Some(0.0)).then_some(d);
-            let dx = nonzero(derivative(r, Var::X(col)));
-            let ddot = nonzero(derivative(r, Var::Dot(col)));
+            let dx = reads_x
+                .then(|| derivative(r, Var::X(col)))
+                .and_then(nonzero);
+            let ddot = reads_dot
+                .then(|| derivative(r, Var::Dot(col)))
+                .and_then(nonzero);
             if dx.is_some() || ddot.is_some() {
                 pattern.push((row, col));
                 exprs.push((dx, ddot));
@@ -265,7 +276,6 @@ impl AnalogSystem {
                 &structure::Names {
                     design,
                     unknowns: &asm.unknowns,
-                    names: &asm.names,
                     origins: &asm.origins,
                 },
             )?;
@@ -322,10 +332,10 @@ impl AnalogSystem {
         let mut names = Vec::new();
         let mut unknowns = Vec::new();
         let all_unknowns = asm.unknowns.clone();
-        for (j, (name, unknown)) in asm.names.into_iter().zip(asm.unknowns).enumerate() {
+        for (j, unknown) in asm.unknowns.into_iter().enumerate() {
             if elim.replacement[j].is_none() {
                 live[j] = unknowns.len();
-                names.push(name);
+                names.push(unknown.name(design));
                 unknowns.push(unknown);
             }
         }

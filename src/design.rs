@@ -163,13 +163,15 @@ pub struct Terminal {
 pub struct Quantity {
     pub name: String,
     pub kind: QuantityKind,
-    /// Tolerance group from the quantity's subtype (`"DEFAULT_CURRENT"`), if any.
-    pub tolerance: Option<String>,
+    /// Tolerance group from the quantity's subtype (`"DEFAULT_CURRENT"`), if any; shared
+    /// like `subtype`.
+    pub tolerance: Option<Arc<str>>,
     /// Name of the quantity's subtype (`voltage`, `angular_velocity`, `real`), shared by the
     /// quantities of that subtype (`Arc`: a design is sent to the test runner's threads).
     pub subtype: Arc<str>,
-    /// Unit symbol from the subtype's `symbol` attribute (`"V"`, `"rad/s"`), if declared.
-    pub unit: Option<String>,
+    /// Unit symbol from the subtype's `symbol` attribute (`"V"`, `"rad/s"`), if declared;
+    /// shared like `subtype`.
+    pub unit: Option<Arc<str>>,
     /// The `:= expr` default, used as the Newton starting guess (not an initial condition).
     pub initial_guess: Option<f64>,
     pub span: Span,

@@ -38,10 +38,10 @@ pub enum Origin {
     Delayed(usize),
 }
 
-/// Unknowns and residuals, not yet compiled.
+/// Unknowns and residuals, not yet compiled. Names are made on demand ([`Unknown::name`]):
+/// only the survivors of elimination and diagnostics need them.
 pub struct Assembled {
     pub unknowns: Vec<Unknown>,
-    pub names: Vec<String>,
     /// Slot of each quantity, by `QuantityId`.
     pub quantity_slot: Vec<usize>,
     pub residuals: Vec<Sym>,
@@ -83,6 +83,14 @@ impl Origin {
 }
 
 impl Unknown {
+    /// The quantity's name, or `v(<terminal>)` for a terminal potential.
+    pub fn name(self, design: &Design) -> String {
+        match self {
+            Unknown::Potential(t) => format!("v({})", design.terminals[t.index()].name),
+            Unknown::Quantity(q) => design.quantities[q.index()].name.clone(),
+        }
+    }
+
     pub fn span(self, design: &Design) -> Span {
         match self {
             Unknown::Potential(t) => design.terminals[t.index()].span,
@@ -183,21 +191,18 @@ pub fn assemble(design: &Design) -> Result<Assembled, Vec<AnalogError>> {
         }
     }
     let mut unknowns = Vec::new();
-    let mut names = Vec::new();
     let mut potential_slot = vec![None; design.terminals.len()];
-    for (i, t) in design.terminals.iter().enumerate() {
+    for i in 0..design.terminals.len() {
         let id = TerminalId(i as u32);
         if used[i] && !is_reference(design, id) {
             potential_slot[i] = Some(unknowns.len());
             unknowns.push(Unknown::Potential(id));
-            names.push(format!("v({})", t.name));
         }
     }
     let mut quantity_slot = Vec::with_capacity(design.quantities.len());
-    for (i, q) in design.quantities.iter().enumerate() {
+    for i in 0..design.quantities.len() {
         quantity_slot.push(unknowns.len());
         unknowns.push(Unknown::Quantity(QuantityId(i as u32)));
-        names.push(q.name.clone());
     }
 
     let floating = floating_sets(design, &potential_slot);
@@ -277,7 +282,6 @@ pub fn assemble(design: &Design) -> Result<Assembled, Vec<AnalogError>> {
     }
     Ok(Assembled {
         unknowns,
-        names,
         quantity_slot,
         residuals,
         origins,

@@ -47,42 +47,66 @@ pub fn derivative(e: &Sym, var: Var) -> Sym {
 }
 
 /// `d op(a)` given `da` (nonzero) and `e = op(a)` itself for rules that reuse the value.
+/// Operands are cloned only by the rules that keep them: most nodes of a circuit's equations
+/// are sums, negations and products by constants, whose derivatives need neither.
 fn unary(op: Un, a: &Sym, e: &Sym, da: Sym) -> Sym {
-    let a = a.clone();
+    let a = || a.clone();
     let sq = |s: Sym| Sym::mul(s.clone(), s);
     let factor = match op {
         Un::Neg => return Sym::neg(da),
-        Un::Abs => Sym::un(Un::Sign, a),
+        Un::Abs => Sym::un(Un::Sign, a()),
         Un::Not | Un::Floor | Un::Ceil | Un::Round | Un::Trunc | Un::Sign => return c(0.0),
         Un::Exp => e.clone(),
-        Un::Log => return Sym::div(da, a),
-        Un::Log10 => return Sym::div(da, Sym::mul(a, c(std::f64::consts::LN_10))),
+        Un::Log => return Sym::div(da, a()),
+        Un::Log10 => return Sym::div(da, Sym::mul(a(), c(std::f64::consts::LN_10))),
         Un::Sqrt => return Sym::div(da, Sym::mul(c(2.0), e.clone())),
-        Un::Sin => Sym::un(Un::Cos, a),
-        Un::Cos => Sym::neg(Sym::un(Un::Sin, a)),
+        Un::Sin => Sym::un(Un::Cos, a()),
+        Un::Cos => Sym::neg(Sym::un(Un::Sin, a())),
         Un::Tan => Sym::add(c(1.0), sq(e.clone())),
-        Un::Asin => return Sym::div(da, Sym::un(Un::Sqrt, Sym::sub(c(1.0), sq(a)))),
-        Un::Acos => return Sym::neg(Sym::div(da, Sym::un(Un::Sqrt, Sym::sub(c(1.0), sq(a))))),
-        Un::Atan => return Sym::div(da, Sym::add(c(1.0), sq(a))),
-        Un::Sinh => Sym::un(Un::Cosh, a),
-        Un::Cosh => Sym::un(Un::Sinh, a),
+        Un::Asin => return Sym::div(da, Sym::un(Un::Sqrt, Sym::sub(c(1.0), sq(a())))),
+        Un::Acos => return Sym::neg(Sym::div(da, Sym::un(Un::Sqrt, Sym::sub(c(1.0), sq(a()))))),
+        Un::Atan => return Sym::div(da, Sym::add(c(1.0), sq(a()))),
+        Un::Sinh => Sym::un(Un::Cosh, a()),
+        Un::Cosh => Sym::un(Un::Sinh, a()),
         Un::Tanh => Sym::sub(c(1.0), sq(e.clone())),
-        Un::Asinh => return Sym::div(da, Sym::un(Un::Sqrt, Sym::add(sq(a), c(1.0)))),
-        Un::Acosh => return Sym::div(da, Sym::un(Un::Sqrt, Sym::sub(sq(a), c(1.0)))),
-        Un::Atanh => return Sym::div(da, Sym::sub(c(1.0), sq(a))),
+        Un::Asinh => return Sym::div(da, Sym::un(Un::Sqrt, Sym::add(sq(a()), c(1.0)))),
+        Un::Acosh => return Sym::div(da, Sym::un(Un::Sqrt, Sym::sub(sq(a()), c(1.0)))),
+        Un::Atanh => return Sym::div(da, Sym::sub(c(1.0), sq(a()))),
     };
     Sym::mul(factor, da)
 }
 
-/// `d op(a, b)` for the arithmetic operations, `e = op(a, b)`.
+/// `d * other` without cloning `other` when `d` is 0: the product folds to 0 whatever `other`
+/// is, unless `other` is a constant, which folds numerically (`0 * inf` is NaN).
+fn scaled(d: Sym, other: &Sym) -> Sym {
+    match d.is_const(0.0) && other.as_const().is_none() {
+        true => c(0.0),
+        false => Sym::mul(d, other.clone()),
+    }
+}
+
+/// `other * d`, as [`scaled`].
+fn scaled_by(other: &Sym, d: Sym) -> Sym {
+    match d.is_const(0.0) && other.as_const().is_none() {
+        true => c(0.0),
+        false => Sym::mul(other.clone(), d),
+    }
+}
+
+/// `d op(a, b)` for the arithmetic operations, `e = op(a, b)`. Operands are cloned only by the
+/// rules that keep them: sums and products or quotients by constants, most of a circuit's
+/// nodes, need neither operand (or only the constant).
 fn binary(op: Bin, a: &Sym, b: &Sym, e: &Sym, da: Sym, db: Sym) -> Sym {
+    match op {
+        Bin::Add => return Sym::add(da, db),
+        Bin::Sub => return Sym::sub(da, db),
+        Bin::Mul => return Sym::add(scaled(da, b), scaled_by(a, db)),
+        // (da - (a/b) db) / b reuses the quotient.
+        Bin::Div => return Sym::div(Sym::sub(da, scaled_by(e, db)), b.clone()),
+        _ => {}
+    }
     let (a, b) = (a.clone(), b.clone());
     match op {
-        Bin::Add => Sym::add(da, db),
-        Bin::Sub => Sym::sub(da, db),
-        Bin::Mul => Sym::add(Sym::mul(da, b), Sym::mul(a, db)),
-        // (da - (a/b) db) / b reuses the quotient.
-        Bin::Div => Sym::div(Sym::sub(da, Sym::mul(e.clone(), db)), b),
         Bin::Pow => {
             if db.as_const() == Some(0.0) {
                 // b a^(b-1) da: defined for negative a with integer b.

@@ -28,7 +28,8 @@ pub fn listing(sys: &AnalogSystem, design: &Design, sources: &SourceMap) -> Stri
     let Ok(asm) = build::assemble(design) else {
         return out;
     };
-    let n = asm.names.len();
+    let names: Vec<String> = asm.unknowns.iter().map(|u| u.name(design)).collect();
+    let n = names.len();
     let mut differential = vec![false; n];
     for r in &asm.residuals {
         r.visit(&mut |e| {
@@ -37,10 +38,10 @@ pub fn listing(sys: &AnalogSystem, design: &Design, sources: &SourceMap) -> Stri
             }
         });
     }
-    let width = asm.names.iter().map(String::len).max().unwrap_or(0);
+    let width = names.iter().map(String::len).max().unwrap_or(0);
     // Writing into a String cannot fail.
     let _ = writeln!(out, "unknowns ({n}):");
-    for (i, name) in asm.names.iter().enumerate() {
+    for (i, name) in names.iter().enumerate() {
         let kind = if differential[i] {
             "differential"
         } else {
@@ -50,7 +51,7 @@ pub fn listing(sys: &AnalogSystem, design: &Design, sources: &SourceMap) -> Stri
     }
     let _ = writeln!(out, "equations ({}):", asm.residuals.len());
     let printer = Printer {
-        names: &asm.names,
+        names: &names,
         design,
     };
     let origins: Vec<String> = asm
@@ -85,13 +86,13 @@ pub fn listing(sys: &AnalogSystem, design: &Design, sources: &SourceMap) -> Stri
     let width = sys
         .eliminated
         .iter()
-        .map(|e| asm.names[e.unknown].len())
+        .map(|e| names[e.unknown].len())
         .max()
         .unwrap_or(0);
     for e in &sys.eliminated {
         let mut formula = String::new();
         printer.print(&e.replacement, 0, &mut formula);
-        let name = &asm.names[e.unknown];
+        let name = &names[e.unknown];
         let _ = writeln!(
             out,
             "  {:>3}  {name:<width$} = {formula}   (equation {})",

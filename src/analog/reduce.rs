@@ -64,7 +64,7 @@ pub fn eliminate(residuals: Vec<Sym>, candidates: &Candidates<'_>) -> Eliminatio
     let mut solved_from = vec![None; n];
     let mut kept = Vec::new();
     for (row, r) in residuals.into_iter().enumerate() {
-        let r = state.resolve(&r);
+        let r = state.resolve(r);
         match choose(&r, candidates, &differentiated) {
             Some((j, replacement)) => {
                 if differentiated[j] {
@@ -82,11 +82,11 @@ pub fn eliminate(residuals: Vec<Sym>, candidates: &Candidates<'_>) -> Eliminatio
     }
     // Equations kept early may read unknowns eliminated later.
     for (_, r) in &mut kept {
-        *r = state.resolve(r);
+        *r = state.resolve(std::mem::replace(r, Sym::Const(0.0)));
     }
     for j in 0..n {
         if let Some(r) = state.replacement[j].take() {
-            state.replacement[j] = Some(state.resolve(&r));
+            state.replacement[j] = Some(state.resolve(r));
         }
     }
     Elimination {
@@ -133,12 +133,13 @@ struct Resolver {
 
 impl Resolver {
     /// `e` with every eliminated unknown replaced (recursively); stores resolved replacements
-    /// back so that chains are walked once.
-    fn resolve(&mut self, e: &Sym) -> Sym {
-        if !self.reads_eliminated(e) {
-            return e.clone();
+    /// back so that chains are walked once. Takes `e` by value: a tree that reads nothing
+    /// eliminated (most, early in assembly order) is returned as it is, not copied.
+    fn resolve(&mut self, e: Sym) -> Sym {
+        if !self.reads_eliminated(&e) {
+            return e;
         }
-        substitute(e, &mut |j| self.resolved(j))
+        substitute(&e, &mut |j| self.resolved(j))
     }
 
     fn resolved(&mut self, j: usize) -> Option<Sym> {
@@ -147,7 +148,7 @@ impl Resolver {
             return Some(stored.clone());
         }
         let r = self.replacement[j].take()?;
-        let r = self.resolve(&r);
+        let r = self.resolve(r);
         self.replacement[j] = Some(r.clone());
         Some(r)
     }

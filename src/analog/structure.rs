@@ -12,21 +12,67 @@ use super::build::{Origin, Unknown};
 use super::error::AnalogError;
 use crate::design::Design;
 
-/// The incidence of equations (rows) and unknowns (columns).
+/// The incidence of equations (rows) and unknowns (columns), both ways in compressed form
+/// (offsets into one index array each: two allocations, not one per equation and unknown).
 pub struct Incidence {
-    pub rows: Vec<Vec<usize>>,
-    pub cols: Vec<Vec<usize>>,
+    row_start: Vec<usize>,
+    row_cols: Vec<usize>,
+    col_start: Vec<usize>,
+    col_rows: Vec<usize>,
+}
+
+/// `(start, indices)` of a compressed adjacency: the entries of `key(p)` for each pattern entry
+/// `p`, grouped by `key`, in pattern order within each group.
+fn compress(
+    n: usize,
+    pattern: &[(usize, usize)],
+    key: impl Fn(&(usize, usize)) -> (usize, usize),
+) -> (Vec<usize>, Vec<usize>) {
+    let mut start = vec![0; n + 1];
+    for p in pattern {
+        start[key(p).0 + 1] += 1;
+    }
+    for k in 0..n {
+        start[k + 1] += start[k];
+    }
+    let mut next = start.clone();
+    let mut indices = vec![0; pattern.len()];
+    for p in pattern {
+        let (k, v) = key(p);
+        indices[next[k]] = v;
+        next[k] += 1;
+    }
+    (start, indices)
 }
 
 impl Incidence {
     pub fn new(n_rows: usize, n_cols: usize, pattern: &[(usize, usize)]) -> Incidence {
-        let mut rows = vec![Vec::new(); n_rows];
-        let mut cols = vec![Vec::new(); n_cols];
-        for &(r, c) in pattern {
-            rows[r].push(c);
-            cols[c].push(r);
+        let (row_start, row_cols) = compress(n_rows, pattern, |&(r, c)| (r, c));
+        let (col_start, col_rows) = compress(n_cols, pattern, |&(r, c)| (c, r));
+        Incidence {
+            row_start,
+            row_cols,
+            col_start,
+            col_rows,
         }
-        Incidence { rows, cols }
+    }
+
+    pub fn n_rows(&self) -> usize {
+        self.row_start.len() - 1
+    }
+
+    pub fn n_cols(&self) -> usize {
+        self.col_start.len() - 1
+    }
+
+    /// The columns of row `r`, in pattern order.
+    pub fn row(&self, r: usize) -> &[usize] {
+        &self.row_cols[self.row_start[r]..self.row_start[r + 1]]
+    }
+
+    /// The rows of column `c`, in pattern order.
+    pub fn col(&self, c: usize) -> &[usize] {
+        &self.col_rows[self.col_start[c]..self.col_start[c + 1]]
     }
 }
 
@@ -38,12 +84,12 @@ pub struct Matching {
 
 /// Maximum bipartite matching by repeated breadth-first augmenting-path search.
 pub fn maximum_matching(inc: &Incidence) -> Matching {
-    let (nr, nc) = (inc.rows.len(), inc.cols.len());
+    let (nr, nc) = (inc.n_rows(), inc.n_cols());
     let mut row_match = vec![None; nr];
     let mut col_match: Vec<Option<usize>> = vec![None; nc];
     // Cheap greedy start.
     for (r, matched) in row_match.iter_mut().enumerate() {
-        if let Some(&c) = inc.rows[r].iter().find(|&&c| col_match[c].is_none()) {
+        if let Some(&c) = inc.row(r).iter().find(|&&c| col_match[c].is_none()) {
             *matched = Some(c);
             col_match[c] = Some(r);
         }
@@ -66,7 +112,7 @@ pub fn maximum_matching(inc: &Incidence) -> Matching {
         queue.push_back(start);
         let mut free_col = None;
         'search: while let Some(r) = queue.pop_front() {
-            for &c in &inc.rows[r] {
+            for &c in inc.row(r) {
                 if parent[c] != usize::MAX {
                     continue;
                 }
@@ -100,7 +146,7 @@ pub fn maximum_matching(inc: &Incidence) -> Matching {
 /// Rows and columns of the over-determined part (from unmatched rows) or, with `from_cols`,
 /// the under-determined part (from unmatched columns).
 fn alternating_reach(inc: &Incidence, m: &Matching, from_cols: bool) -> (Vec<usize>, Vec<usize>) {
-    let (nr, nc) = (inc.rows.len(), inc.cols.len());
+    let (nr, nc) = (inc.n_rows(), inc.n_cols());
     let mut seen_r = vec![false; nr];
     let mut seen_c = vec![false; nc];
     let mut queue = VecDeque::new();
@@ -112,7 +158,7 @@ fn alternating_reach(inc: &Incidence, m: &Matching, from_cols: bool) -> (Vec<usi
             }
         }
         while let Some(c) = queue.pop_front() {
-            for &r in &inc.cols[c] {
+            for &r in inc.col(c) {
                 if !seen_r[r] {
                     seen_r[r] = true;
                     if let Some(next) = m.row_match[r]
@@ -132,7 +178,7 @@ fn alternating_reach(inc: &Incidence, m: &Matching, from_cols: bool) -> (Vec<usi
             }
         }
         while let Some(r) = queue.pop_front() {
-            for &c in &inc.rows[r] {
+            for &c in inc.row(r) {
                 if !seen_c[c] {
                     seen_c[c] = true;
                     if let Some(next) = m.col_match[c]
@@ -153,7 +199,6 @@ fn alternating_reach(inc: &Incidence, m: &Matching, from_cols: bool) -> (Vec<usi
 pub struct Names<'a> {
     pub design: &'a Design,
     pub unknowns: &'a [Unknown],
-    pub names: &'a [String],
     pub origins: &'a [Origin],
 }
 
@@ -167,16 +212,19 @@ impl Names<'_> {
     }
 
     fn unknowns(&self, cols: &[usize]) -> String {
-        let list: Vec<&str> = cols.iter().map(|&c| self.names[c].as_str()).collect();
+        let list: Vec<String> = cols
+            .iter()
+            .map(|&c| self.unknowns[c].name(self.design))
+            .collect();
         list.join(", ")
     }
 }
 
 /// The count rule, then the matching; every structural defect as a diagnostic.
 pub fn check(inc: &Incidence, names: &Names<'_>) -> Result<(), Vec<AnalogError>> {
-    let (ne, nu) = (inc.rows.len(), inc.cols.len());
+    let (ne, nu) = (inc.n_rows(), inc.n_cols());
     if ne != nu {
-        let unused: Vec<usize> = (0..nu).filter(|&c| inc.cols[c].is_empty()).collect();
+        let unused: Vec<usize> = (0..nu).filter(|&c| inc.col(c).is_empty()).collect();
         let (span, label) = match (unused.first(), names.origins.first()) {
             (Some(&c), _) => (
                 names.unknowns[c].span(names.design),

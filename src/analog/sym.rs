@@ -196,7 +196,7 @@ impl Sym {
         }
     }
 
-    fn is_const(&self, v: f64) -> bool {
+    pub fn is_const(&self, v: f64) -> bool {
         self.as_const() == Some(v)
     }
 

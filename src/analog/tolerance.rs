@@ -42,6 +42,10 @@ pub fn group_abstol(group: &str) -> Option<f64> {
 pub fn per_unknown(design: &Design, unknowns: &[Unknown]) -> Vec<Option<f64>> {
     let nature_of =
         |t: crate::design::TerminalId| &design.natures[design.terminals[t.index()].nature.index()];
+    // Nearly every unknown names the same group as the one before (each quantity holds its
+    // own copy of the name): the last lookup is remembered, so a large circuit compares one
+    // name exactly per unknown instead of searching the table case-insensitively.
+    let mut last: Option<(&str, Option<f64>)> = None;
     unknowns
         .iter()
         .map(|u| {
@@ -60,7 +64,15 @@ pub fn per_unknown(design: &Design, unknowns: &[Unknown]) -> Vec<Option<f64>> {
                     })
                 }
             };
-            group.and_then(group_abstol)
+            let group = group?;
+            match last {
+                Some((name, abstol)) if name == group => abstol,
+                _ => {
+                    let abstol = group_abstol(group);
+                    last = Some((group, abstol));
+                    abstol
+                }
+            }
         })
         .collect()
 }

@@ -3,6 +3,7 @@
 //! and `Q'above(E)`.
 
 use std::rc::Rc;
+use std::sync::Arc;
 
 use crate::ast::{self, BranchName, EntityNames, Ident, NatureDef, QuantityDecl};
 use crate::design::{
@@ -82,8 +83,8 @@ impl<'a> Elab<'a> {
         });
         self.design.natures.push(Nature {
             name: info.name.clone(),
-            across_tolerance: info.across.tolerance.clone(),
-            through_tolerance: info.through.tolerance.clone(),
+            across_tolerance: info.across.tolerance.as_deref().map(String::from),
+            through_tolerance: info.through.tolerance.as_deref().map(String::from),
             reference,
         });
         self.natures[idx].id = Some(id);
@@ -166,7 +167,7 @@ impl<'a> Elab<'a> {
         self.design.quantities.push(Quantity {
             name: self.hier_name(name),
             kind,
-            tolerance: tolerance.or_else(|| sub.tolerance.clone()),
+            tolerance: tolerance.map(Arc::from).or_else(|| sub.tolerance.clone()),
             subtype: sub.name.clone(),
             unit: sub.unit.clone(),
             initial_guess,

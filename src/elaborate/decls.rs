@@ -265,7 +265,7 @@ impl<'a> Elab<'a> {
                     };
                     if let Some([Item::Type(sub)]) = sc.lookup(&id.name) {
                         let mut s = (**sub).clone();
-                        s.unit = Some(symbol.clone());
+                        s.unit = Some(symbol.as_str().into());
                         sc.replace(&id.name, vec![Item::Type(Rc::new(s))]);
                     }
                 }
@@ -510,7 +510,7 @@ impl<'a> Elab<'a> {
                 _ => return Err(super::Reported),
             };
             if let Value::String(group) = self.static_value(sc, t, &string, "a tolerance group")? {
-                sub.tolerance = Some(group);
+                sub.tolerance = Some(group.into());
             }
         }
         Ok(Rc::new(sub))

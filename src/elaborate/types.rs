@@ -160,10 +160,10 @@ pub struct Sub {
     /// The subtype's own name (`voltage`), for `Quantity::subtype` (shared, not copied, by each
     /// quantity).
     pub name: Arc<str>,
-    /// `tolerance "DEFAULT_VOLTAGE"`.
-    pub tolerance: Option<String>,
-    /// The `symbol` attribute (`"V"`).
-    pub unit: Option<String>,
+    /// `tolerance "DEFAULT_VOLTAGE"` (shared by the subtype's quantities, as `name`).
+    pub tolerance: Option<Arc<str>>,
+    /// The `symbol` attribute (`"V"`), shared likewise.
+    pub unit: Option<Arc<str>>,
     /// A range constraint of an integer or real subtype (`natural`), for `'high`/`'low`.
     pub range: Option<(Value, Value)>,
 }

@@ -37,7 +37,7 @@ impl Recorder {
                     Column {
                         name: q.name.clone(),
                         kind: ColumnKind::Quantity {
-                            unit: q.unit.clone(),
+                            unit: q.unit.as_deref().map(String::from),
                         },
                         values: Vec::new(),
                     }

@@ -86,7 +86,7 @@ impl Builder {
         self.design.quantities.push(Quantity {
             name: name.into(),
             kind,
-            tolerance: tolerance.map(str::to_string),
+            tolerance: tolerance.map(std::sync::Arc::from),
             subtype: "real".into(),
             unit: None,
             initial_guess: None,
