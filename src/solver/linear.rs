@@ -112,14 +112,11 @@ impl Dense {
         for (&k, &v) in self.at.iter().zip(values) {
             self.a[k] += v;
         }
+        // Branch-free maxima: which entry is largest is data, and mispredicts.
         let mut record = |r: usize, c: usize, v: f64| {
             let v = v.abs();
-            if v > row_max[r] {
-                row_max[r] = v;
-            }
-            if v > col_max[c] {
-                col_max[c] = v;
-            }
+            row_max[r] = row_max[r].max(v);
+            col_max[c] = col_max[c].max(v);
         };
         if diag_shift != 0.0 {
             for (i, d) in self.a.iter_mut().step_by(n + 1).enumerate() {
@@ -142,14 +139,17 @@ impl Dense {
         }
         let a = &mut self.a;
         for j in 0..n {
-            let (mut p, mut best) = (j, f64::NEG_INFINITY);
+            // Selects rather than branches (the pivot row is data, and mispredicts); a NaN
+            // anywhere in the column makes the matrix singular.
+            let (mut p, mut best, mut nan) = (j, -1.0_f64, false);
             for r in j..n {
                 let v = a[r * n + j].abs();
-                if v > best || v.is_nan() {
-                    (p, best) = (r, v);
-                }
+                nan |= v.is_nan();
+                let better = v > best;
+                p = if better { r } else { p };
+                best = if better { v } else { best };
             }
-            if best.is_nan() || best <= pivot_tol * col_max[j] {
+            if nan || best <= pivot_tol * col_max[j] {
                 return Err(j);
             }
             let (top, bottom) = a.split_at_mut((j + 1) * n);
