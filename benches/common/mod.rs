@@ -42,6 +42,21 @@ pub fn mean_of<T>(n: usize, mut f: impl FnMut() -> T) -> (Duration, T) {
     (start.elapsed() / n as u32, last)
 }
 
+/// The median time of `n` runs of `f`, and the last result. On a shared machine the median
+/// resists the runs a neighbour slowed down, which pull a mean up.
+pub fn median_of<T>(n: usize, mut f: impl FnMut() -> T) -> (Duration, T) {
+    let mut times = Vec::with_capacity(n.max(1));
+    let mut last = None;
+    for _ in 0..n.max(1) {
+        let start = Instant::now();
+        last = Some(f());
+        times.push(start.elapsed());
+    }
+    times.sort();
+    // At least one run happened (n.max(1)).
+    (times[times.len() / 2], last.expect("one run at least"))
+}
+
 /// `n` runs of one deck in one `ngspice -b` process: wall time of the process, ngspice's own
 /// figures per run, and the data rows of the last run.
 pub struct NgspiceRun {
