@@ -73,8 +73,6 @@ pub struct AnalogSystem {
     reads: Vec<bool>,
     above: Vec<SignalId>,
     roots_tape: Tape,
-    /// `x'` of the last residual evaluation, for root functions that read a `'dot`.
-    last_xdot: Vec<f64>,
     /// Per unknown, the absolute tolerance of its tolerance group, when known.
     group_abstol: Vec<Option<f64>>,
     /// Per unknown, the largest `|c|` of an eliminated quantity `c * x` without a tolerance
@@ -85,6 +83,8 @@ pub struct AnalogSystem {
     delay_lines: Vec<delay::DelayLine>,
     /// Number of design signals (the source scale's slot).
     design_signals: usize,
+    /// Every residual is affine in the unknowns ([`Sym::is_affine`]).
+    linear: bool,
 }
 
 /// Exponential arguments below this are not limited (`exp(10)` is a diode well below
@@ -380,6 +380,7 @@ impl AnalogSystem {
         for &k in &order {
             rb.push(&residuals[k]);
         }
+        let linear = residuals.iter().all(Sym::is_affine);
         let mut eb = TapeBuilder::default();
         for r in &residuals {
             r.visit(&mut |e| {
@@ -512,11 +513,11 @@ impl AnalogSystem {
             reads,
             above,
             roots_tape: roots.finish(),
-            last_xdot: vec![0.0; n],
             group_abstol,
             alias_scale,
             delay_lines,
             design_signals: design.signals.len(),
+            linear,
         };
         Ok(system)
     }
@@ -769,9 +770,6 @@ impl DaeSystem for AnalogSystem {
         for (i, o) in out.iter_mut().enumerate().take(self.names.len()) {
             *o = self.residual_tape.output(i);
         }
-        if !self.above.is_empty() {
-            self.last_xdot.copy_from_slice(xdot);
-        }
     }
 
     fn jacobian(&mut self, t: f64, x: &[f64], xdot: &[f64], alpha: f64, out: &mut [f64]) {
@@ -792,9 +790,9 @@ impl DaeSystem for AnalogSystem {
         self.above.len()
     }
 
-    fn roots(&mut self, t: f64, x: &[f64], out: &mut [f64]) {
+    fn roots(&mut self, t: f64, x: &[f64], xdot: &[f64], out: &mut [f64]) {
         self.load_delays(t);
-        self.roots_tape.eval(t, x, &self.last_xdot, &self.signals);
+        self.roots_tape.eval(t, x, xdot, &self.signals);
         for (i, o) in out.iter_mut().enumerate().take(self.above.len()) {
             *o = self.roots_tape.output(i);
         }
@@ -839,6 +837,10 @@ impl DaeSystem for AnalogSystem {
             lambda = lambda.min(((limited - a0) / da).clamp(0.0, 1.0));
         }
         lambda
+    }
+
+    fn is_linear(&self) -> bool {
+        self.linear
     }
 
     fn set_source_scale(&mut self, s: f64) {

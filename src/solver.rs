@@ -63,17 +63,24 @@ pub trait DaeSystem {
             *o = if dot_columns[c] { *o - j0 } else { j0 };
         }
     }
-    /// Root functions `g(t, x)` whose sign changes the integrator must locate.
+    /// Root functions `g(t, x, x')` whose sign changes the integrator must locate.
     fn root_count(&self) -> usize {
         0
     }
-    /// `out = g(t, x)`, `root_count()` values.
-    fn roots(&mut self, _t: f64, _x: &[f64], _out: &mut [f64]) {}
+    /// `out = g(t, x, x')`, `root_count()` values.
+    fn roots(&mut self, _t: f64, _x: &[f64], _xdot: &[f64], _out: &mut [f64]) {}
     /// The fraction of the Newton step `x -> x + dx` (at `t`, with derivative `xdot`) that
     /// keeps exponentials from overshooting (a diode switching on from far away), in `(0, 1]`.
     fn step_limit(&mut self, _t: f64, _x: &[f64], _xdot: &[f64], _dx: &[f64]) -> f64 {
         1.0
     }
+    /// True when `F` is affine in `x` and `x'` (for any signals and `t`): a Newton step with
+    /// the exact Jacobian then lands on the solution, and needs no second iteration to confirm
+    /// it. Systems that do not know say `false`.
+    fn is_linear(&self) -> bool {
+        false
+    }
+
     /// Source scaling in `[0, 1]` for source stepping (independent sources multiply by it).
     fn set_source_scale(&mut self, _s: f64) {}
 }

@@ -273,6 +273,25 @@ impl Sym {
         found
     }
 
+    /// True when the expression is affine in the unknowns (`x` and `x'`) for every value of
+    /// the signals and `now`: sums, negations, products and quotients by unknown-free factors,
+    /// and `if`s on unknown-free conditions over affine branches. Anything else (a comparison
+    /// or rounding of an unknown included: constant derivative, but not affine) counts only
+    /// when it reads no unknown.
+    pub fn is_affine(&self) -> bool {
+        match self {
+            Sym::Const(_) | Sym::Signal(_) | Sym::Now | Sym::X(_) | Sym::Dot(_) => true,
+            Sym::Un(Un::Neg, a) => a.is_affine(),
+            Sym::Bin(Bin::Add | Bin::Sub, a, b) => a.is_affine() && b.is_affine(),
+            Sym::Bin(Bin::Mul, a, b) => {
+                (!a.reads_unknown() && b.is_affine()) || (a.is_affine() && !b.reads_unknown())
+            }
+            Sym::Bin(Bin::Div, a, b) => a.is_affine() && !b.reads_unknown(),
+            Sym::If(c, a, b) => !c.reads_unknown() && a.is_affine() && b.is_affine(),
+            other => !other.reads_unknown(),
+        }
+    }
+
     /// True when the expression reads an unknown (`x` or `x'`).
     pub fn reads_unknown(&self) -> bool {
         self.any(|n| matches!(n, Sym::X(_) | Sym::Dot(_)))

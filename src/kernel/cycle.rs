@@ -144,7 +144,8 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         let (x, _) = point.map_err(|e| solve_error(e, 0.0, &sys, &slots, design))?;
         let above = sys.above_signals().to_vec();
         let mut g = vec![0.0; sys.root_count().max(above.len())];
-        sys.roots(0.0, &x, &mut g);
+        // The quiescent point: every `x'` is zero.
+        sys.roots(0.0, &x, &vec![0.0; x.len()], &mut g);
         // The processes ran their initialisation with every `'above` signal false (its value
         // before the quiescent point exists); one that is true at the quiescent point changes
         // with an event in the first delta cycle, so that processes sensitive to it re-run.
@@ -357,7 +358,8 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         if a.g.is_empty() {
             return false;
         }
-        a.sys.roots(t, a.integ.state(), &mut a.g);
+        a.sys
+            .roots(t, a.integ.state(), a.integ.derivative(), &mut a.g);
         let mut any = false;
         for (&s, &g) in a.above.iter().zip(&a.g) {
             let now = matches!(self.kernel.value(s), Value::Boolean(true));

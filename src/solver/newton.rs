@@ -114,6 +114,10 @@ pub struct NewtonOptions {
     /// Factor applied to updates computed with a factorisation from an earlier call (the
     /// integrator passes IDA's `2 / (1 + c/c_old)` to make up for a stale `alpha`).
     pub stale_scale: f64,
+    /// The problem is affine (see [`DaeSystem::is_linear`](crate::solver::DaeSystem::is_linear)):
+    /// a full step with a Jacobian factored in this call, without diagonal shift, is the
+    /// solution, and ends the iteration without a second one to confirm it.
+    pub linear: bool,
 }
 
 impl Default for NewtonOptions {
@@ -126,6 +130,7 @@ impl Default for NewtonOptions {
             reuse_jacobian: false,
             max_rate: 0.9,
             stale_scale: 1.0,
+            linear: false,
         }
     }
 }
@@ -276,6 +281,8 @@ impl Newton {
                 norm = self.step(x, tol, t, 1.0)?;
             }
             rep.iterations = iter;
+            // On an affine problem a full step with this call's (exact) Jacobian is the answer.
+            let exact = opts.linear && !stale && p.diagonal_shift() == 0.0 && norm.is_finite();
             // Without damping, a fresh Jacobian that does not contract means divergence: give
             // up early so the integrator can shrink the step (IDA's rate test).
             if !norm.is_finite() || (!opts.line_search && norm > opts.max_rate * prev_norm) {
@@ -304,11 +311,14 @@ impl Newton {
                 if let Some(equation) = self.r.iter().position(|v| !v.is_finite()) {
                     return Err(SolveError::NonFiniteResidual { t, equation });
                 }
+                if exact && lambda == 1.0 {
+                    return Ok(());
+                }
             } else {
                 for (x, d) in x.iter_mut().zip(&self.dx) {
                     *x += d;
                 }
-                if norm <= opts.tol {
+                if norm <= opts.tol || exact {
                     return Ok(());
                 }
                 Self::eval(p, x, &mut self.r, t, rep)?;

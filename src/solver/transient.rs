@@ -70,6 +70,8 @@ pub struct Transient {
     g_prev: Vec<f64>,
     g_new: Vec<f64>,
     g_tmp: Vec<f64>,
+    /// Scratch: `x'` of the dense output where root functions are evaluated.
+    xdot_tmp: Vec<f64>,
     /// Roots found at `t` still to be reported, last to report first.
     pending: Vec<(usize, bool)>,
     /// Breakpoints ahead, sorted descending (the next one is last).
@@ -144,6 +146,7 @@ impl Transient {
                 reuse_jacobian: true,
                 max_rate: 0.9,
                 stale_scale: 1.0,
+                linear: sys.is_linear(),
             },
             newton,
             diff: sys.differential().to_vec(),
@@ -171,6 +174,7 @@ impl Transient {
             g_prev: vec![0.0; m],
             g_new: vec![0.0; m],
             g_tmp: vec![0.0; m],
+            xdot_tmp: vec![0.0; n],
             pending: Vec::with_capacity(m),
             breakpoints: Vec::new(),
             stats: Stats::default(),

@@ -231,3 +231,40 @@ fn every_differentiable_function_matches_central_differences() {
         }
     }
 }
+
+#[test]
+fn affine_means_affine_in_the_unknowns_for_every_signal_and_time() {
+    use crate::analog::sym::{Bin, Un};
+    let (x, y, s) = (Sym::X(0), Sym::Dot(1), Sym::Signal(0));
+    let raw = |op, a: &Sym, b: &Sym| Sym::Bin(op, Box::new(a.clone()), Box::new(b.clone()));
+    let un = |op, a: &Sym| Sym::Un(op, Box::new(a.clone()));
+    let iff =
+        |c: Sym, a: &Sym, b: &Sym| Sym::If(Box::new(c), Box::new(a.clone()), Box::new(b.clone()));
+    let sin_now = un(Un::Sin, &Sym::Now);
+    let affine = [
+        raw(Bin::Add, &x, &raw(Bin::Mul, &Sym::Const(2.0), &y)),
+        raw(Bin::Mul, &sin_now, &x),
+        raw(Bin::Div, &x, &Sym::Now),
+        un(Un::Neg, &raw(Bin::Sub, &y, &un(Un::Exp, &s))),
+        iff(s.clone(), &x, &raw(Bin::Mul, &x, &Sym::Const(3.0))),
+    ];
+    for e in &affine {
+        assert!(e.is_affine(), "{e:?}");
+    }
+    let not_affine = [
+        raw(Bin::Mul, &x, &y),
+        raw(Bin::Div, &Sym::Const(1.0), &x),
+        un(Un::Exp, &x),
+        // Zero or constant derivative, but not affine: rounding, comparisons, conditions.
+        un(Un::Floor, &x),
+        raw(Bin::Gt, &x, &Sym::Const(0.0)),
+        iff(
+            raw(Bin::Gt, &x, &Sym::Const(0.0)),
+            &x,
+            &raw(Bin::Add, &x, &Sym::Const(1.0)),
+        ),
+    ];
+    for e in &not_affine {
+        assert!(!e.is_affine(), "{e:?}");
+    }
+}

@@ -169,10 +169,9 @@ impl DaeSystem for ExprDae {
     fn root_count(&self) -> usize {
         self.roots.len()
     }
-    fn roots(&mut self, t: f64, x: &[f64], out: &mut [f64]) {
-        let zeros = vec![0.0; x.len()];
+    fn roots(&mut self, t: f64, x: &[f64], xdot: &[f64], out: &mut [f64]) {
         for (o, (q, level)) in out.iter_mut().zip(&self.roots) {
-            *o = self.eval(q, t, x, &zeros) - self.eval(level, t, x, &zeros);
+            *o = self.eval(q, t, x, xdot) - self.eval(level, t, x, xdot);
         }
     }
 }

@@ -11,6 +11,8 @@ pub struct LinearDae {
     pub ramp: Vec<f64>,
     pub roots: Vec<(usize, f64)>,
     pub scale: f64,
+    /// What `is_linear` reports (true: the solver may skip Newton's confirming iteration).
+    pub linear: bool,
     diff: Vec<bool>,
     pattern: Vec<(usize, usize)>,
 }
@@ -30,6 +32,7 @@ impl LinearDae {
             ramp: vec![0.0; n],
             roots: Vec::new(),
             scale: 1.0,
+            linear: true,
             diff,
             pattern,
         }
@@ -68,6 +71,9 @@ impl DaeSystem for LinearDae {
     fn len(&self) -> usize {
         self.b.len()
     }
+    fn is_linear(&self) -> bool {
+        self.linear
+    }
     fn differential(&self) -> &[bool] {
         &self.diff
     }
@@ -90,7 +96,7 @@ impl DaeSystem for LinearDae {
     fn root_count(&self) -> usize {
         self.roots.len()
     }
-    fn roots(&mut self, _t: f64, x: &[f64], out: &mut [f64]) {
+    fn roots(&mut self, _t: f64, x: &[f64], _xdot: &[f64], out: &mut [f64]) {
         for (o, &(i, level)) in out.iter_mut().zip(&self.roots) {
             *o = x[i] - level;
         }

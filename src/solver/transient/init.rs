@@ -178,6 +178,7 @@ impl Transient {
         p.z_from(&mut self.scratch);
         let opts = NewtonOptions {
             residual_tol: Some(1e-12),
+            linear: self.newton_opts.linear,
             ..NewtonOptions::default()
         };
         self.newton.invalidate_jacobian();
@@ -225,7 +226,7 @@ impl Transient {
         self.int_valid = false;
         self.xdot_alg_known = false;
         if !self.g_prev.is_empty() {
-            sys.roots(t, &self.hist_x[0], &mut self.g_prev);
+            sys.roots(t, &self.hist_x[0], &self.xdot, &mut self.g_prev);
             self.stats.root_evals += 1;
         }
         Ok(())
@@ -267,6 +268,7 @@ impl Transient {
         // accurate, which full Newton steps reach at once on the (locally) linear problems here.
         let opts = NewtonOptions {
             tol: 1e-3,
+            linear: self.newton_opts.linear,
             ..NewtonOptions::default()
         };
         for step in 0..2 {

@@ -100,7 +100,7 @@ impl Transient {
         if m == 0 {
             return None;
         }
-        sys.roots(self.t, &self.hist_x[0], &mut self.g_new);
+        sys.roots(self.t, &self.hist_x[0], &self.xdot, &mut self.g_new);
         self.stats.root_evals += 1;
         let crossed =
             |a: f64, b: f64| a != 0.0 && (b == 0.0 || a.signum() != b.signum() || b.is_nan());
@@ -132,7 +132,7 @@ impl Transient {
             }
             self.x_new = x;
             self.xdot_new = xd;
-            sys.roots(self.t, &self.hist_x[0], &mut self.g_new);
+            sys.roots(self.t, &self.hist_x[0], &self.xdot, &mut self.g_new);
             self.stats.root_evals += 1;
         }
         // Report every function that has crossed by t_root, lowest index first.
@@ -162,6 +162,7 @@ impl Transient {
         tol: f64,
     ) -> f64 {
         let mut x = std::mem::take(&mut self.scratch);
+        let mut xd = std::mem::take(&mut self.xdot_tmp);
         let mut side = 0i8;
         for _ in 0..200 {
             if fb == 0.0 || b - a <= tol {
@@ -171,10 +172,10 @@ impl Transient {
             if !(c > a && c < b) {
                 c = 0.5 * (a + b);
             }
-            if self.interpolate(c, &mut x).is_err() {
+            if self.interpolate_both(c, &mut x, Some(&mut xd)).is_err() {
                 break;
             }
-            sys.roots(c, &x, &mut self.g_tmp);
+            sys.roots(c, &x, &xd, &mut self.g_tmp);
             self.stats.root_evals += 1;
             let fc = self.g_tmp[i];
             if fc == 0.0 {
@@ -198,6 +199,7 @@ impl Transient {
             }
         }
         self.scratch = x;
+        self.xdot_tmp = xd;
         b
     }
 }

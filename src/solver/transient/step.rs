@@ -273,9 +273,9 @@ impl Transient {
             for (j, fj) in f.iter_mut().enumerate().take(m + 1) {
                 *fj = self.hist_x[j][i];
             }
-            for level in 1..=m {
+            for (level, inv) in inv.iter().enumerate().take(m + 1).skip(1) {
                 for j in 0..=(m - level) {
-                    f[j] = (f[j] - f[j + 1]) * inv[level][j];
+                    f[j] = (f[j] - f[j + 1]) * inv[j];
                 }
             }
             self.scratch[i] = f[0];
