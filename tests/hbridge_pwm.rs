@@ -13,9 +13,11 @@
 
 use std::path::PathBuf;
 
+use vams::analog::AnalogSystem;
 use vams::cli::load::load;
 use vams::elaborate::{ElabOptions, elaborate};
 use vams::kernel::{Outcome, SimOptions, SimResult, simulate};
+use vams::solver::DaeSystem;
 
 /// The model's defaults (and models/dc_motor.vhd's).
 const V: f64 = 12.0;
@@ -44,6 +46,8 @@ fn run(synchronous: bool) -> SimResult {
         generics: vec![("synchronous".into(), synchronous.to_string())],
     };
     let design = elaborate(&loaded.sources, &loaded.files, &options).expect("elaborates");
+    // The diodes' exponentials: Newton must confirm every step (`DaeSystem::is_linear`).
+    assert!(!AnalogSystem::new(&design).expect("builds").is_linear());
     let sim = SimOptions {
         stop: STOP,
         probes: ["motor.i", "motor.w", "i_dl", "v_dl"]
