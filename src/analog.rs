@@ -56,10 +56,11 @@ pub struct AnalogSystem {
     eliminated: Vec<Eliminated>,
     differential: Vec<bool>,
     pattern: Vec<(usize, usize)>,
-    residual_tape: Tape,
-    /// Outputs: the nonzero dF/dx and dF/dx' entries.
-    jacobian_tape: Tape,
-    /// Per pattern entry, the jacobian tape outputs of dF/dx and dF/dx' (if nonzero).
+    /// Outputs: the residuals (section [`RESIDUALS`], in solver row order), then the nonzero
+    /// dF/dx and dF/dx' entries. One tape, so that the Jacobian at the point whose residual
+    /// Newton just computed reuses the work they share (exponentials, conditions).
+    newton_tape: Tape,
+    /// Per pattern entry, the Newton tape outputs of dF/dx and dF/dx' (if nonzero).
     jac_dx: Vec<Option<usize>>,
     jac_ddot: Vec<Option<usize>>,
     /// Values and `'dot`s of eliminated quantities (see `fill`).
@@ -90,6 +91,9 @@ pub struct AnalogSystem {
 /// Exponential arguments below this are not limited (`exp(10)` is a diode well below
 /// conduction for any practical saturation current).
 const EXP_LIMIT_FROM: f64 = 10.0;
+
+/// The Newton tape's section of the residuals.
+const RESIDUALS: usize = 0;
 
 /// An unknown solved for and substituted (indices of the system as assembled).
 pub struct Eliminated {
@@ -376,10 +380,12 @@ impl AnalogSystem {
         }
         let row_source: Vec<usize> = order.iter().map(|&k| kept_rows[k]).collect();
 
-        let mut rb = TapeBuilder::default();
+        let mut nb = TapeBuilder::default();
         for &k in &order {
-            rb.push(&residuals[k]);
+            nb.push(&residuals[k]);
         }
+        let residual_section = nb.end_section();
+        debug_assert_eq!(residual_section, RESIDUALS);
         let linear = residuals.iter().all(Sym::is_affine);
         let mut eb = TapeBuilder::default();
         for r in &residuals {
@@ -391,12 +397,11 @@ impl AnalogSystem {
         }
         let exp_tape = eb.finish();
         drop(residuals);
-        let mut jb = TapeBuilder::default();
         let mut jac_dx = Vec::with_capacity(pattern.len());
         let mut jac_ddot = Vec::with_capacity(pattern.len());
         for (dx, ddot) in &jac_exprs {
-            jac_dx.push(dx.as_ref().map(|d| jb.push(d)));
-            jac_ddot.push(ddot.as_ref().map(|d| jb.push(d)));
+            jac_dx.push(dx.as_ref().map(|d| nb.push(d)));
+            jac_ddot.push(ddot.as_ref().map(|d| nb.push(d)));
         }
         drop(jac_exprs);
 
@@ -501,8 +506,7 @@ impl AnalogSystem {
             eliminated,
             differential,
             pattern,
-            residual_tape: rb.finish(),
-            jacobian_tape: jb.finish(),
+            newton_tape: nb.finish(),
             jac_dx,
             jac_ddot,
             outputs_tape: Tape::default(),
@@ -739,14 +743,14 @@ impl AnalogSystem {
         out: &mut [f64],
     ) {
         self.load_delays(t);
-        self.jacobian_tape.eval(t, x, xdot, &self.signals);
+        self.newton_tape.eval(t, x, xdot, &self.signals);
         for (k, o) in out.iter_mut().enumerate() {
             let part = if dot_columns[self.pattern[k].1] {
                 self.jac_ddot[k]
             } else {
                 self.jac_dx[k]
             };
-            *o = part.map_or(0.0, |i| self.jacobian_tape.output(i));
+            *o = part.map_or(0.0, |i| self.newton_tape.output(i));
         }
     }
 }
@@ -766,16 +770,17 @@ impl DaeSystem for AnalogSystem {
 
     fn residual(&mut self, t: f64, x: &[f64], xdot: &[f64], out: &mut [f64]) {
         self.load_delays(t);
-        self.residual_tape.eval(t, x, xdot, &self.signals);
+        self.newton_tape
+            .eval_section(RESIDUALS, t, x, xdot, &self.signals);
         for (i, o) in out.iter_mut().enumerate().take(self.names.len()) {
-            *o = self.residual_tape.output(i);
+            *o = self.newton_tape.output(i);
         }
     }
 
     fn jacobian(&mut self, t: f64, x: &[f64], xdot: &[f64], alpha: f64, out: &mut [f64]) {
         self.load_delays(t);
-        self.jacobian_tape.eval(t, x, xdot, &self.signals);
-        let tape = &self.jacobian_tape;
+        self.newton_tape.eval(t, x, xdot, &self.signals);
+        let tape = &self.newton_tape;
         for ((o, dx), ddot) in out.iter_mut().zip(&self.jac_dx).zip(&self.jac_ddot) {
             let a = dx.map_or(0.0, |i| tape.output(i));
             // alpha = 0 (operating point) ignores dF/dx' even where it is not finite.

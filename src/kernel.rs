@@ -134,6 +134,8 @@ pub struct SimStats {
     pub rejected_steps: usize,
     pub newton_iterations: usize,
     pub factorizations: usize,
+    /// Factorisations that searched for pivots (the rest reused the last pivot order).
+    pub pivot_searches: usize,
     /// Evaluations of the residual F(x', x, t) (Newton's and its line search's).
     pub residual_evaluations: usize,
     pub events: usize,

@@ -21,7 +21,7 @@ mod transient;
 mod tests;
 
 pub use error::SolveError;
-pub use linear::{DEFAULT_DENSE_MAX, LinearOptions, LinearSolver};
+pub use linear::{DEFAULT_DENSE_MAX, DenseCounts, LinearOptions, LinearSolver};
 pub use newton::{ErrorNorm, Newton, NewtonOptions, NewtonReport, NonlinearProblem, Tolerances};
 pub use op::{OpOptions, OpReport, OpStrategy, operating_point};
 pub use transient::{Advance, Stats, Transient, TransientOptions};

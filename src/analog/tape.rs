@@ -10,6 +10,13 @@
 //! bitwise those of [`Sym::eval`]); instructions no output needs are dropped. Evaluation is one
 //! pass over a flat instruction enum: no allocation, no tree walking. `If` evaluates both
 //! branches and selects (a NaN in the branch not taken is harmless).
+//!
+//! **Sections.** Roots compiled before [`TapeBuilder::end_section`] need only instructions
+//! that come before every instruction of later roots, so a tape of residuals followed by their
+//! Jacobian entries evaluates the residuals alone as a prefix. The tape remembers how far it
+//! has evaluated for the inputs it last gathered: asking for the Jacobian at the point whose
+//! residual was just computed runs only the Jacobian's own instructions (the exponentials and
+//! conditions they share with the residual are not computed twice).
 
 use rustc_hash::FxHashMap;
 
@@ -49,6 +56,12 @@ pub struct Tape {
     /// Register of the first input; inputs are gathered in this order: `x`, `x'`, signals,
     /// `now`.
     inputs: usize,
+    /// Register of the first instruction.
+    first_instr: usize,
+    /// Instructions up to which each section's outputs are computed.
+    section_ends: Vec<usize>,
+    /// Instructions computed from the inputs now in the input block.
+    computed: usize,
     x_loads: Vec<u32>,
     dot_loads: Vec<u32>,
     signal_loads: Vec<u32>,
@@ -64,6 +77,8 @@ pub struct TapeBuilder {
     const_index: FxHashMap<u64, u32>,
     op_index: FxHashMap<Op, u32>,
     outputs: Vec<u32>,
+    /// Number of compiled instructions at the end of each section.
+    section_marks: Vec<usize>,
 }
 
 /// Register reference before constants are counted: constants and instructions are numbered
@@ -80,6 +95,13 @@ impl TapeBuilder {
         let slot = self.compile(e);
         self.outputs.push(encode(slot));
         self.outputs.len() - 1
+    }
+
+    /// Ends the current section: the outputs pushed so far can be evaluated without the
+    /// instructions of later ones ([`Tape::eval_section`]). Returns the section's number.
+    pub fn end_section(&mut self) -> usize {
+        self.section_marks.push(self.ops.len());
+        self.section_marks.len() - 1
     }
 
     fn constant(&mut self, v: f64) -> Slot {
@@ -258,9 +280,28 @@ impl TapeBuilder {
                 })
             })
             .collect();
+        // Loads are not instructions: count the live computing ones below each mark.
+        let section_ends = self
+            .section_marks
+            .iter()
+            .map(|&mark| {
+                (0..mark)
+                    .filter(|&k| {
+                        live[k]
+                            && !matches!(
+                                self.ops[k],
+                                Op::X(_) | Op::Dot(_) | Op::Signal(_) | Op::Now
+                            )
+                    })
+                    .count()
+            })
+            .collect();
         let mut regs = self.consts;
         regs.resize(first_instr as usize + instrs.len(), 0.0);
         Tape {
+            first_instr: first_instr as usize,
+            section_ends,
+            computed: 0,
             outputs: self.outputs.iter().map(|&r| fix(r)).collect(),
             instrs,
             regs,
@@ -309,23 +350,57 @@ impl Tape {
     /// Runs the tape. Indices inside were built from the same system's slots, so `x`, `xdot`
     /// and `signals` must have the system's sizes (the caller's invariant).
     pub fn eval(&mut self, t: f64, x: &[f64], xdot: &[f64], signals: &[f64]) {
+        self.run(self.instrs.len(), t, x, xdot, signals);
+    }
+
+    /// Computes the outputs of sections `..=section` only, skipping what was computed at the
+    /// same inputs by the last evaluation.
+    pub fn eval_section(
+        &mut self,
+        section: usize,
+        t: f64,
+        x: &[f64],
+        xdot: &[f64],
+        signals: &[f64],
+    ) {
+        let end = self
+            .section_ends
+            .get(section)
+            .copied()
+            .unwrap_or(self.instrs.len());
+        self.run(end, t, x, xdot, signals);
+    }
+
+    /// Gathers the inputs and runs the instructions up to `end`, starting where the last run
+    /// stopped if the inputs are bitwise the same.
+    fn run(&mut self, end: usize, t: f64, x: &[f64], xdot: &[f64], signals: &[f64]) {
         let regs = &mut self.regs;
         let mut k = self.inputs;
+        let mut changed = false;
+        let mut load = |v: f64, k: &mut usize| {
+            changed |= regs[*k].to_bits() != v.to_bits();
+            regs[*k] = v;
+            *k += 1;
+        };
         for (loads, from) in [(&self.x_loads, x), (&self.dot_loads, xdot)] {
             for &i in loads {
-                regs[k] = from[i as usize];
-                k += 1;
+                load(from[i as usize], &mut k);
             }
         }
         for &s in &self.signal_loads {
-            regs[k] = signals[s as usize];
-            k += 1;
+            load(signals[s as usize], &mut k);
         }
         if self.reads_now {
-            regs[k] = t;
-            k += 1;
+            load(t, &mut k);
         }
-        for &instr in &self.instrs {
+        if changed {
+            self.computed = 0;
+        }
+        if self.computed >= end {
+            return;
+        }
+        let first = self.first_instr + self.computed;
+        for (k, &instr) in (first..).zip(&self.instrs[self.computed..end]) {
             let r = &*regs;
             let v = match instr {
                 Instr::Add(a, b) => r[a as usize] + r[b as usize],
@@ -344,8 +419,8 @@ impl Tape {
                 }
             };
             regs[k] = v;
-            k += 1;
         }
+        self.computed = end;
     }
 
     /// Number of outputs.

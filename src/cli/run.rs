@@ -337,6 +337,7 @@ pub fn stats_table(stats: &SimStats) -> String {
         ("rejected steps", stats.rejected_steps),
         ("Newton iterations", stats.newton_iterations),
         ("factorizations", stats.factorizations),
+        ("pivot searches", stats.pivot_searches),
         ("residual evaluations", stats.residual_evaluations),
         ("events", stats.events),
         ("delta cycles", stats.delta_cycles),
@@ -461,7 +462,7 @@ mod tests {
             "simulated tb to 6 s in 0.50 s wall time: 1234 accepted steps, 5678 Newton iterations; wrote a.csv, p.svg"
         );
         let table = stats_table(&result.stats);
-        assert_eq!(table.lines().count(), 8);
+        assert_eq!(table.lines().count(), 9);
         assert!(table.contains("breaks") && table.contains("5678"));
     }
 }

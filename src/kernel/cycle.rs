@@ -416,6 +416,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             rejected_steps: solver.rejected_steps + solver.newton_failures,
             newton_iterations: solver.newton_iterations,
             factorizations: solver.factorizations,
+            pivot_searches: solver.pivot_searches,
             residual_evaluations: solver.residual_evals,
             events: self.kernel.events,
             delta_cycles: self.kernel.delta_cycles,

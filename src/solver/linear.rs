@@ -2,7 +2,8 @@
 //!
 //! Two paths behind one type. Small systems use a plain in-place LU with partial pivoting
 //! (faer's dense LU is blocked and recursive, built for large matrices: about 1 us at n = 8,
-//! where this loop takes 0.3 us); large ones use faer's simplicial sparse LU (left-looking,
+//! where this loop takes 0.3 us) that later factorisations replay, with the same pivots, over
+//! the structural entries only (`dense`); large ones use faer's simplicial sparse LU (left-looking,
 //! partial pivoting, COLAMD column order), which suits circuit matrices: they are very sparse
 //! and produce little fill, so supernodes would not pay (the same choice KLU makes). The column
 //! ordering is computed once per pattern; each `factor` scatters the values into preallocated
@@ -16,8 +17,11 @@ use faer::sparse::linalg::lu::simplicial;
 use faer::{MatMut, Par};
 
 use super::SolveError;
+use dense::Dense;
+pub use dense::DenseCounts;
 use sparse::Sparse;
 
+mod dense;
 mod sparse;
 
 /// Crossover between the dense and the sparse path: systems with at most this many unknowns
@@ -67,142 +71,8 @@ pub struct LinearSolver {
 }
 
 enum Backend {
-    Dense(Dense),
+    Dense(Box<Dense>),
     Sparse(Box<Sparse>),
-}
-
-/// Row-major `n x n` LU with partial pivoting, in place: `a` holds `L` (unit diagonal, below)
-/// and `U`; row `k` of the factors is row `perm[k]` of the assembled matrix. The loops run on
-/// row slices (no index arithmetic inside, so no bounds checks and the row updates vectorise):
-/// at n = 7 a factorisation is a few hundred flops, and overhead would dominate.
-struct Dense {
-    a: Vec<f64>,
-    /// Position in `a` of each pattern entry.
-    at: Vec<usize>,
-    perm: Vec<usize>,
-    /// `1 / U[k][k]`: back substitution multiplies (a division's latency, about 15 cycles,
-    /// would sit on the solve's serial dependency chain once per row).
-    inv_diag: Vec<f64>,
-    scratch: Vec<f64>,
-}
-
-impl Dense {
-    fn new(n: usize, pattern: &[(usize, usize)]) -> Self {
-        Self {
-            a: vec![0.0; n * n],
-            at: pattern.iter().map(|&(r, c)| r * n + c).collect(),
-            perm: vec![0; n],
-            inv_diag: vec![0.0; n],
-            scratch: vec![0.0; n],
-        }
-    }
-
-    /// Sums `values` into `a` (plus `diag_shift` on the diagonal) and records the largest
-    /// magnitude of each row and column (over the structural entries: the rest are zero).
-    fn assemble(
-        &mut self,
-        n: usize,
-        pattern: &[(usize, usize)],
-        values: &[f64],
-        diag_shift: f64,
-        row_max: &mut [f64],
-        col_max: &mut [f64],
-    ) {
-        self.a.fill(0.0);
-        for (&k, &v) in self.at.iter().zip(values) {
-            self.a[k] += v;
-        }
-        // Branch-free maxima: which entry is largest is data, and mispredicts.
-        let mut record = |r: usize, c: usize, v: f64| {
-            let v = v.abs();
-            row_max[r] = row_max[r].max(v);
-            col_max[c] = col_max[c].max(v);
-        };
-        if diag_shift != 0.0 {
-            for (i, d) in self.a.iter_mut().step_by(n + 1).enumerate() {
-                *d += diag_shift;
-                record(i, i, *d);
-            }
-        }
-        for (&(r, c), &k) in pattern.iter().zip(&self.at) {
-            record(r, c, self.a[k]);
-        }
-    }
-
-    /// Factors `a` in place. Returns the pivot step `j` whose pivot is not above `tol *
-    /// col_max[j]` (the matrix counts as singular there), if any.
-    // Rows are sliced by index rather than with `chunks_exact`, whose length division costs
-    // more than a 4 x 4 elimination step.
-    fn factor(&mut self, n: usize, pivot_tol: f64, col_max: &[f64]) -> Result<(), usize> {
-        for (k, p) in self.perm.iter_mut().enumerate() {
-            *p = k;
-        }
-        let a = &mut self.a;
-        for j in 0..n {
-            // Selects rather than branches (the pivot row is data, and mispredicts); a NaN
-            // anywhere in the column makes the matrix singular.
-            let (mut p, mut best, mut nan) = (j, -1.0_f64, false);
-            for r in j..n {
-                let v = a[r * n + j].abs();
-                nan |= v.is_nan();
-                let better = v > best;
-                p = if better { r } else { p };
-                best = if better { v } else { best };
-            }
-            if nan || best <= pivot_tol * col_max[j] {
-                return Err(j);
-            }
-            let (top, bottom) = a.split_at_mut((j + 1) * n);
-            let pivot_row = &mut top[j * n..];
-            if p != j {
-                let q = (p - j - 1) * n;
-                pivot_row.swap_with_slice(&mut bottom[q..q + n]);
-                self.perm.swap(j, p);
-            }
-            let inv_pivot = 1.0 / pivot_row[j];
-            self.inv_diag[j] = inv_pivot;
-            let pivot_rest = &pivot_row[j + 1..];
-            for r in 0..n - j - 1 {
-                let row = &mut bottom[r * n + j..(r + 1) * n];
-                let l = row[0] * inv_pivot;
-                row[0] = l;
-                if l != 0.0 {
-                    for (x, &u) in row[1..].iter_mut().zip(pivot_rest) {
-                        *x -= l * u;
-                    }
-                }
-            }
-        }
-        Ok(())
-    }
-
-    /// Forward and back substitution by columns: each solved `y[c]` updates the rows below
-    /// (above) it, independent updates the CPU overlaps, where row-wise dot products would be
-    /// one serial chain of multiply-adds per row.
-    fn solve(&mut self, n: usize, rhs: &mut [f64]) {
-        let (a, y) = (&self.a, &mut self.scratch);
-        for (y, &p) in y.iter_mut().zip(&self.perm) {
-            *y = rhs[p];
-        }
-        for c in 0..n {
-            let yc = y[c];
-            if yc != 0.0 {
-                for r in c + 1..n {
-                    y[r] -= a[r * n + c] * yc;
-                }
-            }
-        }
-        for c in (0..n).rev() {
-            let yc = y[c] * self.inv_diag[c];
-            y[c] = yc;
-            if yc != 0.0 {
-                for r in 0..c {
-                    y[r] -= a[r * n + c] * yc;
-                }
-            }
-        }
-        rhs.copy_from_slice(y);
-    }
 }
 
 impl LinearSolver {
@@ -221,7 +91,10 @@ impl LinearSolver {
         }
         let par = Par::Seq;
         let (backend, req) = if n <= options.dense_max {
-            (Backend::Dense(Dense::new(n, pattern)), StackReq::EMPTY)
+            (
+                Backend::Dense(Box::new(Dense::new(n, pattern))),
+                StackReq::EMPTY,
+            )
         } else {
             let sparse = Sparse::new(n, pattern)?;
             let req = StackReq::any_of(&[
@@ -263,6 +136,15 @@ impl LinearSolver {
         self.n == 0
     }
 
+    /// How often the dense path searched for pivots and how often it reused them (`None` on
+    /// the sparse path).
+    pub fn dense_counts(&self) -> Option<DenseCounts> {
+        match &self.backend {
+            Backend::Dense(d) => Some(d.counts),
+            Backend::Sparse(_) => None,
+        }
+    }
+
     /// True when this solver uses the dense path.
     pub fn is_dense(&self) -> bool {
         matches!(self.backend, Backend::Dense(_))
@@ -296,17 +178,16 @@ impl LinearSolver {
         let stack = MemStack::new(&mut self.mem);
         match &mut self.backend {
             Backend::Dense(d) => {
-                let n = self.n;
-                d.assemble(
-                    n,
+                let (row_used, col_used) = (&self.row_used, &self.col_used);
+                let factored = d.factor(
                     &self.pattern,
                     values,
                     diag_shift,
-                    &mut self.row_max,
-                    &mut self.col_max,
-                );
-                check_empty(&self.row_max, &self.col_max, &self.row_used, &self.col_used)?;
-                if let Err(j) = d.factor(n, self.pivot_tol, &self.col_max) {
+                    self.pivot_tol,
+                    (&mut self.row_max, &mut self.col_max),
+                    |row_max, col_max| check_empty(row_max, col_max, row_used, col_used),
+                )?;
+                if let Err(j) = factored {
                     return Err(singular(d.perm[j], j));
                 }
             }
@@ -331,7 +212,7 @@ impl LinearSolver {
         let n = self.n;
         match &mut self.backend {
             _ if n == 0 => {}
-            Backend::Dense(d) => d.solve(n, rhs),
+            Backend::Dense(d) => d.solve(rhs),
             Backend::Sparse(s) => {
                 let stack = MemStack::new(&mut self.mem);
                 s.solve(MatMut::from_column_major_slice_mut(rhs, n, 1), stack);

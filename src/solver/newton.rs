@@ -227,6 +227,14 @@ impl Newton {
         }
     }
 
+    /// Factorisations that searched for pivots (the dense path reuses the last pivots while
+    /// they hold; the sparse path searches every time), failed solves included.
+    pub fn pivot_searches(&self) -> usize {
+        self.lin
+            .dense_counts()
+            .map_or(self.totals.factorizations, |c| c.searched)
+    }
+
     /// Work done by every `solve` since construction, failed ones included.
     pub fn totals(&self) -> NewtonReport {
         self.totals

@@ -221,6 +221,7 @@ impl Transient {
         Stats {
             newton_iterations: newton.iterations,
             factorizations: newton.factorizations,
+            pivot_searches: self.newton.pivot_searches(),
             residual_evals: newton.residual_evals,
             ..self.stats
         }

@@ -258,29 +258,38 @@ impl Transient {
     }
 
     /// `||x[t_0, ..., t_m]||_w`, the m-th divided difference of the newest `m + 1` points
-    /// (about `x^(m) / m!`), with the weights of the newest point.
+    /// (about `x^(m) / m!`), with the weights of the newest point (which the error test of
+    /// the step just accepted left in `w`).
     fn divided_difference_norm(&mut self, m: usize) -> f64 {
-        let t = self.hist_t;
-        // The divisors depend on the times only: their reciprocals once, not per unknown.
-        let mut inv = [[0.0; 4]; 4];
-        for level in 1..=m {
-            for j in 0..=(m - level) {
-                inv[level][j] = 1.0 / (t[j] - t[j + level]);
-            }
-        }
-        for i in 0..self.n {
-            let mut f = [0.0; 4];
-            for (j, fj) in f.iter_mut().enumerate().take(m + 1) {
-                *fj = self.hist_x[j][i];
-            }
-            for (level, inv) in inv.iter().enumerate().take(m + 1).skip(1) {
-                for j in 0..=(m - level) {
-                    f[j] = (f[j] - f[j + 1]) * inv[j];
+        // x[t_0..t_m] = sum_j x_j / prod_{l != j} (t_j - t_l): the weights depend on the times
+        // only, so per unknown it is m + 1 multiply-adds.
+        let t = &self.hist_t;
+        let mut c = [0.0; 4];
+        for (j, c) in c.iter_mut().enumerate().take(m + 1) {
+            let mut p = 1.0;
+            for (l, &tl) in t.iter().enumerate().take(m + 1) {
+                if l != j {
+                    p *= t[j] - tl;
                 }
             }
-            self.scratch[i] = f[0];
+            *c = 1.0 / p;
         }
-        self.tol.weights(&self.hist_x[0], &mut self.w);
+        let [x0, x1, x2, x3] = &self.hist_x;
+        let (x0, x1, x2, x3) = (&x0[..self.n], &x1[..self.n], &x2[..self.n], &x3[..self.n]);
+        if m == 2 {
+            for (i, s) in self.scratch.iter_mut().enumerate() {
+                *s = c[0] * x0[i] + c[1] * x1[i] + c[2] * x2[i];
+            }
+        } else {
+            for (i, s) in self.scratch.iter_mut().enumerate() {
+                *s = c[0] * x0[i] + c[1] * x1[i] + c[2] * x2[i] + c[3] * x3[i];
+            }
+        }
+        debug_assert!({
+            let mut w = self.w.clone();
+            self.tol.weights(&self.hist_x[0], &mut w);
+            w == self.w
+        });
         self.tol.norm(&self.scratch, &self.w)
     }
 }

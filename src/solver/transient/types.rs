@@ -59,6 +59,8 @@ pub struct Stats {
     pub newton_failures: usize,
     pub newton_iterations: usize,
     pub factorizations: usize,
+    /// Factorisations that searched for pivots rather than reusing the last ones.
+    pub pivot_searches: usize,
     pub residual_evals: usize,
     pub root_evals: usize,
 }
