@@ -81,10 +81,16 @@ proptest! {
         }
         for var in [Var::X(0), Var::X(1), Var::Dot(0)] {
             let d = derivative(&sym, var);
+            // The residual as a section of its own, evaluated first (after a full evaluation
+            // elsewhere), then the rest at the same point, as Newton does.
             let mut tb = TapeBuilder::default();
             tb.push(&sym);
+            let section = tb.end_section();
             tb.push(&d);
             let mut tape = tb.finish();
+            tape.eval(0.0, &[x[0] + 0.25, x[1]], &xdot, &[]);
+            tape.eval_section(section, 0.0, &x, &xdot, &[]);
+            prop_assert!(tape.output(0) == value || (tape.output(0).is_nan() && value.is_nan()));
             tape.eval(0.0, &x, &xdot, &[]);
             let exact = d.eval(0.0, &x, &xdot, &[]);
             prop_assert!(tape.output(0) == value || (tape.output(0).is_nan() && value.is_nan()));
