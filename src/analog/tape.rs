@@ -8,8 +8,10 @@
 //! and its derivatives share work when compiled together. A few exact rewrites happen on the
 //! way (`a + -b` is `a - b`, `--a` is `a`, `x / 2^k` is `x * 2^-k`: the tape's values stay
 //! bitwise those of [`Sym::eval`]); instructions no output needs are dropped. Evaluation is one
-//! pass over a flat instruction enum: no allocation, no tree walking. `If` evaluates both
-//! branches and selects (a NaN in the branch not taken is harmless).
+//! pass over a flat instruction enum: no allocation, no tree walking. The instructions that
+//! only one branch of an `If` needs sit behind a jump, so only the taken branch runs (the
+//! condition is computed first; a select then picks the branch's value, as it would if both
+//! had run); branches with less work than a jump are computed unconditionally.
 //!
 //! **Sections.** Roots compiled before [`TapeBuilder::end_section`] need only instructions
 //! that come before every instruction of later roots, so a tape of residuals followed by their
@@ -46,6 +48,10 @@ enum Instr {
     Un(Un, u32),
     Bin(Bin, u32, u32),
     Select(u32, u32, u32),
+    /// Jumps to the given position when the register is zero (the else-branch of a select).
+    IfZero(u32, u32),
+    /// Jumps to the given position.
+    Goto(u32),
 }
 
 /// A compiled set of expressions; output `i` is the value of the `i`-th compiled root.
@@ -77,7 +83,7 @@ pub struct TapeBuilder {
     const_index: FxHashMap<u64, u32>,
     op_index: FxHashMap<Op, u32>,
     outputs: Vec<u32>,
-    /// Number of compiled instructions at the end of each section.
+    /// Number of outputs at the end of each section.
     section_marks: Vec<usize>,
 }
 
@@ -100,7 +106,7 @@ impl TapeBuilder {
     /// Ends the current section: the outputs pushed so far can be evaluated without the
     /// instructions of later ones ([`Tape::eval_section`]). Returns the section's number.
     pub fn end_section(&mut self) -> usize {
-        self.section_marks.push(self.ops.len());
+        self.section_marks.push(self.outputs.len());
         self.section_marks.len() - 1
     }
 
@@ -186,49 +192,17 @@ impl TapeBuilder {
         }
     }
 
-    /// Drops instructions no output needs, moves the loads into the input block and resolves
-    /// operands to final register numbers.
+    /// Drops instructions no output needs, moves the loads into the input block, puts the
+    /// instructions only one branch of an `If` needs behind a jump, and resolves operands to
+    /// final register numbers.
     pub fn finish(self) -> Tape {
         let consts = self.consts.len();
-        // Liveness: operands always precede their instruction, so one backward pass.
-        let mut live = vec![false; self.ops.len()];
-        for &r in &self.outputs {
-            if r & CONST_TAG == 0 {
-                live[r as usize] = true;
-            }
-        }
-        for k in (0..self.ops.len()).rev() {
-            if !live[k] {
-                continue;
-            }
-            let mut mark = |r: u32| {
-                if r & CONST_TAG == 0 {
-                    live[r as usize] = true;
-                }
-            };
-            match self.ops[k] {
-                Op::Un(_, a) => mark(a),
-                Op::Bin(_, a, b) => {
-                    mark(a);
-                    mark(b);
-                }
-                Op::Select(c, a, b) => {
-                    mark(c);
-                    mark(a);
-                    mark(b);
-                }
-                Op::X(_) | Op::Dot(_) | Op::Signal(_) | Op::Now => {}
-            }
-        }
-        let live_ops = || {
-            (0..self.ops.len())
-                .filter(|&k| live[k])
-                .map(|k| (k, self.ops[k]))
-        };
+        let live = liveness(&self.ops, &self.outputs);
         let (mut x_loads, mut dot_loads, mut signal_loads) = (vec![], vec![], vec![]);
         let mut reads_now = false;
-        for (_, op) in live_ops() {
+        for (k, &op) in self.ops.iter().enumerate() {
             match op {
+                _ if !live[k] => {}
                 Op::X(i) => x_loads.push(i),
                 Op::Dot(i) => dot_loads.push(i),
                 Op::Signal(s) => signal_loads.push(s),
@@ -236,16 +210,18 @@ impl TapeBuilder {
                 _ => {}
             }
         }
-        // Register of every live instruction: loads in the input block, the rest after it.
+        let order = Layout::new(&self.ops, &live, &self.outputs).order();
+        // Registers: loads in the input block, each instruction (jumps included) its own
+        // after it, by position.
         let mut reg = vec![u32::MAX; self.ops.len()];
         let inputs = consts as u32;
         let (mut next_x, mut next_dot) = (inputs, inputs + x_loads.len() as u32);
         let mut next_signal = next_dot + dot_loads.len() as u32;
         let now_reg = next_signal + signal_loads.len() as u32;
-        let mut next = now_reg + u32::from(reads_now);
-        let first_instr = next;
-        for (k, op) in live_ops() {
+        let first_instr = now_reg + u32::from(reads_now);
+        for (k, &op) in self.ops.iter().enumerate() {
             let counter = match op {
+                _ if !live[k] => continue,
                 Op::X(_) => &mut next_x,
                 Op::Dot(_) => &mut next_dot,
                 Op::Signal(_) => &mut next_signal,
@@ -253,10 +229,15 @@ impl TapeBuilder {
                     reg[k] = now_reg;
                     continue;
                 }
-                _ => &mut next,
+                _ => continue,
             };
             reg[k] = *counter;
             *counter += 1;
+        }
+        for (pos, e) in order.iter().enumerate() {
+            if let Emit::Op(k) = *e {
+                reg[k as usize] = first_instr + pos as u32;
+            }
         }
         let fix = |r: u32| {
             if r & CONST_TAG != 0 {
@@ -265,9 +246,12 @@ impl TapeBuilder {
                 reg[r as usize]
             }
         };
-        let instrs: Vec<Instr> = live_ops()
-            .filter_map(|(_, op)| {
-                Some(match op {
+        let instrs: Vec<Instr> = order
+            .iter()
+            .map(|&e| match e {
+                Emit::IfZero(c, to) => Instr::IfZero(fix(c), to),
+                Emit::Goto(to) => Instr::Goto(to),
+                Emit::Op(k) => match self.ops[k as usize] {
                     Op::Un(Un::Neg, a) => Instr::Neg(fix(a)),
                     Op::Un(u, a) => Instr::Un(u, fix(a)),
                     Op::Bin(Bin::Add, a, b) => Instr::Add(fix(a), fix(b)),
@@ -276,24 +260,30 @@ impl TapeBuilder {
                     Op::Bin(Bin::Div, a, b) => Instr::Div(fix(a), fix(b)),
                     Op::Bin(b, x, y) => Instr::Bin(b, fix(x), fix(y)),
                     Op::Select(c, a, b) => Instr::Select(fix(c), fix(a), fix(b)),
-                    Op::X(_) | Op::Dot(_) | Op::Signal(_) | Op::Now => return None,
-                })
+                    Op::X(_) | Op::Dot(_) | Op::Signal(_) | Op::Now => {
+                        unreachable!("loads are in the input block, never in the order")
+                    }
+                },
             })
             .collect();
-        // Loads are not instructions: count the live computing ones below each mark.
+        // A section ends after the last instruction its outputs need (the jumps of an `If`
+        // it needs lie before that `If`'s select, so the prefix runs on its own).
+        let mut position = vec![0usize; self.ops.len()];
+        for (pos, e) in order.iter().enumerate() {
+            if let Emit::Op(k) = *e {
+                position[k as usize] = pos + 1;
+            }
+        }
         let section_ends = self
             .section_marks
             .iter()
-            .map(|&mark| {
-                (0..mark)
-                    .filter(|&k| {
-                        live[k]
-                            && !matches!(
-                                self.ops[k],
-                                Op::X(_) | Op::Dot(_) | Op::Signal(_) | Op::Now
-                            )
-                    })
-                    .count()
+            .map(|&outputs| {
+                let needed = liveness(&self.ops, &self.outputs[..outputs]);
+                (0..self.ops.len())
+                    .filter(|&k| needed[k])
+                    .map(|k| position[k])
+                    .max()
+                    .unwrap_or(0)
             })
             .collect();
         let mut regs = self.consts;
@@ -310,6 +300,176 @@ impl TapeBuilder {
             dot_loads,
             signal_loads,
             reads_now,
+        }
+    }
+}
+
+/// Which instructions the given outputs need. Operands always precede their instruction, so
+/// one backward pass.
+fn liveness(ops: &[Op], outputs: &[u32]) -> Vec<bool> {
+    let mut live = vec![false; ops.len()];
+    for &r in outputs {
+        if r & CONST_TAG == 0 {
+            live[r as usize] = true;
+        }
+    }
+    for k in (0..ops.len()).rev() {
+        if !live[k] {
+            continue;
+        }
+        for r in operands(ops[k]) {
+            if r & CONST_TAG == 0 {
+                live[r as usize] = true;
+            }
+        }
+    }
+    live
+}
+
+/// The operands of an instruction (unused slots are constant 0, which no pass follows).
+fn operands(op: Op) -> [u32; 3] {
+    const NONE: u32 = CONST_TAG;
+    match op {
+        Op::Un(_, a) => [a, NONE, NONE],
+        Op::Bin(_, a, b) => [a, b, NONE],
+        Op::Select(c, a, b) => [c, a, b],
+        Op::X(_) | Op::Dot(_) | Op::Signal(_) | Op::Now => [NONE; 3],
+    }
+}
+
+fn is_load(op: Op) -> bool {
+    matches!(op, Op::X(_) | Op::Dot(_) | Op::Signal(_) | Op::Now)
+}
+
+/// An entry of the finished instruction order: an instruction, or a jump (targets are
+/// positions in the order).
+#[derive(Clone, Copy)]
+enum Emit {
+    Op(u32),
+    /// To the else-block when the condition register is zero (as `Select` picks it).
+    IfZero(u32, u32),
+    /// From the end of the then-block over the else-block, to the select.
+    Goto(u32),
+}
+
+/// Instructions grouped by the branch that alone needs them. Block 0 is the top level; every
+/// live `Select` opens a then-block and an else-block inside the block that owns it. An
+/// instruction belongs to the innermost block that contains all its uses (an output is a use
+/// at the top level; a select's condition is a use in the select's own block).
+struct Layout<'a> {
+    ops: &'a [Op],
+    /// Per block: its parent and depth.
+    parent: Vec<u32>,
+    depth: Vec<u32>,
+    /// Per block, its instructions in compile order (so operands come first).
+    members: Vec<Vec<u32>>,
+    /// Per select instruction, its then- and else-block.
+    branches: FxHashMap<u32, (u32, u32)>,
+}
+
+/// Branches with fewer instructions between them than this are computed unconditionally: a
+/// jump costs about as much, and more when the condition flips.
+const MIN_BRANCH_WORK: usize = 2;
+
+impl<'a> Layout<'a> {
+    fn new(ops: &'a [Op], live: &[bool], outputs: &[u32]) -> Self {
+        let mut this = Self {
+            ops,
+            parent: vec![0],
+            depth: vec![0],
+            members: vec![],
+            branches: FxHashMap::default(),
+        };
+        let mut owner = vec![u32::MAX; ops.len()];
+        for &r in outputs {
+            if r & CONST_TAG == 0 {
+                owner[r as usize] = 0;
+            }
+        }
+        // Uses come after definitions: walking backwards, every use of an instruction is
+        // placed before the instruction itself is.
+        for k in (0..ops.len()).rev() {
+            if !live[k] || is_load(ops[k]) {
+                continue;
+            }
+            let own = owner[k];
+            let [c, a, b] = operands(ops[k]);
+            let (a_block, b_block) = match ops[k] {
+                Op::Select(..) => {
+                    let then_block = this.open(own);
+                    let else_block = this.open(own);
+                    this.branches.insert(k as u32, (then_block, else_block));
+                    (then_block, else_block)
+                }
+                _ => (own, own),
+            };
+            for (r, block) in [(c, own), (a, a_block), (b, b_block)] {
+                if r & CONST_TAG == 0 {
+                    let r = r as usize;
+                    owner[r] = if owner[r] == u32::MAX {
+                        block
+                    } else {
+                        this.common(owner[r], block)
+                    };
+                }
+            }
+        }
+        this.members = vec![vec![]; this.parent.len()];
+        for (k, &o) in owner.iter().enumerate() {
+            if live[k] && !is_load(ops[k]) {
+                this.members[o as usize].push(k as u32);
+            }
+        }
+        this
+    }
+
+    fn open(&mut self, parent: u32) -> u32 {
+        self.parent.push(parent);
+        self.depth.push(self.depth[parent as usize] + 1);
+        (self.parent.len() - 1) as u32
+    }
+
+    /// The innermost block containing both.
+    fn common(&self, mut a: u32, mut b: u32) -> u32 {
+        while a != b {
+            if self.depth[a as usize] >= self.depth[b as usize] {
+                a = self.parent[a as usize];
+            } else {
+                b = self.parent[b as usize];
+            }
+        }
+        a
+    }
+
+    /// The instruction order: each block's members in compile order, a select's branches
+    /// just before it, behind jumps when they hold enough work.
+    fn order(&self) -> Vec<Emit> {
+        let mut order = Vec::with_capacity(self.ops.len());
+        self.emit(0, &mut order);
+        order
+    }
+
+    fn emit(&self, block: u32, order: &mut Vec<Emit>) {
+        for &k in &self.members[block as usize] {
+            if let (Op::Select(c, ..), Some(&(t, e))) =
+                (self.ops[k as usize], self.branches.get(&k))
+            {
+                let work = self.members[t as usize].len() + self.members[e as usize].len();
+                if work < MIN_BRANCH_WORK {
+                    self.emit(t, order);
+                    self.emit(e, order);
+                } else {
+                    let branch = order.len();
+                    order.push(Emit::IfZero(c, 0));
+                    self.emit(t, order);
+                    let goto = order.len();
+                    order.push(Emit::Goto(0));
+                    self.emit(e, order);
+                    order[branch] = Emit::IfZero(c, goto as u32 + 1);
+                    order[goto] = Emit::Goto(order.len() as u32);
+                }
+            }
+            order.push(Emit::Op(k));
         }
     }
 }
@@ -345,6 +505,15 @@ impl Tape {
     #[cfg(test)]
     pub fn instructions(&self) -> usize {
         self.instrs.len()
+    }
+
+    /// Number of conditional jumps (for tests).
+    #[cfg(test)]
+    pub fn jumps(&self) -> usize {
+        self.instrs
+            .iter()
+            .filter(|i| matches!(i, Instr::IfZero(..)))
+            .count()
     }
 
     /// Runs the tape. Indices inside were built from the same system's slots, so `x`, `xdot`
@@ -399,10 +568,11 @@ impl Tape {
         if self.computed >= end {
             return;
         }
-        let first = self.first_instr + self.computed;
-        for (k, &instr) in (first..).zip(&self.instrs[self.computed..end]) {
+        let first = self.first_instr;
+        let mut pc = self.computed;
+        while pc < end {
             let r = &*regs;
-            let v = match instr {
+            let v = match self.instrs[pc] {
                 Instr::Add(a, b) => r[a as usize] + r[b as usize],
                 Instr::Sub(a, b) => r[a as usize] - r[b as usize],
                 Instr::Mul(a, b) => r[a as usize] * r[b as usize],
@@ -417,8 +587,22 @@ impl Tape {
                         r[b as usize]
                     }
                 }
+                // The untaken branch's registers keep stale values the select ignores.
+                Instr::IfZero(c, to) => {
+                    pc = if r[c as usize] == 0.0 {
+                        to as usize
+                    } else {
+                        pc + 1
+                    };
+                    continue;
+                }
+                Instr::Goto(to) => {
+                    pc = to as usize;
+                    continue;
+                }
             };
-            regs[k] = v;
+            regs[first + pc] = v;
+            pc += 1;
         }
         self.computed = end;
     }

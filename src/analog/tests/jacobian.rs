@@ -274,3 +274,51 @@ fn affine_means_affine_in_the_unknowns_for_every_signal_and_time() {
         assert!(!e.is_affine(), "{e:?}");
     }
 }
+
+#[test]
+fn only_the_taken_branch_runs_and_shared_work_stays_outside() {
+    use crate::analog::sym::{Bin, Un};
+    // if x0 > 0 then exp(x1) * 3 + x1 / 7 else log(x1 * x1 + 1) - exp(x1), nested in a second
+    // `if` on the same condition: exp(x1) is needed by both branches and computed before the
+    // jump; each branch's own work runs only when taken.
+    let e1 = Sym::un(Un::Exp, Sym::X(1));
+    let then_branch = Sym::add(
+        Sym::mul(e1.clone(), Sym::Const(3.0)),
+        Sym::bin(Bin::Div, Sym::X(1), Sym::Const(7.0)),
+    );
+    let else_branch = Sym::sub(
+        Sym::un(
+            Un::Log,
+            Sym::add(Sym::mul(Sym::X(1), Sym::X(1)), Sym::Const(1.0)),
+        ),
+        e1.clone(),
+    );
+    let cond = Sym::bin(Bin::Gt, Sym::X(0), Sym::Const(0.0));
+    let inner = Sym::cond(cond.clone(), then_branch, else_branch);
+    let outer = Sym::cond(cond, Sym::mul(inner.clone(), Sym::X(1)), e1);
+    let roots = [inner, outer];
+    let mut tb = TapeBuilder::default();
+    for r in &roots {
+        tb.push(r);
+    }
+    let mut tape = tb.finish();
+    // One jump, around the inner branches; the outer then-branch is one multiplication (the
+    // inner `if` is an output of its own), not worth a jump.
+    assert_eq!(tape.jumps(), 1);
+    // Alternate the branch so that stale registers of the untaken one would show.
+    for (k, x0) in [1.0, -1.0, -2.0, 0.5, f64::NAN, -0.5]
+        .into_iter()
+        .enumerate()
+    {
+        let x = [x0, 0.3 + 0.1 * k as f64];
+        tape.eval(0.0, &x, &[0.0; 2], &[]);
+        for (i, r) in roots.iter().enumerate() {
+            let direct = r.eval(0.0, &x, &[0.0; 2], &[]);
+            assert_eq!(
+                tape.output(i).to_bits(),
+                direct.to_bits(),
+                "root {i} at {x:?}"
+            );
+        }
+    }
+}
