@@ -72,6 +72,8 @@ pub struct AnalogSystem {
     /// Signal values read by equations; the last slot is the source scale.
     signals: Vec<f64>,
     reads: Vec<bool>,
+    /// The design signals some equation reads (`reads`, as a list).
+    read_signals: Vec<u32>,
     above: Vec<SignalId>,
     roots_tape: Tape,
     /// Per unknown, the absolute tolerance of its tolerance group, when known.
@@ -514,6 +516,9 @@ impl AnalogSystem {
             exp_tape,
             x_trial: vec![0.0; n],
             signals,
+            read_signals: (0..reads.len() as u32)
+                .filter(|&s| reads[s as usize])
+                .collect(),
             reads,
             above,
             roots_tape: roots.finish(),
@@ -853,5 +858,19 @@ impl DaeSystem for AnalogSystem {
         if let Some(scale) = self.signals.get_mut(self.design_signals) {
             *scale = s;
         }
+    }
+
+    /// The values of the design signals the equations read (not the delay histories, which
+    /// move continuously).
+    fn mode(&self) -> Option<u64> {
+        use std::hash::Hasher;
+        if self.read_signals.is_empty() {
+            return None;
+        }
+        let mut h = rustc_hash::FxHasher::default();
+        for &s in &self.read_signals {
+            h.write_u64(self.signals[s as usize].to_bits());
+        }
+        Some(h.finish())
     }
 }

@@ -83,4 +83,11 @@ pub trait DaeSystem {
 
     /// Source scaling in `[0, 1]` for source stepping (independent sources multiply by it).
     fn set_source_scale(&mut self, _s: f64) {}
+
+    /// An identifier of the discrete state the equations are in (for a model, the values of
+    /// the signals they read), for systems that switch between modes: a restart in a mode seen
+    /// before may start Newton from that mode's last consistent point. `None`: no modes.
+    fn mode(&self) -> Option<u64> {
+        None
+    }
 }

@@ -105,6 +105,10 @@ pub struct NewtonOptions {
     pub tol: f64,
     /// Optional absolute bound on `max |G_i|` that also counts as converged.
     pub residual_tol: Option<f64>,
+    /// Optional bound on `||dx||_w` that also counts as converged once the iteration stops
+    /// contracting quadratically (an update at least half the previous one): rounding has
+    /// then become the floor, and a tight `tol` would never be met.
+    pub stall_tol: Option<f64>,
     pub line_search: bool,
     /// Keep the factorisation across iterations and calls while convergence is fast.
     pub reuse_jacobian: bool,
@@ -126,6 +130,7 @@ impl Default for NewtonOptions {
             max_iter: 50,
             tol: 1.0,
             residual_tol: None,
+            stall_tol: None,
             line_search: true,
             reuse_jacobian: false,
             max_rate: 0.9,
@@ -291,14 +296,18 @@ impl Newton {
             rep.iterations = iter;
             // On an affine problem a full step with this call's (exact) Jacobian is the answer.
             let exact = opts.linear && !stale && p.diagonal_shift() == 0.0 && norm.is_finite();
+            let stalled = opts
+                .stall_tol
+                .is_some_and(|bound| norm <= bound && norm > 0.5 * prev_norm);
             // Without damping, a fresh Jacobian that does not contract means divergence: give
             // up early so the integrator can shrink the step (IDA's rate test).
-            if !norm.is_finite() || (!opts.line_search && norm > opts.max_rate * prev_norm) {
+            let diverging = !opts.line_search && norm > opts.max_rate * prev_norm && !stalled;
+            if !norm.is_finite() || diverging {
                 break;
             }
             // A step already within tolerance needs no damping (and rounding would defeat the
             // sufficient-decrease test there).
-            if opts.line_search && norm > opts.tol {
+            if opts.line_search && norm > opts.tol && !stalled {
                 // Backtracking starts where exponentials stop overshooting.
                 let mut lambda = p.step_limit(x, &self.dx).clamp(1e-9, 1.0);
                 let f0 = norm2(&self.r);
@@ -326,7 +335,7 @@ impl Newton {
                 for (x, d) in x.iter_mut().zip(&self.dx) {
                     *x += d;
                 }
-                if norm <= opts.tol || exact {
+                if norm <= opts.tol || exact || stalled {
                     return Ok(());
                 }
                 Self::eval(p, x, &mut self.r, t, rep)?;
@@ -348,6 +357,6 @@ impl Newton {
     }
 }
 
-fn norm2(v: &[f64]) -> f64 {
+pub(crate) fn norm2(v: &[f64]) -> f64 {
     v.iter().map(|v| v * v).sum::<f64>().sqrt()
 }

@@ -76,6 +76,12 @@ pub struct Transient {
     pending: Vec<(usize, bool)>,
     /// Breakpoints ahead, sorted descending (the next one is last).
     breakpoints: Vec<f64>,
+    /// The last consistent point (Newton's unknowns of the initialisation) of each of the
+    /// last few modes ([`DaeSystem::mode`]), replaced round-robin from `mode_next`.
+    modes: Vec<(u64, Vec<f64>)>,
+    mode_next: usize,
+    /// Scratch: residuals of the two starting points a restart compares.
+    r_start: Vec<f64>,
     stats: Stats,
 }
 
@@ -142,6 +148,7 @@ impl Transient {
                 max_iter: 4,
                 tol: 0.33,
                 residual_tol: None,
+                stall_tol: None,
                 line_search: false,
                 reuse_jacobian: true,
                 max_rate: 0.9,
@@ -177,6 +184,9 @@ impl Transient {
             xdot_tmp: vec![0.0; n],
             pending: Vec::with_capacity(m),
             breakpoints: Vec::new(),
+            modes: Vec::new(),
+            mode_next: 0,
+            r_start: v(),
             stats: Stats::default(),
             opts: options,
         };
@@ -222,7 +232,7 @@ impl Transient {
             newton_iterations: newton.iterations,
             factorizations: newton.factorizations,
             pivot_searches: self.newton.pivot_searches(),
-            residual_evals: newton.residual_evals,
+            residual_evals: newton.residual_evals + self.stats.residual_evals,
             ..self.stats
         }
     }

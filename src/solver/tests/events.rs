@@ -165,3 +165,92 @@ fn targets_within_ulps_are_reached() {
         Advance::StepAccepted(_)
     ));
 }
+
+/// A switched system: `x0' = (s - x0) / tau` with `s` the mode's source, and an algebraic
+/// `x1^3 + x1 = c (1 + 0.01 x0)` whose right side jumps between modes (10 and 0.1), so that a
+/// restart from the other mode's `x1` takes Newton several iterations.
+struct Switched {
+    on: bool,
+    /// Whether `mode` says which mode it is in (else the solver sees no modes).
+    modes: bool,
+    diff: Vec<bool>,
+    pattern: Vec<(usize, usize)>,
+}
+
+impl Switched {
+    fn new(modes: bool) -> Self {
+        Self {
+            on: true,
+            modes,
+            diff: vec![true, false],
+            pattern: vec![(0, 0), (1, 0), (1, 1)],
+        }
+    }
+    fn source(&self) -> (f64, f64) {
+        if self.on { (1.0, 10.0) } else { (0.0, 0.1) }
+    }
+}
+
+impl crate::solver::DaeSystem for Switched {
+    fn len(&self) -> usize {
+        2
+    }
+    fn differential(&self) -> &[bool] {
+        &self.diff
+    }
+    fn pattern(&self) -> &[(usize, usize)] {
+        &self.pattern
+    }
+    fn residual(&mut self, _t: f64, x: &[f64], xdot: &[f64], out: &mut [f64]) {
+        let (s, c) = self.source();
+        out[0] = 1e-3 * xdot[0] - (s - x[0]);
+        out[1] = x[1] * x[1] * x[1] + x[1] - c * (1.0 + 0.01 * x[0]);
+    }
+    fn jacobian(&mut self, _t: f64, x: &[f64], _xdot: &[f64], alpha: f64, out: &mut [f64]) {
+        let (_, c) = self.source();
+        out[0] = 1e-3 * alpha + 1.0;
+        out[1] = -0.01 * c;
+        out[2] = 3.0 * x[1] * x[1] + 1.0;
+    }
+    fn mode(&self) -> Option<u64> {
+        self.modes.then_some(u64::from(self.on))
+    }
+}
+
+/// Runs 40 half-periods of 0.5 ms, restarting at each switch; returns the final state and
+/// the Newton iterations.
+fn run_switched(modes: bool) -> (Vec<f64>, usize) {
+    let mut s = Switched::new(modes);
+    let x0 = [0.0, 2.0];
+    let mut tr = Transient::new(&mut s, 0.0, &x0, opts(1e-6, 1e-9)).expect("start");
+    for k in 1..=40 {
+        let t = 0.5e-3 * k as f64;
+        while tr.advance(&mut s, t).expect("step") != Advance::Reached(t) {}
+        s.on = !s.on;
+        let x = tr.state().to_vec();
+        tr.restart(&mut s, t, &x).expect("restart");
+    }
+    (tr.state().to_vec(), tr.stats().newton_iterations)
+}
+
+/// A restart in a mode seen before starts from that mode's last consistent point: fewer
+/// Newton iterations, the same trajectory (to the initialisation's tolerance, far inside the
+/// integrator's).
+#[test]
+fn restarts_start_from_the_modes_last_consistent_point() {
+    let (with, iterations_with) = run_switched(true);
+    let (without, iterations_without) = run_switched(false);
+    for (a, b) in with.iter().zip(&without) {
+        assert!(
+            (a - b).abs() <= 1e-9 * b.abs().max(1.0),
+            "{with:?} vs {without:?}"
+        );
+    }
+    assert!(
+        iterations_with + 40 <= iterations_without,
+        "{iterations_with} iterations with modes, {iterations_without} without"
+    );
+    // The last restart (into the on mode) is consistent: x1^3 + x1 = 10 (1 + 0.01 x0).
+    let (x0, x1) = (with[0], with[1]);
+    assert!((x1 * x1 * x1 + x1 - 10.0 * (1.0 + 0.01 * x0)).abs() < 1e-9);
+}

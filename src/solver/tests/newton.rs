@@ -146,3 +146,43 @@ fn non_finite_residual_is_reported() {
         "{err:?}"
     );
 }
+
+/// With a bound no update can meet (the residual carries a rapid ripple of 1e-10, as
+/// rounding would), the iteration ends once it stops contracting within `stall_tol`, at the
+/// root to the ripple's size; without the stall test it fails.
+#[test]
+fn a_stalled_iteration_within_its_bound_converges() {
+    use crate::solver::LinearOptions;
+    use crate::solver::newton::{Newton, NewtonOptions, NonlinearProblem, Tolerances};
+    struct RippledCube;
+    impl NonlinearProblem for RippledCube {
+        fn residual(&mut self, x: &[f64], out: &mut [f64]) {
+            out[0] = x[0] * x[0] * x[0] - 2.0 + 1e-10 * (1e13 * x[0]).sin();
+        }
+        fn jacobian(&mut self, x: &[f64], out: &mut [f64]) {
+            out[0] = 3.0 * x[0] * x[0];
+        }
+    }
+    let root = 2.0_f64.cbrt();
+    let tol = Tolerances::uniform(1, 0.0, 1e-14);
+    for stall_tol in [None, Some(1e6)] {
+        let mut newton = Newton::new(1, &[(0, 0)], LinearOptions::default()).expect("valid");
+        let opts = NewtonOptions {
+            tol: 1e-3,
+            stall_tol,
+            ..NewtonOptions::default()
+        };
+        let mut x = [3.0];
+        let solved = newton.solve(&mut RippledCube, &mut x, &tol, &opts, 0.0);
+        match stall_tol {
+            None => assert!(solved.is_err(), "{x:?} {solved:?}"),
+            Some(_) => {
+                let report = solved.expect("stalls at the root");
+                assert!(
+                    (x[0] - root).abs() < 1e-9 && report.iterations < 20,
+                    "{x:?} {report:?}"
+                );
+            }
+        }
+    }
+}

@@ -208,13 +208,18 @@ impl Transient {
             1
         };
         self.stats.accepted_steps += 1;
-        self.hist_x.rotate_right(1);
+        // Vectors move by swapping (n-long copies call memmove, which costs more than a
+        // small system's whole error test): the oldest history vector and the old
+        // `xdot_prev` become the scratch `x_new` and `xdot_new`.
+        self.hist_x.swap(2, 3);
+        self.hist_x.swap(1, 2);
+        self.hist_x.swap(0, 1);
+        std::mem::swap(&mut self.hist_x[0], &mut self.x_new);
         self.hist_t.rotate_right(1);
-        self.hist_x[0].copy_from_slice(&self.x_new);
         self.hist_t[0] = t_new;
         self.nhist = (self.nhist + 1).min(4);
         std::mem::swap(&mut self.xdot_prev, &mut self.xdot);
-        self.xdot.copy_from_slice(&self.xdot_new);
+        std::mem::swap(&mut self.xdot, &mut self.xdot_new);
         self.int_t0 = self.t;
         self.int_valid = true;
         self.int_alg_known = self.xdot_alg_known;
