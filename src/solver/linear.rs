@@ -28,11 +28,15 @@ mod sparse;
 /// are factored densely.
 ///
 /// Measured with `cargo bench --bench solver -- crossover` (factor + solve of tridiagonal
-/// N-node ladder matrices, release build, 2-core x86-64 box, dense / sparse): N = 4: 0.11 /
-/// 0.38 us; N = 8: 0.29 / 0.66 us; N = 16: 0.80 / 1.18 us; N = 24: 1.55 / 1.74 us; N = 32:
-/// 2.5 / 2.4 us; N = 64: 8.8 / 4.3 us; N = 128: 35 / 8.8 us. The paths cross near 30 on a
-/// tridiagonal matrix, the sparse path's best case; denser circuit matrices favour the dense
-/// path a little longer.
+/// N-node ladder matrices, release build, 2-core x86-64 box, dense / sparse). With a full
+/// pivot search every time the paths crossed near 30 (N = 24: 1.55 / 1.74 us; N = 32: 2.5 /
+/// 2.4 us; N = 64: 8.8 / 4.3 us). Refactorisations that reuse the pivots run over the
+/// structural entries only, and now the dense path wins everywhere measured (N = 8: 0.18 /
+/// 0.66 us; N = 24: 0.60 / 1.79 us; N = 32: 0.82 / 2.3 us; N = 128: 4.2 / 8.7 us). The
+/// crossover stays where it was all the same: the dense path's first factorisation (and every
+/// new pivot search) is O(N^3), its schedule follows the pivots with no fill-reducing order,
+/// and its storage is N^2; a tridiagonal matrix, which produces no fill in any order, does not
+/// show what that costs on a meshed circuit.
 pub const DEFAULT_DENSE_MAX: usize = 28;
 
 /// Tuning of the linear solver.
