@@ -31,8 +31,8 @@ mod sparse;
 /// N-node ladder matrices, release build, 2-core x86-64 box, dense / sparse). With a full
 /// pivot search every time the paths crossed near 30 (N = 24: 1.55 / 1.74 us; N = 32: 2.5 /
 /// 2.4 us; N = 64: 8.8 / 4.3 us). Refactorisations that reuse the pivots run over the
-/// structural entries only, and now the dense path wins everywhere measured (N = 8: 0.18 /
-/// 0.66 us; N = 24: 0.60 / 1.79 us; N = 32: 0.82 / 2.3 us; N = 128: 4.2 / 8.7 us). The
+/// structural entries only, and now the dense path wins everywhere measured (N = 8: 0.16 /
+/// 0.66 us; N = 24: 0.53 / 1.79 us; N = 32: 0.72 / 2.3 us; N = 128: 3.0 / 8.7 us). The
 /// crossover stays where it was all the same: the dense path's first factorisation (and every
 /// new pivot search) is O(N^3), its schedule follows the pivots with no fill-reducing order,
 /// and its storage is N^2; a tridiagonal matrix, which produces no fill in any order, does not

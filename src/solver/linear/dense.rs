@@ -5,8 +5,9 @@
 //! its pivots: only the values move. So after each full factorisation (pivot search in every
 //! column) the elimination under the pivots it chose is compiled into a [`Schedule`]: which
 //! rows each pivot eliminates and which columns each pivot row updates, fill included, from the
-//! pattern alone. Later factorisations assemble straight into the permuted rows and run the
-//! schedule, touching only structural entries and searching nothing: 18 entries and a handful
+//! pattern alone. Later factorisations assemble straight into the permuted rows (zeroing only
+//! the structural positions no entry covers, not all n^2) and run the schedule, touching only
+//! structural entries and searching nothing: 18 entries and a handful
 //! of multiply-adds for the H-bridge's 7 unknowns, where the full loop does 91. A pivot that
 //! falls below [`PIVOT_THRESHOLD`] times the largest entry left in its column (threshold
 //! partial pivoting, as SPICE's Sparse and KLU's refactorisation do) sends the factorisation
@@ -28,6 +29,7 @@ pub(super) struct Dense {
     /// for the full search, in the schedule's row order for a refactorisation.
     natural: Layout,
     permuted: Layout,
+    assembly: Assembly,
     pub(super) perm: Vec<usize>,
     /// `1 / U[k][k]`: back substitution multiplies (a division's latency, about 15 cycles,
     /// would sit on the solve's serial dependency chain once per row).
@@ -54,6 +56,16 @@ pub struct DenseCounts {
 struct Layout {
     at: Vec<usize>,
     diag: Vec<usize>,
+}
+
+/// Assembly in the schedule's row order without clearing all of `a` (n^2 entries, where the
+/// schedule reads only the structural ones): structural positions no pattern entry covers (fill,
+/// a diagonal the pattern lacks) are zeroed, the first pattern entry at each position is
+/// stored, later ones (duplicates) added; all as (position, value index).
+struct Assembly {
+    zero: Vec<usize>,
+    assign: Vec<(usize, usize)>,
+    accumulate: Vec<(usize, usize)>,
 }
 
 /// The compiled elimination for one pivot sequence. Row indices are positions in the factors
@@ -85,6 +97,11 @@ impl Dense {
             natural: Layout {
                 at: pattern.iter().map(|&(r, c)| r * n + c).collect(),
                 diag: (0..n).map(|i| i * n + i).collect(),
+            },
+            assembly: Assembly {
+                zero: Vec::with_capacity(n * n),
+                assign: Vec::with_capacity(pattern.len()),
+                accumulate: Vec::with_capacity(pattern.len()),
             },
             permuted: Layout {
                 at: vec![0; pattern.len()],
@@ -174,10 +191,15 @@ impl Dense {
         diag_shift: f64,
         col_max: &mut [f64],
     ) {
-        let (a, layout) = (&mut self.a, &self.permuted);
-        a.fill(0.0);
-        for (&k, &v) in layout.at.iter().zip(values) {
-            a[k] += v;
+        let (a, layout, s) = (&mut self.a, &self.permuted, &self.assembly);
+        for &k in &s.zero {
+            a[k] = 0.0;
+        }
+        for &(k, v) in &s.assign {
+            a[k] = values[v];
+        }
+        for &(k, v) in &s.accumulate {
+            a[k] += values[v];
         }
         if diag_shift != 0.0 {
             for &k in &layout.diag {
@@ -283,6 +305,21 @@ impl Dense {
         for (i, d) in self.permuted.diag.iter_mut().enumerate() {
             *d = row_of(i) * n + i;
         }
+        // `fill` marks the structure in pivot order: each position's first pattern entry is
+        // stored (and unmarks it), later ones add; what stays marked is zeroed.
+        let s = &mut self.assembly;
+        s.zero.clear();
+        s.assign.clear();
+        s.accumulate.clear();
+        for (v, &k) in self.permuted.at.iter().enumerate() {
+            if fill[k] {
+                fill[k] = false;
+                s.assign.push((k, v));
+            } else {
+                s.accumulate.push((k, v));
+            }
+        }
+        s.zero.extend((0..n * n).filter(|&k| fill[k]));
     }
 
     /// Eliminates with the schedule's pivots. False (and `a` spoilt) when a pivot is no
