@@ -15,6 +15,7 @@ use std::path::PathBuf;
 
 use vams::analog::AnalogSystem;
 use vams::cli::load::load;
+use vams::design::SignalId;
 use vams::elaborate::{ElabOptions, elaborate};
 use vams::kernel::{Outcome, SimOptions, SimResult, simulate};
 use vams::solver::DaeSystem;
@@ -47,7 +48,22 @@ fn run(synchronous: bool) -> SimResult {
     };
     let design = elaborate(&loaded.sources, &loaded.files, &options).expect("elaborates");
     // The diodes' exponentials: Newton must confirm every step (`DaeSystem::is_linear`).
-    assert!(!AnalogSystem::new(&design).expect("builds").is_linear());
+    let mut system = AnalogSystem::new(&design).expect("builds");
+    assert!(!system.is_linear());
+    // The switches' signals are what the equations read: their values name the mode that a
+    // restart at a switching edge starts from (`DaeSystem::mode`).
+    let hs1_on = design
+        .signals
+        .iter()
+        .position(|s| s.name == "hs1_on")
+        .map(|i| SignalId(i as u32))
+        .expect("hs1_on is a signal");
+    let off = system.mode();
+    system.set_signal(hs1_on, 1.0);
+    let on = system.mode();
+    assert!(off.is_some() && on.is_some() && on != off, "{off:?} {on:?}");
+    system.set_signal(hs1_on, 0.0);
+    assert_eq!(system.mode(), off);
     let sim = SimOptions {
         stop: STOP,
         probes: ["motor.i", "motor.w", "i_dl", "v_dl"]
