@@ -72,8 +72,6 @@ pub struct AnalogSystem {
     /// Signal values read by equations; the last slot is the source scale.
     signals: Vec<f64>,
     reads: Vec<bool>,
-    /// The design signals some equation reads (`reads`, as a list).
-    read_signals: Vec<u32>,
     above: Vec<SignalId>,
     roots_tape: Tape,
     /// Per unknown, the absolute tolerance of its tolerance group, when known.
@@ -516,9 +514,6 @@ impl AnalogSystem {
             exp_tape,
             x_trial: vec![0.0; n],
             signals,
-            read_signals: (0..reads.len() as u32)
-                .filter(|&s| reads[s as usize])
-                .collect(),
             reads,
             above,
             roots_tape: roots.finish(),
@@ -864,12 +859,17 @@ impl DaeSystem for AnalogSystem {
     /// move continuously).
     fn mode(&self) -> Option<u64> {
         use std::hash::Hasher;
-        if self.read_signals.is_empty() {
+        if !self.reads.contains(&true) {
             return None;
         }
         let mut h = rustc_hash::FxHasher::default();
-        for &s in &self.read_signals {
-            h.write_u64(self.signals[s as usize].to_bits());
+        for (value, _) in self
+            .signals
+            .iter()
+            .zip(&self.reads)
+            .filter(|(_, read)| **read)
+        {
+            h.write_u64(value.to_bits());
         }
         Some(h.finish())
     }

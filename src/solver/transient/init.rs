@@ -16,8 +16,7 @@
 //! the integrator could resolve, so a consistent state moves by `O(h x')` only.
 
 use super::Transient;
-use crate::solver::newton::norm2;
-use crate::solver::newton::{NewtonOptions, NonlinearProblem};
+use crate::solver::newton::{NewtonOptions, NonlinearProblem, norm2};
 use crate::solver::{DaeSystem, SolveError};
 
 /// Newton's bound on the weighted update of the consistent initialisation.

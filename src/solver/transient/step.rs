@@ -208,8 +208,7 @@ impl Transient {
             1
         };
         self.stats.accepted_steps += 1;
-        // Vectors move by swapping (n-long copies call memmove, which costs more than a
-        // small system's whole error test): the oldest history vector and the old
+        // Vectors move by swapping rather than copying: the oldest history vector and the old
         // `xdot_prev` become the scratch `x_new` and `xdot_new`.
         self.hist_x.swap(2, 3);
         self.hist_x.swap(1, 2);
