@@ -125,8 +125,9 @@ impl Dense {
     }
 
     /// Factors the matrix whose entries are `values` (pattern order) plus `diag_shift` on the
-    /// diagonal, recording the largest magnitude of each row and column of the assembled
-    /// matrix. Reuses the last pivots when they still hold, else searches. `Err(j)`: the pivot
+    /// diagonal. Reuses the last pivots when they still hold, else searches; a search records
+    /// the largest magnitude of each row and column of the assembled matrix in `maxima`
+    /// (zeroed by the caller). `Err(j)`: the pivot
     /// step `j` found no pivot above `pivot_tol * col_max[j]` (the matrix counts as singular;
     /// `perm[j]` is the row). `check` sees the maxima before any elimination.
     pub(super) fn factor<E>(
@@ -147,30 +148,18 @@ impl Dense {
                 self.counts.reused += 1;
                 return Ok(Ok(()));
             }
-            row_max.fill(0.0);
             col_max.fill(0.0);
-            assemble(
-                &mut self.a,
-                &self.natural,
-                pattern,
-                values,
-                diag_shift,
-                row_max,
-                col_max,
-            );
-            check(row_max, col_max)?;
-        } else {
-            assemble(
-                &mut self.a,
-                &self.natural,
-                pattern,
-                values,
-                diag_shift,
-                row_max,
-                col_max,
-            );
-            check(row_max, col_max)?;
         }
+        assemble(
+            &mut self.a,
+            &self.natural,
+            pattern,
+            values,
+            diag_shift,
+            row_max,
+            col_max,
+        );
+        check(row_max, col_max)?;
         self.counts.searched += 1;
         let searched = self.search(pivot_tol, col_max);
         if searched.is_ok() {
