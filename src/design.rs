@@ -75,6 +75,19 @@ pub struct Design {
 }
 
 impl Design {
+    /// The predefined signal `std.standard.domain` (LRM 1076.1, 12.6.4): the simulator's own
+    /// phase, `quiescent_domain` while the quiescent point is computed, then `time_domain`.
+    /// Every design has it (`std.standard` is always elaborated) unless a test builds one by hand.
+    pub fn domain_signal(&self) -> Option<SignalId> {
+        self.signals
+            .iter()
+            .position(|s| {
+                s.name == "domain"
+                    && matches!(&s.ty, Type::Enum { name, .. } if name == "domain_type")
+            })
+            .map(|i| SignalId(i as u32))
+    }
+
     /// Gives back the spare capacity of every table: they grew by doubling during elaboration,
     /// and a large design otherwise carries up to half of each unused into simulation.
     pub fn shrink_to_fit(&mut self) {

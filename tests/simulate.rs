@@ -582,3 +582,30 @@ fn dot_dot_and_integ_of_a_second_order_step() {
     // The integral reaches 0.01 s: 1e-6 s absolute is 1e-4 relative.
     assert!(err < 1e-6, "x'integ error {err}");
 }
+
+#[test]
+fn domain_idiom_starts_from_the_quiescent_value_then_integrates() {
+    // Before the fix, `domain` stayed quiescent_domain: `v == v0` held for the whole run.
+    let result = run(
+        "domain_initial_condition",
+        SimOptions {
+            stop: 5e-3,
+            reltol: 1e-5,
+            ..SimOptions::default()
+        },
+    );
+    assert_eq!(result.outcome, Outcome::Finished);
+    assert_eq!(report_times(&result, "time domain"), vec![0.0]);
+    let w = &result.waveforms;
+    let v = w.column("c1.v").expect("c1.v recorded");
+    assert_eq!(v.values[0], 0.25, "the quiescent point holds v0");
+    let tau = 1e-3;
+    // As for rc_charge: the BDF global error is about 10 x reltol, inside 5e-4 V here.
+    for (&t, &v) in w.times.iter().zip(&v.values) {
+        let exact = 1.0 - 0.75 * (-t / tau).exp();
+        assert!((v - exact).abs() < 5e-4, "t = {t}: v = {v}, exact {exact}");
+    }
+    assert!(*w.times.last().unwrap() == 5e-3);
+    let events = w.column("domain_events").expect("recorded");
+    assert_eq!(*events.values.last().unwrap(), 1.0);
+}

@@ -90,7 +90,24 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         }
         // Signal changes from here on count as discontinuities; initial values are pushed.
         this.kernel.signals.take_changed(&mut this.changed);
+        this.enter_time_domain();
         Ok(this)
+    }
+
+    /// `std.standard.domain` was `quiescent_domain` for the quiescent point; it becomes
+    /// `time_domain` with an event in the first delta cycle at time 0 (LRM 1076.1, 12.6.4), so
+    /// that `wait until domain = time_domain` resumes and equations that read it switch (a
+    /// discontinuity: the integrator restarts from the quiescent point in the new equations).
+    fn enter_time_domain(&mut self) {
+        let Some(s) = self.design.domain_signal() else {
+            return;
+        };
+        let crate::design::Type::Enum { literals, .. } = &self.design.signals[s.index()].ty else {
+            return;
+        };
+        if let Some(p) = literals.iter().position(|l| l == "time_domain") {
+            self.kernel.signals.force(s, Value::Enum(p as u32));
+        }
     }
 
     fn quiescent(&mut self, mut sys: A, options: &SimOptions) -> Result<Analog<A>, SimError> {

@@ -86,12 +86,9 @@ impl Recorder {
     }
 }
 
-/// `std.standard.domain`, present in every design: the simulator's own phase, not the model's.
-fn is_standard_domain(s: &crate::design::Signal) -> bool {
-    s.name == "domain" && matches!(&s.ty, Type::Enum { name, .. } if name == "domain_type")
-}
-
 fn default_probes(design: &Design) -> Vec<Probe> {
+    // `std.standard.domain` is the simulator's own phase, not the model's.
+    let domain = design.domain_signal();
     let quantities = design
         .quantities
         .iter()
@@ -103,11 +100,11 @@ fn default_probes(design: &Design) -> Vec<Probe> {
         .iter()
         .enumerate()
         .filter(|(_, s)| {
-            s.kind == SignalKind::Explicit
-                && !matches!(s.ty, Type::String | Type::Array { .. })
-                && !is_standard_domain(s)
+            s.kind == SignalKind::Explicit && !matches!(s.ty, Type::String | Type::Array { .. })
         })
-        .map(|(i, _)| Probe::Signal(SignalId(i as u32)));
+        .map(|(i, _)| SignalId(i as u32))
+        .filter(|&s| Some(s) != domain)
+        .map(Probe::Signal);
     quantities.chain(signals).collect()
 }
 
