@@ -323,11 +323,30 @@ impl AnalogSystem {
             .iter()
             .map(|u| matches!(u, Unknown::Potential(_)))
             .collect();
+        // Unknowns outside every tolerance group are judged on the voltage scale.
+        let full_abstol = tolerance::per_unknown(design, &asm.unknowns);
+        let pivot_scale: Vec<f64> = full_abstol.iter().map(|a| a.unwrap_or(1e-6)).collect();
+        let row_abstol: Vec<Option<f64>> = asm
+            .origins
+            .iter()
+            .map(|origin| match origin {
+                Origin::Conservation(t) => {
+                    let nature = &design.natures[design.terminals[t.index()].nature.index()];
+                    nature
+                        .through_tolerance
+                        .as_deref()
+                        .and_then(tolerance::group_abstol)
+                }
+                _ => None,
+            })
+            .collect();
         let mut elim = reduce::eliminate(
             scaled,
             &reduce::Candidates {
                 protected: &protected,
                 potential: &potential,
+                abstol: &pivot_scale,
+                row_abstol: &row_abstol,
             },
         );
 
@@ -454,7 +473,6 @@ impl AnalogSystem {
         // that quantity's absolute tolerance divided by `|c|`, so the error control stays as
         // strict as it was on the quantity (a transfer function's internal state is often
         // scaled far below its output).
-        let full_abstol = tolerance::per_unknown(design, &all_unknowns);
         let mut group_abstol: Vec<Option<f64>> = (0..all_unknowns.len())
             .filter(|&j| live[j] != usize::MAX)
             .map(|j| full_abstol[j])

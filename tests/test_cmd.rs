@@ -164,5 +164,6 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_overvoltage ... ok"))
         .stdout(contains("test tb_rc ... ok"))
         .stdout(contains("test tb_tracking ... ok"))
-        .stdout(contains("3 passed, 0 failed"));
+        .stdout(contains("test tb_rlc_elimination ... ok"))
+        .stdout(contains("7 passed, 0 failed"));
 }

@@ -45,7 +45,26 @@ pub struct Candidates<'a> {
     pub protected: &'a [bool],
     /// True for terminal potentials (eliminated only after quantities).
     pub potential: &'a [bool],
+    /// The absolute tolerance of each unknown: the scale on which its error is judged, so
+    /// that coefficients of unknowns in different units compare (see [`MAX_AMPLIFICATION`]).
+    pub abstol: &'a [f64],
+    /// Per assembly row, the tolerance its residual is known to when it has one of its own (a
+    /// conservation law balances through quantities: their group's tolerance).
+    pub row_abstol: &'a [Option<f64>],
 }
+
+/// Largest factor by which solving an equation for an unknown may magnify the survivors'
+/// errors, measured in tolerances: solving `a_u x_u + sum a_k x_k = 0` for `x_u` moves it by
+/// `|a_k / a_u|` per unit of `x_k`, so `|a_k| abstol_k / (|a_u| abstol_u)` is how many of its
+/// own tolerances `x_u` moves when `x_k` is off by its tolerance. The full system controls
+/// `x_u`'s error directly; the reduced one only through the survivors, so a small pivot
+/// (a node's voltage from a current balance across a 100 MOhm leak: 1e5) turns errors that
+/// are within tolerance into wrong values. This is threshold pivoting with the rows and
+/// columns scaled by the tolerances. A row with a tolerance of its own (a current balance)
+/// counts it as one more term: the row holds only to that, so solving it for `x_u` leaves
+/// `x_u` uncertain by `row_abstol / |a_u|` whatever the other terms (a diode's current,
+/// a capacitor's `C v'`) contribute.
+pub const MAX_AMPLIFICATION: f64 = 100.0;
 
 /// Solves equations for unknowns where the rules above allow it, in assembly order.
 pub fn eliminate(residuals: Vec<Sym>, candidates: &Candidates<'_>) -> Elimination {
@@ -65,7 +84,8 @@ pub fn eliminate(residuals: Vec<Sym>, candidates: &Candidates<'_>) -> Eliminatio
     let mut kept = Vec::new();
     for (row, r) in residuals.into_iter().enumerate() {
         let r = state.resolve(r);
-        match choose(&r, candidates, &differentiated) {
+        let row_abstol = candidates.row_abstol.get(row).copied().flatten();
+        match choose(&r, candidates, row_abstol, &differentiated) {
             Some((j, replacement)) => {
                 if differentiated[j] {
                     replacement.visit(&mut |e| {
@@ -167,7 +187,12 @@ impl Resolver {
 }
 
 /// The unknown to solve `e = 0` for and its replacement, if any qualifies.
-fn choose(e: &Sym, candidates: &Candidates<'_>, differentiated: &[bool]) -> Option<(usize, Sym)> {
+fn choose(
+    e: &Sym,
+    candidates: &Candidates<'_>,
+    row_abstol: Option<f64>,
+    differentiated: &[bool],
+) -> Option<(usize, Sym)> {
     // Occurrences of each unknown as x and as x' (equations are small: a linear scan).
     let mut seen: Vec<(usize, u32, u32)> = Vec::new();
     e.visit(&mut |node| {
@@ -190,18 +215,39 @@ fn choose(e: &Sym, candidates: &Candidates<'_>, differentiated: &[bool]) -> Opti
         }
     });
     let rank = |j: usize| usize::from(candidates.potential[j]) * 2 + usize::from(differentiated[j]);
-    let mut best: Option<(usize, usize, Sym)> = None;
-    for &(j, xs, dots) in &seen {
+    // The error scale of each term `a_k x_k` with a constant coefficient.
+    let scales: Vec<f64> = seen
+        .iter()
+        .map(|&(k, xs, _)| match (xs, coefficient(e, k)) {
+            (1, Some(a)) => a.abs() * candidates.abstol[k],
+            _ => 0.0,
+        })
+        .collect();
+    let mut best: Option<(usize, f64, usize, Sym)> = None;
+    for (&(j, xs, dots), &own) in seen.iter().zip(&scales) {
         if xs != 1 || dots != 0 || candidates.protected[j] {
             continue;
         }
-        if best.as_ref().is_some_and(|b| b.0 <= rank(j)) {
+        if best.as_ref().is_some_and(|b| b.0 < rank(j)) {
             continue;
         }
         let Some(a) = coefficient(e, j) else {
             continue;
         };
         if !(a.is_finite() && a != 0.0) {
+            continue;
+        }
+        let largest = scales
+            .iter()
+            .fold(row_abstol.unwrap_or(0.0), |m, &s| m.max(s));
+        let amplification = largest / own;
+        // (A NaN amplification, from a zero tolerance, never qualifies.)
+        let acceptable = amplification <= MAX_AMPLIFICATION;
+        if !acceptable
+            || best
+                .as_ref()
+                .is_some_and(|b| b.0 == rank(j) && b.1 <= amplification)
+        {
             continue;
         }
         let rest = substitute_zero(e, j);
@@ -225,9 +271,9 @@ fn choose(e: &Sym, candidates: &Candidates<'_>, differentiated: &[bool]) -> Opti
         if differentiated[j] && affine(&replacement).is_none_or(|t| t.len() > 1) {
             continue;
         }
-        best = Some((rank(j), j, replacement));
+        best = Some((rank(j), amplification, j, replacement));
     }
-    best.map(|(_, j, r)| (j, r))
+    best.map(|(_, _, j, r)| (j, r))
 }
 
 /// The constant coefficient of `X(j)` in `e`, when its single occurrence is in a linear
@@ -411,6 +457,8 @@ mod tests {
             &Candidates {
                 protected: &protected,
                 potential: &potential,
+                abstol: &[1.0; 4][..potential.len()],
+                row_abstol: &[],
             },
         );
         let eliminated: Vec<bool> = out.replacement.iter().map(Option::is_some).collect();
@@ -438,6 +486,8 @@ mod tests {
             &Candidates {
                 protected: &protected,
                 potential: &potential,
+                abstol: &[1.0; 4][..potential.len()],
+                row_abstol: &[],
             },
         );
         assert!(out.replacement.iter().all(Option::is_none));
@@ -455,6 +505,8 @@ mod tests {
             &Candidates {
                 protected: &protected,
                 potential: &potential,
+                abstol: &[1.0; 4][..potential.len()],
+                row_abstol: &[],
             },
         );
         assert!(out.replacement[0].is_some());
@@ -473,10 +525,51 @@ mod tests {
             &Candidates {
                 protected: &protected,
                 potential: &potential,
+                abstol: &[1.0; 4][..potential.len()],
+                row_abstol: &[],
             },
         );
         let eliminated: Vec<bool> = out.replacement.iter().map(Option::is_some).collect();
         assert_eq!(eliminated, [false, true, false]);
+    }
+
+    #[test]
+    fn small_pivots_measured_in_tolerances_are_refused() {
+        // g * v(a) - i = 0 with i an inductor's current (kept): v(a) = i / g is a node voltage
+        // from a current balance. Across a 100 Ohm conductance a current error of its
+        // tolerance (1e-9 A) moves v(a) by 1e-7 V, a tenth of its own; across a 100 MOhm leak
+        // by 0.1 V, 1e5 of its tolerances: that unknown must stay.
+        for (g, eliminated) in [(1e-2, true), (1e-8, false)] {
+            let residuals = vec![Sym::sub(Sym::mul(c(g), x(0)), x(1))];
+            let out = eliminate(
+                residuals,
+                &Candidates {
+                    protected: &[false, true],
+                    potential: &[true, false],
+                    abstol: &[1e-6, 1e-9],
+                    row_abstol: &[],
+                },
+            );
+            assert_eq!(out.replacement[0].is_some(), eliminated, "g = {g}");
+        }
+    }
+
+    #[test]
+    fn among_equal_ranks_the_best_conditioned_pivot_wins() {
+        // v - r i = 0 with r = 0.01: i = v / r would carry v's error 1e5 times in tolerances;
+        // v = r i carries none, so v goes.
+        let residuals = vec![Sym::sub(x(0), Sym::mul(c(0.01), x(1)))];
+        let out = eliminate(
+            residuals,
+            &Candidates {
+                protected: &[false, false],
+                potential: &[false, false],
+                abstol: &[1e-6, 1e-9],
+                row_abstol: &[],
+            },
+        );
+        assert!(out.replacement[0].is_some());
+        assert!(out.replacement[1].is_none());
     }
 
     #[test]
@@ -487,6 +580,8 @@ mod tests {
             &Candidates {
                 protected: &[true],
                 potential: &[false],
+                abstol: &[1.0],
+                row_abstol: &[],
             },
         );
         assert!(out.replacement[0].is_none());

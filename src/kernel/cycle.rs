@@ -43,6 +43,9 @@ pub(crate) struct Simulation<'d, A> {
     /// Quantity values and derivatives at the current time, by `QuantityId`.
     values: Vec<f64>,
     derivatives: Vec<f64>,
+    /// Quantity values at the quiescent point (every `x'` zero), before the integrator's
+    /// consistent initialisation gives the derivatives their values at `0+`.
+    quiescent_values: Vec<f64>,
     changed: Vec<SignalId>,
     breaks: Vec<(QuantityId, f64)>,
     outcome: Option<Outcome>,
@@ -77,6 +80,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             stop: options.stop,
             kernel,
             analog: None,
+            quiescent_values: values.clone(),
             values,
             derivatives,
             changed: Vec::new(),
@@ -156,9 +160,17 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             &fixed,
             options.reltol,
             &abstol,
-            &OpOptions::default(),
+            &quiescent_options(),
         );
         let (x, _) = point.map_err(|e| solve_error(e, 0.0, &sys, &slots, design))?;
+        let mut scratch = vec![0.0; self.quiescent_values.len()];
+        sys.quantity_values(
+            0.0,
+            &x,
+            &vec![0.0; x.len()],
+            &mut self.quiescent_values,
+            &mut scratch,
+        );
         let above = sys.above_signals().to_vec();
         let mut g = vec![0.0; sys.root_count().max(above.len())];
         // The quiescent point: every `x'` is zero.
@@ -239,7 +251,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             .design
             .quantities
             .iter()
-            .zip(&self.values)
+            .zip(&self.quiescent_values)
             .map(|(q, &v)| (q.name.clone(), v));
         let signals = self
             .design
@@ -445,4 +457,19 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
 /// A signal's value as the equations see it (booleans and enumerations as positions).
 fn number(v: &Value) -> f64 {
     v.as_f64().unwrap_or(f64::NAN)
+}
+
+/// The quiescent point is a result of its own (`vams op`, and the state the run starts from):
+/// Newton stops at a hundredth of the usual update bound, which costs about one more
+/// quadratically convergent iteration, or where rounding stalls it within the usual bound.
+fn quiescent_options() -> OpOptions {
+    let defaults = OpOptions::default();
+    OpOptions {
+        newton: crate::solver::NewtonOptions {
+            tol: 0.01,
+            stall_tol: Some(defaults.newton.tol),
+            ..defaults.newton
+        },
+        ..defaults
+    }
 }

@@ -4,6 +4,11 @@
 //! [`ErrorNorm`]), where
 //! `w_i = 1 / (reltol * |x_i| + abstol_i)` (the IDA/SPICE test `|dx_i| <= reltol*|x_i| + abstol_i`
 //! at `tol = 1`), or, when `residual_tol` is set, `max_i |G_i(x)| <= residual_tol` after an update.
+//! With `check_residual` (the default) a small update is not enough: the residual at the new
+//! point must also be within each equation's tolerance, `|G_i| <= max_j |dG_i/dx_j| / w_j` (what
+//! moving any one unknown it reads by its tolerance could change it by: a current for a current
+//! balance, a voltage for a voltage equation, whatever the units), the second test SPICE makes.
+//! A small update with a large residual (a near-singular or stale Jacobian) iterates on.
 //! Modified Newton: with `reuse_jacobian` the last factorisation is kept while the contraction
 //! rate `||dx_k|| / ||dx_{k-1}||` stays below `max_rate`; a slow or diverging iteration on a stale
 //! matrix refactors before anything else. Damping is an Armijo backtracking line search on the
@@ -118,6 +123,10 @@ pub struct NewtonOptions {
     /// Factor applied to updates computed with a factorisation from an earlier call (the
     /// integrator passes IDA's `2 / (1 + c/c_old)` to make up for a stale `alpha`).
     pub stale_scale: f64,
+    /// Converged also needs every residual within its equation's tolerance (see the module
+    /// documentation); costs one residual evaluation per solve where the update test alone
+    /// would have stopped without one.
+    pub check_residual: bool,
     /// The problem is affine (see [`DaeSystem::is_linear`](crate::solver::DaeSystem::is_linear)):
     /// a full step with a Jacobian factored in this call, without diagonal shift, is the
     /// solution, and ends the iteration without a second one to confirm it.
@@ -135,6 +144,7 @@ impl Default for NewtonOptions {
             reuse_jacobian: false,
             max_rate: 0.9,
             stale_scale: 1.0,
+            check_residual: true,
             linear: false,
         }
     }
@@ -151,7 +161,11 @@ pub struct NewtonReport {
 /// Newton's workspace: the linear solver and every vector it needs, allocated once.
 pub struct Newton {
     lin: LinearSolver,
+    /// The pattern: row and column of each Jacobian entry.
+    pattern: Vec<(usize, usize)>,
     jac: Vec<f64>,
+    /// Per equation, the residual within tolerance (see [`Newton::residual_within_tolerance`]).
+    row_tol: Vec<f64>,
     r: Vec<f64>,
     dx: Vec<f64>,
     x_trial: Vec<f64>,
@@ -169,7 +183,9 @@ impl Newton {
     ) -> Result<Self, SolveError> {
         Ok(Self {
             lin: LinearSolver::new(n, pattern, linear)?,
+            pattern: pattern.to_vec(),
             jac: vec![0.0; pattern.len()],
+            row_tol: vec![0.0; n],
             r: vec![0.0; n],
             dx: vec![0.0; n],
             x_trial: vec![0.0; n],
@@ -230,6 +246,40 @@ impl Newton {
             Some(equation) => Err(SolveError::NonFiniteResidual { t, equation }),
             None => Ok(()),
         }
+    }
+
+    /// True when every `|r_i|` at `x` is within `max_j |J_ij| (reltol |x_j| + abstol_j)`, with
+    /// the Jacobian last factored (a scale, so a stale one serves). `r` must be the residual
+    /// at `x`.
+    fn residual_within_tolerance(&mut self, x: &[f64], tol: &Tolerances) -> bool {
+        tol.weights(x, &mut self.w);
+        self.row_tol.fill(0.0);
+        for (&(i, j), &a) in self.pattern.iter().zip(&self.jac) {
+            let scaled = a.abs() / self.w[j];
+            if scaled > self.row_tol[i] {
+                self.row_tol[i] = scaled;
+            }
+        }
+        self.r.iter().zip(&self.row_tol).all(|(r, t)| r.abs() <= *t)
+    }
+
+    /// Whether the residual (already evaluated at `x`) agrees with a small update, when the
+    /// options ask for that check.
+    fn residual_agrees(&mut self, x: &[f64], tol: &Tolerances, opts: &NewtonOptions) -> bool {
+        !opts.check_residual || self.residual_within_tolerance(x, tol)
+    }
+
+    /// The equation whose residual is the most tolerances off (after a failed
+    /// [`Newton::residual_within_tolerance`] the tolerances are current) and its residual.
+    fn worst_scaled(&self) -> (usize, f64) {
+        let mut worst = (0, -1.0);
+        for (i, (r, t)) in self.r.iter().zip(&self.row_tol).enumerate() {
+            let ratio = if *t > 0.0 { r.abs() / t } else { f64::INFINITY };
+            if ratio > worst.1 {
+                worst = (i, ratio);
+            }
+        }
+        (worst.0, self.r[worst.0])
     }
 
     /// Factorisations that searched for pivots (the dense path reuses the last pivots while
@@ -328,17 +378,33 @@ impl Newton {
                 if let Some(equation) = self.r.iter().position(|v| !v.is_finite()) {
                     return Err(SolveError::NonFiniteResidual { t, equation });
                 }
-                if exact && lambda == 1.0 {
+                if exact && lambda == 1.0 && self.residual_agrees(x, tol, opts) {
                     return Ok(());
                 }
             } else {
                 for (x, d) in x.iter_mut().zip(&self.dx) {
                     *x += d;
                 }
-                if norm <= opts.tol || exact || stalled {
+                // Stalled within its bound, the residual is rounding: no test could pass it.
+                let small = norm <= opts.tol || exact;
+                if stalled || (small && !opts.check_residual) {
                     return Ok(());
                 }
                 Self::eval(p, x, &mut self.r, t, rep)?;
+                if small && self.residual_within_tolerance(x, tol) {
+                    return Ok(());
+                }
+            }
+            // At the rounding floor (updates no longer contract), a residual within every
+            // equation's tolerance is the answer whatever the update's size: `x'` of a
+            // consistent initialisation, weighed on the scale of `x`, can wander by more than
+            // that scale in the last bits of an ill-conditioned row.
+            if opts.stall_tol.is_some()
+                && opts.check_residual
+                && norm > 0.5 * prev_norm
+                && self.residual_within_tolerance(x, tol)
+            {
+                return Ok(());
             }
             if let Some(rt) = opts.residual_tol
                 && worst(&self.r).1 <= rt
@@ -347,7 +413,12 @@ impl Newton {
             }
             prev_norm = norm;
         }
-        let (worst_equation, residual) = worst(&self.r);
+        let (worst_equation, residual) = if opts.check_residual {
+            self.residual_within_tolerance(x, tol);
+            self.worst_scaled()
+        } else {
+            worst(&self.r)
+        };
         Err(SolveError::NewtonDiverged {
             t,
             iterations: rep.iterations,

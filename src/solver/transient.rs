@@ -153,6 +153,7 @@ impl Transient {
                 reuse_jacobian: true,
                 max_rate: 0.9,
                 stale_scale: 1.0,
+                check_residual: true,
                 linear: sys.is_linear(),
             },
             newton,

@@ -10,10 +10,12 @@
 //! algebraic constraint ties differential unknowns together: two inductors in series (a KCL row
 //! that contains only the two held currents), two inertias coupled by a gear (`v = ratio * w`
 //! with `v'` and `w'` both present). Then a tiny implicit-Euler step is taken instead: solve
-//! `F((x - x_held) / h, x, t + h) = 0` for all of `x`, and keep `x` (which now satisfies the
-//! constraints: inconsistent held values are projected onto them); `x'` comes from a second
-//! such step from there, and `t` stays unchanged. The step `h` is far below any time constant
-//! the integrator could resolve, so a consistent state moves by `O(h x')` only.
+//! `F((x - x_held) / h, x, t) = 0` for all of `x`, a step that ends at `t` (the held state
+//! taken as the state at `t - h`), and keep `x`: it satisfies every equation at `t`, with the
+//! sources at their values at `t` (inconsistent held values are projected onto the
+//! constraints; a consistent state moves by `O(h x')` only, `h` being far below any time
+//! constant the integrator could resolve). `x'` comes from a second such step from there, to
+//! `t + h`, which is not kept.
 
 use super::Transient;
 use crate::solver::newton::{NewtonOptions, NonlinearProblem, norm2};
@@ -28,11 +30,12 @@ const FALLBACK_STEP: f64 = 1e-8;
 /// Multiples of [`FALLBACK_STEP`] tried in turn when the step's matrix is singular.
 const FALLBACK_SCALES: [f64; 3] = [1.0, 30.0, 1000.0];
 
-/// `G(x) = F((x - x_held) / h, x, t + h)` for the differential unknowns (`x' = 0` for the
+/// `G(x) = F((x - x_held) / h, x, t_end)` for the differential unknowns (`x' = 0` for the
 /// algebraic ones, whose derivative no equation reads); Jacobian `dF/dx + (1/h) dF/dx'`.
 struct EulerProblem<'a, S: ?Sized> {
     sys: &'a mut S,
-    t: f64,
+    /// The time the step ends at.
+    t_end: f64,
     h: f64,
     diff: &'a [bool],
     held: &'a [f64],
@@ -54,18 +57,18 @@ impl<S: ?Sized> EulerProblem<'_, S> {
 impl<S: DaeSystem + ?Sized> NonlinearProblem for EulerProblem<'_, S> {
     fn residual(&mut self, x: &[f64], out: &mut [f64]) {
         self.derivative(x);
-        self.sys.residual(self.t + self.h, x, self.xdot, out);
+        self.sys.residual(self.t_end, x, self.xdot, out);
     }
 
     fn step_limit(&mut self, x: &[f64], dx: &[f64]) -> f64 {
         self.derivative(x);
-        self.sys.step_limit(self.t + self.h, x, self.xdot, dx)
+        self.sys.step_limit(self.t_end, x, self.xdot, dx)
     }
 
     fn jacobian(&mut self, x: &[f64], out: &mut [f64]) {
         self.derivative(x);
         self.sys
-            .jacobian(self.t + self.h, x, self.xdot, 1.0 / self.h, out);
+            .jacobian(self.t_end, x, self.xdot, 1.0 / self.h, out);
     }
 }
 
@@ -320,9 +323,10 @@ impl Transient {
         for step in 0..2 {
             self.x_pred.copy_from_slice(&self.hist_x[0]);
             self.x_new.copy_from_slice(&self.hist_x[0]);
+            // The first step ends at `t` (its result is the state kept), the second at `t + h`.
             let mut p = EulerProblem {
                 sys: &mut *sys,
-                t,
+                t_end: if step == 0 { t } else { t + h },
                 h,
                 diff: &self.diff,
                 held: &self.x_pred,
