@@ -1,6 +1,6 @@
 #!/usr/bin/env sh
-# Installs ngspice (Debian/Ubuntu) for `cargo bench --bench ladder`, which compares vams with it
-# when `ngspice` is on the PATH. The tests never need it.
+# Installs ngspice (Debian/Ubuntu): the reference of `tests/differential.rs` and of the benchmarks
+# that compare vams with it (`.ci/run` calls this; without ngspice those print a skip).
 set -eu
 if command -v ngspice >/dev/null 2>&1; then
     echo "ngspice already installed: $(command -v ngspice)"
