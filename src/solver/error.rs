@@ -15,7 +15,7 @@ pub enum SolveError {
     /// Example: `F(x) = x^2 + 1` has no real root; every iteration leaves `|F| >= 1`.
     #[error(
         "Newton iteration did not converge at t = {t:e} after {iterations} iterations; \
-         equation {worst_equation} has the largest residual ({residual:e})"
+         row {worst_equation} of the solver's system has the largest residual ({residual:e})"
     )]
     #[diagnostic(
         code(vams::solve::E401),
@@ -59,7 +59,8 @@ pub enum SolveError {
     ///
     /// Example: two equations that both say `v = 1` leave one unknown undetermined.
     #[error(
-        "singular Jacobian at t = {t:e} (equation {row:?}, unknown {column:?}{})",
+        "singular Jacobian at t = {t:e}{}{}",
+        pivot_site(*row, *column),
         if *structural { ", structurally" } else { "" }
     )]
     #[diagnostic(
@@ -132,5 +133,16 @@ impl SolveError {
             Self::InvalidSystem { .. } | Self::NoOperatingPoint { .. } => {}
         }
         self
+    }
+}
+
+/// Where an elimination broke down, in the solver's numbering (the caller names the equation
+/// and unknowns): empty when it cannot be told.
+fn pivot_site(row: Option<usize>, column: Option<usize>) -> String {
+    match (row, column) {
+        (Some(r), Some(c)) => format!(" (at row {r}, column {c} of the solver's system)"),
+        (Some(r), None) => format!(" (at row {r} of the solver's system)"),
+        (None, Some(c)) => format!(" (at column {c} of the solver's system)"),
+        (None, None) => String::new(),
     }
 }
