@@ -330,13 +330,7 @@ impl AnalogSystem {
             .origins
             .iter()
             .map(|origin| match origin {
-                Origin::Conservation(t) => {
-                    let nature = &design.natures[design.terminals[t.index()].nature.index()];
-                    nature
-                        .through_tolerance
-                        .as_deref()
-                        .and_then(tolerance::group_abstol)
-                }
+                Origin::Conservation(t) => tolerance::through_abstol(design, *t),
                 _ => None,
             })
             .collect();

@@ -173,7 +173,7 @@ pub fn operating_point(
     options: &SimOptions,
 ) -> Result<Vec<(String, f64)>, SimError> {
     let analog = analog_system(design, options)?;
-    let sim = Simulation::start(design, options, analog, &mut |_| {})?;
+    let mut sim = Simulation::start(design, options, analog, &mut |_| {})?;
     Ok(sim.operating_point())
 }
 

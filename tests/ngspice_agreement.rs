@@ -3,7 +3,8 @@
 //! answer `.ref.csv`, written by `reference.py` at reltol 1e-8 and committed, so that these
 //! tests need no ngspice). Every recorded point of every node voltage must lie within a stated
 //! fraction of the circuit's largest node swing of ngspice's waveform, with and without the
-//! elimination of explicit unknowns, at the default tolerance and at 1e-6.
+//! elimination of explicit unknowns, at the default tolerance and at 1e-6 (pointwise: unlike
+//! the differential test's tube, no time shift is allowed for).
 
 use std::path::PathBuf;
 
@@ -11,6 +12,11 @@ use vams::cli::load::load;
 use vams::design::Design;
 use vams::elaborate::{ElabOptions, elaborate};
 use vams::kernel::{Outcome, SimOptions, SimResult, operating_point, simulate};
+
+// The waveform type and its interpolation, shared with the differential test.
+#[path = "differential/circuit.rs"]
+mod circuit;
+use circuit::Waves;
 
 const DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/ngspice_agreement");
 
@@ -24,11 +30,10 @@ fn design(case: &str, top: &str) -> Design {
     elaborate(&loaded.sources, &loaded.files, &options).unwrap_or_else(|e| panic!("{e:?}"))
 }
 
-/// ngspice's waveforms: times and one column per node, by name (`v1`, `v2`, ...).
+/// ngspice's waveforms, one column per node, by name (`v1`, `v2`, ...).
 struct Reference {
     names: Vec<String>,
-    times: Vec<f64>,
-    columns: Vec<Vec<f64>>,
+    waves: Waves,
 }
 
 impl Reference {
@@ -52,47 +57,21 @@ impl Reference {
         }
         Reference {
             names: header[1..].to_vec(),
-            times,
-            columns,
+            waves: Waves { times, columns },
         }
-    }
-
-    /// Column `c` at `t`, linearly interpolated (the reference keeps every point linear
-    /// interpolation needs to stay within 1e-5 of the swing).
-    fn at(&self, c: usize, t: f64) -> f64 {
-        let i = self
-            .times
-            .partition_point(|&x| x <= t)
-            .clamp(1, self.times.len() - 1)
-            - 1;
-        let (t0, t1) = (self.times[i], self.times[i + 1]);
-        let w = ((t - t0) / (t1 - t0)).clamp(0.0, 1.0);
-        self.columns[c][i] + w * (self.columns[c][i + 1] - self.columns[c][i])
-    }
-
-    fn largest_swing(&self) -> f64 {
-        self.columns
-            .iter()
-            .map(|c| {
-                let (lo, hi) = c
-                    .iter()
-                    .fold((f64::MAX, f64::MIN), |(lo, hi), &v| (lo.min(v), hi.max(v)));
-                hi - lo
-            })
-            .fold(0.0, f64::max)
     }
 }
 
 /// The worst distance of any recorded node voltage from ngspice's, as a fraction of the
 /// largest node swing, with the node and time where it occurs.
 fn worst_disagreement(result: &SimResult, reference: &Reference) -> (f64, String, f64) {
-    let swing = reference.largest_swing();
+    let (swing, _) = reference.waves.scale();
     let w = &result.waveforms;
     let mut worst = (0.0, String::new(), 0.0);
     for (c, name) in reference.names.iter().enumerate() {
         let column = w.column(name).unwrap_or_else(|| panic!("{name} recorded"));
         for (&t, &v) in w.times.iter().zip(&column.values) {
-            let e = (v - reference.at(c, t)).abs() / swing;
+            let e = (v - reference.waves.at(c, t)).abs() / swing;
             assert!(e.is_finite(), "{name} at {t}: {v}");
             if e > worst.0 {
                 worst = (e, name.clone(), t);
@@ -104,7 +83,7 @@ fn worst_disagreement(result: &SimResult, reference: &Reference) -> (f64, String
 
 fn stop_of(case: &str) -> f64 {
     let reference = Reference::read(case);
-    *reference.times.last().expect("points")
+    *reference.waves.times.last().expect("points")
 }
 
 /// Runs `case` with and without elimination at reltol 1e-3 and 1e-6 and checks every point
@@ -181,7 +160,7 @@ fn operating_point_solves_every_equation() {
         // leaks and junction leakage, where ngspice's gmin decides).
         for node in ["v1", "v2", "v3", "v4", "v6"] {
             let c = reference.names.iter().position(|n| n == node).expect(node);
-            let spice = reference.columns[c][0];
+            let spice = reference.waves.columns[c][0];
             assert!(
                 (value(node) - spice).abs() < 1e-6,
                 "{node}: {} against ngspice's {spice}",

@@ -215,32 +215,34 @@ fn choose(
         }
     });
     let rank = |j: usize| usize::from(candidates.potential[j]) * 2 + usize::from(differentiated[j]);
-    // The error scale of each term `a_k x_k` with a constant coefficient.
-    let scales: Vec<f64> = seen
+    // The constant coefficient of each unknown that occurs once, and the error scale of its
+    // term `a_k x_k`; the largest scale in the row, its own tolerance included.
+    let coefficients: Vec<Option<f64>> = seen
         .iter()
-        .map(|&(k, xs, _)| match (xs, coefficient(e, k)) {
-            (1, Some(a)) => a.abs() * candidates.abstol[k],
-            _ => 0.0,
-        })
+        .map(|&(k, xs, _)| if xs == 1 { coefficient(e, k) } else { None })
         .collect();
+    let scale = |k: usize, a: Option<f64>| a.map_or(0.0, |a| a.abs() * candidates.abstol[k]);
+    let largest = seen
+        .iter()
+        .zip(&coefficients)
+        .fold(row_abstol.unwrap_or(0.0), |m, (&(k, _, _), &a)| {
+            m.max(scale(k, a))
+        });
     let mut best: Option<(usize, f64, usize, Sym)> = None;
-    for (&(j, xs, dots), &own) in seen.iter().zip(&scales) {
+    for (&(j, xs, dots), &a) in seen.iter().zip(&coefficients) {
         if xs != 1 || dots != 0 || candidates.protected[j] {
             continue;
         }
         if best.as_ref().is_some_and(|b| b.0 < rank(j)) {
             continue;
         }
-        let Some(a) = coefficient(e, j) else {
+        let Some(a) = a else {
             continue;
         };
         if !(a.is_finite() && a != 0.0) {
             continue;
         }
-        let largest = scales
-            .iter()
-            .fold(row_abstol.unwrap_or(0.0), |m, &s| m.max(s));
-        let amplification = largest / own;
+        let amplification = largest / scale(j, Some(a));
         // (A NaN amplification, from a zero tolerance, never qualifies.)
         let acceptable = amplification <= MAX_AMPLIFICATION;
         if !acceptable

@@ -16,7 +16,7 @@
 //! nature's across group; anything else gets the caller's default.
 
 use super::build::Unknown;
-use crate::design::{Design, QuantityKind};
+use crate::design::{Design, Nature, QuantityKind, TerminalId};
 
 /// The known tolerance groups and their absolute tolerances.
 pub const TOLERANCE_GROUPS: &[(&str, f64)] = &[
@@ -38,10 +38,22 @@ pub fn group_abstol(group: &str) -> Option<f64> {
         .map(|&(_, v)| v)
 }
 
+fn nature_of(design: &Design, t: TerminalId) -> &Nature {
+    &design.natures[design.terminals[t.index()].nature.index()]
+}
+
+/// The tolerance of terminal `t`'s through quantities (its nature's through group): what a
+/// conservation law at `t` balances.
+pub fn through_abstol(design: &Design, t: TerminalId) -> Option<f64> {
+    nature_of(design, t)
+        .through_tolerance
+        .as_deref()
+        .and_then(group_abstol)
+}
+
 /// The group tolerance of each unknown, `None` where no known group applies.
 pub fn per_unknown(design: &Design, unknowns: &[Unknown]) -> Vec<Option<f64>> {
-    let nature_of =
-        |t: crate::design::TerminalId| &design.natures[design.terminals[t.index()].nature.index()];
+    let nature_of = |t: TerminalId| nature_of(design, t);
     // Nearly every unknown names the same group as the one before (each quantity holds its
     // own copy of the name): the last lookup is remembered, so a large circuit compares one
     // name exactly per unknown instead of searching the table case-insensitively.

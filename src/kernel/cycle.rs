@@ -33,6 +33,9 @@ struct Analog<A> {
     integ: Transient,
     x: Vec<f64>,
     g: Vec<f64>,
+    /// The quiescent point (every `x'` zero), before the integrator's consistent
+    /// initialisation gives the derivatives their values at `0+`: what `vams op` reports.
+    quiescent: Vec<f64>,
 }
 
 pub(crate) struct Simulation<'d, A> {
@@ -43,9 +46,6 @@ pub(crate) struct Simulation<'d, A> {
     /// Quantity values and derivatives at the current time, by `QuantityId`.
     values: Vec<f64>,
     derivatives: Vec<f64>,
-    /// Quantity values at the quiescent point (every `x'` zero), before the integrator's
-    /// consistent initialisation gives the derivatives their values at `0+`.
-    quiescent_values: Vec<f64>,
     changed: Vec<SignalId>,
     breaks: Vec<(QuantityId, f64)>,
     outcome: Option<Outcome>,
@@ -80,7 +80,6 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             stop: options.stop,
             kernel,
             analog: None,
-            quiescent_values: values.clone(),
             values,
             derivatives,
             changed: Vec::new(),
@@ -163,14 +162,6 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             &quiescent_options(),
         );
         let (x, _) = point.map_err(|e| solve_error(e, 0.0, &sys, &slots, design))?;
-        let mut scratch = vec![0.0; self.quiescent_values.len()];
-        sys.quantity_values(
-            0.0,
-            &x,
-            &vec![0.0; x.len()],
-            &mut self.quiescent_values,
-            &mut scratch,
-        );
         let above = sys.above_signals().to_vec();
         let mut g = vec![0.0; sys.root_count().max(above.len())];
         // The quiescent point: every `x'` is zero.
@@ -204,6 +195,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             integ,
             x: vec![0.0; n],
             g,
+            quiescent: x,
         })
     }
 
@@ -246,13 +238,20 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
     }
 
     /// The quiescent point by name: every quantity, then every explicit signal.
-    pub fn operating_point(&self) -> Vec<(String, f64)> {
+    pub fn operating_point(&mut self) -> Vec<(String, f64)> {
+        let mut values = self.values.clone();
+        if let Some(a) = &mut self.analog {
+            let zeros = vec![0.0; a.quiescent.len()];
+            let mut derivatives = vec![0.0; values.len()];
+            a.sys
+                .quantity_values(0.0, &a.quiescent, &zeros, &mut values, &mut derivatives);
+        }
         let quantities = self
             .design
             .quantities
             .iter()
-            .zip(&self.quiescent_values)
-            .map(|(q, &v)| (q.name.clone(), v));
+            .zip(values)
+            .map(|(q, v)| (q.name.clone(), v));
         let signals = self
             .design
             .signals

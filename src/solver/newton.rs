@@ -358,7 +358,8 @@ impl Newton {
             }
             // A step already within tolerance needs no damping (and rounding would defeat the
             // sufficient-decrease test there).
-            if opts.line_search && norm > opts.tol && !stalled {
+            // `ends`: the iteration would stop here if the residual agrees.
+            let ends = if opts.line_search && norm > opts.tol && !stalled {
                 // Backtracking starts where exponentials stop overshooting.
                 let mut lambda = p.step_limit(x, &self.dx).clamp(1e-9, 1.0);
                 let f0 = norm2(&self.r);
@@ -379,9 +380,7 @@ impl Newton {
                 if let Some(equation) = self.r.iter().position(|v| !v.is_finite()) {
                     return Err(SolveError::NonFiniteResidual { t, equation });
                 }
-                if exact && lambda == 1.0 && self.residual_agrees(x, tol, opts) {
-                    return Ok(());
-                }
+                exact && lambda == 1.0
             } else {
                 for (x, d) in x.iter_mut().zip(&self.dx) {
                     *x += d;
@@ -395,19 +394,14 @@ impl Newton {
                     return Ok(());
                 }
                 Self::eval(p, x, &mut self.r, t, rep)?;
-                if small && self.residual_within_tolerance(x, tol) {
-                    return Ok(());
-                }
-            }
+                small
+            };
             // At the rounding floor (updates no longer contract), a residual within every
             // equation's tolerance is the answer whatever the update's size: `x'` of a
             // consistent initialisation, weighed on the scale of `x`, can wander by more than
             // that scale in the last bits of an ill-conditioned row.
-            if opts.stall_tol.is_some()
-                && opts.check_residual
-                && norm > 0.5 * prev_norm
-                && self.residual_within_tolerance(x, tol)
-            {
+            let floor = opts.check_residual && opts.stall_tol.is_some() && norm > 0.5 * prev_norm;
+            if (ends || floor) && self.residual_agrees(x, tol, opts) {
                 return Ok(());
             }
             if let Some(rt) = opts.residual_tol

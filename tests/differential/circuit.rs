@@ -282,7 +282,7 @@ pub struct Waves {
 
 impl Waves {
     /// Column `c` at `t`, linearly interpolated.
-    fn at(&self, c: usize, t: f64) -> f64 {
+    pub fn at(&self, c: usize, t: f64) -> f64 {
         let i = self
             .times
             .partition_point(|&x| x <= t)
@@ -311,7 +311,7 @@ impl Waves {
     }
 
     /// The largest node swing and the largest magnitude of any node voltage.
-    fn scale(&self) -> (f64, f64) {
+    pub fn scale(&self) -> (f64, f64) {
         let mut swing: f64 = 0.0;
         let mut peak: f64 = 0.0;
         for c in &self.columns {

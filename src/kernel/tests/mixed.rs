@@ -421,7 +421,7 @@ fn thermostat_switches_at_the_analytic_times_with_the_analog_system() {
 #[test]
 fn the_operating_point_holds_the_initial_breaks() {
     let d = thermostat_design();
-    let sim = Simulation::start(
+    let mut sim = Simulation::start(
         &d,
         &thermostat_options(),
         Some(ExprDae::new(&d)),
