@@ -55,6 +55,9 @@ pub struct AnalogSystem {
     /// The eliminated unknowns, for listings.
     eliminated: Vec<Eliminated>,
     differential: Vec<bool>,
+    /// Algebraic unknowns of higher index, left out of the local error test
+    /// ([`structure::higher_index_algebraic`]).
+    error_exempt: Vec<bool>,
     pattern: Vec<(usize, usize)>,
     /// Outputs: the residuals (section [`RESIDUALS`], in solver row order), then the nonzero
     /// dF/dx and dF/dx' entries. One tape, so that the Jacobian at the point whose residual
@@ -377,6 +380,22 @@ impl AnalogSystem {
         // spurious couplings between an unrelated equation and unknown that happen to share an
         // index (on an RC ladder those made the fill grow with the square of the size).
         let inc = structure::Incidence::new(n_eq, n, &pattern);
+        let index1_pattern: Vec<(usize, usize)> = pattern
+            .iter()
+            .zip(&jac_exprs)
+            .filter(|&(&(_, c), (dx, ddot))| {
+                if differential[c] {
+                    ddot.is_some()
+                } else {
+                    dx.is_some()
+                }
+            })
+            .map(|(&entry, _)| entry)
+            .collect();
+        let error_exempt = structure::higher_index_algebraic(
+            &structure::Incidence::new(n_eq, n, &index1_pattern),
+            &differential,
+        );
         let matching = structure::maximum_matching(&inc);
         let order: Vec<usize> = match matching.col_match.iter().copied().collect() {
             Some(rows) if n == n_eq => rows,
@@ -517,6 +536,7 @@ impl AnalogSystem {
             fill: None,
             eliminated,
             differential,
+            error_exempt,
             pattern,
             newton_tape: nb.finish(),
             jac_dx,
@@ -774,6 +794,10 @@ impl DaeSystem for AnalogSystem {
 
     fn differential(&self) -> &[bool] {
         &self.differential
+    }
+
+    fn error_exempt(&self) -> &[bool] {
+        &self.error_exempt
     }
 
     fn pattern(&self) -> &[(usize, usize)] {

@@ -37,6 +37,12 @@ pub trait DaeSystem {
     }
     /// Which unknowns appear differentiated (the rest are algebraic).
     fn differential(&self) -> &[bool];
+    /// Unknowns the local error test leaves out (empty: none): algebraic unknowns that the
+    /// equations give only through a derivative of a constrained unknown, which BDF computes
+    /// to first order whatever its order. Their accuracy follows from the others'.
+    fn error_exempt(&self) -> &[bool] {
+        &[]
+    }
     /// Structural nonzeros of `dF/dx + dF/dx'` as `(row, col)`, fixed for the system's lifetime.
     fn pattern(&self) -> &[(usize, usize)];
     /// `out = F(xdot, x, t)`.

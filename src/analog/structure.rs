@@ -294,3 +294,57 @@ pub fn check(inc: &Incidence, names: &Names<'_>) -> Result<(), Vec<AnalogError>>
     }
     Err(errors)
 }
+
+/// The algebraic unknowns of higher index: those that the equations determine only through
+/// the derivative of a constrained differential unknown (the current of a voltage source with
+/// a capacitor across it is `C` times the derivative of the source's waveform).
+///
+/// `index1` is the incidence of the matrix that an index-1 system keeps regular,
+/// `[dF/dx'_d  dF/dx_a]` (x' of the differential unknowns, x of the algebraic ones). Where its
+/// matching is not perfect, an equation ties differential unknowns together without any x'
+/// (the source's `v == f(t)`): the unknowns it leaves under-determined are those whose values
+/// come from a differentiated constraint, so BDF computes them to first order only, whatever
+/// its order, and a local error test on them drives the step size to nothing (IDA and DASSL
+/// leave such components out of the test; SPICE tests only charges and fluxes).
+pub fn higher_index_algebraic(index1: &Incidence, differential: &[bool]) -> Vec<bool> {
+    let m = maximum_matching(index1);
+    let mut higher = vec![false; index1.n_cols()];
+    if m.row_match.iter().all(Option::is_some) {
+        return higher;
+    }
+    let (_, cols) = alternating_reach(index1, &m, true);
+    for c in cols {
+        higher[c] = !differential[c];
+    }
+    higher
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Incidence, higher_index_algebraic};
+
+    /// A source `v = f(t)` with a capacitor across it (`i_c = C v'`) and its current `i_s`
+    /// in the balance `i_s + i_c = 0`: unknowns v (differential), i_c and i_s (algebraic).
+    /// In `[dF/dv', dF/di_c, dF/di_s]` the source row is empty, so `i_c` or `i_s` (whichever
+    /// the matching leaves) and everything alternating paths reach from it are of higher
+    /// index: both currents, not `v`.
+    #[test]
+    fn the_current_of_a_source_with_a_capacitor_across_it_is_of_higher_index() {
+        // Rows: source (no entry: v' does not occur, v is differential), capacitor
+        // `i_c - C v' = 0`, balance `i_s + i_c = 0`.
+        let pattern = [(1, 0), (1, 1), (2, 1), (2, 2)];
+        let inc = Incidence::new(3, 3, &pattern);
+        let higher = higher_index_algebraic(&inc, &[true, false, false]);
+        assert_eq!(higher, [false, true, true]);
+    }
+
+    /// The same capacitor charged through a resistor (`v' = (u - v) / (R C)`, one row with
+    /// v'): index 1, nothing is left out.
+    #[test]
+    fn an_index_one_system_has_no_higher_index_unknowns() {
+        // Rows: capacitor `i - C v' = 0`, resistor `u - v - R i = 0` (u a known input).
+        let pattern = [(0, 0), (0, 1), (1, 1)];
+        let inc = Incidence::new(2, 2, &pattern);
+        assert_eq!(higher_index_algebraic(&inc, &[true, false]), [false, false]);
+    }
+}

@@ -69,6 +69,15 @@ pub struct LinearSolver {
     /// Largest magnitude per row and per column of the last assembled matrix.
     row_max: Vec<f64>,
     col_max: Vec<f64>,
+    /// Equilibration of the last factorisation: column `j` is multiplied by `col_scale[j]`
+    /// (a power of two near the caller's unit of unknown `j`, 1 without one), then each row
+    /// by a power of two near 1 / its largest entry. Right sides are scaled by rows, solutions
+    /// by columns.
+    row_scale: Vec<f64>,
+    col_scale: Vec<f64>,
+    /// The scaled values (pattern order) and the scaled diagonal shift of each row.
+    scaled: Vec<f64>,
+    diag: Vec<f64>,
     factored: bool,
     backend: Backend,
     mem: MemBuffer,
@@ -124,6 +133,10 @@ impl LinearSolver {
             pivot_tol: options.pivot_tol,
             row_max: vec![0.0; n],
             col_max: vec![0.0; n],
+            row_scale: vec![1.0; n],
+            col_scale: vec![1.0; n],
+            scaled: vec![0.0; pattern.len()],
+            diag: vec![0.0; n],
             factored: false,
             backend,
             mem,
@@ -157,6 +170,26 @@ impl LinearSolver {
     /// Factors the matrix whose entries are `values` (pattern order) plus `diag_shift` on the
     /// diagonal. Errors carry `t = 0`; callers restamp them with [`SolveError::at`].
     pub fn factor(&mut self, values: &[f64], diag_shift: f64) -> Result<(), SolveError> {
+        self.factor_scaled(values, diag_shift, None)
+    }
+
+    /// [`LinearSolver::factor`] with the unknowns measured in `units` (positive; what a
+    /// significant change of each unknown is, e.g. its error tolerance), so that pivots and
+    /// the singularity test compare entries in those units rather than in the model's.
+    ///
+    /// The matrix is equilibrated: columns by `units`, then rows by their largest entry. A
+    /// circuit's rows and columns differ by many orders of magnitude (a forward-biased
+    /// junction's conductance of 1e24 beside a source row of 1, its current of 1e22 A beside
+    /// millivolts), and partial pivoting on the raw matrix then takes the junction's row as
+    /// the pivot of a column the source row needed, leaving the source's current a column of
+    /// rounding, reported singular. Powers of two scale exactly, so a well-scaled matrix
+    /// factors to the same numbers.
+    pub fn factor_scaled(
+        &mut self,
+        values: &[f64],
+        diag_shift: f64,
+        units: Option<&[f64]>,
+    ) -> Result<(), SolveError> {
         self.factored = false;
         if values.len() != self.pattern.len() {
             return Err(SolveError::InvalidSystem {
@@ -177,6 +210,11 @@ impl LinearSolver {
             self.factored = true;
             return Ok(());
         }
+        self.equilibrate(values, diag_shift, units);
+        let (values, diag) = (
+            &self.scaled[..],
+            (diag_shift != 0.0).then_some(&self.diag[..]),
+        );
         self.row_max.fill(0.0);
         self.col_max.fill(0.0);
         let stack = MemStack::new(&mut self.mem);
@@ -186,7 +224,7 @@ impl LinearSolver {
                 let factored = d.factor(
                     &self.pattern,
                     values,
-                    diag_shift,
+                    diag,
                     self.pivot_tol,
                     (&mut self.row_max, &mut self.col_max),
                     |row_max, col_max| check_empty(row_max, col_max, row_used, col_used),
@@ -196,13 +234,45 @@ impl LinearSolver {
                 }
             }
             Backend::Sparse(s) => {
-                s.assemble(values, diag_shift, &mut self.row_max, &mut self.col_max);
+                s.assemble(values, diag, &mut self.row_max, &mut self.col_max);
                 check_empty(&self.row_max, &self.col_max, &self.row_used, &self.col_used)?;
                 s.factor(stack, self.pivot_tol, &self.col_max)?;
             }
         }
         self.factored = true;
         Ok(())
+    }
+
+    /// Fills `col_scale`, `row_scale`, `scaled` and `diag` for `values` plus `diag_shift`. A
+    /// row's largest entry is taken over its contributions before duplicates are summed:
+    /// cheaper, and any power of two is an exact scaling, so an estimate costs nothing in
+    /// accuracy.
+    fn equilibrate(&mut self, values: &[f64], diag_shift: f64, units: Option<&[f64]>) {
+        match units {
+            Some(units) if units.len() == self.n => {
+                for (c, &u) in self.col_scale.iter_mut().zip(units) {
+                    *c = 1.0 / inverse_power_of_two(u);
+                }
+            }
+            _ => self.col_scale.fill(1.0),
+        }
+        let (col, row) = (&self.col_scale, &mut self.row_scale);
+        for (r, &c) in row.iter_mut().zip(col) {
+            *r = (diag_shift * c).abs();
+        }
+        for (x, (&(r, c), &v)) in self.scaled.iter_mut().zip(self.pattern.iter().zip(values)) {
+            *x = v * col[c];
+            row[r] = row[r].max(x.abs());
+        }
+        for s in row.iter_mut() {
+            *s = inverse_power_of_two(*s);
+        }
+        for (x, &(r, _)) in self.scaled.iter_mut().zip(&self.pattern) {
+            *x *= row[r];
+        }
+        for ((d, &s), &c) in self.diag.iter_mut().zip(row.iter()).zip(col) {
+            *d = diag_shift * s * c;
+        }
     }
 
     /// Solves `A x = rhs` in place with the last factorisation.
@@ -214,6 +284,9 @@ impl LinearSolver {
             });
         }
         let n = self.n;
+        for (x, &s) in rhs.iter_mut().zip(&self.row_scale) {
+            *x *= s;
+        }
         match &mut self.backend {
             _ if n == 0 => {}
             Backend::Dense(d) => d.solve(rhs),
@@ -222,8 +295,23 @@ impl LinearSolver {
                 s.solve(MatMut::from_column_major_slice_mut(rhs, n, 1), stack);
             }
         }
+        for (x, &c) in rhs.iter_mut().zip(&self.col_scale) {
+            *x *= c;
+        }
         Ok(())
     }
+}
+
+/// A power of two within a factor of two of `1 / m` for a positive finite `m` (exponent
+/// clamped so that it and its inverse stay normal), 1 for zero: an empty row stays empty and
+/// is reported as such.
+fn inverse_power_of_two(m: f64) -> f64 {
+    if m == 0.0 || !m.is_finite() {
+        return 1.0;
+    }
+    // Biased exponent of m; subnormals (field 0) count as 2^-1022.
+    let exponent = (((m.to_bits() >> 52) & 0x7ff) as i64 - 1023).clamp(-1000, 1000);
+    f64::from_bits(((1023 - exponent) as u64) << 52)
 }
 
 pub(super) fn singular(row: usize, column: usize) -> SolveError {

@@ -172,6 +172,8 @@ pub struct Newton {
     x_trial: Vec<f64>,
     r_trial: Vec<f64>,
     w: Vec<f64>,
+    /// What a significant change of each unknown is when the Jacobian was factored.
+    units: Vec<f64>,
     jac_valid: bool,
     totals: NewtonReport,
 }
@@ -192,6 +194,7 @@ impl Newton {
             x_trial: vec![0.0; n],
             r_trial: vec![0.0; n],
             w: vec![0.0; n],
+            units: vec![0.0; n],
             jac_valid: false,
             totals: NewtonReport::default(),
         })
@@ -211,13 +214,19 @@ impl Newton {
         &mut self,
         p: &mut P,
         x: &[f64],
+        tol: &Tolerances,
         t: f64,
         rep: &mut NewtonReport,
     ) -> Result<(), SolveError> {
         self.jac_valid = false;
         p.jacobian(x, &mut self.jac);
+        // Unknowns in units of their tolerance: a current of 1e22 A and a node voltage then
+        // compare as the convergence test compares them.
+        for ((u, &x), &a) in self.units.iter_mut().zip(x).zip(&tol.abstol) {
+            *u = tol.reltol * x.abs() + a;
+        }
         self.lin
-            .factor(&self.jac, p.diagonal_shift())
+            .factor_scaled(&self.jac, p.diagonal_shift(), Some(&self.units))
             .map_err(|e| e.at(t))?;
         rep.factorizations += 1;
         self.jac_valid = true;
@@ -334,14 +343,14 @@ impl Newton {
         let mut prev_norm = f64::INFINITY;
         for iter in 1..=opts.max_iter {
             if !self.jac_valid || !opts.reuse_jacobian {
-                self.refactor(p, x, t, rep)?;
+                self.refactor(p, x, tol, t, rep)?;
             }
             let stale = rep.factorizations == 0;
             let scale = if stale { opts.stale_scale } else { 1.0 };
             let mut norm = self.step(x, tol, t, scale)?;
             if norm > opts.max_rate * prev_norm && stale {
                 // Slow on a stale matrix: refresh before judging the iteration.
-                self.refactor(p, x, t, rep)?;
+                self.refactor(p, x, tol, t, rep)?;
                 norm = self.step(x, tol, t, 1.0)?;
             }
             rep.iterations = iter;

@@ -39,6 +39,9 @@ pub struct Transient {
     newton_opts: NewtonOptions,
     newton: Newton,
     diff: Vec<bool>,
+    /// Unknowns the error test and the order selection count (all but the system's
+    /// [`DaeSystem::error_exempt`] ones).
+    tested: Vec<bool>,
     t: f64,
     /// Step to try next; 0 until the first `advance` picks one.
     h: f64,
@@ -158,6 +161,9 @@ impl Transient {
             },
             newton,
             diff: sys.differential().to_vec(),
+            tested: (0..n)
+                .map(|i| !sys.error_exempt().get(i).copied().unwrap_or(false))
+                .collect(),
             t: t0,
             h: 0.0,
             order: 1,

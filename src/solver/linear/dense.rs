@@ -124,8 +124,8 @@ impl Dense {
         }
     }
 
-    /// Factors the matrix whose entries are `values` (pattern order) plus `diag_shift` on the
-    /// diagonal. Reuses the last pivots when they still hold, else searches; a search records
+    /// Factors the matrix whose entries are `values` (pattern order) plus `diag` (one shift
+    /// per row) on the diagonal. Reuses the last pivots when they still hold, else searches; a search records
     /// the largest magnitude of each row and column of the assembled matrix in `maxima`
     /// (zeroed by the caller). `Err(j)`: the pivot
     /// step `j` found no pivot above `pivot_tol * col_max[j]` (the matrix counts as singular;
@@ -134,7 +134,7 @@ impl Dense {
         &mut self,
         pattern: &[(usize, usize)],
         values: &[f64],
-        diag_shift: f64,
+        diag: Option<&[f64]>,
         pivot_tol: f64,
         maxima: (&mut [f64], &mut [f64]),
         check: impl FnOnce(&[f64], &[f64]) -> Result<(), E>,
@@ -143,7 +143,7 @@ impl Dense {
         if self.schedule.valid {
             // Only the column maxima (for the singularity test): an empty row or column
             // leaves a zero pivot, and the full path below then names it.
-            self.assemble_permuted(pattern, values, diag_shift, col_max);
+            self.assemble_permuted(pattern, values, diag, col_max);
             if self.refactor(pivot_tol, col_max) {
                 self.counts.reused += 1;
                 return Ok(Ok(()));
@@ -155,7 +155,7 @@ impl Dense {
             &self.natural,
             pattern,
             values,
-            diag_shift,
+            diag,
             row_max,
             col_max,
         );
@@ -170,14 +170,14 @@ impl Dense {
         Ok(searched)
     }
 
-    /// Sums `values` into `a` in the schedule's row order (plus `diag_shift` on the diagonal)
+    /// Sums `values` into `a` in the schedule's row order (plus `diag` on the diagonal)
     /// and records the largest magnitude in each column. The values are finite (checked by
     /// the caller), so plain comparisons do.
     fn assemble_permuted(
         &mut self,
         pattern: &[(usize, usize)],
         values: &[f64],
-        diag_shift: f64,
+        diag: Option<&[f64]>,
         col_max: &mut [f64],
     ) {
         let (a, layout, s) = (&mut self.a, &self.permuted, &self.assembly);
@@ -190,9 +190,9 @@ impl Dense {
         for &(k, v) in &s.accumulate {
             a[k] += values[v];
         }
-        if diag_shift != 0.0 {
-            for &k in &layout.diag {
-                a[k] += diag_shift;
+        if let Some(diag) = diag {
+            for (&k, &d) in layout.diag.iter().zip(diag) {
+                a[k] += d;
             }
         }
         let mut record = |c: usize, k: usize| {
@@ -202,7 +202,7 @@ impl Dense {
         for (&(_, c), &k) in pattern.iter().zip(&layout.at) {
             record(c, k);
         }
-        if diag_shift != 0.0 {
+        if diag.is_some() {
             for (c, &k) in layout.diag.iter().enumerate() {
                 record(c, k);
             }
@@ -372,14 +372,14 @@ impl Dense {
     }
 }
 
-/// Sums `values` into `a` at `layout` (plus `diag_shift` on the diagonal) and records the
+/// Sums `values` into `a` at `layout` (plus `diag` on the diagonal) and records the
 /// largest magnitude of each row and column (over the structural entries: the rest are zero).
 fn assemble(
     a: &mut [f64],
     layout: &Layout,
     pattern: &[(usize, usize)],
     values: &[f64],
-    diag_shift: f64,
+    diag: Option<&[f64]>,
     row_max: &mut [f64],
     col_max: &mut [f64],
 ) {
@@ -393,9 +393,9 @@ fn assemble(
         row_max[r] = row_max[r].max(v);
         col_max[c] = col_max[c].max(v);
     };
-    if diag_shift != 0.0 {
-        for (i, &k) in layout.diag.iter().enumerate() {
-            a[k] += diag_shift;
+    if let Some(diag) = diag {
+        for (i, (&k, &d)) in layout.diag.iter().zip(diag).enumerate() {
+            a[k] += d;
             record(i, i, a[k]);
         }
     }

@@ -78,7 +78,7 @@ impl Sparse {
     pub(super) fn assemble(
         &mut self,
         values: &[f64],
-        shift: f64,
+        diag: Option<&[f64]>,
         row_max: &mut [f64],
         col_max: &mut [f64],
     ) {
@@ -86,8 +86,10 @@ impl Sparse {
         for (&k, &v) in self.slot.iter().zip(values) {
             self.values[k] += v;
         }
-        for &k in &self.diag_slot {
-            self.values[k] += shift;
+        if let Some(diag) = diag {
+            for (&k, &d) in self.diag_slot.iter().zip(diag) {
+                self.values[k] += d;
+            }
         }
         for (c, cm) in col_max.iter_mut().enumerate() {
             for k in self.col_ptr[c]..self.col_ptr[c + 1] {

@@ -175,7 +175,8 @@ impl Transient {
         let skip_alg = !self.xdot_alg_known;
         for i in 0..self.n {
             let e = ratio * (self.x_new[i] - self.x_pred[i]);
-            self.scratch[i] = if skip_alg && !self.diff[i] { 0.0 } else { e };
+            let tested = self.tested[i] && (self.diff[i] || !skip_alg);
+            self.scratch[i] = if tested { e } else { 0.0 };
         }
         let err = self.tol.norm(&self.scratch, &self.w);
         if err <= 1.0 {
@@ -288,6 +289,9 @@ impl Transient {
             for (i, s) in self.scratch.iter_mut().enumerate() {
                 *s = c[0] * x0[i] + c[1] * x1[i] + c[2] * x2[i] + c[3] * x3[i];
             }
+        }
+        for (s, &tested) in self.scratch.iter_mut().zip(&self.tested) {
+            *s = if tested { *s } else { 0.0 };
         }
         debug_assert!({
             let mut w = self.w.clone();
