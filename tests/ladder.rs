@@ -188,3 +188,20 @@ fn a_tight_abstol_on_a_stiff_start_still_runs() {
         "v_out {last}, RK4 {reference}"
     );
 }
+
+/// Sections of 2.5 Ohm and 2.5 nF (N = 400): the elimination keeps one capacitor voltage per
+/// section and the source's current (solving the first balance for it would magnify the
+/// voltages' errors 4e5 times in its tolerance), and each balance reads its neighbours only. A test of how well an elimination is
+/// conditioned once refused to solve `v == r * i` for a small resistor's current, and the node
+/// potentials became sums over the whole line: N^2 Jacobian entries, 122 s to build at N = 1000.
+#[test]
+fn a_fine_ladder_reduces_to_one_unknown_per_section_with_sparse_rows() {
+    let n = 400;
+    let system = AnalogSystem::new(&ladder_design(n)).expect("builds");
+    assert_eq!(system.len(), n + 1, "{:?}", &system.unknown_names()[..3]);
+    assert!(
+        system.pattern().len() <= 3 * n,
+        "{} Jacobian entries for {n} unknowns",
+        system.pattern().len()
+    );
+}

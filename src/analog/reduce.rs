@@ -63,7 +63,10 @@ pub struct Candidates<'a> {
 /// columns scaled by the tolerances. A row with a tolerance of its own (a current balance)
 /// counts it as one more term: the row holds only to that, so solving it for `x_u` leaves
 /// `x_u` uncertain by `row_abstol / |a_u|` whatever the other terms (a diode's current,
-/// a capacitor's `C v'`) contribute.
+/// a capacitor's `C v'`) contribute. Only such rows are refused: an equation without a
+/// tolerance of its own (`v == r * i`) holds to rounding in the full system as in the reduced
+/// one, so solving it for any unknown leaves the answer as it was (refusing `i = v / r` for
+/// small resistors once turned an RC ladder's node potentials into sums over the whole line).
 pub const MAX_AMPLIFICATION: f64 = 100.0;
 
 /// Solves equations for unknowns where the rules above allow it, in assembly order.
@@ -243,8 +246,10 @@ fn choose(
             continue;
         }
         let amplification = largest / scale(j, Some(a));
-        // (A NaN amplification, from a zero tolerance, never qualifies.)
-        let acceptable = amplification <= MAX_AMPLIFICATION;
+        // Only a balance is held to a tolerance of its own; other equations hold to rounding in
+        // the full system as in the reduced one. (A NaN amplification, from a zero tolerance,
+        // never qualifies.)
+        let acceptable = row_abstol.is_none() || amplification <= MAX_AMPLIFICATION;
         if !acceptable
             || best
                 .as_ref()
@@ -537,11 +542,15 @@ mod tests {
 
     #[test]
     fn small_pivots_measured_in_tolerances_are_refused() {
-        // g * v(a) - i = 0 with i an inductor's current (kept): v(a) = i / g is a node voltage
-        // from a current balance. Across a 100 Ohm conductance a current error of its
-        // tolerance (1e-9 A) moves v(a) by 1e-7 V, a tenth of its own; across a 100 MOhm leak
-        // by 0.1 V, 1e5 of its tolerances: that unknown must stay.
-        for (g, eliminated) in [(1e-2, true), (1e-8, false)] {
+        // g * v(a) - i = 0 as a current balance (tolerance 1e-9 A) with i an inductor's
+        // current (kept): v(a) = i / g is a node voltage from the balance. Across a 100 Ohm
+        // conductance a current error of its tolerance moves v(a) by 1e-7 V, a tenth of its
+        // own; across a 100 MOhm leak by 0.1 V, 1e5 of its tolerances: that unknown must stay.
+        // The same relation as a branch equation (no tolerance of its own) holds exactly in
+        // the full system too, so solving it changes nothing, whatever the pivot.
+        for (g, balance, eliminated) in
+            [(1e-2, true, true), (1e-8, true, false), (1e-8, false, true)]
+        {
             let residuals = vec![Sym::sub(Sym::mul(c(g), x(0)), x(1))];
             let out = eliminate(
                 residuals,
@@ -549,10 +558,14 @@ mod tests {
                     protected: &[false, true],
                     potential: &[true, false],
                     abstol: &[1e-6, 1e-9],
-                    row_abstol: &[],
+                    row_abstol: &[balance.then_some(1e-9)],
                 },
             );
-            assert_eq!(out.replacement[0].is_some(), eliminated, "g = {g}");
+            assert_eq!(
+                out.replacement[0].is_some(),
+                eliminated,
+                "g = {g}, balance: {balance}"
+            );
         }
     }
 

@@ -184,6 +184,8 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             abstol: abstol.iter().copied().fold(DEFAULT_ABSTOL, f64::min),
             abstol_per_unknown: abstol,
             max_step,
+            // No unknown beyond a few tolerances, however large the system (see the norm).
+            norm: crate::solver::ErrorNorm::Bounded,
             ..TransientOptions::default()
         };
         let integ = Transient::new(&mut sys, 0.0, &x, topts);

@@ -27,7 +27,18 @@ pub enum ErrorNorm {
     Rms,
     /// `max |e_i w_i|`, as SPICE: every unknown within its own tolerance.
     Max,
+    /// The larger of the RMS and `max |e_i w_i| / BOUNDED_MAX_RATIO`: smooth like the RMS
+    /// where many unknowns move, and no unknown beyond `BOUNDED_MAX_RATIO` times its
+    /// tolerance however many quiet ones surround it.
+    Bounded,
 }
+
+/// How many of its tolerances one unknown may carry under [`ErrorNorm::Bounded`]. Measured:
+/// a diode chain whose wave lives in its first seven of 10 000 stages took it 40 times
+/// under the RMS (2.7 % of the swing where ngspice is at 0.6 %); the maximum norm costs the
+/// headlight servo 45 % more steps and an RC ladder twice as many, whose RMS let its output
+/// carry 2.8 tolerances.
+pub const BOUNDED_MAX_RATIO: f64 = 3.0;
 
 /// Per-unknown error weights: `|e_i| <= reltol * |x_i| + abstol_i` is "within tolerance".
 #[derive(Debug, Clone, PartialEq)]
@@ -58,13 +69,18 @@ impl Tolerances {
     pub fn norm(&self, v: &[f64], w: &[f64]) -> f64 {
         match self.norm {
             ErrorNorm::Rms => wrms(v, w),
-            ErrorNorm::Max => v
-                .iter()
-                .zip(w)
-                .map(|(v, w)| (v * w).abs())
-                .fold(0.0, |m, e| if e > m || e.is_nan() { e } else { m }),
+            ErrorNorm::Max => wmax(v, w),
+            ErrorNorm::Bounded => wrms(v, w).max(wmax(v, w) / BOUNDED_MAX_RATIO),
         }
     }
+}
+
+/// Weighted maximum norm `max |v_i w_i|` (NaN if any term is); 0 for empty vectors.
+fn wmax(v: &[f64], w: &[f64]) -> f64 {
+    v.iter()
+        .zip(w)
+        .map(|(v, w)| (v * w).abs())
+        .fold(0.0, |m, e| if e > m || e.is_nan() { e } else { m })
 }
 
 /// Weighted root-mean-square norm `sqrt(mean((v_i w_i)^2))`; 0 for empty vectors.

@@ -186,3 +186,32 @@ fn a_stalled_iteration_within_its_bound_converges() {
         }
     }
 }
+
+/// One unknown at three times its tolerance among 999 quiet ones: the RMS calls that 0.09
+/// (well within), the bounded norm exactly at its limit, the maximum three.
+#[test]
+fn the_bounded_norm_does_not_dilute_in_large_systems() {
+    use crate::solver::{ErrorNorm, Tolerances};
+    let mut e = vec![0.0; 1000];
+    e[17] = 3.0e-6;
+    let w = vec![1e6; 1000];
+    let norm = |norm| {
+        Tolerances {
+            reltol: 0.0,
+            abstol: vec![1e-6; 1000],
+            norm,
+        }
+        .norm(&e, &w)
+    };
+    assert!((norm(ErrorNorm::Rms) - 3.0 / 1000f64.sqrt()).abs() < 1e-12);
+    assert!((norm(ErrorNorm::Bounded) - 1.0).abs() < 1e-12);
+    assert!((norm(ErrorNorm::Max) - 3.0).abs() < 1e-12);
+    // Where every unknown moves alike the bounded norm is the RMS.
+    let even = vec![0.5e-6; 1000];
+    let t = Tolerances::uniform(1000, 0.0, 1e-6);
+    let bounded = Tolerances {
+        norm: ErrorNorm::Bounded,
+        ..t.clone()
+    };
+    assert_eq!(bounded.norm(&even, &w), t.norm(&even, &w));
+}

@@ -214,7 +214,7 @@ impl Transient {
         self.newton.invalidate_jacobian();
         match self
             .newton
-            .solve(&mut p, &mut self.scratch, &self.tol, &opts, t)
+            .solve(&mut p, &mut self.scratch, &self.newton_tol, &opts, t)
         {
             Ok(_) => {
                 if let Some(m) = mode {
@@ -334,7 +334,7 @@ impl Transient {
             };
             self.newton.invalidate_jacobian();
             self.newton
-                .solve(&mut p, &mut self.x_new, &self.tol, &opts, t)?;
+                .solve(&mut p, &mut self.x_new, &self.newton_tol, &opts, t)?;
             if step == 0 {
                 self.hist_x[0].copy_from_slice(&self.x_new);
             }

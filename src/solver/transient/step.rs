@@ -152,7 +152,7 @@ impl Transient {
         let solved = self.newton.solve(
             &mut corr,
             &mut self.x_new,
-            &self.tol,
+            &self.newton_tol,
             &self.newton_opts,
             t_new,
         );
