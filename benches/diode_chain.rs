@@ -46,10 +46,13 @@ fn run_vams(n: usize) -> SimResult {
 }
 
 /// The same circuit for ngspice: the default diode (IS 1e-14, no series resistance or
-/// capacitance) with ngspice's GMIN across it, as the model's `chain_diode`.
+/// capacitance) with ngspice's GMIN across it, as the model's `chain_diode`, at 300 K (where
+/// ngspice's thermal voltage is the model's `vt`).
 fn netlist(n: usize, reltol: f64) -> String {
-    let mut s =
-        format!(".options reltol={reltol:e}\n.model dchain D(IS=1e-14)\nV1 n0 0 SIN(0 5 10k)\n");
+    let mut s = format!(
+        ".options reltol={reltol:e} temp=26.85 tnom=26.85\n.model dchain D(IS=1e-14)\n\
+         V1 n0 0 SIN(0 5 10k)\n"
+    );
     for k in 1..=n {
         s += &format!(
             "R{k} n{} m{k} 100\nD{k} m{k} n{k} dchain\nC{k} n{k} 0 10n\nRL{k} n{k} 0 10k\n",

@@ -384,10 +384,14 @@ impl Newton {
             // A step already within tolerance needs no damping (and rounding would defeat the
             // sufficient-decrease test there).
             // `ends`: the iteration would stop here if the residual agrees.
-            let ends = if opts.line_search && norm > opts.tol && !stalled {
+            // `damped`: the line search shortened the step and the residual fell, so the
+            // iteration is still on its way (slow, not at the rounding floor).
+            let before = norm2(&self.r);
+            let (ends, damped) = if opts.line_search && norm > opts.tol && !stalled {
                 // Backtracking starts where exponentials stop overshooting.
                 let mut lambda = p.step_limit(x, &self.dx).clamp(1e-9, 1.0);
-                let f0 = norm2(&self.r);
+                let f0 = before;
+                let mut decreased;
                 loop {
                     for ((xt, &x), &d) in self.x_trial.iter_mut().zip(x.iter()).zip(&self.dx) {
                         *xt = x + lambda * d;
@@ -395,7 +399,8 @@ impl Newton {
                     p.residual(&self.x_trial, &mut self.r_trial);
                     rep.residual_evals += 1;
                     let f1 = norm2(&self.r_trial);
-                    if (f1.is_finite() && f1 <= (1.0 - 1e-4 * lambda) * f0) || lambda < 0.03 {
+                    decreased = f1.is_finite() && f1 <= (1.0 - 1e-4 * lambda) * f0;
+                    if decreased || lambda < 0.03 {
                         break;
                     }
                     lambda *= 0.5;
@@ -405,7 +410,7 @@ impl Newton {
                 if let Some(equation) = self.r.iter().position(|v| !v.is_finite()) {
                     return Err(SolveError::NonFiniteResidual { t, equation });
                 }
-                exact && lambda == 1.0
+                (exact && lambda == 1.0, decreased && lambda < 1.0)
             } else {
                 for (x, d) in x.iter_mut().zip(&self.dx) {
                     *x += d;
@@ -419,13 +424,22 @@ impl Newton {
                     return Ok(());
                 }
                 Self::eval(p, x, &mut self.r, t, rep)?;
-                small
+                (small, false)
             };
-            // At the rounding floor (updates no longer contract), a residual within every
-            // equation's tolerance is the answer whatever the update's size: `x'` of a
-            // consistent initialisation, weighed on the scale of `x`, can wander by more than
-            // that scale in the last bits of an ill-conditioned row.
-            let floor = opts.check_residual && opts.stall_tol.is_some() && norm > 0.5 * prev_norm;
+            // At the rounding floor (neither the updates nor the residual contract any more), a
+            // residual within every equation's tolerance is the answer whatever the update's
+            // size: `x'` of a consistent initialisation, weighed on the scale of `x`, can wander
+            // by more than that scale in the last bits of an ill-conditioned row. An iteration
+            // still on its way is not there, though its updates may not contract either (full
+            // steps walk down a junction's exponential by about `vt` each while the residual
+            // falls by `e`; a damped step contracts slowly): its residual can be within those
+            // tolerances (a large conductance makes a loose one) with a node hundreds of
+            // tolerances from the solution.
+            let floor = opts.check_residual
+                && opts.stall_tol.is_some()
+                && !damped
+                && norm > 0.5 * prev_norm
+                && norm2(&self.r) > 0.5 * before;
             if (ends || floor) && self.residual_agrees(x, tol, opts) {
                 return Ok(());
             }
