@@ -246,3 +246,43 @@ fn source_and_capacitor_loop_follows_the_closed_form() {
         );
     }
 }
+
+/// A cut set of a current source and inductors (the dual of the loop above): the inductor
+/// currents are the source's waveform, their voltages its derivative.
+#[test]
+fn current_source_and_inductor_cut_set_follows_the_closed_form() {
+    let design = design("cut_set", "tb_cut_set");
+    let (amp, w, l, r) = (1.0e-3, std::f64::consts::TAU * 1000.0, 4.0e-3, 100.0);
+    let v3 = |t: f64| r * amp * (w * t).sin();
+    let v1 = |t: f64| v3(t) + l * amp * w * (w * t).cos();
+    for keep_unknowns in [false, true] {
+        for (reltol, bound) in [(1e-3, 5e-3), (1e-6, 2e-4)] {
+            let options = SimOptions {
+                stop: 2e-3,
+                reltol,
+                keep_unknowns,
+                ..SimOptions::default()
+            };
+            let result = simulate(&design, &options, &mut |_| {}).expect("runs");
+            assert_eq!(result.outcome, Outcome::Finished);
+            let wv = &result.waveforms;
+            let column = |name: &str| &wv.column(name).expect("recorded").values;
+            assert!(wv.times.len() > 50);
+            let mut worst: f64 = 0.0;
+            // From the first step on: at 0 the quiescent point holds every derivative at 0.
+            for (k, &t) in wv.times.iter().enumerate().filter(|(_, t)| **t > 0.0) {
+                worst = worst
+                    .max((column("v1")[k] - v1(t)).abs())
+                    .max((column("v3")[k] - v3(t)).abs());
+            }
+            // As a fraction of v1's amplitude (0.11 V).
+            let amplitude = amp * (r * r + (l * w) * (l * w)).sqrt();
+            assert!(
+                worst / amplitude < bound,
+                "reltol {reltol}, keep_unknowns {keep_unknowns}: {:.2e} of the amplitude off \
+                 the closed form",
+                worst / amplitude
+            );
+        }
+    }
+}

@@ -22,6 +22,7 @@ use std::time::{Duration, Instant};
 const NGSPICE_DEADLINE: Duration = Duration::from_secs(20);
 
 use vams::cli::load::load;
+use vams::design::Design;
 use vams::elaborate::{ElabOptions, elaborate};
 use vams::kernel::{Outcome, SimOptions, simulate};
 
@@ -299,6 +300,66 @@ impl Waves {
         self.columns[c][i] + w * (self.columns[c][i + 1] - self.columns[c][i])
     }
 
+    /// Column `c` at `t`, by the parabola through the three recorded points nearest `t`
+    /// (interpolation error of third order in the step: two runs of one circuit with steps
+    /// of a thousandth of a period compare to 1e-8 of the swing where linear interpolation
+    /// leaves 1e-6).
+    pub fn at_quadratic(&self, c: usize, t: f64) -> f64 {
+        let n = self.times.len();
+        if n < 3 {
+            return self.at(c, t);
+        }
+        let i = self.times.partition_point(|&x| x <= t).clamp(1, n - 1);
+        // Points i - 1 and i bracket t; the third is the nearer of their neighbours.
+        let first = if i >= 2 && (i + 1 >= n || t - self.times[i - 2] < self.times[i + 1] - t) {
+            i - 2
+        } else {
+            i - 1
+        };
+        let (ts, vs) = (
+            &self.times[first..first + 3],
+            &self.columns[c][first..first + 3],
+        );
+        if ts[0] == ts[1] || ts[1] == ts[2] {
+            return self.at(c, t);
+        }
+        (0..3)
+            .map(|j| {
+                let mut w = vs[j];
+                for k in (0..3).filter(|&k| k != j) {
+                    w *= (t - ts[k]) / (ts[j] - ts[k]);
+                }
+                w
+            })
+            .sum()
+    }
+
+    /// The worst distance of `self`'s recorded points (after 0) from `other`, as a fraction of
+    /// `other`'s largest node swing plus 1e-3 of its largest magnitude (see
+    /// [`Waves::disagreement`]), with the node (1-based) and time: the smaller of the distance
+    /// from `other` interpolated by [`Waves::at_quadratic`] (smooth stretches) and from its
+    /// tube (edges, where a time shift of a few picoseconds is a large pointwise difference),
+    /// less `allowance` (volts: what absolute tolerances leave).
+    pub fn close_difference(&self, other: &Waves, allowance: f64) -> (f64, usize, f64) {
+        let (swing, peak) = other.scale();
+        let scale = (swing + 1e-3 * peak).max(1e-9);
+        let span = other.times.last().copied().unwrap_or(0.0) - other.times[0];
+        let dt = 1e-4 * span;
+        let mut worst = (0.0, 0, 0.0);
+        for (c, column) in self.columns.iter().enumerate() {
+            for (&t, &v) in self.times.iter().zip(column).filter(|(t, _)| **t > 0.0) {
+                let (lo, hi) = other.range(c, t, dt);
+                let tube = (lo - v).max(v - hi).max(0.0);
+                let d = (v - other.at_quadratic(c, t)).abs().min(tube);
+                let e = (d - allowance).max(0.0) / scale;
+                if e.is_nan() || e > worst.0 {
+                    worst = (e, c + 1, t);
+                }
+            }
+        }
+        worst
+    }
+
     /// The range of column `c` over `[t - dt, t + dt]`.
     fn range(&self, c: usize, t: f64, dt: f64) -> (f64, f64) {
         let (a, b) = (self.at(c, t - dt), self.at(c, t + dt));
@@ -362,24 +423,24 @@ pub fn run_vams(
     keep_unknowns: bool,
     dir: &Path,
 ) -> Result<Waves, String> {
-    let path = dir.join(format!("rand_{}.vhd", circuit.seed));
-    std::fs::write(&path, circuit.vhdl()).map_err(|e| e.to_string())?;
-    let loaded = load(&[path]).map_err(|e| format!("{e:?}"))?;
-    if loaded.error_count() != 0 {
-        return Err(format!("{:?}", loaded.syntax_errors));
-    }
-    let options = ElabOptions {
-        top: "tb_rand".into(),
-        generics: Vec::new(),
-    };
-    let design =
-        elaborate(&loaded.sources, &loaded.files, &options).map_err(|e| format!("{e:?}"))?;
+    run_vams_with(
+        circuit,
+        SimOptions {
+            reltol,
+            keep_unknowns,
+            ..SimOptions::default()
+        },
+        dir,
+    )
+}
+
+/// [`run_vams`] with other options (`stop` and `probes` are the circuit's).
+pub fn run_vams_with(circuit: &Circuit, options: SimOptions, dir: &Path) -> Result<Waves, String> {
+    let design = elaborated(circuit, dir)?;
     let options = SimOptions {
         stop: circuit.stop(),
-        reltol,
-        keep_unknowns,
         probes: (1..=circuit.nodes).map(|n| format!("v{n}")).collect(),
-        ..SimOptions::default()
+        ..options
     };
     let result = simulate(&design, &options, &mut |_| {}).map_err(|e| e.to_string())?;
     if result.outcome != Outcome::Finished {
@@ -398,6 +459,21 @@ pub fn run_vams(
         times: w.times.clone(),
         columns,
     })
+}
+
+/// `circuit` written to `dir`, loaded and elaborated.
+pub fn elaborated(circuit: &Circuit, dir: &Path) -> Result<Design, String> {
+    let path = dir.join(format!("rand_{}.vhd", circuit.seed));
+    std::fs::write(&path, circuit.vhdl()).map_err(|e| e.to_string())?;
+    let loaded = load(&[path]).map_err(|e| format!("{e:?}"))?;
+    if loaded.error_count() != 0 {
+        return Err(format!("{:?}", loaded.syntax_errors));
+    }
+    let options = ElabOptions {
+        top: "tb_rand".into(),
+        generics: Vec::new(),
+    };
+    elaborate(&loaded.sources, &loaded.files, &options).map_err(|e| format!("{e:?}"))
 }
 
 /// True when `ngspice` runs here.
