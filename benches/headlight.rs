@@ -157,6 +157,10 @@ fn headlight(c: &mut Criterion) {
             }
         })
     });
+    // Analysis of every unit (the stdlib and the models), from parsed files; goal 20 ms.
+    parse.bench_function("analyse/models+stdlib", |b| {
+        b.iter(|| black_box(vams::analysis::analyse(&sources, &files)))
+    });
     parse.finish();
     generated_frontend(c);
 }

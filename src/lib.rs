@@ -5,6 +5,7 @@
 //! beside it, [`extract`] (motor parameters from scope captures) and [`output`] (plots).
 
 pub mod analog;
+pub mod analysis;
 pub mod ast;
 pub mod cli;
 pub mod design;

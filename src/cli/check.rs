@@ -2,13 +2,15 @@
 //! and `.ams` files, recursively) together with the bundled stdlib, and reports every
 //! diagnostic with file, line, column and a help line. Exit 0 when clean, 1 on any error.
 //!
-//! Three stages, each only when the one before it is clean: parsing every file; elaborating
-//! every top candidate (an entity of `work` that nothing instantiates) with its default
-//! generics; building the analog system of each elaborated top (equation count, matching,
-//! floating terminals). Candidates that cannot stand alone are skipped with a note: generics
-//! without a default have no value, and open terminal or quantity ports would make the analog
-//! checks report what is only the missing surroundings. Their bodies are checked as part of
-//! any top that instantiates them. A diagnostic that several tops share is printed once.
+//! Four stages, each only when the one before it is clean: parsing every file; analysing
+//! every design unit of every file, reached by a top or not (names, types, overloads);
+//! elaborating every top candidate (an entity of `work` that nothing instantiates) with its
+//! default generics; building the analog system of each elaborated top (equation count,
+//! matching, floating terminals). Candidates that cannot stand alone are not elaborated, with a
+//! note: generics without a default have no value, and open terminal or quantity ports would
+//! make the analog checks report what is only the missing surroundings. What depends on their
+//! generics' values is checked as part of any top that instantiates them. A diagnostic that
+//! several tops share is printed once.
 
 use std::collections::HashSet;
 use std::path::PathBuf;
@@ -17,6 +19,7 @@ use clap::Args;
 use miette::Report;
 
 use crate::analog::AnalogSystem;
+use crate::analysis::analyse;
 use crate::diagnostics::Located;
 use crate::elaborate::{ElabOptions, TopCandidate, elaborate, top_candidates};
 
@@ -39,6 +42,7 @@ pub struct CheckArgs {
 #[derive(Debug, Default)]
 struct Tally {
     syntax: usize,
+    analysis: usize,
     elaboration: usize,
     analog: usize,
     /// Tops elaborated, and those whose analog system was built.
@@ -50,7 +54,7 @@ struct Tally {
 
 impl Tally {
     fn errors(&self) -> usize {
-        self.syntax + self.elaboration + self.analog
+        self.syntax + self.analysis + self.elaboration + self.analog
     }
 
     /// Prints the diagnostics not printed before, at most `max`; returns how many were new.
@@ -81,8 +85,17 @@ pub fn run(args: &CheckArgs) -> Result<(), Report> {
         ..Tally::default()
     };
     if tally.syntax == 0 {
-        for candidate in top_candidates(&loaded.sources, &loaded.files) {
-            check_top(&candidate, &loaded, args.max_errors, &mut tally);
+        // Every unit of every file, whether or not a top reaches it.
+        let analysis = analyse(&loaded.sources, &loaded.files);
+        for unit in &analysis.units {
+            tally.analysis += tally.print(&unit.errors, &loaded, args.max_errors);
+        }
+        if tally.analysis == 0 {
+            for candidate in top_candidates(&loaded.sources, &loaded.files) {
+                check_top(&candidate, &loaded, args.max_errors, &mut tally);
+            }
+        } else {
+            eprintln!("note: nothing was elaborated because of the analysis errors");
         }
     } else {
         eprintln!("note: nothing was elaborated because of the syntax errors");
@@ -98,8 +111,8 @@ pub fn run(args: &CheckArgs) -> Result<(), Report> {
 fn check_top(top: &TopCandidate, loaded: &Loaded, max: usize, tally: &mut Tally) {
     if !top.can_elaborate() {
         eprintln!(
-            "note: `{}` is not elaborated: no default for generic(s) {}; it is checked where \
-             it is instantiated",
+            "note: `{}` is not elaborated: no default for generic(s) {}; it is analysed, and \
+             what depends on the generics' values is checked where it is instantiated",
             top.name,
             quoted(&top.generics_without_default)
         );
@@ -156,8 +169,8 @@ fn summary(loaded: &Loaded, tally: &Tally) -> String {
         format!("{checked}: no errors")
     } else {
         format!(
-            "{checked}: {} syntax, {} elaboration and {} analog error(s)",
-            tally.syntax, tally.elaboration, tally.analog
+            "{checked}: {} syntax, {} analysis, {} elaboration and {} analog error(s)",
+            tally.syntax, tally.analysis, tally.elaboration, tally.analog
         )
     }
 }

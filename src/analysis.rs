@@ -1,0 +1,176 @@
+//! Analysis: parsed design files -> a library of analysed design units.
+//!
+//! **Takes** the parsed files of a compilation (user files in library `work`, the bundled
+//! stdlib in `std` and `ieee`, as recorded in the [`SourceMap`]). **Gives** an [`Analysis`]:
+//! every design unit of every file, analysed on its own whether or not a top reaches it, in
+//! dependency order whatever the file order (`units` computes the order from context clauses,
+//! secondary units and direct entity instantiations, and reports cycles). In each unit every
+//! name is resolved to its declaration (`references`: the span of the use and the declaration
+//! id), every expression has its type (`types`), and every diagnostic belongs to the unit it
+//! is found in, so one bad unit does not hide errors in another.
+//!
+//! Types are base types ([`types::TypeId`]); an overloaded name (`"*"`, `now`, `'0'`) is
+//! resolved from its operands and the type the context expects, with the universal literal
+//! conversions as the only implicit ones. What analysis does not model yet gets the unknown
+//! type, which matches everything: analysis reports an error only where it is certain, and
+//! elaboration still checks what it folds.
+//!
+//! May use `ast`, `source`, `diagnostics`. Never touches elaboration, the solver or the
+//! kernel.
+
+use rustc_hash::FxHashMap;
+
+use crate::ast::{DesignFile, DesignUnit, LibraryUnit};
+use crate::source::{FileId, SourceMap, Span};
+
+mod declare;
+mod error;
+mod expr;
+mod operators;
+mod scope;
+mod stmt;
+#[cfg(test)]
+mod tests;
+pub mod types;
+mod units;
+
+pub use error::AnalysisError;
+pub use scope::{
+    DeclId, DeclKind, Declaration, Nature, NatureId, Param, Region, RegionId, Signature,
+};
+pub use types::{TypeId, TypeInfo, TypeKind, TypeTable};
+
+/// What kind of design unit.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum UnitKind {
+    Entity,
+    Architecture { entity: String },
+    Package,
+    PackageBody,
+}
+
+/// One analysed design unit.
+#[derive(Clone, Debug)]
+pub struct AnalysedUnit {
+    pub library: String,
+    /// The unit's own name (an architecture's, a package body's package name).
+    pub name: String,
+    pub kind: UnitKind,
+    pub file: FileId,
+    pub span: Span,
+    /// Units analysed before this one because it needs them (indexes into `units`).
+    pub depends_on: Vec<usize>,
+    pub errors: Vec<AnalysisError>,
+    /// Each resolved name: where it is used and what it denotes.
+    pub references: Vec<(Span, DeclId)>,
+    /// The type of each analysed expression.
+    pub types: Vec<(Span, TypeId)>,
+    /// The declarations of the unit (for a package or entity, what it exports).
+    pub region: RegionId,
+}
+
+/// A library of analysed units with the declarations and types they share.
+#[derive(Clone, Debug, Default)]
+pub struct Analysis {
+    /// In file order.
+    pub units: Vec<AnalysedUnit>,
+    /// Indexes into `units` in the order they were analysed.
+    pub order: Vec<usize>,
+    pub decls: Vec<Declaration>,
+    pub types: TypeTable,
+    pub natures: Vec<Nature>,
+    pub regions: Vec<Region>,
+}
+
+impl Analysis {
+    /// Every diagnostic, unit by unit in file order.
+    pub fn errors(&self) -> impl Iterator<Item = &AnalysisError> {
+        self.units.iter().flat_map(|u| u.errors.iter())
+    }
+
+    pub fn decl(&self, id: DeclId) -> &Declaration {
+        &self.decls[id.0 as usize]
+    }
+
+    /// The declaration the name at byte `offset` of `file` denotes (the innermost name).
+    pub fn declaration_at(&self, file: FileId, offset: u32) -> Option<DeclId> {
+        innermost(
+            self.units
+                .iter()
+                .filter(|u| u.file == file)
+                .flat_map(|u| u.references.iter()),
+            offset,
+        )
+    }
+
+    /// The type of the innermost expression at byte `offset` of `file`.
+    pub fn type_at(&self, file: FileId, offset: u32) -> Option<TypeId> {
+        innermost(
+            self.units
+                .iter()
+                .filter(|u| u.file == file)
+                .flat_map(|u| u.types.iter()),
+            offset,
+        )
+    }
+}
+
+/// The value of the shortest span that contains `offset`.
+fn innermost<'a, T: Copy + 'a>(
+    spans: impl Iterator<Item = &'a (Span, T)>,
+    offset: u32,
+) -> Option<T> {
+    spans
+        .filter(|(s, _)| s.start <= offset && offset < s.end.max(s.start + 1))
+        .min_by_key(|(s, _)| s.end - s.start)
+        .map(|(_, v)| *v)
+}
+
+/// Analyses every design unit of `files`.
+pub fn analyse(sources: &SourceMap, files: &[(FileId, DesignFile)]) -> Analysis {
+    let units: Vec<(String, FileId, &DesignUnit)> = files
+        .iter()
+        .flat_map(|(file, design)| {
+            let library = sources.file(*file).library.clone();
+            design
+                .units
+                .iter()
+                .map(move |u| (library.clone(), *file, u))
+        })
+        .collect();
+    let mut a = units::Analyzer::new(&units);
+    let order = a.order();
+    for &u in &order {
+        a.unit(u);
+    }
+    let mut out = a.finish();
+    out.order = order;
+    out
+}
+
+/// The name a unit is known by.
+fn unit_name(unit: &LibraryUnit) -> (&str, UnitKind) {
+    match unit {
+        LibraryUnit::Entity(e) => (&e.name.name, UnitKind::Entity),
+        LibraryUnit::Architecture(a) => (
+            &a.name.name,
+            UnitKind::Architecture {
+                entity: a.entity.name.clone(),
+            },
+        ),
+        LibraryUnit::Package(p) => (&p.name.name, UnitKind::Package),
+        LibraryUnit::PackageBody(b) => (&b.name.name, UnitKind::PackageBody),
+    }
+}
+
+/// The library a name in a `library` clause or selected name stands for.
+pub fn canonical_library(name: &str) -> &str {
+    if name == "ieee_proposed" {
+        "ieee"
+    } else {
+        name
+    }
+}
+
+/// A lookup table of units by key, kept by the analyzer.
+type UnitMap = FxHashMap<(String, String), usize>;

@@ -1,0 +1,194 @@
+//! The predefined operators: declared implicitly right after each type declaration (LRM
+//! 1076-2002 7.2), and those of the universal types, declared in `std.standard`.
+
+use crate::ast::ObjectClass;
+use crate::source::Span;
+
+use super::scope::{DeclKind, Param, RegionId, Signature};
+use super::types::{TypeId, TypeKind, UNIVERSAL_INTEGER, UNIVERSAL_REAL};
+use super::units::Analyzer;
+
+const ARITHMETIC: [&str; 4] = ["+", "-", "*", "/"];
+const ORDERING: [&str; 4] = ["<", "<=", ">", ">="];
+const LOGICAL: [&str; 6] = ["and", "or", "nand", "nor", "xor", "xnor"];
+const SHIFTS: [&str; 6] = ["sll", "srl", "sla", "sra", "rol", "ror"];
+
+impl Analyzer<'_> {
+    /// Declares the operators a new type `t` brings, in the current region.
+    pub fn implicit_operators(&mut self, t: TypeId, span: Span) {
+        // `boolean` and `bit` are the first two types of std.standard; their own operators
+        // already need them.
+        let in_standard = self.out.units[self.cur].library == "std"
+            && self.out.units[self.cur].name == "standard";
+        let logical_type = in_standard && matches!(self.types().name(t), "boolean" | "bit");
+        if in_standard {
+            match self.types().name(t) {
+                "boolean" => self.std.boolean = t,
+                "bit" => self.std.bit = t,
+                "integer" => self.std.integer = t,
+                "real" => self.std.real = t,
+                _ => {}
+            }
+        }
+        let boolean = self.std.boolean;
+        let integer = self.std.integer;
+        let real = self.std.real;
+        let kind = self.types().kind(t).clone();
+        let is_file = matches!(kind, TypeKind::File(_));
+        if !is_file {
+            for op in ["=", "/="] {
+                self.operator(op, &[t, t], boolean, span);
+            }
+        }
+        let logical_element = |a: &Analyzer, e: TypeId| e == a.std.boolean || e == a.std.bit;
+        match kind {
+            TypeKind::Integer | TypeKind::Real => {
+                for op in ORDERING {
+                    self.operator(op, &[t, t], boolean, span);
+                }
+                for op in ARITHMETIC {
+                    self.operator(op, &[t, t], t, span);
+                }
+                if kind == TypeKind::Integer {
+                    for op in ["mod", "rem"] {
+                        self.operator(op, &[t, t], t, span);
+                    }
+                }
+                self.operator("**", &[t, integer], t, span);
+                for op in ["+", "-", "abs"] {
+                    self.operator(op, &[t], t, span);
+                }
+            }
+            TypeKind::Physical => {
+                for op in ORDERING {
+                    self.operator(op, &[t, t], boolean, span);
+                }
+                for op in ["+", "-"] {
+                    self.operator(op, &[t, t], t, span);
+                }
+                for op in ["+", "-", "abs"] {
+                    self.operator(op, &[t], t, span);
+                }
+                for scalar in [integer, real] {
+                    self.operator("*", &[t, scalar], t, span);
+                    self.operator("*", &[scalar, t], t, span);
+                    self.operator("/", &[t, scalar], t, span);
+                }
+                self.operator("/", &[t, t], UNIVERSAL_INTEGER, span);
+            }
+            TypeKind::Enum { .. } => {
+                for op in ORDERING {
+                    self.operator(op, &[t, t], boolean, span);
+                }
+                if logical_type {
+                    for op in LOGICAL {
+                        self.operator(op, &[t, t], t, span);
+                    }
+                    self.operator("not", &[t], t, span);
+                }
+            }
+            TypeKind::Array { indexes, element } if indexes.len() == 1 => {
+                if self.types().is_discrete(element) {
+                    for op in ORDERING {
+                        self.operator(op, &[t, t], boolean, span);
+                    }
+                }
+                for args in [[t, t], [t, element], [element, t], [element, element]] {
+                    self.operator("&", &args, t, span);
+                }
+                if logical_element(self, element) {
+                    for op in LOGICAL {
+                        self.operator(op, &[t, t], t, span);
+                    }
+                    self.operator("not", &[t], t, span);
+                    for op in SHIFTS {
+                        self.operator(op, &[t, integer], t, span);
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+
+    /// The arithmetic operators of universal_integer and universal_real (LRM 7.2.4, 7.2.6),
+    /// declared first in `std.standard`: its own ranges (`-2147483648`) need them.
+    pub fn universal_arithmetic(&mut self) {
+        let span = Span::default();
+        for u in [UNIVERSAL_INTEGER, UNIVERSAL_REAL] {
+            for op in ARITHMETIC {
+                self.operator(op, &[u, u], u, span);
+            }
+            for op in ["+", "-", "abs"] {
+                self.operator(op, &[u], u, span);
+            }
+        }
+        for op in ["mod", "rem"] {
+            self.operator(
+                op,
+                &[UNIVERSAL_INTEGER, UNIVERSAL_INTEGER],
+                UNIVERSAL_INTEGER,
+                span,
+            );
+        }
+        self.operator(
+            "*",
+            &[UNIVERSAL_REAL, UNIVERSAL_INTEGER],
+            UNIVERSAL_REAL,
+            span,
+        );
+        self.operator(
+            "*",
+            &[UNIVERSAL_INTEGER, UNIVERSAL_REAL],
+            UNIVERSAL_REAL,
+            span,
+        );
+        self.operator(
+            "/",
+            &[UNIVERSAL_REAL, UNIVERSAL_INTEGER],
+            UNIVERSAL_REAL,
+            span,
+        );
+    }
+
+    /// The universal operators that name `boolean` and `integer`, declared at the end of
+    /// `std.standard`.
+    pub fn universal_relations(&mut self, region: RegionId) {
+        let boolean = self.std.boolean;
+        let integer = self.std.integer;
+        let saved = std::mem::replace(&mut self.scope, vec![region]);
+        let span = Span::default();
+        for u in [UNIVERSAL_INTEGER, UNIVERSAL_REAL] {
+            for op in ["=", "/="].into_iter().chain(ORDERING) {
+                self.operator(op, &[u, u], boolean, span);
+            }
+            self.operator("**", &[u, integer], u, span);
+        }
+        self.scope = saved;
+    }
+
+    fn operator(&mut self, op: &str, args: &[TypeId], result: TypeId, span: Span) {
+        let names = ["l", "r"];
+        let params = args
+            .iter()
+            .zip(if args.len() == 1 {
+                &names[1..]
+            } else {
+                &names[..]
+            })
+            .map(|(&ty, n)| Param {
+                name: (*n).to_string(),
+                class: ObjectClass::Constant,
+                ty,
+                has_default: false,
+            })
+            .collect();
+        let sig = Signature {
+            params,
+            result: Some(result),
+        };
+        let name = format!("\"{op}\"");
+        let d = self.push_decl(&name, span, DeclKind::Subprogram(sig));
+        let region = *self.scope.last().expect("a unit always has a region");
+        self.out.regions[region.0 as usize].add(&name, d);
+    }
+}

@@ -1,0 +1,114 @@
+//! Declarations and visibility: the declaration arena, declarative regions (a package's,
+//! an entity's, a process's) and the stack of regions visible at a point of a unit.
+
+use rustc_hash::FxHashMap;
+
+use crate::ast::ObjectClass;
+use crate::source::Span;
+
+use super::types::TypeId;
+
+/// Index of a declaration in [`Analysis::decls`](super::Analysis).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct DeclId(pub u32);
+
+/// Index of a declarative region.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct RegionId(pub u32);
+
+/// Index of a nature.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct NatureId(pub u32);
+
+/// A nature's across and through types (unknown for composite natures).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Nature {
+    pub name: String,
+    pub across: TypeId,
+    pub through: TypeId,
+}
+
+/// One declared name. Implicit declarations (the predefined operators of a type) carry the
+/// span of the type declaration that brings them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Declaration {
+    /// Lower case; operators as `"+"`, character literals as `'0'`.
+    pub name: String,
+    pub span: Span,
+    pub kind: DeclKind,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Param {
+    pub name: String,
+    pub class: ObjectClass,
+    pub ty: TypeId,
+    pub has_default: bool,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Signature {
+    pub params: Vec<Param>,
+    /// `Some` for a function.
+    pub result: Option<TypeId>,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum DeclKind {
+    Library,
+    /// A package, entity or component: its declarations are in the region.
+    Package(RegionId),
+    Entity(RegionId),
+    Component(RegionId),
+    /// A constant, generic, signal, port, variable, file, parameter or quantity.
+    Object {
+        class: ObjectClass,
+        ty: TypeId,
+    },
+    Terminal(NatureId),
+    Type(TypeId),
+    Nature(NatureId),
+    EnumLiteral(TypeId),
+    /// A unit of a physical type (`ns`).
+    Unit(TypeId),
+    Subprogram(Signature),
+    Alias(TypeId),
+    Attribute(TypeId),
+    /// Something analysis does not model yet: names resolve to it without diagnostics and
+    /// its uses have an unknown type.
+    Opaque,
+}
+
+impl DeclKind {
+    /// Subprograms and enumeration literals overload; everything else hides.
+    pub fn overloadable(&self) -> bool {
+        matches!(self, DeclKind::Subprogram(_) | DeclKind::EnumLiteral(_))
+    }
+}
+
+/// The names declared in one declarative region, each with its declarations in order.
+#[derive(Clone, Debug, Default)]
+pub struct Region {
+    pub names: FxHashMap<String, Vec<DeclId>>,
+}
+
+impl Region {
+    pub fn add(&mut self, name: &str, id: DeclId) {
+        self.names.entry(name.to_string()).or_default().push(id);
+    }
+}
+
+/// Levenshtein distance over bytes (identifiers are ASCII).
+pub fn edit_distance(a: &str, b: &str) -> usize {
+    let (a, b) = (a.as_bytes(), b.as_bytes());
+    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.iter().enumerate() {
+        let mut cur = vec![i + 1; b.len() + 1];
+        for (j, cb) in b.iter().enumerate() {
+            let cost = usize::from(ca != cb);
+            cur[j + 1] = (prev[j] + cost).min(prev[j + 1] + 1).min(cur[j] + 1);
+        }
+        prev = cur;
+    }
+    prev[b.len()]
+}

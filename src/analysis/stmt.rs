@@ -1,0 +1,450 @@
+//! Statements: sequential (in processes, subprograms and procedurals), concurrent and
+//! simultaneous; instances are checked against the interface of what they instantiate.
+
+use crate::ast::{
+    Actual, Assertion, Assoc, BreakStmt, ConcKind, ConcStmt, DelayMechanism, Expr, ExprKind,
+    InstantiatedUnit, LoopScheme, ObjectClass, Sensitivity, SeqKind, SeqStmt, SimKind, Waveform,
+};
+
+use super::error::AnalysisError;
+use super::scope::{DeclKind, RegionId};
+use super::types::{TypeId, UNKNOWN};
+use super::units::Analyzer;
+
+impl Analyzer<'_> {
+    fn condition(&mut self, e: &Expr) {
+        let boolean = self.std.boolean;
+        self.expr(e, boolean);
+    }
+
+    fn in_region(&mut self, f: impl FnOnce(&mut Self)) {
+        let r = self.new_region();
+        self.scope.push(r);
+        f(self);
+        self.scope.pop();
+    }
+
+    // -----------------------------------------------------------------------------------
+    // Sequential
+
+    pub fn seq_stmts(&mut self, stmts: &[SeqStmt]) {
+        for s in stmts {
+            self.seq_stmt(s);
+        }
+    }
+
+    fn seq_stmt(&mut self, s: &SeqStmt) {
+        match &s.kind {
+            SeqKind::Wait { on, until, timeout } => {
+                for x in on {
+                    self.expr_any(x);
+                }
+                if let Some(c) = until {
+                    self.condition(c);
+                }
+                if let Some(t) = timeout {
+                    let time = self.std.time;
+                    self.expr(t, time);
+                }
+            }
+            SeqKind::SignalAssign {
+                target,
+                waveform,
+                delay,
+            } => {
+                let t = self.target(target);
+                self.delay(delay);
+                self.waveform(waveform, t);
+            }
+            SeqKind::VariableAssign { target, value } => {
+                let t = self.target(target);
+                self.expr(value, t);
+            }
+            SeqKind::If {
+                branches,
+                otherwise,
+            } => {
+                for (c, body) in branches {
+                    self.condition(c);
+                    self.seq_stmts(body);
+                }
+                if let Some(body) = otherwise {
+                    self.seq_stmts(body);
+                }
+            }
+            SeqKind::Case {
+                selector,
+                alternatives,
+            } => {
+                let t = self.expr_any(selector);
+                for (choices, body) in alternatives {
+                    self.choices(choices, t);
+                    self.seq_stmts(body);
+                }
+            }
+            SeqKind::Loop { scheme, body } => match scheme {
+                LoopScheme::Forever => self.seq_stmts(body),
+                LoopScheme::While(c) => {
+                    self.condition(c);
+                    self.seq_stmts(body);
+                }
+                LoopScheme::For(param, range) => {
+                    let t = self.discrete_range(range);
+                    self.in_region(|a| {
+                        a.declare(
+                            &param.name,
+                            param.span,
+                            DeclKind::Object {
+                                class: ObjectClass::Constant,
+                                ty: t,
+                            },
+                        );
+                        a.seq_stmts(body);
+                    });
+                }
+            },
+            SeqKind::Next { condition, .. } | SeqKind::Exit { condition, .. } => {
+                if let Some(c) = condition {
+                    self.condition(c);
+                }
+            }
+            SeqKind::Return(value) => {
+                if let Some(v) = value {
+                    let t = self.returns.last().copied().flatten().unwrap_or(UNKNOWN);
+                    self.expr(v, t);
+                }
+            }
+            SeqKind::Null => {}
+            SeqKind::Assert(a) => self.assertion(a),
+            SeqKind::Report { message, severity } => {
+                let (string, sev) = (self.std.string, self.std.severity);
+                self.expr(message, string);
+                if let Some(s) = severity {
+                    self.expr(s, sev);
+                }
+            }
+            SeqKind::ProcedureCall(call) => self.procedure_call(call),
+            SeqKind::Break(b) => self.break_stmt(b),
+        }
+    }
+
+    /// The type of an assignment target (a name, an element, a slice, an aggregate).
+    fn target(&mut self, e: &Expr) -> TypeId {
+        match &e.kind {
+            ExprKind::Aggregate(elements) => {
+                for el in elements {
+                    self.expr_any(&el.value);
+                }
+                UNKNOWN
+            }
+            _ => self.expr_any(e),
+        }
+    }
+
+    fn delay(&mut self, d: &DelayMechanism) {
+        if let DelayMechanism::Inertial { reject: Some(r) } = d {
+            let time = self.std.time;
+            self.expr(r, time);
+        }
+    }
+
+    fn waveform(&mut self, w: &Waveform, ty: TypeId) {
+        if let Waveform::Elements(elements) = w {
+            for el in elements {
+                if let Some(v) = &el.value {
+                    self.expr(v, ty);
+                }
+                if let Some(after) = &el.after {
+                    let time = self.std.time;
+                    self.expr(after, time);
+                }
+            }
+        }
+    }
+
+    fn assertion(&mut self, a: &Assertion) {
+        self.condition(&a.condition);
+        let (string, sev) = (self.std.string, self.std.severity);
+        if let Some(r) = &a.report {
+            self.expr(r, string);
+        }
+        if let Some(s) = &a.severity {
+            self.expr(s, sev);
+        }
+    }
+
+    fn break_stmt(&mut self, b: &BreakStmt) {
+        for el in &b.elements {
+            if let Some(sel) = &el.selector {
+                self.expr_any(sel);
+            }
+            let t = self.expr_any(&el.quantity);
+            self.expr(&el.value, t);
+        }
+        for s in &b.sensitivity {
+            self.expr_any(s);
+        }
+        if let Some(c) = &b.condition {
+            self.condition(c);
+        }
+    }
+
+    // -----------------------------------------------------------------------------------
+    // Concurrent and simultaneous
+
+    pub fn conc_stmts(&mut self, stmts: &[ConcStmt]) {
+        for s in stmts {
+            self.conc_stmt(s);
+        }
+    }
+
+    fn conc_stmt(&mut self, s: &ConcStmt) {
+        match &s.kind {
+            ConcKind::Process {
+                sensitivity,
+                decls,
+                stmts,
+            } => {
+                if let Some(Sensitivity::List(names)) = sensitivity {
+                    for n in names {
+                        self.expr_any(n);
+                    }
+                }
+                self.in_region(|a| {
+                    a.returns.push(None);
+                    a.decls(decls);
+                    a.seq_stmts(stmts);
+                    a.returns.pop();
+                });
+            }
+            ConcKind::ConditionalAssign {
+                target,
+                delay,
+                branches,
+            } => {
+                let t = self.target(target);
+                self.delay(delay);
+                for (w, c) in branches {
+                    self.waveform(w, t);
+                    if let Some(c) = c {
+                        self.condition(c);
+                    }
+                }
+            }
+            ConcKind::SelectedAssign {
+                selector,
+                target,
+                delay,
+                alternatives,
+            } => {
+                let sel = self.expr_any(selector);
+                let t = self.target(target);
+                self.delay(delay);
+                for (w, choices) in alternatives {
+                    self.waveform(w, t);
+                    self.choices(choices, sel);
+                }
+            }
+            ConcKind::Instance {
+                unit,
+                generic_map,
+                port_map,
+            } => self.instance(unit, generic_map, port_map),
+            ConcKind::ForGenerate {
+                param,
+                range,
+                decls,
+                stmts,
+            } => {
+                let t = self.discrete_range(range);
+                self.in_region(|a| {
+                    a.declare(
+                        &param.name,
+                        param.span,
+                        DeclKind::Object {
+                            class: ObjectClass::Constant,
+                            ty: t,
+                        },
+                    );
+                    a.decls(decls);
+                    a.conc_stmts(stmts);
+                });
+            }
+            ConcKind::IfGenerate {
+                condition,
+                decls,
+                stmts,
+            } => {
+                self.condition(condition);
+                self.in_region(|a| {
+                    a.decls(decls);
+                    a.conc_stmts(stmts);
+                });
+            }
+            ConcKind::Block {
+                guard,
+                decls,
+                stmts,
+            } => {
+                if let Some(g) = guard {
+                    self.condition(g);
+                }
+                self.in_region(|a| {
+                    a.decls(decls);
+                    a.conc_stmts(stmts);
+                });
+            }
+            ConcKind::Assert(a) => self.assertion(a),
+            ConcKind::ProcedureCall(call) => self.procedure_call(call),
+            ConcKind::Break(b) => self.break_stmt(b),
+            ConcKind::Simultaneous(sim) => self.simultaneous(sim),
+        }
+        if let Some(label) = &s.label {
+            // Labels name statements (`lbl.x`, `next lbl`); not modelled beyond existing.
+            let region = *self.scope.last().expect("a unit always has a region");
+            let known = self.out.regions[region.0 as usize]
+                .names
+                .contains_key(&label.name);
+            if !known {
+                self.declare(&label.name, label.span, DeclKind::Opaque);
+            }
+        }
+    }
+
+    fn simultaneous(&mut self, sim: &SimKind) {
+        match sim {
+            SimKind::Simple {
+                lhs,
+                rhs,
+                tolerance,
+            } => {
+                // Both sides have one type: the one the left side has when it has one,
+                // else the right side's.
+                let l = self.infer(lhs);
+                let ty = match l.as_slice() {
+                    [t] if self.types().is_known(*t)
+                        && !matches!(
+                            self.types().kind(*t),
+                            super::types::TypeKind::UniversalInteger
+                                | super::types::TypeKind::UniversalReal
+                        ) =>
+                    {
+                        *t
+                    }
+                    _ => match self.infer(rhs).as_slice() {
+                        [t] if self.types().is_known(*t)
+                            && !matches!(
+                                self.types().kind(*t),
+                                super::types::TypeKind::UniversalInteger
+                                    | super::types::TypeKind::UniversalReal
+                            ) =>
+                        {
+                            *t
+                        }
+                        _ => UNKNOWN,
+                    },
+                };
+                self.expr(lhs, ty);
+                self.expr(rhs, ty);
+                if let Some(t) = tolerance {
+                    let string = self.std.string;
+                    self.expr(t, string);
+                }
+            }
+            SimKind::If {
+                branches,
+                otherwise,
+            } => {
+                for (c, body) in branches {
+                    self.condition(c);
+                    self.conc_stmts(body);
+                }
+                if let Some(body) = otherwise {
+                    self.conc_stmts(body);
+                }
+            }
+            SimKind::Case {
+                selector,
+                alternatives,
+            } => {
+                let t = self.expr_any(selector);
+                for (choices, body) in alternatives {
+                    self.choices(choices, t);
+                    self.conc_stmts(body);
+                }
+            }
+            SimKind::Procedural { decls, stmts } => self.in_region(|a| {
+                a.returns.push(None);
+                a.decls(decls);
+                a.seq_stmts(stmts);
+                a.returns.pop();
+            }),
+            SimKind::Null => {}
+        }
+    }
+
+    /// A component or entity instance: formals are looked up in its interface, actuals
+    /// checked against their formal's type.
+    fn instance(&mut self, unit: &InstantiatedUnit, generics: &[Assoc], ports: &[Assoc]) {
+        let (region, name): (Option<RegionId>, String) = match unit {
+            InstantiatedUnit::Component(n) | InstantiatedUnit::Entity { name: n, .. } => {
+                let found = self.resolve_name(n);
+                let unit_name = match &n.kind {
+                    ExprKind::Name(id) | ExprKind::Selected(_, id) => id.name.clone(),
+                    _ => String::new(),
+                };
+                let region = match found.as_deref() {
+                    Some([d]) => match self.out.decl(*d).kind {
+                        DeclKind::Component(r) | DeclKind::Entity(r) => Some(r),
+                        _ => None,
+                    },
+                    _ => None,
+                };
+                (region, unit_name)
+            }
+            InstantiatedUnit::Configuration(_) => (None, String::new()),
+        };
+        for (assocs, what) in [(generics, "generic"), (ports, "port")] {
+            for a in assocs {
+                let formal_ty = match (&a.formal, region) {
+                    (
+                        Some(Expr {
+                            kind: ExprKind::Name(id),
+                            ..
+                        }),
+                        Some(r),
+                    ) => match self.lookup_in(r, &id.name).as_deref() {
+                        Some([d]) => {
+                            self.reference(id.span, *d);
+                            match self.out.decl(*d).kind {
+                                DeclKind::Object { ty, .. } => Some(ty),
+                                _ => None,
+                            }
+                        }
+                        Some(_) => None,
+                        None => {
+                            self.error(AnalysisError::UnknownFormal {
+                                span: id.span,
+                                name: id.name.clone(),
+                                what,
+                                unit: name.clone(),
+                                help: None,
+                            });
+                            None
+                        }
+                    },
+                    _ => None,
+                };
+                match &a.actual {
+                    Actual::Expr(x) => {
+                        self.expr(x, formal_ty.unwrap_or(UNKNOWN));
+                    }
+                    Actual::Range(r) => {
+                        self.range_any(r);
+                    }
+                    Actual::Open(_) => {}
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,195 @@
+//! Analysis of small sources with the bundled stdlib.
+
+use crate::ast::DesignFile;
+use crate::parser::parse;
+use crate::source::{FileId, SourceMap};
+use crate::stdlib;
+
+use super::{AnalysisError, DeclKind, analyse};
+
+/// The stdlib plus `texts` as files of `work`, parsed (syntax errors fail the test).
+fn load(texts: &[&str]) -> (SourceMap, Vec<(FileId, DesignFile)>) {
+    let mut sources = SourceMap::new();
+    let mut ids = stdlib::load(&mut sources);
+    for (i, t) in texts.iter().enumerate() {
+        ids.push(sources.add(format!("f{i}.vhd"), "work", t.to_string()));
+    }
+    let files = ids
+        .into_iter()
+        .map(|id| {
+            let text = sources.file(id).text.clone();
+            let (ast, errors) = parse(id, &text);
+            assert!(errors.is_empty(), "{errors:?}");
+            (id, ast)
+        })
+        .collect();
+    (sources, files)
+}
+
+fn errors(texts: &[&str]) -> Vec<AnalysisError> {
+    let (sources, files) = load(texts);
+    analyse(&sources, &files).errors().cloned().collect()
+}
+
+fn messages(texts: &[&str]) -> Vec<String> {
+    errors(texts).iter().map(|e| e.to_string()).collect()
+}
+
+const WRAP: &str = "entity e is end entity e;\narchitecture a of e is\n";
+
+fn arch(decls: &str, body: &str) -> String {
+    format!("{WRAP}{decls}\nbegin\n{body}\nend architecture a;\n")
+}
+
+#[test]
+fn the_stdlib_analyses_without_errors() {
+    assert_eq!(messages(&[]), Vec::<String>::new());
+}
+
+#[test]
+fn an_integer_literal_is_not_a_real() {
+    let m = messages(&[&arch(
+        "signal s : integer := 1.5;\nconstant r : real := 2;",
+        "",
+    )]);
+    assert_eq!(m.len(), 2, "{m:?}");
+    assert!(
+        m[0].contains("expected `integer`, found a real literal"),
+        "{m:?}"
+    );
+    assert!(
+        m[1].contains("expected `real`, found an integer literal"),
+        "{m:?}"
+    );
+}
+
+#[test]
+fn operators_need_operands_of_one_type() {
+    let m = messages(&[&arch(
+        "constant x : real := 1.0;\nconstant y : real := x * 2;\nconstant z : real := x * 2.0 + 1.0e-3;",
+        "",
+    )]);
+    assert_eq!(
+        m,
+        ["no `*` takes `real` and an integer literal (universal_integer)"]
+    );
+}
+
+#[test]
+fn physical_arithmetic_follows_the_predefined_operators() {
+    let ok = arch(
+        "constant t1 : time := 2 * 10 ns;\nconstant t2 : time := 1.5 * t1;\n\
+         constant n : integer := t2 / t1;\nconstant r : real := real(n) * 2.0;",
+        "",
+    );
+    assert_eq!(messages(&[&ok]), Vec::<String>::new());
+    let bad = arch("constant t : time := 10 ns + 1.0;", "");
+    assert_eq!(messages(&[&bad]).len(), 1);
+}
+
+#[test]
+fn overloads_are_chosen_by_the_expected_type() {
+    // `now` is both a time and a real; the context decides.
+    let ok = arch(
+        "quantity q : real;",
+        "q == now * 2.0;\nprocess begin\n  wait for now;\n  assert now < 1 ms;\n  wait;\nend process;",
+    );
+    assert_eq!(messages(&[&ok]), Vec::<String>::new());
+}
+
+#[test]
+fn undeclared_names_are_reported_with_a_suggestion() {
+    let e = errors(&[&arch("signal speed : real;", "speed <= sped after 1 ns;")]);
+    match e.as_slice() {
+        [AnalysisError::Undeclared { name, help, .. }] => {
+            assert_eq!(name, "sped");
+            assert_eq!(help.as_deref(), Some("did you mean `speed`?"));
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn std_logic_and_math_real_resolve() {
+    let ok = format!(
+        "library ieee;\nuse ieee.std_logic_1164.all;\nuse ieee.math_real.all;\n{}",
+        arch(
+            "signal a, b : std_logic := '0';\nsignal v : std_logic_vector(3 downto 0);\n\
+             constant c : real := sin(math_pi / 2.0) + sqrt(2.0);",
+            "a <= b and '1';\nv <= \"10\" & a & b;\nb <= v(2) xor a;",
+        )
+    );
+    assert_eq!(messages(&[&ok]), Vec::<String>::new());
+}
+
+#[test]
+fn analog_declarations_get_their_nature_types() {
+    let ok = format!(
+        "library ieee;\nuse ieee.electrical_systems.all;\n{}",
+        arch(
+            "terminal p, n : electrical;\nquantity v across i through p to n;\nconstant r : resistance := 1.0e3;",
+            "v == r * i;\nbreak v => 0.0 when v'above(1.0);",
+        )
+    );
+    assert_eq!(messages(&[&ok]), Vec::<String>::new());
+    let bad = format!(
+        "library ieee;\nuse ieee.electrical_systems.all;\n{}",
+        arch("terminal p : electrical;\nquantity v across p;", "v == 5;",)
+    );
+    assert_eq!(messages(&[&bad]).len(), 1, "{:?}", messages(&[&bad]));
+}
+
+#[test]
+fn file_order_does_not_change_the_result() {
+    let pkg = "package p is\n  constant k : real := 2.0;\n  function f(x : real) return real;\nend package p;";
+    let body = "package body p is\n  function f(x : real) return real is\n  begin\n    return x * k;\n  end function f;\nend package body p;";
+    let user = "use work.p.all;\nentity u is end entity u;\narchitecture a of u is\n  signal s : real := f(k) + 1;\nbegin\nend architecture a;";
+    let forward = messages(&[pkg, body, user]);
+    let backward = messages(&[user, body, pkg]);
+    assert_eq!(forward.len(), 1, "{forward:?}");
+    assert_eq!(forward, backward);
+}
+
+#[test]
+fn a_cycle_of_uses_is_one_diagnostic() {
+    let e = errors(&[
+        "use work.b.all;\npackage a is\n  constant x : integer := 1;\nend package a;",
+        "use work.a.all;\npackage b is\n  constant y : integer := x + 1;\nend package b;",
+    ]);
+    assert!(
+        matches!(e.as_slice(), [AnalysisError::CircularDependency { .. }]),
+        "{e:?}"
+    );
+}
+
+#[test]
+fn instances_are_checked_against_the_interface() {
+    let leaf = "entity leaf is\n  generic (gain : real);\n  port (x : in real);\nend entity leaf;\n\
+                architecture a of leaf is begin end architecture a;";
+    let top = arch(
+        "signal s : real;",
+        "u1 : entity work.leaf generic map (gain => 2) port map (x => s);\n\
+         u2 : entity work.leaf generic map (gian => 2.0) port map (x => s);",
+    );
+    let m = messages(&[leaf, &top]);
+    assert_eq!(m.len(), 2, "{m:?}");
+    assert!(m[0].contains("expected `real`"), "{m:?}");
+    assert!(m[1].contains("`gian` is not a generic of `leaf`"), "{m:?}");
+}
+
+#[test]
+fn queries_answer_the_declaration_and_the_type_at_a_position() {
+    let text = arch(
+        "constant gain : real := 2.0;\nsignal s : real;",
+        "s <= gain * s after 1 ns;",
+    );
+    let (sources, files) = load(&[&text]);
+    let a = analyse(&sources, &files);
+    let file = files.last().expect("the user file").0;
+    let use_at = text.rfind("gain").expect("a use of gain") as u32;
+    let d = a.declaration_at(file, use_at).expect("gain resolves");
+    assert_eq!(a.decl(d).name, "gain");
+    assert!(matches!(a.decl(d).kind, DeclKind::Object { .. }));
+    let t = a.type_at(file, use_at).expect("a type");
+    assert_eq!(a.types.name(t), "real");
+}

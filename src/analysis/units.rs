@@ -1,0 +1,683 @@
+//! The analyzer's state, the order of analysis and the context of each unit: libraries,
+//! `use` clauses, and the regions a secondary unit sees of its primary unit.
+
+use rustc_hash::FxHashMap;
+
+use crate::ast::{
+    ConcKind, ConcStmt, ContextItem, DeclKind as AstDecl, DesignUnit, Expr, ExprKind, Ident,
+    InstantiatedUnit, LibraryUnit,
+};
+use crate::source::{FileId, Span};
+
+use super::error::AnalysisError;
+use super::scope::{DeclId, DeclKind, Declaration, Nature, Region, RegionId, edit_distance};
+use super::types::{TypeId, TypeTable, UNKNOWN};
+use super::{AnalysedUnit, Analysis, UnitKind, UnitMap, canonical_library, unit_name};
+
+/// The types of `std.standard` that the language itself refers to (conditions are boolean,
+/// `'image` is a string); unknown until `std.standard` is analysed.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Standard {
+    pub boolean: TypeId,
+    pub bit: TypeId,
+    pub integer: TypeId,
+    pub real: TypeId,
+    pub time: TypeId,
+    pub string: TypeId,
+    pub severity: TypeId,
+}
+
+impl Default for Standard {
+    fn default() -> Self {
+        Standard {
+            boolean: UNKNOWN,
+            bit: UNKNOWN,
+            integer: UNKNOWN,
+            real: UNKNOWN,
+            time: UNKNOWN,
+            string: UNKNOWN,
+            severity: UNKNOWN,
+        }
+    }
+}
+
+pub(super) struct Analyzer<'a> {
+    pub src: &'a [(String, FileId, &'a DesignUnit)],
+    pub out: Analysis,
+    /// Entities and packages by (library, name).
+    pub primaries: UnitMap,
+    /// The region of each analysed primary unit and its declaration (`use work.p;`).
+    pub unit_decl: FxHashMap<usize, DeclId>,
+    /// The unit being analysed and the regions visible in it, innermost last.
+    pub cur: usize,
+    pub scope: Vec<RegionId>,
+    /// Result type of each enclosing function (`None` in a procedure or process).
+    pub returns: Vec<Option<TypeId>>,
+    pub std: Standard,
+    /// The decl every ambiguous use-visible name resolves to (an opaque one).
+    ambiguous: DeclId,
+    libraries: FxHashMap<String, DeclId>,
+    state: Vec<Visit>,
+    /// Units whose context lost a dependency to a cycle: their undeclared names are the
+    /// cycle's consequence, not errors of their own.
+    cut: Vec<usize>,
+}
+
+#[derive(Clone, Copy, PartialEq)]
+enum Visit {
+    New,
+    Active,
+    Done,
+}
+
+impl<'a> Analyzer<'a> {
+    pub fn new(src: &'a [(String, FileId, &'a DesignUnit)]) -> Analyzer<'a> {
+        let mut out = Analysis::default();
+        let mut primaries = UnitMap::default();
+        for (i, (library, file, du)) in src.iter().enumerate() {
+            let (name, kind) = unit_name(&du.unit);
+            let key = (library.clone(), name.to_string());
+            if let UnitKind::Entity | UnitKind::Package = kind {
+                primaries.insert(key, i);
+            }
+            out.regions.push(Region::default());
+            out.units.push(AnalysedUnit {
+                library: library.clone(),
+                name: name.to_string(),
+                kind,
+                file: *file,
+                span: du.span,
+                depends_on: Vec::new(),
+                errors: Vec::new(),
+                references: Vec::new(),
+                types: Vec::new(),
+                region: RegionId(i as u32),
+            });
+        }
+        let ambiguous = DeclId(0);
+        out.decls.push(Declaration {
+            name: String::new(),
+            span: Span::default(),
+            kind: DeclKind::Opaque,
+        });
+        Analyzer {
+            state: vec![Visit::New; src.len()],
+            src,
+            out,
+            primaries,
+            unit_decl: FxHashMap::default(),
+            cur: 0,
+            scope: Vec::new(),
+            returns: Vec::new(),
+            std: Standard::default(),
+            ambiguous,
+            libraries: FxHashMap::default(),
+            cut: Vec::new(),
+        }
+    }
+
+    pub fn finish(self) -> Analysis {
+        self.out
+    }
+
+    // -----------------------------------------------------------------------------------
+    // Order
+
+    /// Every unit once, each after the units it depends on; a dependency that closes a
+    /// cycle is reported on the unit that names it and not followed.
+    pub fn order(&mut self) -> Vec<usize> {
+        let mut order = Vec::with_capacity(self.src.len());
+        let mut path = Vec::new();
+        // std.standard first: every unit depends on it implicitly.
+        if let Some(&s) = self.primaries.get(&("std".into(), "standard".into())) {
+            self.visit(s, &mut path, &mut order);
+        }
+        for u in 0..self.src.len() {
+            self.visit(u, &mut path, &mut order);
+        }
+        order
+    }
+
+    fn visit(&mut self, u: usize, path: &mut Vec<usize>, order: &mut Vec<usize>) {
+        if self.state[u] != Visit::New {
+            return;
+        }
+        self.state[u] = Visit::Active;
+        path.push(u);
+        for (d, span) in self.dependencies(u) {
+            match self.state[d] {
+                Visit::Done => {}
+                Visit::New => self.visit(d, path, order),
+                Visit::Active => {
+                    let from = path.iter().position(|&p| p == d).unwrap_or(0);
+                    let mut names: Vec<String> =
+                        path[from..].iter().map(|&p| self.describe(p)).collect();
+                    names.push(self.describe(d));
+                    self.cut.push(u);
+                    self.out.units[u]
+                        .errors
+                        .push(AnalysisError::CircularDependency {
+                            span,
+                            cycle: names.join(" uses "),
+                        });
+                    continue;
+                }
+            }
+            if !self.out.units[u].depends_on.contains(&d) {
+                self.out.units[u].depends_on.push(d);
+            }
+        }
+        path.pop();
+        self.state[u] = Visit::Done;
+        order.push(u);
+    }
+
+    fn describe(&self, u: usize) -> String {
+        let unit = &self.out.units[u];
+        match &unit.kind {
+            UnitKind::Architecture { entity } => {
+                format!("architecture `{}` of `{entity}`", unit.name)
+            }
+            UnitKind::PackageBody => format!("package body `{}`", unit.name),
+            UnitKind::Entity => format!("entity `{}`", unit.name),
+            UnitKind::Package => format!("package `{}`", unit.name),
+        }
+    }
+
+    /// The units `u` needs analysed first, with the span that names each.
+    fn dependencies(&self, u: usize) -> Vec<(usize, Span)> {
+        let (library, _, du) = &self.src[u];
+        let mut deps = Vec::new();
+        let mut contexts: Vec<&[ContextItem]> = vec![&du.context];
+        match &du.unit {
+            LibraryUnit::Architecture(a) => {
+                if let Some(&e) = self
+                    .primaries
+                    .get(&(library.clone(), a.entity.name.clone()))
+                {
+                    deps.push((e, a.entity.span));
+                    contexts.push(&self.src[e].2.context);
+                }
+                entity_instances(&a.stmts, &mut |name| {
+                    if let Some(d) = self.named_unit(library, name) {
+                        deps.push(d);
+                    }
+                });
+            }
+            LibraryUnit::PackageBody(b) => {
+                if let Some(&p) = self.primaries.get(&(library.clone(), b.name.name.clone())) {
+                    deps.push((p, b.name.span));
+                    contexts.push(&self.src[p].2.context);
+                }
+            }
+            _ => {}
+        }
+        let decls = match &du.unit {
+            LibraryUnit::Entity(e) => &e.decls,
+            LibraryUnit::Architecture(a) => &a.decls,
+            LibraryUnit::Package(p) => &p.decls,
+            LibraryUnit::PackageBody(b) => &b.decls,
+        };
+        let uses = contexts
+            .iter()
+            .flat_map(|c| c.iter())
+            .flat_map(|item| match item {
+                ContextItem::Use(names, _) => names.as_slice(),
+                ContextItem::Library(..) => &[],
+            })
+            .chain(decls.iter().flat_map(|d| match &d.kind {
+                AstDecl::Use(names) => names.as_slice(),
+                _ => &[],
+            }));
+        for name in uses {
+            if let Some(d) = self.named_unit(library, name) {
+                deps.push(d);
+            }
+        }
+        deps.retain(|&(d, _)| d != u);
+        deps
+    }
+
+    /// The primary unit `lib.unit[...]` names, if it is one of this compilation's.
+    fn named_unit(&self, library: &str, name: &Expr) -> Option<(usize, Span)> {
+        let path = dotted(name)?;
+        let [lib, unit, ..] = path.as_slice() else {
+            return None;
+        };
+        let lib = match canonical_library(&lib.name) {
+            "work" => library,
+            other => other,
+        };
+        self.primaries
+            .get(&(lib.to_string(), unit.name.clone()))
+            .map(|&u| (u, unit.span))
+    }
+
+    // -----------------------------------------------------------------------------------
+    // Units
+
+    /// Analyses unit `u`: its context, then its declarations and statements.
+    pub fn unit(&mut self, u: usize) {
+        self.cur = u;
+        let (library, _, du) = &self.src[u];
+        let (library, du) = (library.as_str(), *du);
+        // The use-visible names (std.standard, the libraries, what context clauses import).
+        let uses = self.new_region();
+        self.scope = vec![uses];
+        self.returns.clear();
+        for lib in ["std", "work"] {
+            let d = self.library(lib);
+            self.out.regions[uses.0 as usize].add(lib, d);
+        }
+        if (library, unit_name(&du.unit).0) != ("std", "standard") {
+            if let Some(&s) = self.primaries.get(&("std".into(), "standard".into())) {
+                self.import_all(uses, self.out.units[s].region);
+            }
+        }
+        let own = self.out.units[u].region;
+        let primary = match &du.unit {
+            LibraryUnit::Architecture(a) => self
+                .primaries
+                .get(&(library.to_string(), a.entity.name.clone())),
+            LibraryUnit::PackageBody(b) => self
+                .primaries
+                .get(&(library.to_string(), b.name.name.clone())),
+            _ => None,
+        }
+        .copied();
+        if let Some(p) = primary.filter(|&p| self.state_done(p)) {
+            self.context(&self.src[p].2.context);
+        }
+        self.context(&du.context);
+        if let Some(p) = primary {
+            let decl = self.unit_decl.get(&p).copied();
+            if let Some(d) = decl {
+                let name = self.out.units[p].name.clone();
+                self.out.regions[uses.0 as usize].add(&name, d);
+            }
+            self.scope.push(self.out.units[p].region);
+        }
+        self.scope.push(own);
+        match &du.unit {
+            LibraryUnit::Entity(e) => {
+                let d = self.declare_unit(u, &e.name, DeclKind::Entity(own));
+                self.out.regions[own.0 as usize].add(&e.name.name, d);
+                self.interfaces(&e.generics, super::declare::InterfaceRole::Generic);
+                self.interfaces(&e.ports, super::declare::InterfaceRole::Port);
+                self.decls(&e.decls);
+                self.conc_stmts(&e.stmts);
+            }
+            LibraryUnit::Architecture(a) => {
+                if primary.is_none() {
+                    self.missing_unit(a.entity.span, "entity", &a.entity.name, library);
+                }
+                self.decls(&a.decls);
+                self.conc_stmts(&a.stmts);
+            }
+            LibraryUnit::Package(p) => {
+                let d = self.declare_unit(u, &p.name, DeclKind::Package(own));
+                self.out.regions[own.0 as usize].add(&p.name.name, d);
+                let standard = (library, p.name.name.as_str()) == ("std", "standard");
+                if standard {
+                    self.universal_arithmetic();
+                }
+                self.decls(&p.decls);
+                if standard {
+                    self.standard_types(own);
+                }
+            }
+            LibraryUnit::PackageBody(b) => {
+                if primary.is_none() {
+                    self.missing_unit(b.name.span, "package", &b.name.name, library);
+                }
+                self.decls(&b.decls);
+            }
+        }
+    }
+
+    fn state_done(&self, u: usize) -> bool {
+        self.state[u] == Visit::Done
+    }
+
+    fn declare_unit(&mut self, u: usize, name: &Ident, kind: DeclKind) -> DeclId {
+        let d = self.push_decl(&name.name, name.span, kind);
+        self.unit_decl.insert(u, d);
+        d
+    }
+
+    fn missing_unit(&mut self, span: Span, what: &'static str, name: &str, library: &str) {
+        self.error(AnalysisError::MissingUnit {
+            span,
+            what,
+            name: name.to_string(),
+            library: library.to_string(),
+            help: Some(format!("give vams the file that declares {what} `{name}`")),
+        });
+    }
+
+    /// Records `std.standard`'s types that the language refers to.
+    fn standard_types(&mut self, region: RegionId) {
+        let find = |a: &Analyzer, name: &str| -> TypeId {
+            a.out.regions[region.0 as usize]
+                .names
+                .get(name)
+                .and_then(|ds| {
+                    ds.iter().find_map(|&d| match a.out.decl(d).kind {
+                        DeclKind::Type(t) => Some(t),
+                        _ => None,
+                    })
+                })
+                .unwrap_or(UNKNOWN)
+        };
+        self.std = Standard {
+            boolean: find(self, "boolean"),
+            bit: find(self, "bit"),
+            integer: find(self, "integer"),
+            real: find(self, "real"),
+            time: find(self, "time"),
+            string: find(self, "string"),
+            severity: find(self, "severity_level"),
+        };
+        self.universal_relations(region);
+    }
+
+    // -----------------------------------------------------------------------------------
+    // Context clauses
+
+    fn context(&mut self, items: &[ContextItem]) {
+        for item in items {
+            match item {
+                ContextItem::Library(names, _) => {
+                    for n in names {
+                        let d = self.library(canonical_library(&n.name));
+                        let uses = self.scope[0];
+                        self.out.regions[uses.0 as usize].add(&n.name, d);
+                    }
+                }
+                ContextItem::Use(names, _) => {
+                    let uses = self.scope[0];
+                    for n in names {
+                        self.use_clause(uses, n);
+                    }
+                }
+            }
+        }
+    }
+
+    fn library(&mut self, name: &str) -> DeclId {
+        if let Some(&d) = self.libraries.get(name) {
+            return d;
+        }
+        let d = self.push_decl(name, Span::default(), DeclKind::Library);
+        self.libraries.insert(name.to_string(), d);
+        d
+    }
+
+    /// `use lib.pkg.all;`, `use lib.pkg.item;`, `use lib.pkg;` into `region`.
+    pub fn use_clause(&mut self, region: RegionId, name: &Expr) {
+        let Some(path) = dotted(name) else {
+            return;
+        };
+        let (first, rest) = path.split_first().expect("a dotted name has a first part");
+        // The prefix: a library (then a package of it), or a package made visible by an
+        // earlier `use lib.pkg;`.
+        let (package, rest) = match self.lookup(&first.name).as_deref() {
+            Some([d]) if self.out.decl(*d).kind == DeclKind::Library => {
+                let Some((unit, rest)) = rest.split_first() else {
+                    return;
+                };
+                let lib = match canonical_library(&first.name) {
+                    "work" => self.out.units[self.cur].library.clone(),
+                    other => other.to_string(),
+                };
+                self.reference(first.span, *d);
+                let Some(&p) = self.primaries.get(&(lib.clone(), unit.name.clone())) else {
+                    self.missing_unit(unit.span, "package", &unit.name, &lib);
+                    return;
+                };
+                if !self.state_done(p) {
+                    return; // A cycle, reported where the order was computed.
+                }
+                (p, rest)
+            }
+            Some([d]) => {
+                let Some(unit) = self
+                    .unit_decl
+                    .iter()
+                    .find_map(|(&u, &ud)| (ud == *d).then_some(u))
+                else {
+                    return;
+                };
+                (unit, rest)
+            }
+            Some(_) => return,
+            None => {
+                self.undeclared(first);
+                return;
+            }
+        };
+        let pkg_region = self.out.units[package].region;
+        match rest {
+            [] => {
+                if let Some(&d) = self.unit_decl.get(&package) {
+                    let n = self.out.units[package].name.clone();
+                    self.out.regions[region.0 as usize].add(&n, d);
+                }
+            }
+            [item] if item.name == "all" => self.import_all(region, pkg_region),
+            [item] => {
+                let found = self.out.regions[pkg_region.0 as usize]
+                    .names
+                    .get(&item.name)
+                    .cloned();
+                match found {
+                    Some(ds) => {
+                        for d in ds {
+                            self.import(region, &item.name, d);
+                        }
+                    }
+                    None => self.undeclared(item),
+                }
+            }
+            _ => {}
+        }
+    }
+
+    pub fn import_all(&mut self, into: RegionId, from: RegionId) {
+        let names: Vec<(String, Vec<DeclId>)> = self.out.regions[from.0 as usize]
+            .names
+            .iter()
+            .map(|(k, v)| (k.clone(), v.clone()))
+            .collect();
+        for (name, ds) in names {
+            for d in ds {
+                self.import(into, &name, d);
+            }
+        }
+    }
+
+    /// Makes `d` use-visible as `name` in `into`. Two different non-overloadable
+    /// declarations of one name make it ambiguous (LRM 10.4: neither is visible).
+    fn import(&mut self, into: RegionId, name: &str, d: DeclId) {
+        let overloadable = self.out.decl(d).kind.overloadable();
+        let ambiguous = self.ambiguous;
+        let decls = &self.out.decls;
+        let entry = self.out.regions[into.0 as usize]
+            .names
+            .entry(name.to_string())
+            .or_default();
+        if entry.contains(&d) {
+            return;
+        }
+        let clash = entry
+            .iter()
+            .any(|&e| !overloadable || !decls[e.0 as usize].kind.overloadable());
+        if clash {
+            entry.clear();
+            entry.push(ambiguous);
+        } else {
+            entry.push(d);
+        }
+    }
+
+    // -----------------------------------------------------------------------------------
+    // Scopes and records
+
+    pub fn new_region(&mut self) -> RegionId {
+        self.out.regions.push(Region::default());
+        RegionId(self.out.regions.len() as u32 - 1)
+    }
+
+    pub fn push_decl(&mut self, name: &str, span: Span, kind: DeclKind) -> DeclId {
+        self.out.decls.push(Declaration {
+            name: name.to_string(),
+            span,
+            kind,
+        });
+        DeclId(self.out.decls.len() as u32 - 1)
+    }
+
+    /// Declares `name` in the innermost region.
+    pub fn declare(&mut self, name: &str, span: Span, kind: DeclKind) -> DeclId {
+        let d = self.push_decl(name, span, kind);
+        let region = *self.scope.last().expect("a unit always has a region");
+        self.out.regions[region.0 as usize].add(name, d);
+        self.reference(span, d);
+        d
+    }
+
+    /// The declarations `name` denotes here: the innermost non-overloadable one, or every
+    /// overloadable one out to the first region that hides them.
+    pub fn lookup(&self, name: &str) -> Option<Vec<DeclId>> {
+        let mut found: Vec<DeclId> = Vec::new();
+        for region in self.scope.iter().rev() {
+            let Some(ds) = self.out.regions[region.0 as usize].names.get(name) else {
+                continue;
+            };
+            if ds.is_empty() {
+                continue;
+            }
+            let all_overloadable = ds.iter().all(|&d| self.out.decl(d).kind.overloadable());
+            if !all_overloadable {
+                if found.is_empty() {
+                    // The last declaration of a name in a region wins (a completed
+                    // deferred constant, a type completing its incomplete declaration).
+                    found.push(*ds.last().expect("non-empty"));
+                }
+                break;
+            }
+            found.extend(
+                ds.iter()
+                    .filter(|d| !found.contains(d))
+                    .copied()
+                    .collect::<Vec<_>>(),
+            );
+        }
+        (!found.is_empty()).then_some(found)
+    }
+
+    /// The declarations of `name` in `region` only (a selected name `pkg.name`).
+    pub fn lookup_in(&self, region: RegionId, name: &str) -> Option<Vec<DeclId>> {
+        self.out.regions[region.0 as usize]
+            .names
+            .get(name)
+            .filter(|ds| !ds.is_empty())
+            .cloned()
+    }
+
+    /// The primary unit `unit` of the library declaration `lib`.
+    pub fn library_unit(&self, lib: &str, unit: &str) -> Option<usize> {
+        let lib = match canonical_library(lib) {
+            "work" => self.out.units[self.cur].library.clone(),
+            other => other.to_string(),
+        };
+        self.primaries
+            .get(&(lib, unit.to_string()))
+            .copied()
+            .filter(|&u| self.state_done(u) || u == self.cur)
+    }
+
+    pub fn error(&mut self, e: AnalysisError) {
+        let errors = &mut self.out.units[self.cur].errors;
+        if !errors.contains(&e) {
+            errors.push(e);
+        }
+    }
+
+    pub fn reference(&mut self, span: Span, d: DeclId) {
+        self.out.units[self.cur].references.push((span, d));
+    }
+
+    pub fn record_type(&mut self, span: Span, t: TypeId) {
+        self.out.units[self.cur].types.push((span, t));
+    }
+
+    /// True when the current unit lost a dependency to a cycle.
+    pub fn cut_here(&self) -> bool {
+        self.cut.contains(&self.cur)
+    }
+
+    pub fn undeclared(&mut self, id: &Ident) {
+        if self.cut_here() {
+            return;
+        }
+        let help = self
+            .suggest(&id.name)
+            .map(|s| format!("did you mean `{s}`?"));
+        self.error(AnalysisError::Undeclared {
+            span: id.span,
+            name: id.name.clone(),
+            help,
+        });
+    }
+
+    /// The visible name closest to `name` by edit distance, if close enough to be a typo.
+    fn suggest(&self, name: &str) -> Option<String> {
+        let limit = (name.len() / 3).max(1);
+        self.scope
+            .iter()
+            .flat_map(|r| self.out.regions[r.0 as usize].names.keys())
+            .filter(|k| !k.starts_with('"') && !k.starts_with('\''))
+            .map(|k| (edit_distance(name, k), k))
+            .filter(|(d, _)| *d <= limit)
+            .min()
+            .map(|(_, k)| k.clone())
+    }
+
+    pub fn types(&self) -> &TypeTable {
+        &self.out.types
+    }
+
+    pub fn nature(&self, n: super::scope::NatureId) -> &Nature {
+        &self.out.natures[n.0 as usize]
+    }
+}
+
+/// `a.b.c` as its parts.
+pub fn dotted(e: &Expr) -> Option<Vec<&Ident>> {
+    match &e.kind {
+        ExprKind::Name(id) => Some(vec![id]),
+        ExprKind::Selected(prefix, suffix) => {
+            let mut p = dotted(prefix)?;
+            p.push(suffix);
+            Some(p)
+        }
+        _ => None,
+    }
+}
+
+/// Calls `f` with the name of every directly instantiated entity (`entity work.e`).
+fn entity_instances<'e>(stmts: &'e [ConcStmt], f: &mut impl FnMut(&'e Expr)) {
+    for s in stmts {
+        match &s.kind {
+            ConcKind::Instance {
+                unit: InstantiatedUnit::Entity { name, .. },
+                ..
+            } => f(name),
+            ConcKind::ForGenerate { stmts, .. }
+            | ConcKind::IfGenerate { stmts, .. }
+            | ConcKind::Block { stmts, .. } => entity_instances(stmts, f),
+            _ => {}
+        }
+    }
+}
