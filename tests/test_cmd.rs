@@ -165,5 +165,5 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_rc ... ok"))
         .stdout(contains("test tb_tracking ... ok"))
         .stdout(contains("test tb_rlc_elimination ... ok"))
-        .stdout(contains("12 passed, 0 failed"));
+        .stdout(contains("13 passed, 0 failed"));
 }

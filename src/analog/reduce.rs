@@ -24,6 +24,11 @@
 //!   where it reads a derivative (a capacitor's `C v'` is `C / h` times `v` in a step: a node
 //!   potential solved from it, behind 154 Ohm, once carried 140 of its tolerances).
 //!
+//! After the choices, a linear subtree in which an unknown cancels out (`a - (b - (-a))`, from
+//! a chain of substitutions round a capacitor loop) is rebuilt with its terms merged, so the
+//! cancellation is exact rather than rounding at the scale of the cancelled terms
+//! ([`merge_terms`]).
+//!
 //! A property test (`tests/elimination.rs`) runs random circuits both ways.
 //!
 //! Preference: quantities before terminal potentials (so node potentials, not branch
@@ -117,6 +122,13 @@ pub fn eliminate(residuals: Vec<Sym>, candidates: &Candidates<'_>) -> Eliminatio
         if let Some(r) = state.replacement[j].take() {
             state.replacement[j] = Some(state.resolve(r));
         }
+    }
+    // Only now, so that the choices above are those of the equations as written.
+    for (_, r) in &mut kept {
+        *r = merge_terms(std::mem::replace(r, Sym::Const(0.0)));
+    }
+    for r in state.replacement.iter_mut().flatten() {
+        *r = merge_terms(std::mem::replace(r, Sym::Const(0.0)));
     }
     Elimination {
         replacement: state.replacement,
@@ -415,6 +427,91 @@ fn collect_affine(e: &Sym, scale: f64, terms: &mut Vec<(usize, f64)>) -> bool {
     }
 }
 
+/// A variable of a linear form: an unknown or its derivative.
+#[derive(Clone, Copy, PartialEq)]
+enum Var {
+    X(usize),
+    Dot(usize),
+}
+
+/// `e` as `c0 + sum c_k v_k` over unknowns and derivatives, accumulated into `c0` and
+/// `terms` (an unknown may appear more than once), if it has that form.
+fn linear_form(e: &Sym, scale: f64, c0: &mut f64, terms: &mut Vec<(Var, f64)>) -> bool {
+    match e {
+        Sym::Const(v) => {
+            *c0 += scale * v;
+            true
+        }
+        Sym::X(k) => {
+            terms.push((Var::X(*k), scale));
+            true
+        }
+        Sym::Dot(k) => {
+            terms.push((Var::Dot(*k), scale));
+            true
+        }
+        Sym::Un(Un::Neg, a) => linear_form(a, -scale, c0, terms),
+        Sym::Bin(Bin::Add, a, b) => {
+            linear_form(a, scale, c0, terms) && linear_form(b, scale, c0, terms)
+        }
+        Sym::Bin(Bin::Sub, a, b) => {
+            linear_form(a, scale, c0, terms) && linear_form(b, -scale, c0, terms)
+        }
+        Sym::Bin(Bin::Mul, a, b) => match (a.as_const(), b.as_const()) {
+            (Some(k), _) => linear_form(b, scale * k, c0, terms),
+            (_, Some(k)) => linear_form(a, scale * k, c0, terms),
+            _ => false,
+        },
+        Sym::Bin(Bin::Div, a, b) => match b.as_const() {
+            Some(k) => linear_form(a, scale / k, c0, terms),
+            None => false,
+        },
+        _ => false,
+    }
+}
+
+/// `e` with every largest linear subtree in which an unknown cancels out rebuilt with its
+/// terms merged. Substitution chains produce such trees (`v(n1) = e2.v - (e4.v - (-e2.v))` around a
+/// capacitor loop): evaluated as written, the two `e2.v` cancel only to rounding, and with a
+/// capacitor charged to 46 kV that rounding (5e-12 V) is more than a source's tolerance, so
+/// Newton never converged. Merged, `e2.v` drops out exactly.
+pub fn merge_terms(e: Sym) -> Sym {
+    let (mut c0, mut terms) = (0.0, Vec::new());
+    if linear_form(&e, 1.0, &mut c0, &mut terms) {
+        let mut merged: Vec<(Var, f64)> = Vec::with_capacity(terms.len());
+        for &(v, c) in &terms {
+            match merged.iter_mut().find(|(w, _)| *w == v) {
+                Some((_, sum)) => *sum += c,
+                None => merged.push((v, c)),
+            }
+        }
+        if !merged.iter().any(|&(_, c)| c == 0.0) {
+            // Nothing cancels: the tree stays as written (rebuilding it would only move
+            // rounding around).
+            return e;
+        }
+        let mut sum: Option<Sym> = None;
+        for (v, c) in merged.into_iter().filter(|&(_, c)| c != 0.0) {
+            let x = match v {
+                Var::X(k) => Sym::X(k),
+                Var::Dot(k) => Sym::Dot(k),
+            };
+            sum = Some(match sum {
+                None => Sym::mul(Sym::Const(c), x),
+                Some(s) if c < 0.0 => Sym::sub(s, Sym::mul(Sym::Const(-c), x)),
+                Some(s) => Sym::add(s, Sym::mul(Sym::Const(c), x)),
+            });
+        }
+        return Sym::add(sum.unwrap_or(Sym::Const(0.0)), Sym::Const(c0));
+    }
+    match e {
+        Sym::Un(op, a) => Sym::un(op, merge_terms(*a)),
+        Sym::Bin(op, a, b) => Sym::bin(op, merge_terms(*a), merge_terms(*b)),
+        Sym::If(c, a, b) => Sym::cond(merge_terms(*c), merge_terms(*a), merge_terms(*b)),
+        other => other,
+    }
+}
+
 /// `d e / dt` for an affine `e` (a combination of `'dot`s), else `None`.
 pub fn time_derivative(e: &Sym) -> Option<Sym> {
     let terms = affine(e)?;
@@ -506,6 +603,21 @@ mod tests {
         let value = |vb: f64| r.eval(0.0, &[f64::NAN, vb, f64::NAN, f64::NAN], &[0.0; 4], &[]);
         assert!((value(-1.0) - 0.0).abs() < 1e-15);
         assert!((value(0.0) - 0.5).abs() < 1e-15);
+    }
+
+    #[test]
+    fn repeated_terms_cancel_exactly() {
+        // a - (b - (-a)) with a = 46 kV: as written it keeps 5e-12 of rounding; merged, -b.
+        let e = Sym::sub(x(0), Sym::sub(x(1), Sym::neg(x(0))));
+        let merged = merge_terms(e.clone());
+        let at = |s: &Sym| s.eval(0.0, &[-46_444.685_993_452_16, 1.0e-6], &[0.0; 2], &[]);
+        assert_eq!(at(&merged), -1.0e-6);
+        assert_ne!(at(&e), -1.0e-6, "the unmerged form rounds");
+        // Where nothing cancels the tree is left as it is.
+        let once = Sym::sub(x(0), Sym::mul(c(2.0), x(1)));
+        assert_eq!(merge_terms(once.clone()), once);
+        let twice = Sym::add(x(0), Sym::sub(x(1), Sym::mul(c(0.5), x(0))));
+        assert_eq!(merge_terms(twice.clone()), twice);
     }
 
     #[test]
