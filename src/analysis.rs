@@ -172,5 +172,5 @@ pub fn canonical_library(name: &str) -> &str {
     }
 }
 
-/// A lookup table of units by key, kept by the analyzer.
-type UnitMap = FxHashMap<(String, String), usize>;
+/// The units of each (library, name), in file order (a name may be declared in several files).
+type UnitMap = FxHashMap<(String, String), Vec<usize>>;

@@ -924,7 +924,7 @@ impl Analyzer<'_> {
         };
         let chosen = self.prefer_exact(chosen, &infos);
         if viable.is_empty() {
-            if all_known && !cands.is_empty() {
+            if all_known && !cands.is_empty() && !self.cut_here() {
                 let operands = infos
                     .iter()
                     .map(|a| match a.types.as_slice() {

@@ -87,6 +87,10 @@ impl Analyzer<'_> {
                     self.operator("not", &[t], t, span);
                 }
             }
+            TypeKind::File(element) => self.file_operations(t, element, span),
+            TypeKind::Access(_) => {
+                self.subprogram("deallocate", &[(ObjectClass::Variable, t)], None, span);
+            }
             TypeKind::Array { indexes, element } if indexes.len() == 1 => {
                 if self.types().is_discrete(element) {
                     for op in ORDERING {
@@ -164,6 +168,88 @@ impl Analyzer<'_> {
             self.operator("**", &[u, integer], u, span);
         }
         self.scope = saved;
+    }
+
+    /// The implicit subprograms of a file type (LRM 3.4.1): `file_open`, `file_close`,
+    /// `read`, `write`, `endfile`.
+    fn file_operations(&mut self, f: TypeId, element: TypeId, span: Span) {
+        use ObjectClass::{Constant, File, Variable};
+        let std = self.std;
+        let (string, kind, status) = (std.string, self.open_kind(), self.open_status());
+        self.subprogram(
+            "file_open",
+            &[(File, f), (Constant, string), (Constant, kind)],
+            None,
+            span,
+        );
+        self.subprogram(
+            "file_open",
+            &[
+                (Variable, status),
+                (File, f),
+                (Constant, string),
+                (Constant, kind),
+            ],
+            None,
+            span,
+        );
+        self.subprogram("file_close", &[(File, f)], None, span);
+        self.subprogram("read", &[(File, f), (Variable, element)], None, span);
+        self.subprogram(
+            "read",
+            &[(File, f), (Variable, element), (Variable, std.integer)],
+            None,
+            span,
+        );
+        self.subprogram("write", &[(File, f), (Constant, element)], None, span);
+        self.subprogram("endfile", &[(File, f)], Some(std.boolean), span);
+    }
+
+    /// `std.standard`'s `file_open_kind` / `file_open_status` as visible here.
+    fn open_kind(&self) -> TypeId {
+        self.visible_type("file_open_kind")
+    }
+
+    fn open_status(&self) -> TypeId {
+        self.visible_type("file_open_status")
+    }
+
+    fn visible_type(&self, name: &str) -> TypeId {
+        match self.lookup(name).as_deref() {
+            Some([d]) => match self.out.decl(*d).kind {
+                DeclKind::Type(t) => t,
+                _ => super::types::UNKNOWN,
+            },
+            _ => super::types::UNKNOWN,
+        }
+    }
+
+    /// Declares an implicit subprogram in the current region; the first parameter of a
+    /// default-less list is named `f`, the others `p1`, `p2`... (only their types matter).
+    fn subprogram(
+        &mut self,
+        name: &str,
+        params: &[(ObjectClass, TypeId)],
+        result: Option<TypeId>,
+        span: Span,
+    ) {
+        let params = params
+            .iter()
+            .enumerate()
+            .map(|(i, &(class, ty))| Param {
+                name: format!("p{i}"),
+                class,
+                ty,
+                has_default: false,
+            })
+            .collect();
+        let d = self.push_decl(
+            name,
+            span,
+            DeclKind::Subprogram(Signature { params, result }),
+        );
+        let region = *self.scope.last().expect("a unit always has a region");
+        self.out.regions[region.0 as usize].add(name, d);
     }
 
     fn operator(&mut self, op: &str, args: &[TypeId], result: TypeId, span: Span) {

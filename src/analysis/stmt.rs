@@ -193,6 +193,17 @@ impl Analyzer<'_> {
     // Concurrent and simultaneous
 
     pub fn conc_stmts(&mut self, stmts: &[ConcStmt]) {
+        // Labels are visible in the whole region, their own statement included
+        // (`timing_check'path_name` inside the process labelled `timing_check`).
+        let region = *self.scope.last().expect("a unit always has a region");
+        for label in stmts.iter().filter_map(|s| s.label.as_ref()) {
+            let known = self.out.regions[region.0 as usize]
+                .names
+                .contains_key(&label.name);
+            if !known {
+                self.declare(&label.name, label.span, DeclKind::Opaque);
+            }
+        }
         for s in stmts {
             self.conc_stmt(s);
         }
@@ -299,16 +310,6 @@ impl Analyzer<'_> {
             ConcKind::Break(b) => self.break_stmt(b),
             ConcKind::Simultaneous(sim) => self.simultaneous(sim),
         }
-        if let Some(label) = &s.label {
-            // Labels name statements (`lbl.x`, `next lbl`); not modelled beyond existing.
-            let region = *self.scope.last().expect("a unit always has a region");
-            let known = self.out.regions[region.0 as usize]
-                .names
-                .contains_key(&label.name);
-            if !known {
-                self.declare(&label.name, label.span, DeclKind::Opaque);
-            }
-        }
     }
 
     fn simultaneous(&mut self, sim: &SimKind) {
@@ -395,7 +396,10 @@ impl Analyzer<'_> {
                 };
                 let region = match found.as_deref() {
                     Some([d]) => match self.out.decl(*d).kind {
-                        DeclKind::Component(r) | DeclKind::Entity(r) => Some(r),
+                        DeclKind::Component(r) => Some(r),
+                        // An entity declared in several files (a folder of variants) is not
+                        // one interface to check against.
+                        DeclKind::Entity(r) if !self.declared_twice(d) => Some(r),
                         _ => None,
                     },
                     _ => None,

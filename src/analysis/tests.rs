@@ -193,3 +193,48 @@ fn queries_answer_the_declaration_and_the_type_at_a_position() {
     let t = a.type_at(file, use_at).expect("a type");
     assert_eq!(a.types.name(t), "real");
 }
+
+#[test]
+fn labels_are_visible_inside_their_own_statement() {
+    let ok = arch(
+        "signal d : bit;",
+        "check : process (d) is\nbegin\n  report \"in \" & check'path_name;\nend process check;",
+    );
+    assert_eq!(messages(&[&ok]), Vec::<String>::new());
+}
+
+#[test]
+fn file_types_bring_their_operations() {
+    let ok = arch(
+        "type int_file is file of integer;",
+        "process is\n  file f : int_file open read_mode is \"data.txt\";\n  variable x : integer;\n\
+         begin\n  while not endfile(f) loop\n    read(f, x);\n  end loop;\n  file_close(f);\n  wait;\nend process;",
+    );
+    assert_eq!(messages(&[&ok]), Vec::<String>::new());
+}
+
+#[test]
+fn a_missing_primary_unit_is_one_diagnostic() {
+    let e = errors(&[
+        "architecture a of nowhere is\nbegin\n  p : process (clk) is begin end process;\nend architecture a;",
+    ]);
+    assert!(
+        matches!(e.as_slice(), [AnalysisError::MissingUnit { .. }]),
+        "{e:?}"
+    );
+    let e = errors(&[
+        "use work.absent.all;\nentity u is end entity u;\narchitecture a of u is\n  constant k : real := from_absent;\nbegin\nend architecture a;",
+    ]);
+    assert!(
+        matches!(e.as_slice(), [AnalysisError::MissingUnit { .. }]),
+        "{e:?}"
+    );
+}
+
+#[test]
+fn an_architecture_belongs_to_the_entity_declared_before_it() {
+    // Two variants of one entity in two files: each file's architecture sees its own.
+    let v1 = "entity e is\n  port (x : in integer);\nend entity e;\narchitecture a of e is\n  signal s : integer;\nbegin\n  s <= x;\nend architecture a;";
+    let v2 = "entity e is\n  port (x : in real);\nend entity e;\narchitecture b of e is\n  signal s : real;\nbegin\n  s <= x;\nend architecture b;";
+    assert_eq!(messages(&[v1, v2]), Vec::<String>::new());
+}

@@ -58,9 +58,11 @@ pub(super) struct Analyzer<'a> {
     ambiguous: DeclId,
     libraries: FxHashMap<String, DeclId>,
     state: Vec<Visit>,
-    /// Units whose context lost a dependency to a cycle: their undeclared names are the
-    /// cycle's consequence, not errors of their own.
+    /// Units whose context is incomplete (a dependency lost to a cycle, a missing package or
+    /// entity): their undeclared names are that loss's consequence, not errors of their own.
     cut: Vec<usize>,
+    /// Set while a secondary unit re-applies its primary unit's context clause.
+    muted: bool,
 }
 
 #[derive(Clone, Copy, PartialEq)]
@@ -78,7 +80,7 @@ impl<'a> Analyzer<'a> {
             let (name, kind) = unit_name(&du.unit);
             let key = (library.clone(), name.to_string());
             if let UnitKind::Entity | UnitKind::Package = kind {
-                primaries.insert(key, i);
+                primaries.entry(key).or_default().push(i);
             }
             out.regions.push(Region::default());
             out.units.push(AnalysedUnit {
@@ -113,6 +115,7 @@ impl<'a> Analyzer<'a> {
             ambiguous,
             libraries: FxHashMap::default(),
             cut: Vec::new(),
+            muted: false,
         }
     }
 
@@ -129,7 +132,7 @@ impl<'a> Analyzer<'a> {
         let mut order = Vec::with_capacity(self.src.len());
         let mut path = Vec::new();
         // std.standard first: every unit depends on it implicitly.
-        if let Some(&s) = self.primaries.get(&("std".into(), "standard".into())) {
+        if let Some(s) = self.primary("std", "standard", usize::MAX) {
             self.visit(s, &mut path, &mut order);
         }
         for u in 0..self.src.len() {
@@ -191,21 +194,18 @@ impl<'a> Analyzer<'a> {
         let mut contexts: Vec<&[ContextItem]> = vec![&du.context];
         match &du.unit {
             LibraryUnit::Architecture(a) => {
-                if let Some(&e) = self
-                    .primaries
-                    .get(&(library.clone(), a.entity.name.clone()))
-                {
+                if let Some(e) = self.primary(library, &a.entity.name, u) {
                     deps.push((e, a.entity.span));
                     contexts.push(&self.src[e].2.context);
                 }
                 entity_instances(&a.stmts, &mut |name| {
-                    if let Some(d) = self.named_unit(library, name) {
+                    if let Some(d) = self.named_unit(library, name, u) {
                         deps.push(d);
                     }
                 });
             }
             LibraryUnit::PackageBody(b) => {
-                if let Some(&p) = self.primaries.get(&(library.clone(), b.name.name.clone())) {
+                if let Some(p) = self.primary(library, &b.name.name, u) {
                     deps.push((p, b.name.span));
                     contexts.push(&self.src[p].2.context);
                 }
@@ -230,7 +230,7 @@ impl<'a> Analyzer<'a> {
                 _ => &[],
             }));
         for name in uses {
-            if let Some(d) = self.named_unit(library, name) {
+            if let Some(d) = self.named_unit(library, name, u) {
                 deps.push(d);
             }
         }
@@ -239,7 +239,7 @@ impl<'a> Analyzer<'a> {
     }
 
     /// The primary unit `lib.unit[...]` names, if it is one of this compilation's.
-    fn named_unit(&self, library: &str, name: &Expr) -> Option<(usize, Span)> {
+    fn named_unit(&self, library: &str, name: &Expr, before: usize) -> Option<(usize, Span)> {
         let path = dotted(name)?;
         let [lib, unit, ..] = path.as_slice() else {
             return None;
@@ -248,9 +248,8 @@ impl<'a> Analyzer<'a> {
             "work" => library,
             other => other,
         };
-        self.primaries
-            .get(&(lib.to_string(), unit.name.clone()))
-            .map(|&u| (u, unit.span))
+        self.primary(lib, &unit.name, before)
+            .map(|u| (u, unit.span))
     }
 
     // -----------------------------------------------------------------------------------
@@ -270,23 +269,21 @@ impl<'a> Analyzer<'a> {
             self.out.regions[uses.0 as usize].add(lib, d);
         }
         if (library, unit_name(&du.unit).0) != ("std", "standard") {
-            if let Some(&s) = self.primaries.get(&("std".into(), "standard".into())) {
+            if let Some(s) = self.primary("std", "standard", usize::MAX) {
                 self.import_all(uses, self.out.units[s].region);
             }
         }
         let own = self.out.units[u].region;
         let primary = match &du.unit {
-            LibraryUnit::Architecture(a) => self
-                .primaries
-                .get(&(library.to_string(), a.entity.name.clone())),
-            LibraryUnit::PackageBody(b) => self
-                .primaries
-                .get(&(library.to_string(), b.name.name.clone())),
+            LibraryUnit::Architecture(a) => self.primary(library, &a.entity.name, u),
+            LibraryUnit::PackageBody(b) => self.primary(library, &b.name.name, u),
             _ => None,
-        }
-        .copied();
+        };
         if let Some(p) = primary.filter(|&p| self.state_done(p)) {
+            // Its problems are reported with the primary unit.
+            self.muted = true;
             self.context(&self.src[p].2.context);
+            self.muted = false;
         }
         self.context(&du.context);
         if let Some(p) = primary {
@@ -310,6 +307,9 @@ impl<'a> Analyzer<'a> {
             LibraryUnit::Architecture(a) => {
                 if primary.is_none() {
                     self.missing_unit(a.entity.span, "entity", &a.entity.name, library);
+                    // Its ports and generics are unknown: names they would declare are not
+                    // errors of their own.
+                    self.cut.push(u);
                 }
                 self.decls(&a.decls);
                 self.conc_stmts(&a.stmts);
@@ -329,6 +329,7 @@ impl<'a> Analyzer<'a> {
             LibraryUnit::PackageBody(b) => {
                 if primary.is_none() {
                     self.missing_unit(b.name.span, "package", &b.name.name, library);
+                    self.cut.push(u);
                 }
                 self.decls(&b.decls);
             }
@@ -426,13 +427,21 @@ impl<'a> Analyzer<'a> {
                 let Some((unit, rest)) = rest.split_first() else {
                     return;
                 };
+                if unit.name == "all" {
+                    // `use work.all;`: every primary unit of the library by its name (only
+                    // selected names use them, and those resolve through the library).
+                    self.reference(first.span, *d);
+                    return;
+                }
                 let lib = match canonical_library(&first.name) {
                     "work" => self.out.units[self.cur].library.clone(),
                     other => other.to_string(),
                 };
                 self.reference(first.span, *d);
-                let Some(&p) = self.primaries.get(&(lib.clone(), unit.name.clone())) else {
+                let Some(p) = self.primary(&lib, &unit.name, self.cur) else {
                     self.missing_unit(unit.span, "package", &unit.name, &lib);
+                    // What it would make visible is unknown: no cascade of undeclared names.
+                    self.cut.push(self.cur);
                     return;
                 };
                 if !self.state_done(p) {
@@ -591,13 +600,39 @@ impl<'a> Analyzer<'a> {
             "work" => self.out.units[self.cur].library.clone(),
             other => other.to_string(),
         };
-        self.primaries
-            .get(&(lib, unit.to_string()))
-            .copied()
+        self.primary(&lib, unit, self.cur)
             .filter(|&u| self.state_done(u) || u == self.cur)
     }
 
+    /// True when the unit declaration `d` (an entity's or package's) has namesakes in its
+    /// library.
+    pub fn declared_twice(&self, d: &DeclId) -> bool {
+        self.unit_decl.iter().any(|(&u, ud)| {
+            ud == d && {
+                let unit = &self.out.units[u];
+                self.primaries
+                    .get(&(unit.library.clone(), unit.name.clone()))
+                    .is_some_and(|all| all.len() > 1)
+            }
+        })
+    }
+
+    /// The entity or package `name` of `lib` that unit `before` sees: the last one declared
+    /// before it in file order (a file's architecture belongs to the entity above it, as when
+    /// files are analysed in order), else the last of all.
+    pub fn primary(&self, lib: &str, name: &str, before: usize) -> Option<usize> {
+        let all = self.primaries.get(&(lib.to_string(), name.to_string()))?;
+        all.iter()
+            .rev()
+            .find(|&&p| p < before)
+            .or(all.last())
+            .copied()
+    }
+
     pub fn error(&mut self, e: AnalysisError) {
+        if self.muted {
+            return;
+        }
         let errors = &mut self.out.units[self.cur].errors;
         if !errors.contains(&e) {
             errors.push(e);
