@@ -161,6 +161,26 @@ fn headlight(c: &mut Criterion) {
     parse.bench_function("analyse/models+stdlib", |b| {
         b.iter(|| black_box(vams::analysis::analyse(&sources, &files)))
     });
+    // Re-analysis after a one-line edit of one model file (an editor's keystroke): the
+    // host re-parses the file and re-analyses from the first unit the edit affects; goal 5 ms.
+    let mut host = vams::analysis::AnalysisHost::new();
+    for (name, text) in models() {
+        host.set_file(&name, text);
+    }
+    let motor = models()
+        .into_iter()
+        .find(|(n, _)| n.ends_with("dc_motor.vhd"))
+        .expect("the motor model");
+    let edited = motor.1.replacen("begin", "begin\n  -- edited", 1);
+    let mut flip = false;
+    parse.bench_function("reanalyse/one-line-edit", |b| {
+        b.iter(|| {
+            flip = !flip;
+            let text = if flip { &edited } else { &motor.1 };
+            host.set_file(&motor.0, text.clone());
+            black_box(host.analysis().units.len())
+        })
+    });
     parse.finish();
     generated_frontend(c);
 }

@@ -15,8 +15,11 @@
 //! type, which matches everything: analysis reports an error only where it is certain, and
 //! elaboration still checks what it folds.
 //!
-//! May use `ast`, `source`, `diagnostics`. Never touches elaboration, the solver or the
-//! kernel.
+//! [`AnalysisHost`] keeps an analysis up to date as files are added, replaced and removed
+//! (the base of editor support); it parses, so it also uses `parser` and `stdlib`.
+//!
+//! May use `ast`, `source`, `diagnostics` (and, for the host, `parser`, `stdlib`). Never
+//! touches elaboration, the solver or the kernel.
 
 use rustc_hash::FxHashMap;
 
@@ -26,6 +29,7 @@ use crate::source::{FileId, SourceMap, Span};
 mod declare;
 mod error;
 mod expr;
+mod host;
 mod operators;
 mod scope;
 mod stmt;
@@ -35,6 +39,7 @@ pub mod types;
 mod units;
 
 pub use error::AnalysisError;
+pub use host::AnalysisHost;
 pub use scope::{
     DeclId, DeclKind, Declaration, Nature, NatureId, Param, Region, RegionId, Signature,
 };
@@ -67,6 +72,11 @@ pub struct AnalysedUnit {
     pub types: Vec<(Span, TypeId)>,
     /// The declarations of the unit (for a package or entity, what it exports).
     pub region: RegionId,
+    /// The declaration of an entity or package itself (what `use work.p;` makes visible).
+    pub decl: Option<DeclId>,
+    /// Part of its context is missing (a package not given, a dependency cycle): its
+    /// undeclared names are not reported.
+    pub incomplete: bool,
 }
 
 /// A library of analysed units with the declarations and types they share.
@@ -80,6 +90,20 @@ pub struct Analysis {
     pub types: TypeTable,
     pub natures: Vec<Nature>,
     pub regions: Vec<Region>,
+    /// The sizes of the tables above before each unit of `order` was analysed: a unit adds
+    /// only to their ends, so an edit keeps the tables up to the first unit it affects.
+    pub marks: Vec<Marks>,
+    /// How many units (the first of `order`) were taken over from a previous analysis.
+    pub reused: usize,
+}
+
+/// Sizes of an analysis's shared tables at one point.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Marks {
+    pub decls: usize,
+    pub types: usize,
+    pub natures: usize,
+    pub regions: usize,
 }
 
 impl Analysis {
@@ -128,7 +152,51 @@ fn innermost<'a, T: Copy + 'a>(
 
 /// Analyses every design unit of `files`.
 pub fn analyse(sources: &SourceMap, files: &[(FileId, DesignFile)]) -> Analysis {
-    let units: Vec<(String, FileId, &DesignUnit)> = files
+    analyse_from(sources, files, None)
+}
+
+/// Analyses `files` again after an edit, reusing `previous` (the analysis of the same files
+/// before the texts of `changed` changed, or before those files were added or removed) up to
+/// the first unit, in analysis order, that the edit can affect: a unit of a changed file, one
+/// whose dependencies changed, or one that depended on something missing. Everything after
+/// it is analysed again, so the result is exactly what [`analyse`] gives.
+pub fn reanalyse(
+    sources: &SourceMap,
+    files: &[(FileId, DesignFile)],
+    previous: Analysis,
+    changed: &[FileId],
+) -> Analysis {
+    analyse_from(sources, files, Some((previous, changed)))
+}
+
+fn analyse_from(
+    sources: &SourceMap,
+    files: &[(FileId, DesignFile)],
+    previous: Option<(Analysis, &[FileId])>,
+) -> Analysis {
+    let units = flatten(sources, files);
+    let mut a = units::Analyzer::new(&units);
+    let order = a.order();
+    let kept = match previous {
+        Some((prev, changed)) => a.adopt(prev, changed, &order),
+        None => 0,
+    };
+    for &u in &order[kept..] {
+        a.mark();
+        a.unit(u);
+    }
+    let mut out = a.finish();
+    out.order = order;
+    out.reused = kept;
+    out
+}
+
+/// Every design unit of `files` with its library and file, in file order.
+fn flatten<'a>(
+    sources: &SourceMap,
+    files: &'a [(FileId, DesignFile)],
+) -> Vec<(String, FileId, &'a DesignUnit)> {
+    files
         .iter()
         .flat_map(|(file, design)| {
             let library = sources.file(*file).library.clone();
@@ -137,15 +205,7 @@ pub fn analyse(sources: &SourceMap, files: &[(FileId, DesignFile)]) -> Analysis 
                 .iter()
                 .map(move |u| (library.clone(), *file, u))
         })
-        .collect();
-    let mut a = units::Analyzer::new(&units);
-    let order = a.order();
-    for &u in &order {
-        a.unit(u);
-    }
-    let mut out = a.finish();
-    out.order = order;
-    out
+        .collect()
 }
 
 /// The name a unit is known by.

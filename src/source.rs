@@ -95,6 +95,19 @@ impl SourceMap {
         id
     }
 
+    /// Replaces the text of file `id` (an edited file keeps its id, so spans into the other
+    /// files stay valid); truncated like [`SourceMap::add`].
+    pub fn set_text(&mut self, id: FileId, mut text: String) {
+        if text.len() > MAX_FILE_BYTES {
+            let mut cut = MAX_FILE_BYTES;
+            while !text.is_char_boundary(cut) {
+                cut -= 1;
+            }
+            text.truncate(cut);
+        }
+        self.files[id.0 as usize].text = Arc::new(text);
+    }
+
     pub fn file(&self, id: FileId) -> &SourceFile {
         &self.files[id.0 as usize]
     }

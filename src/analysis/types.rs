@@ -109,6 +109,11 @@ impl TypeTable {
         self.types.len()
     }
 
+    /// Drops the types added after the first `n`.
+    pub fn truncate(&mut self, n: usize) {
+        self.types.truncate(n);
+    }
+
     pub fn is_empty(&self) -> bool {
         self.types.is_empty()
     }

@@ -12,7 +12,7 @@ use crate::source::{FileId, Span};
 use super::error::AnalysisError;
 use super::scope::{DeclId, DeclKind, Declaration, Nature, Region, RegionId, edit_distance};
 use super::types::{TypeId, TypeTable, UNKNOWN};
-use super::{AnalysedUnit, Analysis, UnitKind, UnitMap, canonical_library, unit_name};
+use super::{AnalysedUnit, Analysis, Marks, UnitKind, UnitMap, canonical_library, unit_name};
 
 /// The types of `std.standard` that the language itself refers to (conditions are boolean,
 /// `'image` is a string); unknown until `std.standard` is analysed.
@@ -63,6 +63,8 @@ pub(super) struct Analyzer<'a> {
     cut: Vec<usize>,
     /// Set while a secondary unit re-applies its primary unit's context clause.
     muted: bool,
+    /// Units analysed so far.
+    analysed: Vec<bool>,
 }
 
 #[derive(Clone, Copy, PartialEq)]
@@ -82,7 +84,6 @@ impl<'a> Analyzer<'a> {
             if let UnitKind::Entity | UnitKind::Package = kind {
                 primaries.entry(key).or_default().push(i);
             }
-            out.regions.push(Region::default());
             out.units.push(AnalysedUnit {
                 library: library.clone(),
                 name: name.to_string(),
@@ -93,7 +94,10 @@ impl<'a> Analyzer<'a> {
                 errors: Vec::new(),
                 references: Vec::new(),
                 types: Vec::new(),
-                region: RegionId(i as u32),
+                // Allocated when the unit is analysed.
+                region: RegionId(u32::MAX),
+                decl: None,
+                incomplete: false,
             });
         }
         let ambiguous = DeclId(0);
@@ -116,6 +120,7 @@ impl<'a> Analyzer<'a> {
             libraries: FxHashMap::default(),
             cut: Vec::new(),
             muted: false,
+            analysed: vec![false; src.len()],
         }
     }
 
@@ -273,7 +278,8 @@ impl<'a> Analyzer<'a> {
                 self.import_all(uses, self.out.units[s].region);
             }
         }
-        let own = self.out.units[u].region;
+        let own = self.new_region();
+        self.out.units[u].region = own;
         let primary = match &du.unit {
             LibraryUnit::Architecture(a) => self.primary(library, &a.entity.name, u),
             LibraryUnit::PackageBody(b) => self.primary(library, &b.name.name, u),
@@ -334,15 +340,19 @@ impl<'a> Analyzer<'a> {
                 self.decls(&b.decls);
             }
         }
+        self.analysed[u] = true;
+        self.out.units[u].incomplete = self.cut.contains(&u);
     }
 
+    /// True when unit `u` has been analysed (its region and declarations exist).
     fn state_done(&self, u: usize) -> bool {
-        self.state[u] == Visit::Done
+        self.analysed[u]
     }
 
     fn declare_unit(&mut self, u: usize, name: &Ident, kind: DeclKind) -> DeclId {
         let d = self.push_decl(&name.name, name.span, kind);
         self.unit_decl.insert(u, d);
+        self.out.units[u].decl = Some(d);
         d
     }
 
@@ -356,8 +366,14 @@ impl<'a> Analyzer<'a> {
         });
     }
 
-    /// Records `std.standard`'s types that the language refers to.
+    /// Records `std.standard`'s types that the language refers to and declares the
+    /// universal operators that need them.
     fn standard_types(&mut self, region: RegionId) {
+        self.std = self.find_standard(region);
+        self.universal_relations(region);
+    }
+
+    fn find_standard(&self, region: RegionId) -> Standard {
         let find = |a: &Analyzer, name: &str| -> TypeId {
             a.out.regions[region.0 as usize]
                 .names
@@ -370,7 +386,7 @@ impl<'a> Analyzer<'a> {
                 })
                 .unwrap_or(UNKNOWN)
         };
-        self.std = Standard {
+        Standard {
             boolean: find(self, "boolean"),
             bit: find(self, "bit"),
             integer: find(self, "integer"),
@@ -378,8 +394,116 @@ impl<'a> Analyzer<'a> {
             time: find(self, "time"),
             string: find(self, "string"),
             severity: find(self, "severity_level"),
+        }
+    }
+
+    // -----------------------------------------------------------------------------------
+    // Reuse after an edit
+
+    /// Records the tables' sizes before the next unit is analysed.
+    pub fn mark(&mut self) {
+        let out = &mut self.out;
+        out.marks.push(Marks {
+            decls: out.decls.len(),
+            types: out.types.len(),
+            natures: out.natures.len(),
+            regions: out.regions.len(),
+        });
+    }
+
+    /// Takes over from `prev` (the analysis before the files `changed` changed) the longest
+    /// prefix of `order` that the edit leaves alone, and returns its length. A unit is kept
+    /// when it is the same unit of an unchanged file (same place), its dependencies are the
+    /// kept units its old dependencies were (with as many namesakes as before: an entity
+    /// declared in a second file changes how instances of it are checked), and nothing it
+    /// needed was missing (an added file may provide it).
+    pub fn adopt(&mut self, mut prev: Analysis, changed: &[FileId], order: &[usize]) -> usize {
+        let primary_key = |u: &AnalysedUnit| match u.kind {
+            UnitKind::Entity | UnitKind::Package => Some((u.library.clone(), u.name.clone())),
+            _ => None,
         };
-        self.universal_relations(region);
+        let count = |units: &[AnalysedUnit], key: &Option<(String, String)>| {
+            units.iter().filter(|u| primary_key(u) == *key).count()
+        };
+        let mut to_prev: FxHashMap<usize, usize> = FxHashMap::default();
+        let mut k = 0;
+        while k < order.len() && k < prev.order.len() {
+            let (u, p) = (order[k], prev.order[k]);
+            let (new, old) = (&self.out.units[u], &prev.units[p]);
+            let same_unit = new.file == old.file
+                && !changed.contains(&new.file)
+                && new.span == old.span
+                && new.library == old.library;
+            let deps_same = new.depends_on.len() == old.depends_on.len()
+                && new.depends_on.iter().zip(&old.depends_on).all(|(d, o)| {
+                    to_prev.get(d) == Some(o)
+                        && count(&self.out.units, &primary_key(&self.out.units[*d]))
+                            == count(&prev.units, &primary_key(&prev.units[*o]))
+                });
+            let complete = !old.incomplete
+                && new.errors.is_empty()
+                && !old.errors.iter().any(|e| {
+                    matches!(
+                        e,
+                        AnalysisError::MissingUnit { .. }
+                            | AnalysisError::CircularDependency { .. }
+                    )
+                });
+            if !(same_unit && deps_same && complete) {
+                break;
+            }
+            to_prev.insert(u, p);
+            k += 1;
+        }
+        if k == 0 {
+            return 0;
+        }
+        let m = prev.marks.get(k).copied().unwrap_or(Marks {
+            decls: prev.decls.len(),
+            types: prev.types.len(),
+            natures: prev.natures.len(),
+            regions: prev.regions.len(),
+        });
+        prev.decls.truncate(m.decls);
+        prev.types.truncate(m.types);
+        prev.natures.truncate(m.natures);
+        prev.regions.truncate(m.regions);
+        prev.marks.truncate(k);
+        let out = &mut self.out;
+        out.decls = std::mem::take(&mut prev.decls);
+        out.types = std::mem::take(&mut prev.types);
+        out.natures = std::mem::take(&mut prev.natures);
+        out.regions = std::mem::take(&mut prev.regions);
+        out.marks = std::mem::take(&mut prev.marks);
+        for &u in &order[..k] {
+            let old = &mut prev.units[to_prev[&u]];
+            let unit = &mut self.out.units[u];
+            unit.errors = std::mem::take(&mut old.errors);
+            unit.references = std::mem::take(&mut old.references);
+            unit.types = std::mem::take(&mut old.types);
+            unit.region = old.region;
+            unit.decl = old.decl;
+            unit.incomplete = old.incomplete;
+            if let Some(d) = old.decl {
+                self.unit_decl.insert(u, d);
+            }
+            if old.incomplete {
+                self.cut.push(u);
+            }
+            self.analysed[u] = true;
+        }
+        for (i, d) in self.out.decls.iter().enumerate() {
+            if d.kind == DeclKind::Library {
+                self.libraries.insert(d.name.clone(), DeclId(i as u32));
+            }
+        }
+        if let Some(s) = self
+            .primary("std", "standard", usize::MAX)
+            .filter(|&s| self.analysed[s])
+        {
+            self.std = self.find_standard(self.out.units[s].region);
+        }
+        k
     }
 
     // -----------------------------------------------------------------------------------
