@@ -77,6 +77,9 @@ pub struct AnalysedUnit {
     /// Part of its context is missing (a package not given, a dependency cycle): its
     /// undeclared names are not reported.
     pub incomplete: bool,
+    /// The regions visible within each declarative part (the unit, a process, a
+    /// subprogram, a loop, a block), innermost last.
+    pub scopes: Vec<(Span, Vec<RegionId>)>,
 }
 
 /// A library of analysed units with the declarations and types they share.
@@ -125,6 +128,41 @@ impl Analysis {
                 .flat_map(|u| u.references.iter()),
             offset,
         )
+    }
+
+    /// Every use of declaration `d`, in file order of the units (its declaration included).
+    pub fn references_to(&self, d: DeclId) -> Vec<Span> {
+        self.units
+            .iter()
+            .flat_map(|u| u.references.iter())
+            .filter(|(_, r)| *r == d)
+            .map(|(s, _)| *s)
+            .collect()
+    }
+
+    /// The names visible at byte `offset` of `file` (for completion), sorted: those of the
+    /// innermost declarative part there and of every region around it, operators and
+    /// character literals left out.
+    pub fn names_at(&self, file: FileId, offset: u32) -> Vec<String> {
+        let scope = self
+            .units
+            .iter()
+            .filter(|u| u.file == file)
+            .flat_map(|u| u.scopes.iter())
+            .filter(|(s, _)| s.start <= offset && offset <= s.end)
+            .min_by_key(|(s, _)| s.end - s.start);
+        let Some((_, regions)) = scope else {
+            return Vec::new();
+        };
+        let mut names: Vec<String> = regions
+            .iter()
+            .flat_map(|r| self.regions[r.0 as usize].names.keys())
+            .filter(|n| !n.starts_with('"') && !n.starts_with('\'') && !n.is_empty())
+            .cloned()
+            .collect();
+        names.sort();
+        names.dedup();
+        names
     }
 
     /// The type of the innermost expression at byte `offset` of `file`.

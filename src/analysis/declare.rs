@@ -178,6 +178,7 @@ impl Analyzer<'_> {
                 let sig = self.subprogram_spec(spec);
                 let region = self.new_region();
                 self.scope.push(region);
+                self.record_scope(d.span);
                 for (p, iface) in sig.params.iter().zip(param_names(&spec.params)) {
                     self.declare(
                         &p.name,

@@ -6,6 +6,8 @@ use crate::ast::{
     InstantiatedUnit, LoopScheme, ObjectClass, Sensitivity, SeqKind, SeqStmt, SimKind, Waveform,
 };
 
+use crate::source::Span;
+
 use super::error::AnalysisError;
 use super::scope::{DeclKind, RegionId};
 use super::types::{TypeId, UNKNOWN};
@@ -17,9 +19,11 @@ impl Analyzer<'_> {
         self.expr(e, boolean);
     }
 
-    fn in_region(&mut self, f: impl FnOnce(&mut Self)) {
+    /// Runs `f` in a new region covering `span` (recorded for the names-visible query).
+    fn in_region(&mut self, span: Span, f: impl FnOnce(&mut Self)) {
         let r = self.new_region();
         self.scope.push(r);
+        self.record_scope(span);
         f(self);
         self.scope.pop();
     }
@@ -90,7 +94,7 @@ impl Analyzer<'_> {
                 }
                 LoopScheme::For(param, range) => {
                     let t = self.discrete_range(range);
-                    self.in_region(|a| {
+                    self.in_region(s.span, |a| {
                         a.declare(
                             &param.name,
                             param.span,
@@ -221,7 +225,7 @@ impl Analyzer<'_> {
                         self.expr_any(n);
                     }
                 }
-                self.in_region(|a| {
+                self.in_region(s.span, |a| {
                     a.returns.push(None);
                     a.decls(decls);
                     a.seq_stmts(stmts);
@@ -268,7 +272,7 @@ impl Analyzer<'_> {
                 stmts,
             } => {
                 let t = self.discrete_range(range);
-                self.in_region(|a| {
+                self.in_region(s.span, |a| {
                     a.declare(
                         &param.name,
                         param.span,
@@ -287,7 +291,7 @@ impl Analyzer<'_> {
                 stmts,
             } => {
                 self.condition(condition);
-                self.in_region(|a| {
+                self.in_region(s.span, |a| {
                     a.decls(decls);
                     a.conc_stmts(stmts);
                 });
@@ -300,7 +304,7 @@ impl Analyzer<'_> {
                 if let Some(g) = guard {
                     self.condition(g);
                 }
-                self.in_region(|a| {
+                self.in_region(s.span, |a| {
                     a.decls(decls);
                     a.conc_stmts(stmts);
                 });
@@ -308,11 +312,11 @@ impl Analyzer<'_> {
             ConcKind::Assert(a) => self.assertion(a),
             ConcKind::ProcedureCall(call) => self.procedure_call(call),
             ConcKind::Break(b) => self.break_stmt(b),
-            ConcKind::Simultaneous(sim) => self.simultaneous(sim),
+            ConcKind::Simultaneous(sim) => self.simultaneous(sim, s.span),
         }
     }
 
-    fn simultaneous(&mut self, sim: &SimKind) {
+    fn simultaneous(&mut self, sim: &SimKind, span: Span) {
         match sim {
             SimKind::Simple {
                 lhs,
@@ -374,7 +378,7 @@ impl Analyzer<'_> {
                     self.conc_stmts(body);
                 }
             }
-            SimKind::Procedural { decls, stmts } => self.in_region(|a| {
+            SimKind::Procedural { decls, stmts } => self.in_region(span, |a| {
                 a.returns.push(None);
                 a.decls(decls);
                 a.seq_stmts(stmts);

@@ -238,3 +238,32 @@ fn an_architecture_belongs_to_the_entity_declared_before_it() {
     let v2 = "entity e is\n  port (x : in real);\nend entity e;\narchitecture b of e is\n  signal s : real;\nbegin\n  s <= x;\nend architecture b;";
     assert_eq!(messages(&[v1, v2]), Vec::<String>::new());
 }
+
+#[test]
+fn queries_answer_references_and_the_names_visible_at_a_position() {
+    let text = format!(
+        "library ieee;\nuse ieee.math_real.all;\n{}",
+        arch(
+            "constant gain : real := 2.0;\nsignal s : real;",
+            "p : process is\n  variable local_v : real;\nbegin\n  local_v := gain * s;\n  s <= gain after 1 ns;\n  wait;\nend process p;",
+        )
+    );
+    let (sources, files) = load(&[&text]);
+    let a = analyse(&sources, &files);
+    let file = files.last().expect("the user file").0;
+    let decl_at = text.find("gain").expect("the declaration") as u32;
+    let d = a
+        .declaration_at(file, decl_at)
+        .expect("gain is a declaration");
+    assert_eq!(a.references_to(d).len(), 3, "declared once, used twice");
+    let in_process = text.find("local_v :=").expect("the assignment") as u32;
+    let names = a.names_at(file, in_process);
+    for n in ["local_v", "gain", "s", "math_pi", "integer", "now"] {
+        assert!(names.contains(&n.to_string()), "{n} in {names:?}");
+    }
+    let in_architecture = text.find("signal s").expect("the signal") as u32;
+    assert!(
+        !a.names_at(file, in_architecture)
+            .contains(&"local_v".to_string())
+    );
+}

@@ -98,6 +98,7 @@ impl<'a> Analyzer<'a> {
                 region: RegionId(u32::MAX),
                 decl: None,
                 incomplete: false,
+                scopes: Vec::new(),
             });
         }
         let ambiguous = DeclId(0);
@@ -301,6 +302,7 @@ impl<'a> Analyzer<'a> {
             self.scope.push(self.out.units[p].region);
         }
         self.scope.push(own);
+        self.record_scope(du.span);
         match &du.unit {
             LibraryUnit::Entity(e) => {
                 let d = self.declare_unit(u, &e.name, DeclKind::Entity(own));
@@ -481,6 +483,7 @@ impl<'a> Analyzer<'a> {
             unit.errors = std::mem::take(&mut old.errors);
             unit.references = std::mem::take(&mut old.references);
             unit.types = std::mem::take(&mut old.types);
+            unit.scopes = std::mem::take(&mut old.scopes);
             unit.region = old.region;
             unit.decl = old.decl;
             unit.incomplete = old.incomplete;
@@ -765,6 +768,12 @@ impl<'a> Analyzer<'a> {
 
     pub fn reference(&mut self, span: Span, d: DeclId) {
         self.out.units[self.cur].references.push((span, d));
+    }
+
+    /// Records that the regions now in scope are those visible within `span`.
+    pub fn record_scope(&mut self, span: Span) {
+        let scope = self.scope.clone();
+        self.out.units[self.cur].scopes.push((span, scope));
     }
 
     pub fn record_type(&mut self, span: Span, t: TypeId) {
