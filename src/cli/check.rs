@@ -2,15 +2,15 @@
 //! and `.ams` files, recursively) together with the bundled stdlib, and reports every
 //! diagnostic with file, line, column and a help line. Exit 0 when clean, 1 on any error.
 //!
-//! Four stages, each only when the one before it is clean: parsing every file; analysing
-//! every design unit of every file, reached by a top or not (names, types, overloads);
-//! elaborating every top candidate (an entity of `work` that nothing instantiates) with its
-//! default generics; building the analog system of each elaborated top (equation count,
-//! matching, floating terminals). Candidates that cannot stand alone are not elaborated, with a
-//! note: generics without a default have no value, and open terminal or quantity ports would
-//! make the analog checks report what is only the missing surroundings. What depends on their
-//! generics' values is checked as part of any top that instantiates them. A diagnostic that
-//! several tops share is printed once.
+//! Four stages: parsing every file; when that is clean, analysing every design unit of every
+//! file, reached by a top or not (names, types, overloads); elaborating every top candidate
+//! (an entity of `work` that nothing instantiates) with its default generics (an error that
+//! analysis reported already is not repeated); building the analog system of each elaborated
+//! top (equation count, matching, floating terminals). Candidates that cannot stand alone are
+//! not elaborated, with a note: generics without a default have no value, and open terminal
+//! or quantity ports would make the analog checks report what is only the missing
+//! surroundings. What depends on their generics' values is checked as part of any top that
+//! instantiates them. A diagnostic that several tops share is printed once.
 
 use std::collections::HashSet;
 use std::path::PathBuf;
@@ -22,6 +22,7 @@ use crate::analog::AnalogSystem;
 use crate::analysis::analyse;
 use crate::diagnostics::Located;
 use crate::elaborate::{ElabOptions, TopCandidate, elaborate, top_candidates};
+use crate::source::Span;
 
 use super::error::CliError;
 use super::load::{Loaded, load};
@@ -50,6 +51,9 @@ struct Tally {
     analog_checked: usize,
     /// Rendered diagnostics already printed (tops share instantiated entities).
     printed: HashSet<String>,
+    /// Where analysis reported an error: elaboration, which still does its own name lookup,
+    /// finds the same ones again.
+    analysed_spans: HashSet<Span>,
 }
 
 impl Tally {
@@ -61,6 +65,9 @@ impl Tally {
     fn print<D: Located>(&mut self, errors: &[D], loaded: &Loaded, max: usize) -> usize {
         let mut new = 0;
         for e in errors {
+            if self.analysed_spans.contains(&e.primary_span()) {
+                continue;
+            }
             let text = render_located(e, &loaded.sources);
             if self.printed.insert(text.clone()) {
                 if new < max {
@@ -90,12 +97,9 @@ pub fn run(args: &CheckArgs) -> Result<(), Report> {
         for unit in &analysis.units {
             tally.analysis += tally.print(&unit.errors, &loaded, args.max_errors);
         }
-        if tally.analysis == 0 {
-            for candidate in top_candidates(&loaded.sources, &loaded.files) {
-                check_top(&candidate, &loaded, args.max_errors, &mut tally);
-            }
-        } else {
-            eprintln!("note: nothing was elaborated because of the analysis errors");
+        tally.analysed_spans = analysis.errors().map(|e| e.primary_span()).collect();
+        for candidate in top_candidates(&loaded.sources, &loaded.files) {
+            check_top(&candidate, &loaded, args.max_errors, &mut tally);
         }
     } else {
         eprintln!("note: nothing was elaborated because of the syntax errors");

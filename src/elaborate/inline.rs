@@ -39,11 +39,12 @@ pub(super) fn inline(design: &Design, e: &Expr, depth: usize) -> Result<Expr, No
                 return Err(fail("it calls itself"));
             }
             let mut frame: Vec<Expr> = args.iter().map(&go).collect::<Result<_, _>>()?;
-            frame.extend(
-                f.vars[frame.len()..]
-                    .iter()
-                    .map(|v| Expr::Const(v.init.clone())),
-            );
+            // A function whose body was not lowered (its package body failed, or it has
+            // none) has no variables for its parameters yet.
+            let Some(locals) = f.vars.get(frame.len()..) else {
+                return Err(fail("its body could not be elaborated"));
+            };
+            frame.extend(locals.iter().map(|v| Expr::Const(v.init.clone())));
             for instr in &f.code {
                 match instr {
                     Instr::SetVar { var, value } => {
