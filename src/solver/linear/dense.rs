@@ -42,8 +42,21 @@ pub(super) struct Dense {
     /// position in pivot order of each assembled row.
     fill: Vec<bool>,
     position: Vec<usize>,
+    /// The pivot order before the current one, compiled (`schedule.valid` false when there
+    /// is none): a switching circuit alternates between two matrices whose best pivots differ
+    /// (the PWM H-bridge's switch conductances move by 1e7 at every edge), and retrying the
+    /// other order before searching turns 1 202 searches into 2.
+    other: Compiled,
     /// Full factorisations (pivot searches) and refactorisations with reused pivots.
     pub(super) counts: DenseCounts,
+}
+
+/// What a pivot search compiles, kept for the previous order in [`Dense::other`].
+struct Compiled {
+    permuted: Layout,
+    assembly: Assembly,
+    perm: Vec<usize>,
+    schedule: Schedule,
 }
 
 /// How a dense solver's factorisations went, for tests and benchmarks.
@@ -120,8 +133,36 @@ impl Dense {
             structure,
             fill: vec![false; n * n],
             position: vec![0; n],
+            other: Compiled {
+                permuted: Layout {
+                    at: vec![0; pattern.len()],
+                    diag: vec![0; n],
+                },
+                assembly: Assembly {
+                    zero: Vec::with_capacity(n * n),
+                    assign: Vec::with_capacity(pattern.len()),
+                    accumulate: Vec::with_capacity(pattern.len()),
+                },
+                perm: vec![0; n],
+                schedule: Schedule {
+                    valid: false,
+                    lower_start: vec![0; n + 1],
+                    lower: Vec::with_capacity(triangle),
+                    upper_start: vec![0; n + 1],
+                    upper: Vec::with_capacity(triangle),
+                },
+            },
             counts: DenseCounts::default(),
         }
+    }
+
+    /// Exchanges the current compiled pivot order with the previous one.
+    fn swap_orders(&mut self) {
+        let o = &mut self.other;
+        std::mem::swap(&mut self.permuted, &mut o.permuted);
+        std::mem::swap(&mut self.assembly, &mut o.assembly);
+        std::mem::swap(&mut self.perm, &mut o.perm);
+        std::mem::swap(&mut self.schedule, &mut o.schedule);
     }
 
     /// Factors the matrix whose entries are `values` (pattern order) plus `diag` (one shift
@@ -147,6 +188,17 @@ impl Dense {
             if self.refactor(pivot_tol, col_max) {
                 self.counts.reused += 1;
                 return Ok(Ok(()));
+            }
+            // The order before: after this swap the current order is the older of the two,
+            // which a search below replaces.
+            self.swap_orders();
+            if self.schedule.valid {
+                col_max.fill(0.0);
+                self.assemble_permuted(pattern, values, diag, col_max);
+                if self.refactor(pivot_tol, col_max) {
+                    self.counts.reused += 1;
+                    return Ok(Ok(()));
+                }
             }
             col_max.fill(0.0);
         }
