@@ -293,6 +293,14 @@ fn pivots_are_reused_while_they_hold() {
     solve(&mut lin, &swapped);
     let counts = lin.dense_counts().expect("dense path");
     assert_eq!((counts.searched, counts.reused), (2, 9));
+    // A switching circuit alternates between the two: each state's order is kept and tried,
+    // so no further search.
+    for _ in 0..5 {
+        solve(&mut lin, &base);
+        solve(&mut lin, &swapped);
+    }
+    let counts = lin.dense_counts().expect("dense path");
+    assert_eq!((counts.searched, counts.reused), (2, 19));
 }
 
 /// A diode straight across a voltage source, every unknown kept: source row `v1 = 2.19`, the
