@@ -131,7 +131,10 @@ pub enum Outcome {
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct SimStats {
     pub accepted_steps: usize,
+    /// Steps tried and not taken: by the error test or because Newton did not converge.
     pub rejected_steps: usize,
+    /// Of the rejected steps, those whose Newton iteration did not converge.
+    pub newton_failures: usize,
     pub newton_iterations: usize,
     pub factorizations: usize,
     /// Factorisations that searched for pivots (the rest reused the last pivot order).

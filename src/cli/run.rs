@@ -335,6 +335,7 @@ pub fn stats_table(stats: &SimStats) -> String {
     let rows = [
         ("accepted steps", stats.accepted_steps),
         ("rejected steps", stats.rejected_steps),
+        ("  Newton failures", stats.newton_failures),
         ("Newton iterations", stats.newton_iterations),
         ("factorizations", stats.factorizations),
         ("pivot searches", stats.pivot_searches),

@@ -444,6 +444,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         SimStats {
             accepted_steps: solver.accepted_steps,
             rejected_steps: solver.rejected_steps + solver.newton_failures,
+            newton_failures: solver.newton_failures,
             newton_iterations: solver.newton_iterations,
             factorizations: solver.factorizations,
             pivot_searches: solver.pivot_searches,
