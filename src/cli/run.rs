@@ -463,7 +463,7 @@ mod tests {
             "simulated tb to 6 s in 0.50 s wall time: 1234 accepted steps, 5678 Newton iterations; wrote a.csv, p.svg"
         );
         let table = stats_table(&result.stats);
-        assert_eq!(table.lines().count(), 9);
+        assert_eq!(table.lines().count(), 10);
         assert!(table.contains("breaks") && table.contains("5678"));
     }
 }
