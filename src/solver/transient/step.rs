@@ -140,7 +140,6 @@ impl Transient {
         } else {
             1.0
         };
-        let f0 = self.newton.totals().factorizations;
         self.x_new.copy_from_slice(&self.x_pred);
         let mut corr = Corrector {
             sys,
@@ -160,7 +159,11 @@ impl Transient {
             Ok(rep) => rep,
             Err(e @ SolveError::InvalidSystem { .. }) => return Err(e),
             Err(err) => {
-                let stale = self.c0_factored != 0.0 && self.newton.totals().factorizations == f0;
+                // A solve that began on a reused Jacobian is retried at the same step with a
+                // fresh one before the step is cut (IDA's rule), even if it refreshed the
+                // matrix midway: four iterations split between two matrices are not a fair
+                // trial of the step.
+                let stale = self.c0_factored != 0.0;
                 return Ok(Attempt::NewtonFailed { err, stale });
             }
         };
