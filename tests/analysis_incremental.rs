@@ -133,4 +133,12 @@ fn an_edit_reanalyses_only_from_the_first_unit_it_affects() {
         motor.replacen("architecture", "-- an edit\narchitecture", 1),
     );
     assert!(host.reused() >= stdlib_units);
+    // Setting the same text again changes nothing.
+    let before = format!("{:?}", host.analysis());
+    host.set_file(
+        "models/dc_motor.vhd",
+        motor.replacen("architecture", "-- an edit\narchitecture", 1),
+    );
+    assert_eq!(host.reused(), host.analysis().units.len());
+    assert_eq!(format!("{:?}", host.analysis()), before);
 }

@@ -49,6 +49,11 @@ impl AnalysisHost {
     /// Adds the user file `name` with `text`, or replaces its text; returns its id.
     pub fn set_file(&mut self, name: &str, text: String) -> FileId {
         let id = match self.id_of(name) {
+            // Saved without a change: nothing to do.
+            Some(id) if *self.sources.file(id).text == text => {
+                self.reused = self.analysis.units.len();
+                return id;
+            }
             Some(id) => {
                 self.sources.set_text(id, text);
                 let (ast, errors) = self.parse(id);
