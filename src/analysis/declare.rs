@@ -394,19 +394,19 @@ impl Analyzer<'_> {
                 };
                 for (i, a) in args.iter().enumerate() {
                     let index = indexes.get(i).copied().unwrap_or(UNKNOWN);
-                    let _ = match &a.actual {
-                        crate::ast::Actual::Range(r) => self.range(r, index),
-                        crate::ast::Actual::Expr(x) => {
-                            // `natural range 0 to 3` arrives as a subtype name: a type mark.
-                            if self.is_type_mark(x) {
-                                self.type_mark(x);
-                            } else {
-                                self.expr(x, index);
-                            }
-                            index
+                    match &a.actual {
+                        crate::ast::Actual::Range(r) => {
+                            self.range(r, index);
                         }
-                        crate::ast::Actual::Open(_) => UNKNOWN,
-                    };
+                        // `natural range 0 to 3` arrives as a subtype name: a type mark.
+                        crate::ast::Actual::Expr(x) if self.is_type_mark(x) => {
+                            self.type_mark(x);
+                        }
+                        crate::ast::Actual::Expr(x) => {
+                            self.expr(x, index);
+                        }
+                        crate::ast::Actual::Open(_) => {}
+                    }
                 }
                 ty
             }
@@ -477,7 +477,8 @@ impl Analyzer<'_> {
     }
 
     /// The type of a range `l to r` from its bounds alone: the one known type among their
-    /// interpretations, `integer` for two universal integers (LRM 9.2.7? 8.2.7 in 1076-2008).
+    /// interpretations, `integer` for two universal integers (the LRM's rule for a loop or
+    /// index range), `real` for two universal reals.
     fn bounds_type(&mut self, left: &Expr, right: &Expr) -> TypeId {
         let l = self.infer(left);
         let r = self.infer(right);

@@ -679,7 +679,7 @@ impl Analyzer<'_> {
                 t
             };
         }
-        if types.len() == 1 && self.definite(types[0]) && self.types().is_known(expected) {
+        if types.len() == 1 && self.types().is_known(types[0]) && self.types().is_known(expected) {
             let found = self.types().describe(types[0]);
             let expected_name = self.types().describe(expected);
             let help = self.conversion_help(types[0], expected);
@@ -691,11 +691,6 @@ impl Analyzer<'_> {
             });
         }
         types.first().copied().unwrap_or(UNKNOWN)
-    }
-
-    /// Known well enough to report about.
-    fn definite(&self, t: TypeId) -> bool {
-        self.types().is_known(t)
     }
 
     fn conversion_help(&self, found: TypeId, expected: TypeId) -> Option<String> {
