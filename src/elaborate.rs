@@ -319,7 +319,7 @@ impl<'a> Elab<'a> {
             let names: Vec<&String> = pkg.items.keys().collect();
             let best = names
                 .iter()
-                .map(|k| (scope::edit_distance(&suffix.name, k), *k))
+                .map(|k| (strsim::levenshtein(&suffix.name, k), *k))
                 .min()
                 .filter(|(d, _)| *d <= 2);
             return Err(self.error(ElabError::Undeclared {

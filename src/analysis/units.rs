@@ -10,7 +10,7 @@ use crate::ast::{
 use crate::source::{FileId, Span};
 
 use super::error::AnalysisError;
-use super::scope::{DeclId, DeclKind, Declaration, Nature, Region, RegionId, edit_distance};
+use super::scope::{DeclId, DeclKind, Declaration, Nature, Region, RegionId};
 use super::types::{TypeId, TypeTable, UNKNOWN};
 use super::{AnalysedUnit, Analysis, Marks, UnitKind, UnitMap, canonical_library, unit_name};
 
@@ -806,7 +806,7 @@ impl<'a> Analyzer<'a> {
             .iter()
             .flat_map(|r| self.out.regions[r.0 as usize].names.keys())
             .filter(|k| !k.starts_with('"') && !k.starts_with('\''))
-            .map(|k| (edit_distance(name, k), k))
+            .map(|k| (strsim::levenshtein(name, k), k))
             .filter(|(d, _)| *d <= limit)
             .min()
             .map(|(_, k)| k.clone())

@@ -59,7 +59,7 @@ impl<'a> Elab<'a> {
                 .lib
                 .work_entities()
                 .iter()
-                .map(|e| (super::scope::edit_distance(&name, e), e.clone()))
+                .map(|e| (strsim::levenshtein(&name, e), e.clone()))
                 .min()
             {
                 Some((d, best)) if d <= 2 => {
@@ -186,7 +186,7 @@ impl<'a> Elab<'a> {
                 let span = a.formal.as_ref().map_or(a.span, |f| f.span);
                 let best = names
                     .iter()
-                    .map(|n| (super::scope::edit_distance(&name, n), n))
+                    .map(|n| (strsim::levenshtein(&name, n), n))
                     .min()
                     .filter(|(d, _)| *d <= 2);
                 self.error(ElabError::UnknownFormal {
@@ -707,7 +707,7 @@ impl<'a> Elab<'a> {
             let cands = self.lib.work_entities();
             let best = cands
                 .iter()
-                .map(|e| (super::scope::edit_distance(&name, e), e))
+                .map(|e| (strsim::levenshtein(&name, e), e))
                 .min()
                 .filter(|(d, _)| *d <= 2);
             return Err(self.error(ElabError::Undeclared {

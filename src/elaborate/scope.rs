@@ -277,26 +277,11 @@ impl<'a> Scope<'a> {
             .iter()
             .flat_map(|r| r.items.keys())
             .filter(|k| !k.starts_with('"') && !k.starts_with('\''))
-            .map(|k| (edit_distance(name, k), k))
+            .map(|k| (strsim::levenshtein(name, k), k))
             .filter(|(d, _)| *d <= limit)
             .min()
             .map(|(_, k)| k.clone())
     }
-}
-
-/// Levenshtein distance over bytes (identifiers are ASCII).
-pub fn edit_distance(a: &str, b: &str) -> usize {
-    let (a, b) = (a.as_bytes(), b.as_bytes());
-    let mut prev: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.iter().enumerate() {
-        let mut cur = vec![i + 1; b.len() + 1];
-        for (j, cb) in b.iter().enumerate() {
-            let cost = usize::from(ca != cb);
-            cur[j + 1] = (prev[j] + cost).min(prev[j + 1] + 1).min(cur[j] + 1);
-        }
-        prev = cur;
-    }
-    prev[b.len()]
 }
 
 /// `x, y and z` for help lines.

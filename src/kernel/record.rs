@@ -128,7 +128,7 @@ fn find(design: &Design, name: &str) -> Result<Probe, SimError> {
         .map(|q| q.name.as_str())
         .chain(design.signals.iter().map(|s| s.name.as_str()));
     let best = names
-        .map(|n| (edit_distance(&wanted, n), n))
+        .map(|n| (strsim::levenshtein(&wanted, n), n))
         .min_by_key(|&(d, _)| d);
     let help = match best {
         Some((d, n)) if d <= wanted.len().max(3) / 2 + 1 => format!("did you mean `{n}`?"),
@@ -142,35 +142,9 @@ fn find(design: &Design, name: &str) -> Result<Probe, SimError> {
     })
 }
 
-/// Levenshtein distance in characters.
-fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut diag = row[0];
-        row[0] = i + 1;
-        for (j, &cb) in b.iter().enumerate() {
-            let next = (diag + usize::from(ca != cb))
-                .min(row[j] + 1)
-                .min(row[j + 1] + 1);
-            diag = row[j + 1];
-            row[j + 1] = next;
-        }
-    }
-    row[b.len()]
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn edit_distance_counts_single_edits() {
-        assert_eq!(edit_distance("v_motr", "v_motor"), 1);
-        assert_eq!(edit_distance("abc", "abc"), 0);
-        assert_eq!(edit_distance("", "ab"), 2);
-        assert_eq!(edit_distance("kitten", "sitting"), 3);
-    }
 
     #[test]
     fn potentials_are_not_default_probes() {
