@@ -59,6 +59,32 @@ struct Compiled {
     schedule: Schedule,
 }
 
+impl Compiled {
+    /// No order yet, with the capacities of a full matrix (compiling never allocates).
+    fn empty(n: usize, entries: usize) -> Compiled {
+        let triangle = n * n.saturating_sub(1) / 2;
+        Compiled {
+            permuted: Layout {
+                at: vec![0; entries],
+                diag: vec![0; n],
+            },
+            assembly: Assembly {
+                zero: Vec::with_capacity(n * n),
+                assign: Vec::with_capacity(entries),
+                accumulate: Vec::with_capacity(entries),
+            },
+            perm: vec![0; n],
+            schedule: Schedule {
+                valid: false,
+                lower_start: vec![0; n + 1],
+                lower: Vec::with_capacity(triangle),
+                upper_start: vec![0; n + 1],
+                upper: Vec::with_capacity(triangle),
+            },
+        }
+    }
+}
+
 /// How a dense solver's factorisations went, for tests and benchmarks.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct DenseCounts {
@@ -103,7 +129,12 @@ impl Dense {
         for i in 0..n {
             structure[i * n + i] = true;
         }
-        let triangle = n * n.saturating_sub(1) / 2;
+        let Compiled {
+            permuted,
+            assembly,
+            perm,
+            schedule,
+        } = Compiled::empty(n, pattern.len());
         Self {
             n,
             a: vec![0.0; n * n],
@@ -111,47 +142,16 @@ impl Dense {
                 at: pattern.iter().map(|&(r, c)| r * n + c).collect(),
                 diag: (0..n).map(|i| i * n + i).collect(),
             },
-            assembly: Assembly {
-                zero: Vec::with_capacity(n * n),
-                assign: Vec::with_capacity(pattern.len()),
-                accumulate: Vec::with_capacity(pattern.len()),
-            },
-            permuted: Layout {
-                at: vec![0; pattern.len()],
-                diag: vec![0; n],
-            },
-            perm: vec![0; n],
+            assembly,
+            permuted,
+            perm,
             inv_diag: vec![0.0; n],
             scratch: vec![0.0; n],
-            schedule: Schedule {
-                valid: false,
-                lower_start: vec![0; n + 1],
-                lower: Vec::with_capacity(triangle),
-                upper_start: vec![0; n + 1],
-                upper: Vec::with_capacity(triangle),
-            },
+            schedule,
             structure,
             fill: vec![false; n * n],
             position: vec![0; n],
-            other: Compiled {
-                permuted: Layout {
-                    at: vec![0; pattern.len()],
-                    diag: vec![0; n],
-                },
-                assembly: Assembly {
-                    zero: Vec::with_capacity(n * n),
-                    assign: Vec::with_capacity(pattern.len()),
-                    accumulate: Vec::with_capacity(pattern.len()),
-                },
-                perm: vec![0; n],
-                schedule: Schedule {
-                    valid: false,
-                    lower_start: vec![0; n + 1],
-                    lower: Vec::with_capacity(triangle),
-                    upper_start: vec![0; n + 1],
-                    upper: Vec::with_capacity(triangle),
-                },
-            },
+            other: Compiled::empty(n, pattern.len()),
             counts: DenseCounts::default(),
         }
     }
