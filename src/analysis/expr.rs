@@ -264,18 +264,7 @@ impl Analyzer<'_> {
         assocs
             .iter()
             .map(|a| {
-                let formal = match &a.formal {
-                    Some(Expr {
-                        kind: ExprKind::Name(id),
-                        ..
-                    }) => Some(id.name.as_str()),
-                    Some(_) => Some(""), // a formal part analysis does not model
-                    None => None,
-                };
-                let expr = match &a.actual {
-                    Actual::Expr(e) => Some(e),
-                    _ => None,
-                };
+                let (formal, expr) = formal_and_actual(a);
                 self.arg(formal, expr)
             })
             .collect()
@@ -785,24 +774,8 @@ impl Analyzer<'_> {
                 if let ExprKind::Selected(p, _) = &prefix.kind {
                     self.resolve_name(p);
                 }
-                let list: Vec<(Option<&str>, Option<&Expr>)> = args
-                    .iter()
-                    .map(|a| {
-                        let formal = match &a.formal {
-                            Some(Expr {
-                                kind: ExprKind::Name(id),
-                                ..
-                            }) => Some(id.name.as_str()),
-                            Some(_) => Some(""),
-                            None => None,
-                        };
-                        let x = match &a.actual {
-                            Actual::Expr(x) => Some(x),
-                            _ => None,
-                        };
-                        (formal, x)
-                    })
-                    .collect();
+                let list: Vec<(Option<&str>, Option<&Expr>)> =
+                    args.iter().map(formal_and_actual).collect();
                 let functions: Vec<DeclId> = ds
                     .iter()
                     .copied()
@@ -1090,6 +1063,24 @@ impl Analyzer<'_> {
     pub fn range_any(&mut self, r: &Range) -> TypeId {
         self.range(r, UNKNOWN)
     }
+}
+
+/// An association's formal name (`Some("")` for a formal part analysis does not model, such
+/// as a conversion or an element) and its actual expression (`None` for `open` or a range).
+fn formal_and_actual(a: &Assoc) -> (Option<&str>, Option<&Expr>) {
+    let formal = match &a.formal {
+        Some(Expr {
+            kind: ExprKind::Name(id),
+            ..
+        }) => Some(id.name.as_str()),
+        Some(_) => Some(""),
+        None => None,
+    };
+    let actual = match &a.actual {
+        Actual::Expr(x) => Some(x),
+        _ => None,
+    };
+    (formal, actual)
 }
 
 fn unary_name(op: UnaryOp) -> &'static str {
