@@ -394,37 +394,20 @@ pub fn size(e: &Sym) -> usize {
     n
 }
 
-/// `e` as `c0 + sum c_k x_k` with constant coefficients, if it has that form.
+/// `e` as `c0 + sum c_k x_k` with constant coefficients, if it has that form (the terms,
+/// an unknown possibly more than once; no derivative may occur).
 pub fn affine(e: &Sym) -> Option<Vec<(usize, f64)>> {
-    let mut terms = Vec::new();
-    collect_affine(e, 1.0, &mut terms).then_some(terms)
-}
-
-fn collect_affine(e: &Sym, scale: f64, terms: &mut Vec<(usize, f64)>) -> bool {
-    match e {
-        Sym::Const(_) => true,
-        Sym::X(k) => {
-            terms.push((*k, scale));
-            true
-        }
-        Sym::Un(Un::Neg, a) => collect_affine(a, -scale, terms),
-        Sym::Bin(Bin::Add, a, b) => {
-            collect_affine(a, scale, terms) && collect_affine(b, scale, terms)
-        }
-        Sym::Bin(Bin::Sub, a, b) => {
-            collect_affine(a, scale, terms) && collect_affine(b, -scale, terms)
-        }
-        Sym::Bin(Bin::Mul, a, b) => match (a.as_const(), b.as_const()) {
-            (Some(k), _) => collect_affine(b, scale * k, terms),
-            (_, Some(k)) => collect_affine(a, scale * k, terms),
-            _ => false,
-        },
-        Sym::Bin(Bin::Div, a, b) => match b.as_const() {
-            Some(k) => collect_affine(a, scale / k, terms),
-            None => false,
-        },
-        _ => false,
+    let (mut c0, mut terms) = (0.0, Vec::new());
+    if !linear_form(e, 1.0, &mut c0, &mut terms) {
+        return None;
     }
+    terms
+        .into_iter()
+        .map(|(v, c)| match v {
+            Var::X(k) => Some((k, c)),
+            Var::Dot(_) => None,
+        })
+        .collect()
 }
 
 /// A variable of a linear form: an unknown or its derivative.
