@@ -58,16 +58,7 @@ impl Analyzer<'_> {
                     let string = self.std.string;
                     self.expr(e, string);
                 }
-                for n in names {
-                    self.declare(
-                        &n.name,
-                        n.span,
-                        DeclKind::Object {
-                            class: ObjectClass::File,
-                            ty,
-                        },
-                    );
-                }
+                self.declare_objects(names, ObjectClass::File, ty);
             }
             AstDecl::Type { name, def } => self.type_decl(name, def.as_ref()),
             AstDecl::Subtype { name, subtype } => {
@@ -222,6 +213,10 @@ impl Analyzer<'_> {
         if let Some(v) = value {
             self.expr(v, ty);
         }
+        self.declare_objects(names, class, ty);
+    }
+
+    fn declare_objects(&mut self, names: &[crate::ast::Ident], class: ObjectClass, ty: TypeId) {
         for n in names {
             self.declare(&n.name, n.span, DeclKind::Object { class, ty });
         }
@@ -257,16 +252,7 @@ impl Analyzer<'_> {
                             let string = self.std.string;
                             self.expr(tol, string);
                         }
-                        for n in &b.names {
-                            self.declare(
-                                &n.name,
-                                n.span,
-                                DeclKind::Object {
-                                    class: ObjectClass::Quantity,
-                                    ty,
-                                },
-                            );
-                        }
+                        self.declare_objects(&b.names, ObjectClass::Quantity, ty);
                     }
                 }
             }
@@ -284,16 +270,7 @@ impl Analyzer<'_> {
                 if let Some(n) = noise {
                     self.expr_any(n);
                 }
-                for n in names {
-                    self.declare(
-                        &n.name,
-                        n.span,
-                        DeclKind::Object {
-                            class: ObjectClass::Quantity,
-                            ty,
-                        },
-                    );
-                }
+                self.declare_objects(names, ObjectClass::Quantity, ty);
             }
         }
     }
@@ -483,20 +460,10 @@ impl Analyzer<'_> {
         let l = self.infer(left);
         let r = self.infer(right);
         let types = self.types();
-        let pick = |set: &[TypeId]| -> Option<TypeId> {
-            match set {
-                [t] if types.is_known(*t)
-                    && !matches!(
-                        types.kind(*t),
-                        TypeKind::UniversalInteger | TypeKind::UniversalReal
-                    ) =>
-                {
-                    Some(*t)
-                }
-                _ => None,
-            }
-        };
-        if let Some(t) = pick(&l).or_else(|| pick(&r)) {
+        if let Some(t) = types
+            .single_definite(&l)
+            .or_else(|| types.single_definite(&r))
+        {
             return t;
         }
         let universal = |set: &[TypeId], u: TypeId| set == [u];

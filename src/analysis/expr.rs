@@ -2,7 +2,7 @@
 //! reports nothing) and checked top-down against the type the context expects (`expr`, which
 //! reports and records), overloads chosen from the operands and the expected type.
 
-use crate::ast::{Actual, Assoc, BinaryOp, Choice, Expr, ExprKind, Ident, Literal, Range, UnaryOp};
+use crate::ast::{Actual, Assoc, BinaryOp, Choice, Expr, ExprKind, Ident, Literal, UnaryOp};
 use crate::source::Span;
 
 use super::error::AnalysisError;
@@ -1057,11 +1057,6 @@ impl Analyzer<'_> {
                 self.assoc_any(a);
             }
         }
-    }
-
-    /// The type of an explicit range `l to r` where the context gives none.
-    pub fn range_any(&mut self, r: &Range) -> TypeId {
-        self.range(r, UNKNOWN)
     }
 }
 

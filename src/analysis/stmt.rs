@@ -2,8 +2,9 @@
 //! simultaneous; instances are checked against the interface of what they instantiate.
 
 use crate::ast::{
-    Actual, Assertion, Assoc, BreakStmt, ConcKind, ConcStmt, DelayMechanism, Expr, ExprKind,
-    InstantiatedUnit, LoopScheme, ObjectClass, Sensitivity, SeqKind, SeqStmt, SimKind, Waveform,
+    Actual, Assertion, Assoc, BreakStmt, Choice, ConcKind, ConcStmt, DelayMechanism, Expr,
+    ExprKind, InstantiatedUnit, LoopScheme, ObjectClass, Sensitivity, SeqKind, SeqStmt, SimKind,
+    Waveform,
 };
 
 use crate::source::Span;
@@ -26,6 +27,37 @@ impl Analyzer<'_> {
         self.record_scope(span);
         f(self);
         self.scope.pop();
+    }
+
+    /// `if c then ... elsif ... else ...` (sequential) or `if c use ... end use`
+    /// (simultaneous): boolean conditions, each branch's statements by `body`.
+    fn if_branches<S>(
+        &mut self,
+        branches: &[(Expr, Vec<S>)],
+        otherwise: Option<&[S]>,
+        body: fn(&mut Self, &[S]),
+    ) {
+        for (c, stmts) in branches {
+            self.condition(c);
+            body(self, stmts);
+        }
+        if let Some(stmts) = otherwise {
+            body(self, stmts);
+        }
+    }
+
+    /// A case statement of either kind: choices of the selector's type.
+    fn case_alternatives<S>(
+        &mut self,
+        selector: &Expr,
+        alternatives: &[(Vec<Choice>, Vec<S>)],
+        body: fn(&mut Self, &[S]),
+    ) {
+        let t = self.expr_any(selector);
+        for (choices, stmts) in alternatives {
+            self.choices(choices, t);
+            body(self, stmts);
+        }
     }
 
     // -----------------------------------------------------------------------------------
@@ -67,25 +99,11 @@ impl Analyzer<'_> {
             SeqKind::If {
                 branches,
                 otherwise,
-            } => {
-                for (c, body) in branches {
-                    self.condition(c);
-                    self.seq_stmts(body);
-                }
-                if let Some(body) = otherwise {
-                    self.seq_stmts(body);
-                }
-            }
+            } => self.if_branches(branches, otherwise.as_deref(), Self::seq_stmts),
             SeqKind::Case {
                 selector,
                 alternatives,
-            } => {
-                let t = self.expr_any(selector);
-                for (choices, body) in alternatives {
-                    self.choices(choices, t);
-                    self.seq_stmts(body);
-                }
-            }
+            } => self.case_alternatives(selector, alternatives, Self::seq_stmts),
             SeqKind::Loop { scheme, body } => match scheme {
                 LoopScheme::Forever => self.seq_stmts(body),
                 LoopScheme::While(c) => {
@@ -326,29 +344,11 @@ impl Analyzer<'_> {
                 // Both sides have one type: the one the left side has when it has one,
                 // else the right side's.
                 let l = self.infer(lhs);
-                let ty = match l.as_slice() {
-                    [t] if self.types().is_known(*t)
-                        && !matches!(
-                            self.types().kind(*t),
-                            super::types::TypeKind::UniversalInteger
-                                | super::types::TypeKind::UniversalReal
-                        ) =>
-                    {
-                        *t
-                    }
-                    _ => match self.infer(rhs).as_slice() {
-                        [t] if self.types().is_known(*t)
-                            && !matches!(
-                                self.types().kind(*t),
-                                super::types::TypeKind::UniversalInteger
-                                    | super::types::TypeKind::UniversalReal
-                            ) =>
-                        {
-                            *t
-                        }
-                        _ => UNKNOWN,
-                    },
-                };
+                let ty = self
+                    .types()
+                    .single_definite(&l)
+                    .or_else(|| self.types().single_definite(&self.infer(rhs)))
+                    .unwrap_or(UNKNOWN);
                 self.expr(lhs, ty);
                 self.expr(rhs, ty);
                 if let Some(t) = tolerance {
@@ -359,25 +359,11 @@ impl Analyzer<'_> {
             SimKind::If {
                 branches,
                 otherwise,
-            } => {
-                for (c, body) in branches {
-                    self.condition(c);
-                    self.conc_stmts(body);
-                }
-                if let Some(body) = otherwise {
-                    self.conc_stmts(body);
-                }
-            }
+            } => self.if_branches(branches, otherwise.as_deref(), Self::conc_stmts),
             SimKind::Case {
                 selector,
                 alternatives,
-            } => {
-                let t = self.expr_any(selector);
-                for (choices, body) in alternatives {
-                    self.choices(choices, t);
-                    self.conc_stmts(body);
-                }
-            }
+            } => self.case_alternatives(selector, alternatives, Self::conc_stmts),
             SimKind::Procedural { decls, stmts } => self.in_region(span, |a| {
                 a.returns.push(None);
                 a.decls(decls);
@@ -448,7 +434,7 @@ impl Analyzer<'_> {
                         self.expr(x, formal_ty.unwrap_or(UNKNOWN));
                     }
                     Actual::Range(r) => {
-                        self.range_any(r);
+                        self.range(r, UNKNOWN);
                     }
                     Actual::Open(_) => {}
                 }

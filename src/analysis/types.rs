@@ -146,17 +146,25 @@ impl TypeTable {
         )
     }
 
-    /// True when the type says nothing definite (unknown, or a literal's pseudo-type whose
-    /// meaning the context decides).
+    /// False for the unknown type and a type not completed yet: nothing can be said of them.
     pub fn is_known(&self, id: TypeId) -> bool {
         !matches!(self.kind(id), TypeKind::Unknown | TypeKind::Incomplete)
     }
 
-    pub fn is_scalar(&self, id: TypeId) -> bool {
-        matches!(
-            self.kind(id),
-            TypeKind::Integer | TypeKind::Real | TypeKind::Physical | TypeKind::Enum { .. }
-        )
+    /// The one type of `set` when it is a declared type (not unknown, not a universal
+    /// literal's, whose type the context decides).
+    pub fn single_definite(&self, set: &[TypeId]) -> Option<TypeId> {
+        match set {
+            [t] if self.is_known(*t)
+                && !matches!(
+                    self.kind(*t),
+                    TypeKind::UniversalInteger | TypeKind::UniversalReal
+                ) =>
+            {
+                Some(*t)
+            }
+            _ => None,
+        }
     }
 
     pub fn is_discrete(&self, id: TypeId) -> bool {

@@ -424,8 +424,18 @@ impl<'a> Analyzer<'a> {
             UnitKind::Entity | UnitKind::Package => Some((u.library.clone(), u.name.clone())),
             _ => None,
         };
-        let count = |units: &[AnalysedUnit], key: &Option<(String, String)>| {
-            units.iter().filter(|u| primary_key(u) == *key).count()
+        // How many entities or packages share each name, before and after the edit (counted
+        // once, not per dependency).
+        let namesakes = |units: &[AnalysedUnit]| {
+            let mut counts: FxHashMap<(String, String), usize> = FxHashMap::default();
+            for key in units.iter().filter_map(primary_key) {
+                *counts.entry(key).or_default() += 1;
+            }
+            counts
+        };
+        let (now, before) = (namesakes(&self.out.units), namesakes(&prev.units));
+        let count = |counts: &FxHashMap<(String, String), usize>, u: &AnalysedUnit| {
+            primary_key(u).and_then(|key| counts.get(&key).copied())
         };
         let mut to_prev: FxHashMap<usize, usize> = FxHashMap::default();
         let mut k = 0;
@@ -439,8 +449,7 @@ impl<'a> Analyzer<'a> {
             let deps_same = new.depends_on.len() == old.depends_on.len()
                 && new.depends_on.iter().zip(&old.depends_on).all(|(d, o)| {
                     to_prev.get(d) == Some(o)
-                        && count(&self.out.units, &primary_key(&self.out.units[*d]))
-                            == count(&prev.units, &primary_key(&prev.units[*o]))
+                        && count(&now, &self.out.units[*d]) == count(&before, &prev.units[*o])
                 });
             let complete = !old.incomplete
                 && new.errors.is_empty()
