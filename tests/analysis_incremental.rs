@@ -5,8 +5,10 @@
 
 use std::path::Path;
 
+#[path = "support/fixed_seed.rs"]
+mod fixed_seed;
+
 use proptest::prelude::*;
-use proptest::test_runner::RngSeed;
 use vams::analysis::{AnalysisHost, analyse};
 
 /// The texts edits choose from: the headlight models and a few test sources with errors.
@@ -65,19 +67,8 @@ fn with_line(text: &str, n: usize, double: bool) -> String {
     out
 }
 
-fn config() -> ProptestConfig {
-    let mut config = ProptestConfig {
-        cases: 12,
-        ..ProptestConfig::default()
-    };
-    if config.rng_seed == RngSeed::Random {
-        config.rng_seed = RngSeed::Fixed(10_761);
-    }
-    config
-}
-
 proptest! {
-    #![proptest_config(config())]
+    #![proptest_config(fixed_seed::config(12))]
 
     #[test]
     fn incremental_analysis_equals_analysis_from_scratch(edits in prop::collection::vec(edit(), 1..8)) {

@@ -19,30 +19,19 @@
 
 #[path = "differential/circuit.rs"]
 mod circuit;
+#[path = "support/fixed_seed.rs"]
+mod fixed_seed;
 
 use circuit::{Circuit, elaborated, run_vams_with};
 use proptest::prelude::*;
-use proptest::test_runner::RngSeed;
 use vams::kernel::{SimOptions, operating_point};
 
 /// Ten times the default absolute tolerance of a voltage (1e-6 V): a node that a 100 MOhm leak
 /// ties to a small swing is known to that, not to a fraction of the largest swing.
 const ALLOWANCE: f64 = 1e-5;
 
-/// 24 cases from a fixed seed unless the environment names another.
-fn config() -> ProptestConfig {
-    let mut config = ProptestConfig {
-        cases: 24,
-        ..ProptestConfig::default()
-    };
-    if config.rng_seed == RngSeed::Random {
-        config.rng_seed = RngSeed::Fixed(10_761);
-    }
-    config
-}
-
 proptest! {
-    #![proptest_config(config())]
+    #![proptest_config(fixed_seed::config(24))]
 
     #[test]
     fn the_operating_point_does_not_depend_on_elimination(seed in 1u64..1_000_000) {
