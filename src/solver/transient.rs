@@ -13,10 +13,7 @@
 //! SPICE's test, whatever the error test's norm: a root-mean-square over a thousand quiet
 //! unknowns let the few that move carry thirty times theirs) and every residual is within
 //! its equation's tolerance. Order 2 is tried once
-//! four points are known, comparing step sizes predicted from divided differences. The next
-//! step also follows the trend of the error (PI control: an error that grew from the last step
-//! to this one shrinks it further, bounded to a factor of 2 either way), so a junction turning
-//! on is met with smaller steps before the error test fails. Growth is at
+//! four points are known, comparing step sizes predicted from divided differences. Growth is at
 //! most 2x per step at order 2 (BDF2 stays zero-stable below 2.41x), 10x at order 1.
 //! Jacobians are reused across steps while `alpha` stays within 25% (updates scaled by IDA's
 //! `2 / (1 + alpha/alpha_old)`); a corrector on a stale matrix refreshes it as soon as its
@@ -75,9 +72,6 @@ pub struct Transient {
     /// Upper bound for the first step after a restart (the last step taken).
     h_cap: f64,
     c0_factored: f64,
-    /// The error estimate of the last accepted step (read once [`step::PI_HISTORY`] points
-    /// since a (re)start make it one of the same run of steps).
-    err_last: f64,
     x_pred: Vec<f64>,
     x_new: Vec<f64>,
     xdot_new: Vec<f64>,
@@ -198,7 +192,6 @@ impl Transient {
             int_alg_known: false,
             h_cap: f64::INFINITY,
             c0_factored: 0.0,
-            err_last: 0.0,
             x_pred: v(),
             x_new: v(),
             xdot_new: v(),

@@ -84,11 +84,6 @@ fn derivative_weights(tau: &[f64], out: &mut [f64; 4]) {
     }
 }
 
-/// Weight of the error's trend in the step-size choice (0: the error of the last step alone).
-const PI_GAIN: f64 = 0.8;
-/// Accepted points since a (re)start before the trend counts.
-pub(super) const PI_HISTORY: usize = 3;
-
 impl Transient {
     /// Predicts, corrects and tests one step from `self.t` to `t_new` at `self.order`.
     pub(super) fn try_step<S: DaeSystem + ?Sized>(
@@ -239,14 +234,6 @@ impl Transient {
         let err = err.max(1e-12);
         let shrink = if k == 1 { err.sqrt() } else { err.cbrt() };
         let mut h_next = h * 0.8 / shrink;
-        // PI control (Gustafsson): an error growing from one step to the next (a junction
-        // turning on) shrinks the step before the error test fails, a falling one lets it
-        // grow; bounded so that one tiny estimate cannot swing the step.
-        if self.err_last > 0.0 && self.nhist >= PI_HISTORY {
-            let trend = (self.err_last / err).powf(PI_GAIN / (k as f64 + 1.0));
-            h_next *= trend.clamp(0.5, 2.0);
-        }
-        self.err_last = err;
         let mut order = k;
         if k == 1 && self.opts.max_order >= 2 && self.nhist >= 4 {
             let d3 = self.divided_difference_norm(3);
