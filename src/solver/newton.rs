@@ -280,10 +280,13 @@ impl Newton {
     /// the Jacobian last factored (a scale, so a stale one serves). `r` must be the residual
     /// at `x`.
     fn residual_within_tolerance(&mut self, x: &[f64], tol: &Tolerances) -> bool {
-        tol.weights(x, &mut self.w);
+        // Each unknown's tolerance (the inverse of its weight, without the division).
+        for ((u, &x), &a) in self.w.iter_mut().zip(x).zip(&tol.abstol) {
+            *u = tol.reltol * x.abs() + a;
+        }
         self.row_tol.fill(0.0);
         for (&(i, j), &a) in self.pattern.iter().zip(&self.jac) {
-            let scaled = a.abs() / self.w[j];
+            let scaled = a.abs() * self.w[j];
             if scaled > self.row_tol[i] {
                 self.row_tol[i] = scaled;
             }
