@@ -63,6 +63,10 @@ pub struct AnalogSystem {
     /// dF/dx and dF/dx' entries. One tape, so that the Jacobian at the point whose residual
     /// Newton just computed reuses the work they share (exponentials, conditions).
     newton_tape: Tape,
+    /// Newton tape outputs of the terms of each residual (row `i`'s are
+    /// `terms[term_start[i]..term_start[i + 1]]`), for [`DaeSystem::residual_scale`].
+    terms: Vec<usize>,
+    term_start: Vec<usize>,
     /// Per pattern entry, the Newton tape outputs of dF/dx and dF/dx' (if nonzero).
     jac_dx: Vec<Option<usize>>,
     jac_ddot: Vec<Option<usize>>,
@@ -416,6 +420,20 @@ impl AnalogSystem {
         for &k in &order {
             nb.push(&residuals[k]);
         }
+        // Each row's terms, in the residual section: they are the row's own subexpressions
+        // (hash-consed onto its instructions), so they cost outputs, not work.
+        let mut terms = Vec::new();
+        let mut term_start = Vec::with_capacity(order.len() + 1);
+        let mut row_terms = Vec::new();
+        for &k in &order {
+            term_start.push(terms.len());
+            row_terms.clear();
+            residuals[k].terms(&mut row_terms);
+            for term in &row_terms {
+                terms.push(nb.push(term));
+            }
+        }
+        term_start.push(terms.len());
         let residual_section = nb.end_section();
         debug_assert_eq!(residual_section, RESIDUALS);
         let linear = residuals.iter().all(Sym::is_affine);
@@ -539,6 +557,8 @@ impl AnalogSystem {
             error_exempt,
             pattern,
             newton_tape: nb.finish(),
+            terms,
+            term_start,
             jac_dx,
             jac_ddot,
             outputs_tape: Tape::default(),
@@ -811,6 +831,17 @@ impl DaeSystem for AnalogSystem {
         for (i, o) in out.iter_mut().enumerate().take(self.names.len()) {
             *o = self.newton_tape.output(i);
         }
+    }
+
+    fn residual_scale(&self, out: &mut [f64]) -> bool {
+        for (i, o) in out.iter_mut().enumerate().take(self.names.len()) {
+            let terms = &self.terms[self.term_start[i]..self.term_start[i + 1]];
+            *o = terms
+                .iter()
+                .map(|&k| self.newton_tape.output(k).abs())
+                .fold(0.0, f64::max);
+        }
+        true
     }
 
     fn jacobian(&mut self, t: f64, x: &[f64], xdot: &[f64], alpha: f64, out: &mut [f64]) {

@@ -21,7 +21,7 @@ mod transient;
 mod tests;
 
 pub use error::SolveError;
-pub use linear::{DEFAULT_DENSE_MAX, DenseCounts, LinearOptions, LinearSolver};
+pub use linear::{DEFAULT_DENSE_MAX, LinearOptions, LinearSolver, PivotCounts};
 pub use newton::{ErrorNorm, Newton, NewtonOptions, NewtonReport, NonlinearProblem, Tolerances};
 pub use op::{OpOptions, OpReport, OpStrategy, operating_point};
 pub use transient::{Advance, Stats, Transient, TransientOptions};
@@ -84,6 +84,15 @@ pub trait DaeSystem {
     /// the exact Jacobian then lands on the solution, and needs no second iteration to confirm
     /// it. Systems that do not know say `false`.
     fn is_linear(&self) -> bool {
+        false
+    }
+
+    /// What each residual balances, at the last [`DaeSystem::residual`] evaluation: the
+    /// largest magnitude among its terms (the summands of its top-level sum; a current
+    /// balance's largest current). Newton judges a residual against `reltol` times this, as
+    /// SPICE judges a device's current against its own magnitude. `false`: the system does
+    /// not know, and the scale comes from the Jacobian instead.
+    fn residual_scale(&self, _out: &mut [f64]) -> bool {
         false
     }
 

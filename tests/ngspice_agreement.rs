@@ -295,3 +295,57 @@ fn current_source_and_inductor_cut_set_follows_the_closed_form() {
         }
     }
 }
+
+/// The benchmark's diode chain, three stages, at `--reltol 1e-2`: a loose tolerance must stay
+/// loose in what it allows, not let a junction run away. Judged on the Jacobian's scale
+/// (`|dI/dV| |V|`, 27 times a junction's current at 0.7 V), a stage's current balance could be
+/// off by a quarter of its current at every accepted point, and the run failed at 0.2 ms; on
+/// the scale of the currents it balances, it follows a tight run (here within 3 % of each
+/// stage's swing; pointwise, so the phase error of the loose steps counts).
+#[test]
+fn loose_tolerance_keeps_junction_currents_balanced() {
+    let path = PathBuf::from(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/benches/models/diode_chain.vhd"
+    ));
+    let loaded = load(&[path]).expect("model exists");
+    let options = ElabOptions {
+        top: "diode_chain".into(),
+        generics: vec![("n".into(), "3".into())],
+    };
+    let design =
+        elaborate(&loaded.sources, &loaded.files, &options).unwrap_or_else(|e| panic!("{e:?}"));
+    let probes: Vec<String> = ["v_1", "v_2", "v_3"].map(String::from).to_vec();
+    let run = |reltol: f64| {
+        let options = SimOptions {
+            stop: 1e-3,
+            reltol,
+            probes: probes.clone(),
+            ..SimOptions::default()
+        };
+        let result = simulate(&design, &options, &mut |_| {}).expect("the chain simulates");
+        assert_eq!(result.outcome, Outcome::Finished, "reltol {reltol}");
+        result
+    };
+    let (loose, tight) = (run(1e-2), run(1e-6));
+    for probe in &probes {
+        let reference = tight.waveforms.column(probe).expect("recorded");
+        let waves = Waves {
+            times: tight.waveforms.times.clone(),
+            columns: vec![reference.values.clone()],
+        };
+        let swing = reference.values.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let column = loose.waveforms.column(probe).expect("recorded");
+        let worst = loose
+            .waveforms
+            .times
+            .iter()
+            .zip(&column.values)
+            .map(|(&t, &v)| (v - waves.at(0, t)).abs())
+            .fold(0.0, f64::max);
+        assert!(
+            worst < 0.03 * swing,
+            "{probe}: {worst} V off the tight run (swing {swing} V)"
+        );
+    }
+}

@@ -318,6 +318,19 @@ impl Sym {
         }
     }
 
+    /// The summands of this expression's top-level sum, signs dropped: `a - (b + -c)` gives
+    /// `a`, `b`, `c` (what a balance equation balances).
+    pub fn terms<'a>(&'a self, out: &mut Vec<&'a Sym>) {
+        match self {
+            Sym::Bin(Bin::Add | Bin::Sub, a, b) => {
+                a.terms(out);
+                b.terms(out);
+            }
+            Sym::Un(Un::Neg, a) => a.terms(out),
+            other => out.push(other),
+        }
+    }
+
     /// Calls `f` on every node, this one first.
     pub fn visit(&self, f: &mut impl FnMut(&Sym)) {
         f(self);

@@ -5,20 +5,19 @@
 //! where this loop takes 0.3 us) that later factorisations replay, with the same pivots, over
 //! the structural entries only (`dense`); large ones use faer's simplicial sparse LU (left-looking,
 //! partial pivoting, COLAMD column order), which suits circuit matrices: they are very sparse
-//! and produce little fill, so supernodes would not pay (the same choice KLU makes). The column
-//! ordering is computed once per pattern; each `factor` scatters the values into preallocated
-//! CSC storage and refactors numerically.
-//! Scratch space for factor and solve is a `MemBuffer` sized at construction, so the steady state
-//! does not allocate (the simplicial factor's `Vec`s keep their capacity between refactorisations
-//! and only grow if a different pivot sequence produces more fill).
+//! and produce little fill, so supernodes would not pay (the same choice KLU makes). Its pivots
+//! and factor patterns then serve refactorisations that search nothing (`sparse`), as KLU's
+//! `klu_refactor` does. The column ordering is computed once per pattern.
+//! faer's scratch space is a `MemBuffer` sized at construction, so the steady state does not
+//! allocate (the factors' `Vec`s keep their capacity between factorisations and only grow if
+//! a different pivot sequence produces more fill).
 
 use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
 use faer::sparse::linalg::lu::simplicial;
-use faer::{MatMut, Par};
 
 use super::SolveError;
 use dense::Dense;
-pub use dense::DenseCounts;
+pub use dense::PivotCounts;
 use sparse::Sparse;
 
 mod dense;
@@ -102,7 +101,6 @@ impl LinearSolver {
                 index: k,
             });
         }
-        let par = Par::Seq;
         let (backend, req) = if n <= options.dense_max {
             (
                 Backend::Dense(Box::new(Dense::new(n, pattern))),
@@ -110,10 +108,7 @@ impl LinearSolver {
             )
         } else {
             let sparse = Sparse::new(n, pattern)?;
-            let req = StackReq::any_of(&[
-                simplicial::factorize_simplicial_numeric_lu_scratch::<usize, f64>(n, n),
-                simplicial::solve_in_place_scratch::<usize, f64>(n, 1, par),
-            ]);
+            let req = simplicial::factorize_simplicial_numeric_lu_scratch::<usize, f64>(n, n);
             (Backend::Sparse(Box::new(sparse)), req)
         };
         let mem = MemBuffer::try_new(req).map_err(|_| SolveError::InvalidSystem {
@@ -153,12 +148,12 @@ impl LinearSolver {
         self.n == 0
     }
 
-    /// How often the dense path searched for pivots and how often it reused them (`None` on
-    /// the sparse path).
-    pub fn dense_counts(&self) -> Option<DenseCounts> {
+    /// How often the factorisations searched for pivots and how often they reused the last
+    /// ones.
+    pub fn pivot_counts(&self) -> PivotCounts {
         match &self.backend {
-            Backend::Dense(d) => Some(d.counts),
-            Backend::Sparse(_) => None,
+            Backend::Dense(d) => d.counts,
+            Backend::Sparse(s) => s.counts,
         }
     }
 
@@ -197,20 +192,21 @@ impl LinearSolver {
                 index: values.len(),
             });
         }
-        if let Some(k) = values.iter().position(|v| !v.is_finite()) {
-            let (row, column) = self.pattern[k];
+        if self.n == 0 {
+            // Nothing to factor (and row chunks of width 0 do not exist).
+            self.factored = true;
+            return Ok(());
+        }
+        if !self.equilibrate(values, diag_shift, units) {
+            // Only now look for the culprit: the test rides along the scaling pass.
+            let k = values.iter().position(|v| !v.is_finite()).unwrap_or(0);
+            let (row, column) = self.pattern.get(k).copied().unwrap_or((0, 0));
             return Err(SolveError::NonFiniteJacobian {
                 t: 0.0,
                 row,
                 column,
             });
         }
-        if self.n == 0 {
-            // Nothing to factor (and row chunks of width 0 do not exist).
-            self.factored = true;
-            return Ok(());
-        }
-        self.equilibrate(values, diag_shift, units);
         let (values, diag) = (
             &self.scaled[..],
             (diag_shift != 0.0).then_some(&self.diag[..]),
@@ -246,8 +242,8 @@ impl LinearSolver {
     /// Fills `col_scale`, `row_scale`, `scaled` and `diag` for `values` plus `diag_shift`. A
     /// row's largest entry is taken over its contributions before duplicates are summed:
     /// cheaper, and any power of two is an exact scaling, so an estimate costs nothing in
-    /// accuracy.
-    fn equilibrate(&mut self, values: &[f64], diag_shift: f64, units: Option<&[f64]>) {
+    /// accuracy. False when some value is not finite.
+    fn equilibrate(&mut self, values: &[f64], diag_shift: f64, units: Option<&[f64]>) -> bool {
         match units {
             Some(units) if units.len() == self.n => {
                 for (c, &u) in self.col_scale.iter_mut().zip(units) {
@@ -260,7 +256,9 @@ impl LinearSolver {
         for (r, &c) in row.iter_mut().zip(col) {
             *r = (diag_shift * c).abs();
         }
+        let mut finite = true;
         for (x, (&(r, c), &v)) in self.scaled.iter_mut().zip(self.pattern.iter().zip(values)) {
+            finite &= v.is_finite();
             *x = v * col[c];
             row[r] = row[r].max(x.abs());
         }
@@ -273,6 +271,7 @@ impl LinearSolver {
         for ((d, &s), &c) in self.diag.iter_mut().zip(row.iter()).zip(col) {
             *d = diag_shift * s * c;
         }
+        finite
     }
 
     /// Solves `A x = rhs` in place with the last factorisation.
@@ -290,10 +289,7 @@ impl LinearSolver {
         match &mut self.backend {
             _ if n == 0 => {}
             Backend::Dense(d) => d.solve(rhs),
-            Backend::Sparse(s) => {
-                let stack = MemStack::new(&mut self.mem);
-                s.solve(MatMut::from_column_major_slice_mut(rhs, n, 1), stack);
-            }
+            Backend::Sparse(s) => s.solve(rhs),
         }
         for (x, &c) in rhs.iter_mut().zip(&self.col_scale) {
             *x *= c;

@@ -108,6 +108,12 @@ pub trait NonlinearProblem {
     fn residual(&mut self, x: &[f64], out: &mut [f64]);
     /// `dG/dx` at each pattern entry, in pattern order.
     fn jacobian(&mut self, x: &[f64], out: &mut [f64]);
+    /// What each residual balances at the last [`NonlinearProblem::residual`] evaluation (see
+    /// [`DaeSystem::residual_scale`](crate::solver::DaeSystem::residual_scale)); `false` when
+    /// unknown.
+    fn residual_scale(&self, _out: &mut [f64]) -> bool {
+        false
+    }
     /// A conductance added to every diagonal entry of the Jacobian (gmin stepping).
     fn diagonal_shift(&self) -> f64 {
         0.0
@@ -276,19 +282,44 @@ impl Newton {
         }
     }
 
-    /// True when every `|r_i|` at `x` is within `max_j |J_ij| (reltol |x_j| + abstol_j)`, with
-    /// the Jacobian last factored (a scale, so a stale one serves). `r` must be the residual
-    /// at `x`.
-    fn residual_within_tolerance(&mut self, x: &[f64], tol: &Tolerances) -> bool {
-        // Each unknown's tolerance (the inverse of its weight, without the division).
-        for ((u, &x), &a) in self.w.iter_mut().zip(x).zip(&tol.abstol) {
-            *u = tol.reltol * x.abs() + a;
-        }
-        self.row_tol.fill(0.0);
-        for (&(i, j), &a) in self.pattern.iter().zip(&self.jac) {
-            let scaled = a.abs() * self.w[j];
-            if scaled > self.row_tol[i] {
-                self.row_tol[i] = scaled;
+    /// True when every `|r_i|` at `x` is within its equation's tolerance: `reltol` times what
+    /// the equation balances (its largest term, when the problem knows it) plus
+    /// `max_j |J_ij| abstol_j`; without the terms, `max_j |J_ij| (reltol |x_j| + abstol_j)`.
+    /// The Jacobian is the one last factored (a scale, so a stale one serves). `r` must be the
+    /// residual at `x`, the problem's last evaluation.
+    ///
+    /// The terms matter on a junction: `|J_ij| |x_j|` of a diode's current is `I v / vt`, 27
+    /// times the current at 0.7 V, so the Jacobian's scale let a current balance be off by a
+    /// quarter of its current at `reltol` 1e-2, and the junction ran away from one accepted
+    /// point to the next (the diode chain at `--reltol 1e-2`).
+    fn residual_within_tolerance<P: NonlinearProblem>(
+        &mut self,
+        p: &P,
+        x: &[f64],
+        tol: &Tolerances,
+    ) -> bool {
+        let terms = p.residual_scale(&mut self.row_tol);
+        if terms {
+            for t in self.row_tol.iter_mut() {
+                *t *= tol.reltol;
+            }
+            for (&(i, j), &a) in self.pattern.iter().zip(&self.jac) {
+                let scaled = a.abs() * tol.abstol[j];
+                if scaled > self.row_tol[i] {
+                    self.row_tol[i] = scaled;
+                }
+            }
+        } else {
+            // Each unknown's tolerance (the inverse of its weight, without the division).
+            for ((u, &x), &a) in self.w.iter_mut().zip(x).zip(&tol.abstol) {
+                *u = tol.reltol * x.abs() + a;
+            }
+            self.row_tol.fill(0.0);
+            for (&(i, j), &a) in self.pattern.iter().zip(&self.jac) {
+                let scaled = a.abs() * self.w[j];
+                if scaled > self.row_tol[i] {
+                    self.row_tol[i] = scaled;
+                }
             }
         }
         self.r.iter().zip(&self.row_tol).all(|(r, t)| r.abs() <= *t)
@@ -296,8 +327,14 @@ impl Newton {
 
     /// Whether the residual (already evaluated at `x`) agrees with a small update, when the
     /// options ask for that check.
-    fn residual_agrees(&mut self, x: &[f64], tol: &Tolerances, opts: &NewtonOptions) -> bool {
-        !opts.check_residual || self.residual_within_tolerance(x, tol)
+    fn residual_agrees<P: NonlinearProblem>(
+        &mut self,
+        p: &P,
+        x: &[f64],
+        tol: &Tolerances,
+        opts: &NewtonOptions,
+    ) -> bool {
+        !opts.check_residual || self.residual_within_tolerance(p, x, tol)
     }
 
     /// The equation whose residual is the most tolerances off (after a failed
@@ -313,12 +350,10 @@ impl Newton {
         (worst.0, self.r[worst.0])
     }
 
-    /// Factorisations that searched for pivots (the dense path reuses the last pivots while
-    /// they hold; the sparse path searches every time), failed solves included.
+    /// Factorisations that searched for pivots (both paths reuse the last pivots while they
+    /// hold), failed solves included.
     pub fn pivot_searches(&self) -> usize {
-        self.lin
-            .dense_counts()
-            .map_or(self.totals.factorizations, |c| c.searched)
+        self.lin.pivot_counts().searched
     }
 
     /// Work done by every `solve` since construction, failed ones included.
@@ -362,20 +397,28 @@ impl Newton {
         }
         Self::eval(p, x, &mut self.r, t, rep)?;
         let mut prev_norm = f64::INFINITY;
+        // The iteration whose iterate the factorisation was computed at (0: an earlier call's).
+        let mut factored_at = 0;
         for iter in 1..=opts.max_iter {
             if !self.jac_valid || !opts.reuse_jacobian {
                 self.refactor(p, x, tol, t, rep)?;
+                factored_at = iter;
             }
             let stale = rep.factorizations == 0;
             let scale = if stale { opts.stale_scale } else { 1.0 };
             let mut norm = self.step(x, tol, t, scale)?;
-            // A stale matrix contracts linearly: at this rate, the iterations left would not
-            // bring the update within tolerance (or it does not contract at all). Refresh
-            // before judging the iteration, rather than fail the step and redo it.
+            // A matrix factored at another point (an earlier call's, or an earlier iterate of
+            // this one) contracts linearly: at this rate, the iterations left would not bring
+            // the update within tolerance, or it does not contract at all. Refresh before
+            // judging the iteration, rather than fail the step and redo it (or, damped, walk
+            // thirty iterations around a junction's knee on the slope of the first one). An
+            // affine problem's matrix is the same everywhere.
             let rate = norm / prev_norm;
             let short = norm * rate.powi((opts.max_iter - iter) as i32) > opts.tol;
-            if stale && (rate > opts.max_rate || short) {
+            let moved = stale || (factored_at != iter && !opts.linear);
+            if moved && (rate > opts.max_rate || short) {
                 self.refactor(p, x, tol, t, rep)?;
+                factored_at = iter;
                 norm = self.step(x, tol, t, 1.0)?;
             }
             rep.iterations = iter;
@@ -449,8 +492,17 @@ impl Newton {
                 && !damped
                 && norm > 0.5 * prev_norm
                 && norm2(&self.r) > 0.5 * before;
-            if (ends || floor) && self.residual_agrees(x, tol, opts) {
-                return Ok(());
+            if ends || floor {
+                if self.residual_agrees(p, x, tol, opts) {
+                    return Ok(());
+                }
+                // The update is within tolerance and the residual is not: a matrix from
+                // another point walks the rest of the way linearly (a junction's current must
+                // meet reltol of itself, its voltage only reltol of the voltage, about 25
+                // times looser at 0.7 V); a fresh one gets there in one step.
+                if opts.reuse_jacobian && !opts.linear && factored_at != iter {
+                    self.jac_valid = false;
+                }
             }
             if let Some(rt) = opts.residual_tol
                 && worst(&self.r).1 <= rt
@@ -460,7 +512,7 @@ impl Newton {
             prev_norm = norm;
         }
         let (worst_equation, residual) = if opts.check_residual {
-            self.residual_within_tolerance(x, tol);
+            self.residual_within_tolerance(p, x, tol);
             self.worst_scaled()
         } else {
             worst(&self.r)

@@ -72,6 +72,9 @@ impl<S: DaeSystem + ?Sized> NonlinearProblem for OpProblem<'_, S> {
     fn diagonal_shift(&self) -> f64 {
         self.gmin
     }
+    fn residual_scale(&self, out: &mut [f64]) -> bool {
+        self.sys.residual_scale(out)
+    }
 }
 
 /// Solves for the operating point at time `t`, starting from (and returning in) `x`. On error

@@ -48,7 +48,7 @@ pub(super) struct Dense {
     /// other order before searching turns 1 202 searches into 2.
     other: Compiled,
     /// Full factorisations (pivot searches) and refactorisations with reused pivots.
-    pub(super) counts: DenseCounts,
+    pub(super) counts: PivotCounts,
 }
 
 /// What a pivot search compiles, kept for the previous order in [`Dense::other`].
@@ -85,9 +85,10 @@ impl Compiled {
     }
 }
 
-/// How a dense solver's factorisations went, for tests and benchmarks.
+/// How a solver's factorisations went (pivots searched for, or reused by a refactorisation),
+/// for tests and benchmarks.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct DenseCounts {
+pub struct PivotCounts {
     pub searched: usize,
     pub reused: usize,
 }
@@ -152,7 +153,7 @@ impl Dense {
             fill: vec![false; n * n],
             position: vec![0; n],
             other: Compiled::empty(n, pattern.len()),
-            counts: DenseCounts::default(),
+            counts: PivotCounts::default(),
         }
     }
 

@@ -224,34 +224,69 @@ fn fresh_solve(
 proptest! {
     /// A refactorisation (pivots reused from the first value set, or searched anew when they
     /// no longer hold) solves the second system as a fresh factorisation does, to 1e-9 of the
-    /// residual scale, on well-conditioned cases.
+    /// residual scale, on well-conditioned cases; on both paths.
     #[test]
     fn refactorisation_matches_a_fresh_factorisation((n, pattern, v1, v2, b) in refactor_case()) {
-        let mut lin = LinearSolver::new(n, &pattern, dense()).expect("valid");
-        // Singular or not, the first factorisation leaves a state the second must not trust.
-        let _ = lin.factor(&v1, 0.0);
-        let Some(expected) = fresh_solve(n, &pattern, &v2, &b) else {
-            prop_assert!(lin.factor(&v2, 0.0).is_err(), "a fresh solver finds it singular");
-            return Ok(());
-        };
-        // Residual check of the reference: skip ill-conditioned draws.
-        let mut a = vec![0.0; n * n];
-        for (&(r, c), &v) in pattern.iter().zip(&v2) {
-            a[r * n + c] += v;
+        for opts in [dense(), sparse()] {
+            refactor_and_check(n, &pattern, &v1, &v2, &b, opts)?;
         }
-        let scale = expected.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-        prop_assume!(scale < 1e6);
-        lin.factor(&v2, 0.0).expect("a fresh solver factors it");
-        let mut x = b.clone();
+    }
+}
+
+fn refactor_and_check(
+    n: usize,
+    pattern: &[(usize, usize)],
+    v1: &[f64],
+    v2: &[f64],
+    b: &[f64],
+    opts: LinearOptions,
+) -> Result<(), TestCaseError> {
+    let mut lin = LinearSolver::new(n, pattern, opts).expect("valid");
+    // Singular or not, the first factorisation leaves a state the second must not trust.
+    let _ = lin.factor(v1, 0.0);
+    let Some(expected) = fresh_solve(n, pattern, v2, b) else {
+        if lin.is_dense() {
+            prop_assert!(
+                lin.factor(v2, 0.0).is_err(),
+                "a fresh solver finds it singular"
+            );
+        }
+        // The sparse path's column order differs: its verdict on a matrix the dense path
+        // calls singular may too.
+        return Ok(());
+    };
+    // Residual check of the reference: skip ill-conditioned draws.
+    let mut a = vec![0.0; n * n];
+    for (&(r, c), &v) in pattern.iter().zip(v2) {
+        a[r * n + c] += v;
+    }
+    let scale = expected.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    prop_assume!(scale < 1e6);
+    // Twice: the second reuses the pivots of the first whenever they still hold.
+    for _ in 0..2 {
+        lin.factor(v2, 0.0).expect("a fresh solver factors it");
+        let mut x = b.to_vec();
         lin.solve_in_place(&mut x).expect("factored");
         for r in 0..n {
             let ax: f64 = (0..n).map(|c| a[r * n + c] * x[c]).sum();
-            prop_assert!((ax - b[r]).abs() <= 1e-9 * scale.max(1.0), "row {}: {} vs {}", r, ax, b[r]);
+            prop_assert!(
+                (ax - b[r]).abs() <= 1e-9 * scale.max(1.0),
+                "row {}: {} vs {} (dense: {})",
+                r,
+                ax,
+                b[r],
+                lin.is_dense()
+            );
         }
-        let counts = lin.dense_counts().expect("dense path");
-        // Both factorisations counted (the pattern holds the diagonal: no empty row).
-        prop_assert_eq!(counts.searched + counts.reused, 2);
     }
+    let counts = lin.pivot_counts();
+    // Every factorisation counted (the pattern holds the diagonal: no empty row).
+    prop_assert_eq!(counts.searched + counts.reused, 3);
+    prop_assert!(
+        counts.reused >= 1,
+        "the third factorisation reuses the second's pivots"
+    );
+    Ok(())
 }
 
 /// A Newton matrix whose values drift a little keeps its pivots: one search, then
@@ -284,14 +319,14 @@ fn pivots_are_reused_while_they_hold() {
         let drift: Vec<f64> = base.iter().map(|v| v * (1.0 + 0.01 * k as f64)).collect();
         solve(&mut lin, &drift);
     }
-    let counts = lin.dense_counts().expect("dense path");
+    let counts = lin.pivot_counts();
     assert_eq!((counts.searched, counts.reused), (1, 9));
     // Row 1's pivot in column 0 becomes 1e-6 next to row 0's 1: below the threshold.
     let mut swapped = base;
     swapped[0] = 1.0;
     swapped[2] = 1e-6;
     solve(&mut lin, &swapped);
-    let counts = lin.dense_counts().expect("dense path");
+    let counts = lin.pivot_counts();
     assert_eq!((counts.searched, counts.reused), (2, 9));
     // A switching circuit alternates between the two: each state's order is kept and tried,
     // so no further search.
@@ -299,7 +334,7 @@ fn pivots_are_reused_while_they_hold() {
         solve(&mut lin, &base);
         solve(&mut lin, &swapped);
     }
-    let counts = lin.dense_counts().expect("dense path");
+    let counts = lin.pivot_counts();
     assert_eq!((counts.searched, counts.reused), (2, 19));
 }
 

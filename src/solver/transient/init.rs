@@ -70,6 +70,10 @@ impl<S: DaeSystem + ?Sized> NonlinearProblem for EulerProblem<'_, S> {
         self.sys
             .jacobian(self.t_end, x, self.xdot, 1.0 / self.h, out);
     }
+
+    fn residual_scale(&self, out: &mut [f64]) -> bool {
+        self.sys.residual_scale(out)
+    }
 }
 
 struct InitProblem<'a, S: ?Sized> {
@@ -128,6 +132,10 @@ impl<S: DaeSystem + ?Sized> NonlinearProblem for InitProblem<'_, S> {
         self.assemble(z);
         self.sys
             .jacobian_parts(self.t, self.x, self.xdot, self.diff, out, self.jac0);
+    }
+
+    fn residual_scale(&self, out: &mut [f64]) -> bool {
+        self.sys.residual_scale(out)
     }
 }
 

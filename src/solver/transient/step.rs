@@ -50,6 +50,9 @@ impl<S: DaeSystem + ?Sized> NonlinearProblem for Corrector<'_, S> {
         self.derivative(x);
         self.sys.step_limit(self.t, x, self.xdot, dx)
     }
+    fn residual_scale(&self, out: &mut [f64]) -> bool {
+        self.sys.residual_scale(out)
+    }
 }
 
 /// Lagrange weights at `t` for nodes `tau` (`l_j(t)`), written into `out[..tau.len()]`.
