@@ -63,6 +63,10 @@ pub struct AnalysedUnit {
     pub kind: UnitKind,
     pub file: FileId,
     pub span: Span,
+    /// For an architecture its entity, for a package body its package (indexes into
+    /// `units`): the one declared before it when several share the name (a folder of
+    /// variants), else the last.
+    pub primary: Option<usize>,
     /// Units analysed before this one because it needs them (indexes into `units`).
     pub depends_on: Vec<usize>,
     pub errors: Vec<AnalysisError>,
@@ -113,6 +117,29 @@ impl Analysis {
     /// Every diagnostic, unit by unit in file order.
     pub fn errors(&self) -> impl Iterator<Item = &AnalysisError> {
         self.units.iter().flat_map(|u| u.errors.iter())
+    }
+
+    /// The units elaborating unit `start` can reach: what it depends on, the secondary units
+    /// of each primary unit reached (an entity's architectures, a package's body), and so
+    /// on; `start` included, in index order.
+    pub fn reached_from(&self, start: usize) -> Vec<usize> {
+        let mut secondaries: FxHashMap<usize, Vec<usize>> = FxHashMap::default();
+        for (u, unit) in self.units.iter().enumerate() {
+            if let Some(p) = unit.primary {
+                secondaries.entry(p).or_default().push(u);
+            }
+        }
+        let mut seen = vec![false; self.units.len()];
+        let mut stack = vec![start];
+        while let Some(u) = stack.pop() {
+            if u >= seen.len() || seen[u] {
+                continue;
+            }
+            seen[u] = true;
+            stack.extend(&self.units[u].depends_on);
+            stack.extend(secondaries.get(&u).into_iter().flatten());
+        }
+        (0..seen.len()).filter(|&u| seen[u]).collect()
     }
 
     pub fn decl(&self, id: DeclId) -> &Declaration {

@@ -1,20 +1,24 @@
-//! Analysis and elaboration: parsed design files -> one flat [`Design`].
+//! Elaboration: parsed and analysed design files -> one flat [`Design`].
 //!
 //! **Takes** the parsed files of a compilation (user files in library `work`, the bundled
-//! stdlib in `std` and `ieee`, as recorded in the [`SourceMap`]) and the name of the top
-//! entity with generic overrides. **Gives** a [`Design`] or every error found, each an
-//! [`ElabError`] with the span it is about and a help line.
+//! stdlib in `std` and `ieee`, as recorded in the [`SourceMap`]), their [`Analysis`], and the
+//! name of the top entity with generic overrides. **Gives** a [`Design`] or every error found,
+//! each an [`ElabError`] with the span it is about and a help line.
 //!
-//! Analysis and elaboration are one walk: starting at the top entity, each instance's
-//! declarations are resolved in a [`scope::Scope`] and lowered at once (constants and
-//! generics fold to values, objects get their ids), so no intermediate annotated tree exists.
-//! Packages are elaborated once, on first `use`.
+//! The units come from the analysis's unit table (which architecture belongs to which entity,
+//! which body to which package). Inside a unit, name lookup and lowering are still one walk:
+//! starting at the top entity, each instance's declarations are resolved in a
+//! [`scope::Scope`] and lowered at once (constants and generics fold to values, objects get
+//! their ids), so no intermediate annotated tree exists. Packages are elaborated once, on
+//! first `use`.
 //!
-//! May use `ast`, `source`, `design`, `diagnostics`. Never touches the solver or the kernel.
+//! May use `analysis`, `ast`, `source`, `design`, `diagnostics`. Never touches the solver or
+//! the kernel.
 
 use rustc_hash::{FxHashMap, FxHashSet};
 use std::rc::Rc;
 
+use crate::analysis::{Analysis, analyse};
 use crate::ast::{ContextItem, DesignFile, ExprKind};
 use crate::design::{Design, Expr, QuantityId, SignalId};
 use crate::source::{FileId, SourceMap, Span};
@@ -62,13 +66,24 @@ pub struct ElabOptions {
     pub generics: Vec<(String, String)>,
 }
 
-/// Elaborates `options.top` from `files`.
+/// Analyses `files` and elaborates `options.top` from them (analysis errors are not
+/// reported here: [`crate::analysis::analyse`] and [`elaborate_analysed`] for that).
 pub fn elaborate(
     sources: &SourceMap,
     files: &[(FileId, DesignFile)],
     options: &ElabOptions,
 ) -> Result<Design, Vec<ElabError>> {
-    let mut elab = Elab::new(sources, files);
+    elaborate_analysed(&analyse(sources, files), sources, files, options)
+}
+
+/// Elaborates `options.top` from `files`, which `analysis` analysed.
+pub fn elaborate_analysed(
+    analysis: &Analysis,
+    sources: &SourceMap,
+    files: &[(FileId, DesignFile)],
+    options: &ElabOptions,
+) -> Result<Design, Vec<ElabError>> {
+    let mut elab = Elab::new(analysis, sources, files);
     elab.top(options);
     if elab.errors.is_empty() {
         let mut design = elab.design;
@@ -80,13 +95,13 @@ pub fn elaborate(
 }
 
 /// Entities of library `work` that no architecture instantiates: the candidates for `--top`.
-pub fn find_tops(sources: &SourceMap, files: &[(FileId, DesignFile)]) -> Vec<String> {
-    Library::index(sources, files).tops()
+pub fn find_tops(analysis: &Analysis, files: &[(FileId, DesignFile)]) -> Vec<String> {
+    Library::index(analysis, files).tops()
 }
 
 /// The candidates of [`find_tops`] with what keeps each from being elaborated alone.
-pub fn top_candidates(sources: &SourceMap, files: &[(FileId, DesignFile)]) -> Vec<TopCandidate> {
-    candidates::candidates(&Library::index(sources, files))
+pub fn top_candidates(analysis: &Analysis, files: &[(FileId, DesignFile)]) -> Vec<TopCandidate> {
+    candidates::candidates(&Library::index(analysis, files))
 }
 
 /// The library and the context clauses as text (`work;l:ieee;u:ieee.math_real.all;`), or
@@ -174,10 +189,14 @@ struct Elab<'a> {
 }
 
 impl<'a> Elab<'a> {
-    fn new(sources: &'a SourceMap, files: &'a [(FileId, DesignFile)]) -> Elab<'a> {
+    fn new(
+        analysis: &Analysis,
+        sources: &'a SourceMap,
+        files: &'a [(FileId, DesignFile)],
+    ) -> Elab<'a> {
         Elab {
             sources,
-            lib: Library::index(sources, files),
+            lib: Library::index(analysis, files),
             design: Design::default(),
             errors: Vec::new(),
             packages: FxHashMap::default(),
@@ -371,7 +390,7 @@ impl<'a> Elab<'a> {
             return Err(self.error(err));
         }
         let stdlib = matches!(key.0.as_str(), "std" | "ieee");
-        let body = self.lib.bodies.get(&key).cloned();
+        let body = self.lib.bodies.get(&unit.index).cloned();
         let saved = (
             self.quiet,
             self.native_names.take(),

@@ -309,3 +309,26 @@ fn op_prints_the_quiescent_point_and_dae_the_equations() {
         .success()
         .stdout(contains("rc.vhd:"));
 }
+
+/// Every unit of every file given is analysed before the top is elaborated, as a VHDL tool
+/// analyses each file first: an error in a package the top never uses fails the run, with
+/// its location, and nothing is simulated.
+#[test]
+fn an_analysis_error_in_a_unit_the_top_does_not_reach_fails_the_run() {
+    let dir = tempfile::tempdir().expect("temporary directory");
+    let out = dir.path().join("waves.csv");
+    vams()
+        .args([
+            "run",
+            "tests/run/rc.vhd",
+            "tests/analysis/unused_package.vhd",
+        ])
+        .args(["--top", "rc", "-o"])
+        .arg(&out)
+        .assert()
+        .code(1)
+        .stderr(contains("`vmaxx` is not declared"))
+        .stderr(contains("unused_package.vhd:4:28"))
+        .stderr(contains("1 analysis error(s)"));
+    assert!(!out.exists(), "nothing was simulated");
+}

@@ -167,3 +167,33 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_rlc_elimination ... ok"))
         .stdout(contains("13 passed, 0 failed"));
 }
+
+/// A testbench fails with the analysis errors of the units it reaches (here a package it
+/// uses), and only with those: another testbench beside it runs and passes.
+#[test]
+fn a_testbench_reaching_a_unit_with_an_analysis_error_fails_with_it() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("limits.vhd"),
+        "package limits is\n  constant vmax : real := 16.0;\n  constant vmin : real := -vmaxx;\nend package limits;\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.path().join("tb_uses.vhd"),
+        "-- vams: stop 1 ms\nuse work.limits.all;\nentity tb_uses is end;\narchitecture a of tb_uses is begin end;\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.path().join("tb_alone.vhd"),
+        "-- vams: stop 1 ms\nentity tb_alone is end;\narchitecture a of tb_alone is begin end;\n",
+    )
+    .unwrap();
+    vams()
+        .arg("test")
+        .arg(dir.path())
+        .assert()
+        .code(1)
+        .stdout(contains("test tb_alone ... ok"))
+        .stdout(contains("test tb_uses ... FAILED"))
+        .stdout(contains("`vmaxx` is not declared"));
+}

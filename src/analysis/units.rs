@@ -90,6 +90,7 @@ impl<'a> Analyzer<'a> {
                 kind,
                 file: *file,
                 span: du.span,
+                primary: None,
                 depends_on: Vec::new(),
                 errors: Vec::new(),
                 references: Vec::new(),
@@ -100,6 +101,14 @@ impl<'a> Analyzer<'a> {
                 incomplete: false,
                 scopes: Vec::new(),
             });
+        }
+        for (u, (library, _, du)) in src.iter().enumerate() {
+            let name = match &du.unit {
+                LibraryUnit::Architecture(a) => &a.entity.name,
+                LibraryUnit::PackageBody(b) => &b.name.name,
+                _ => continue,
+            };
+            out.units[u].primary = primary_of(&primaries, library, name, u);
         }
         let ambiguous = DeclId(0);
         out.decls.push(Declaration {
@@ -757,12 +766,7 @@ impl<'a> Analyzer<'a> {
     /// before it in file order (a file's architecture belongs to the entity above it, as when
     /// files are analysed in order), else the last of all.
     pub fn primary(&self, lib: &str, name: &str, before: usize) -> Option<usize> {
-        let all = self.primaries.get(&(lib.to_string(), name.to_string()))?;
-        all.iter()
-            .rev()
-            .find(|&&p| p < before)
-            .or(all.last())
-            .copied()
+        primary_of(&self.primaries, lib, name, before)
     }
 
     pub fn error(&mut self, e: AnalysisError) {
@@ -857,4 +861,14 @@ fn entity_instances<'e>(stmts: &'e [ConcStmt], f: &mut impl FnMut(&'e Expr)) {
             _ => {}
         }
     }
+}
+
+/// The primary unit `lib.name` declared last before unit `before`, else the last of them.
+fn primary_of(primaries: &UnitMap, lib: &str, name: &str, before: usize) -> Option<usize> {
+    let all = primaries.get(&(lib.to_string(), name.to_string()))?;
+    all.iter()
+        .rev()
+        .find(|&&p| p < before)
+        .or(all.last())
+        .copied()
 }

@@ -19,9 +19,9 @@ use clap::Args;
 use miette::Report;
 
 use crate::analog::AnalogSystem;
-use crate::analysis::analyse;
+use crate::analysis::{Analysis, analyse};
 use crate::diagnostics::Located;
-use crate::elaborate::{ElabOptions, TopCandidate, elaborate, top_candidates};
+use crate::elaborate::{ElabOptions, TopCandidate, elaborate_analysed, top_candidates};
 use crate::source::Span;
 
 use super::error::CliError;
@@ -98,8 +98,8 @@ pub fn run(args: &CheckArgs) -> Result<(), Report> {
             tally.analysis += tally.print(&unit.errors, &loaded, args.max_errors);
         }
         tally.analysed_spans = analysis.errors().map(|e| e.primary_span()).collect();
-        for candidate in top_candidates(&loaded.sources, &loaded.files) {
-            check_top(&candidate, &loaded, args.max_errors, &mut tally);
+        for candidate in top_candidates(&analysis, &loaded.files) {
+            check_top(&candidate, &analysis, &loaded, args.max_errors, &mut tally);
         }
     } else {
         eprintln!("note: nothing was elaborated because of the syntax errors");
@@ -112,7 +112,13 @@ pub fn run(args: &CheckArgs) -> Result<(), Report> {
 }
 
 /// Elaborates one candidate and builds its analog system, counting and printing the errors.
-fn check_top(top: &TopCandidate, loaded: &Loaded, max: usize, tally: &mut Tally) {
+fn check_top(
+    top: &TopCandidate,
+    analysis: &Analysis,
+    loaded: &Loaded,
+    max: usize,
+    tally: &mut Tally,
+) {
     if !top.can_elaborate() {
         eprintln!(
             "note: `{}` is not elaborated: no default for generic(s) {}; it is analysed, and \
@@ -127,7 +133,7 @@ fn check_top(top: &TopCandidate, loaded: &Loaded, max: usize, tally: &mut Tally)
         generics: Vec::new(),
     };
     tally.elaborated += 1;
-    let design = match elaborate(&loaded.sources, &loaded.files, &options) {
+    let design = match elaborate_analysed(analysis, &loaded.sources, &loaded.files, &options) {
         Ok(design) => design,
         Err(errors) => {
             tally.elaboration += tally.print(&errors, loaded, max);

@@ -1,13 +1,15 @@
 //! What `run`, `op` and `dae` share: the design arguments (sources, `--top`, generics) and the
-//! way from them to an elaborated [`Design`], printing each stage's diagnostics on the way.
+//! way from them to an elaborated [`Design`] (parse, analyse every unit, elaborate the top),
+//! printing each stage's diagnostics on the way.
 
 use std::path::PathBuf;
 
 use clap::Args;
 use miette::Report;
 
+use crate::analysis::analyse;
 use crate::design::Design;
-use crate::elaborate::{ElabOptions, elaborate, find_tops};
+use crate::elaborate::{ElabOptions, elaborate_analysed, find_tops};
 
 use super::error::CliError;
 use super::load::{Loaded, load};
@@ -65,22 +67,37 @@ pub fn compile(args: &DesignArgs) -> Result<Compiled, Report> {
         }
         .into());
     }
+    // Every unit of every file is analysed, as a VHDL tool analyses each file before it
+    // elaborates: an error in a unit the top does not reach still fails the run.
+    let analysis = analyse(&loaded.sources, &loaded.files);
+    let errors: Vec<_> = analysis.errors().collect();
+    if !errors.is_empty() {
+        for e in &errors {
+            eprint!("{}", render_located(*e, &loaded.sources));
+        }
+        return Err(CliError::Analysis {
+            count: errors.len(),
+        }
+        .into());
+    }
     let top = choose_top(
         args.top.as_deref(),
         match &args.top {
             Some(_) => Vec::new(),
-            None => find_tops(&loaded.sources, &loaded.files),
+            None => find_tops(&analysis, &loaded.files),
         },
     )?;
     let options = ElabOptions { top, generics };
-    let design = elaborate(&loaded.sources, &loaded.files, &options).map_err(|errors| {
-        for e in &errors {
-            eprint!("{}", render_located(e, &loaded.sources));
-        }
-        CliError::Elaboration {
-            count: errors.len(),
-        }
-    })?;
+    let design = elaborate_analysed(&analysis, &loaded.sources, &loaded.files, &options).map_err(
+        |errors| {
+            for e in &errors {
+                eprint!("{}", render_located(e, &loaded.sources));
+            }
+            CliError::Elaboration {
+                count: errors.len(),
+            }
+        },
+    )?;
     Ok(Compiled { loaded, design })
 }
 

@@ -39,6 +39,14 @@ pub enum CliError {
     AmbiguousTop { candidates: Vec<String> },
 
     /// Elaboration failed; the errors were printed.
+    /// Some design unit does not analyse; the errors were printed.
+    #[error("{count} analysis error(s): nothing was elaborated")]
+    #[diagnostic(
+        code(vams::cli::analysis),
+        help("fix the errors above (`vams check FILES` lists every diagnostic)")
+    )]
+    Analysis { count: usize },
+
     #[error("{count} elaboration error(s)")]
     #[diagnostic(code(vams::cli::elaboration), help("fix the errors above"))]
     Elaboration { count: usize },

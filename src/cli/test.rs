@@ -13,8 +13,9 @@ use std::time::Instant;
 use clap::Args;
 use miette::Report;
 
+use crate::analysis::{Analysis, UnitKind, analyse};
 use crate::ast::DesignFile;
-use crate::elaborate::{ElabOptions, elaborate};
+use crate::elaborate::{ElabOptions, elaborate_analysed};
 use crate::kernel::{Severity, SimError, SimOptions, SimResult, simulate};
 use crate::output::atomic::write_atomically;
 use crate::source::{FileId, SourceMap};
@@ -80,7 +81,7 @@ pub fn default_paths(given: &[PathBuf], root: &Path) -> Vec<PathBuf> {
 /// Runs one testbench to its end and judges it: `None` when it passed.
 fn run_bench(
     loaded: &Loaded,
-    files: &[(FileId, DesignFile)],
+    (analysis, files): (&Analysis, &[(FileId, DesignFile)]),
     bench: &Testbench,
     default_stop: Option<f64>,
 ) -> Option<(Problem, String)> {
@@ -88,6 +89,22 @@ fn run_bench(
     if let Some((_, errors)) = loaded.syntax_errors.iter().find(|(f, _)| *f == bench.file) {
         let text: String = errors.iter().map(|e| render_located(e, sources)).collect();
         return Some((Problem::Error, text));
+    }
+    // The analysis errors of every unit the bench reaches (not those of other benches).
+    let entity = analysis
+        .units
+        .iter()
+        .position(|u| u.kind == UnitKind::Entity && u.file == bench.file && u.name == bench.name);
+    if let Some(entity) = entity {
+        let text: String = analysis
+            .reached_from(entity)
+            .into_iter()
+            .flat_map(|u| &analysis.units[u].errors)
+            .map(|e| render_located(e, sources))
+            .collect();
+        if !text.is_empty() {
+            return Some((Problem::Error, text));
+        }
     }
     let stop = match (stop_comment(sources, bench.file), default_stop) {
         (Some(Ok(t)), _) | (None, Some(t)) => t,
@@ -103,7 +120,7 @@ fn run_bench(
         top: bench.name.clone(),
         generics: Vec::new(),
     };
-    let design = match elaborate(sources, files, &options) {
+    let design = match elaborate_analysed(analysis, sources, files, &options) {
         Ok(d) => d,
         Err(errors) => {
             let text = errors.iter().map(|e| render_located(e, sources)).collect();
@@ -199,6 +216,7 @@ pub fn run(args: &TestArgs) -> Result<(), Report> {
         .filter(|(id, _)| !loaded.has_errors(*id))
         .cloned()
         .collect();
+    let analysis = analyse(&loaded.sources, &files);
     let jobs = args
         .jobs
         .map(|j| j as usize)
@@ -213,7 +231,7 @@ pub fn run(args: &TestArgs) -> Result<(), Report> {
         jobs,
         |bench| {
             let start = Instant::now();
-            let problem = run_bench(&loaded, &files, bench, args.stop);
+            let problem = run_bench(&loaded, (&analysis, &files), bench, args.stop);
             Verdict {
                 seconds: start.elapsed().as_secs_f64(),
                 problem,

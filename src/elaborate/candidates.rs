@@ -86,7 +86,7 @@ entity sub is generic (g : integer); port (terminal a, b : electrical); end enti
 architecture a of sub is begin end architecture;
 ";
         let (sources, files) = parse_all(&[("c.vhd", text)]);
-        let cands = top_candidates(&sources, &files);
+        let cands = top_candidates(&crate::analysis::analyse(&sources, &files), &files);
         let names: Vec<&str> = cands.iter().map(|c| c.name.as_str()).collect();
         assert_eq!(names, ["r", "tb", "user"]);
         assert_eq!(cands[0].generics_without_default, ["res"]);

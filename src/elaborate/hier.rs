@@ -106,7 +106,7 @@ impl<'a> Elab<'a> {
         span: Span,
     ) -> R<Unit<'a, Architecture>> {
         let key = (entity.library.clone(), entity.unit.name.name.clone());
-        let archs = self.lib.architectures.get(&key);
+        let archs = self.lib.architectures.get(&entity.index);
         let found = match (archs, named) {
             (Some(a), Some(n)) => a.iter().rev().find(|u| u.unit.name.name == n.name).cloned(),
             (Some(a), None) => a.last().cloned(),

@@ -1,30 +1,40 @@
-//! The library index: every design unit of every file by (library, name), in analysis order.
+//! The library index: every design unit of every file by (library, name), built from the
+//! analysis, whose unit table says which entity each architecture belongs to and which
+//! package each body completes (the rule lives there only).
 
 use std::collections::BTreeSet;
 
 use rustc_hash::FxHashMap;
 
+use crate::analysis::Analysis;
 use crate::ast::{
     Architecture, ConcKind, ConcStmt, ContextItem, DesignFile, Entity, ExprKind, InstantiatedUnit,
     LibraryUnit, Package, PackageBody,
 };
-use crate::source::{FileId, SourceMap};
+use crate::source::FileId;
 
 /// Design units of one compilation. Library `ieee_proposed` is an alias of `ieee`.
 #[derive(Default)]
 pub struct Library<'a> {
+    /// The last entity of each name.
     pub entities: FxHashMap<(String, String), Unit<'a, Entity>>,
-    /// Architectures of each entity in analysis order (the last is the default).
-    pub architectures: FxHashMap<(String, String), Vec<Unit<'a, Architecture>>>,
+    /// Architectures of each entity (by its unit index) in file order (the last is the
+    /// default).
+    pub architectures: FxHashMap<usize, Vec<Unit<'a, Architecture>>>,
+    /// The last package of each name.
     pub packages: FxHashMap<(String, String), Unit<'a, Package>>,
-    pub bodies: FxHashMap<(String, String), Unit<'a, PackageBody>>,
+    /// The body of each package (by its unit index; the last when several complete it).
+    pub bodies: FxHashMap<usize, Unit<'a, PackageBody>>,
+    /// Architectures of an entity that is not in the compilation (they still instantiate).
+    pub orphans: Vec<Unit<'a, Architecture>>,
 }
 
-/// A unit with its context clause and library.
+/// A unit with its context clause, library and index in the analysis's unit table.
 pub struct Unit<'a, T> {
     pub unit: &'a T,
     pub context: &'a [ContextItem],
     pub library: String,
+    pub index: usize,
 }
 
 impl<T> Clone for Unit<'_, T> {
@@ -33,6 +43,7 @@ impl<T> Clone for Unit<'_, T> {
             unit: self.unit,
             context: self.context,
             library: self.library.clone(),
+            index: self.index,
         }
     }
 }
@@ -47,53 +58,54 @@ pub fn canonical_library(name: &str) -> &str {
 }
 
 impl<'a> Library<'a> {
-    pub fn index(sources: &SourceMap, files: &'a [(FileId, DesignFile)]) -> Library<'a> {
+    /// The units of `files`, which `analysis` analysed (its units are theirs, in file order).
+    pub fn index(analysis: &Analysis, files: &'a [(FileId, DesignFile)]) -> Library<'a> {
         let mut lib = Library::default();
-        for (file, design) in files {
-            let library = sources.file(*file).library.clone();
-            for du in &design.units {
-                let key = |name: &str| (library.clone(), name.to_string());
-                match &du.unit {
-                    LibraryUnit::Entity(e) => {
-                        lib.entities.insert(
-                            key(&e.name.name),
-                            Unit {
-                                unit: e,
-                                context: &du.context,
-                                library: library.clone(),
-                            },
-                        );
+        let units = files.iter().flat_map(|(_, design)| design.units.iter());
+        for (index, (du, au)) in units.zip(&analysis.units).enumerate() {
+            let library = au.library.clone();
+            let key = |name: &str| (library.clone(), name.to_string());
+            let context = du.context.as_slice();
+            match &du.unit {
+                LibraryUnit::Entity(e) => {
+                    let unit = Unit {
+                        unit: e,
+                        context,
+                        library: library.clone(),
+                        index,
+                    };
+                    lib.entities.insert(key(&e.name.name), unit);
+                }
+                LibraryUnit::Architecture(a) => {
+                    let unit = Unit {
+                        unit: a,
+                        context,
+                        library: library.clone(),
+                        index,
+                    };
+                    match au.primary {
+                        Some(entity) => lib.architectures.entry(entity).or_default().push(unit),
+                        None => lib.orphans.push(unit),
                     }
-                    LibraryUnit::Architecture(a) => {
-                        lib.architectures
-                            .entry(key(&a.entity.name))
-                            .or_default()
-                            .push(Unit {
-                                unit: a,
-                                context: &du.context,
-                                library: library.clone(),
-                            });
-                    }
-                    LibraryUnit::Package(p) => {
-                        lib.packages.insert(
-                            key(&p.name.name),
-                            Unit {
-                                unit: p,
-                                context: &du.context,
-                                library: library.clone(),
-                            },
-                        );
-                    }
-                    LibraryUnit::PackageBody(b) => {
-                        lib.bodies.insert(
-                            key(&b.name.name),
-                            Unit {
-                                unit: b,
-                                context: &du.context,
-                                library: library.clone(),
-                            },
-                        );
-                    }
+                }
+                LibraryUnit::Package(p) => {
+                    let unit = Unit {
+                        unit: p,
+                        context,
+                        library: library.clone(),
+                        index,
+                    };
+                    lib.packages.insert(key(&p.name.name), unit);
+                }
+                LibraryUnit::PackageBody(b) => {
+                    let Some(package) = au.primary else { continue };
+                    let unit = Unit {
+                        unit: b,
+                        context,
+                        library: library.clone(),
+                        index,
+                    };
+                    lib.bodies.insert(package, unit);
                 }
             }
         }
@@ -114,11 +126,8 @@ impl<'a> Library<'a> {
     /// Entities of `work` that no architecture of `work` instantiates, sorted.
     pub fn tops(&self) -> Vec<String> {
         let mut used = BTreeSet::new();
-        for ((lib, _), archs) in &self.architectures {
-            if lib != "work" {
-                continue;
-            }
-            for arch in archs {
+        for archs in self.architectures.values().chain([&self.orphans]) {
+            for arch in archs.iter().filter(|a| a.library == "work") {
                 collect_instantiated(&arch.unit.stmts, &mut used);
             }
         }

@@ -70,3 +70,30 @@ pub(super) fn errors(text: &str, top: &str) -> Vec<String> {
         Err(errors) => errors.iter().map(|e| render_plain(e, &sources)).collect(),
     }
 }
+
+/// The binding rule is analysis's: an architecture belongs to the entity declared before it
+/// (a folder of variants redeclares entities), so a later redeclaration without an
+/// architecture leaves the entity with none, instead of elaborating the earlier entity's
+/// architecture against the later interface.
+#[test]
+fn an_architecture_belongs_to_the_entity_declared_before_it() {
+    let first = "entity leaf is generic (k : real := 1.0); end;\n\
+                 architecture one of leaf is signal s : real := k; begin end;\n";
+    let second = "entity leaf is generic (k : integer := 2); end;\n";
+    let top = "entity top is end;\narchitecture a of top is begin u : entity work.leaf; end;\n";
+    let (sources, files) = parse_all(&[("a.vhd", first), ("b.vhd", second), ("c.vhd", top)]);
+    let options = ElabOptions {
+        top: "top".into(),
+        generics: Vec::new(),
+    };
+    let errors = elaborate(&sources, &files, &options).expect_err("leaf has no architecture");
+    let text: Vec<String> = errors.iter().map(|e| render_plain(e, &sources)).collect();
+    assert!(
+        text.iter()
+            .any(|t| t.contains("architecture") && t.contains("leaf")),
+        "{text:?}"
+    );
+    // In the other order the architecture follows the entity it was written for.
+    let (sources, files) = parse_all(&[("b.vhd", second), ("a.vhd", first), ("c.vhd", top)]);
+    assert!(elaborate(&sources, &files, &options).is_ok());
+}

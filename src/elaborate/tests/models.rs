@@ -243,7 +243,7 @@ fn tops_are_the_testbenches() {
     let user: Vec<(&str, &str)> = m.iter().map(|(a, b)| (a.as_str(), b.as_str())).collect();
     let (sources, files) = parse_all(&user);
     assert_eq!(
-        find_tops(&sources, &files),
+        find_tops(&crate::analysis::analyse(&sources, &files), &files),
         ["tb_overvoltage", "tb_tracking"]
     );
 }
