@@ -186,6 +186,24 @@ struct Elab<'a> {
     quiet: bool,
     /// Use regions already built, by [`context_key`].
     use_regions: FxHashMap<String, scope::Region<'a>>,
+    /// The subprogram analysis chose at each call: the span of the name called -> the span
+    /// of the chosen declaration's designator.
+    overloads: FxHashMap<Span, Span>,
+}
+
+/// Every call of a subprogram whose overload analysis resolved: the called name's span ->
+/// the declaration's.
+fn chosen_overloads(analysis: &Analysis) -> FxHashMap<Span, Span> {
+    analysis
+        .units
+        .iter()
+        .flat_map(|u| &u.references)
+        .filter_map(|&(span, d)| {
+            let decl = analysis.decl(d);
+            matches!(decl.kind, crate::analysis::DeclKind::Subprogram(_))
+                .then_some((span, decl.span))
+        })
+        .collect()
 }
 
 impl<'a> Elab<'a> {
@@ -197,6 +215,7 @@ impl<'a> Elab<'a> {
         Elab {
             sources,
             lib: Library::index(analysis, files),
+            overloads: chosen_overloads(analysis),
             design: Design::default(),
             errors: Vec::new(),
             packages: FxHashMap::default(),

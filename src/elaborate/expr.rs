@@ -225,7 +225,7 @@ impl<'a> Elab<'a> {
                                 _ => None,
                             })
                             .collect();
-                        self.call(sc, subs, args, e.span, prefix.span, want)
+                        self.call(sc, subs, args, e.span, designator_span(prefix), want)
                     }
                     Some(Item::Type(sub)) => {
                         let target = sub.ty.clone();
@@ -471,7 +471,7 @@ impl<'a> Elab<'a> {
                         _ => None,
                     })
                     .collect();
-                return self.call(sc, subs, &[], e.span, e.span, want);
+                return self.call(sc, subs, &[], e.span, designator_span(e), want);
             }
             other => {
                 return Err(self.error(ElabError::WrongClass {
@@ -607,7 +607,7 @@ impl<'a> Elab<'a> {
         want: Option<&Ty>,
     ) -> R<Typed> {
         let name = subs.first().map(|s| s.name.clone()).unwrap_or_default();
-        let (sub, slots) = self.resolve_call(sc, subs, args, true, want, span)?;
+        let (sub, slots) = self.resolve_call(sc, subs, args, true, want, span, name_span)?;
         let ret = sub.ret.clone().unwrap_or(Ty::Real);
         if sub.native.is_none() {
             let e = self.user_function_call(sc, &sub, &slots, span)?;
@@ -938,5 +938,14 @@ fn logic_help(ty: &Ty) -> String {
         "the std_logic_1164 operators on std_ulogic are visible with `library ieee; use ieee.std_logic_1164.all;`".into()
     } else {
         "logical operators take two boolean or two bit operands; arithmetic takes two numbers of the same type".into()
+    }
+}
+
+/// The span of the identifier a (selected) name ends in, where analysis records what it
+/// denotes; the whole span for any other expression.
+pub(super) fn designator_span(e: &ast::Expr) -> Span {
+    match &e.kind {
+        ExprKind::Name(id) | ExprKind::Selected(_, id) => id.span,
+        _ => e.span,
     }
 }

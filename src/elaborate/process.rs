@@ -865,11 +865,14 @@ impl<'a> Elab<'a> {
                         _ => None,
                     })
                     .collect();
-                let args = match &call.kind {
-                    ast::ExprKind::Apply(_, args) => args.as_slice(),
-                    _ => &[],
+                let (args, name_span) = match &call.kind {
+                    ast::ExprKind::Apply(prefix, args) => {
+                        (args.as_slice(), super::expr::designator_span(prefix))
+                    }
+                    _ => (&[][..], super::expr::designator_span(call)),
                 };
-                let (sub, slots) = self.resolve_call(sc, subs, args, false, None, call.span)?;
+                let (sub, slots) =
+                    self.resolve_call(sc, subs, args, false, None, call.span, name_span)?;
                 self.user_procedure_call(sc, &sub, &slots, call.span)
             }
             Some(Some(_)) => Err(self.error(ElabError::unsupported(

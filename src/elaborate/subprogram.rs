@@ -161,8 +161,10 @@ impl<'a> Elab<'a> {
         Ok(())
     }
 
-    /// The one subprogram of `subs` that `args` call: by arity and formal names, then by the
-    /// expected result type, then by the argument types.
+    /// The one subprogram of `subs` that `args` call: by arity and formal names, then the one
+    /// analysis chose for the name at `name_span` (it resolves overloads from the operands'
+    /// types and the context), then by the expected result type, then by the argument types.
+    #[allow(clippy::too_many_arguments)]
     pub(super) fn resolve_call<'e>(
         &mut self,
         sc: &Scope<'a>,
@@ -171,6 +173,7 @@ impl<'a> Elab<'a> {
         function: bool,
         want: Option<&Ty>,
         span: Span,
+        name_span: Span,
     ) -> R<(Rc<Subprogram<'a>>, Slots<'e>)> {
         let name = subs.first().map(|s| s.name.clone()).unwrap_or_default();
         let mut cands: Vec<(Rc<Subprogram<'a>>, Slots<'e>)> = subs
@@ -185,6 +188,16 @@ impl<'a> Elab<'a> {
                 format!("no {what} `{name}` takes {} argument(s)", args.len()),
                 Some("check the number of arguments and the formal names (procedures are called as statements, functions in expressions)".into()),
             )));
+        }
+        if cands.len() > 1
+            && let Some(decl) = self.overloads.get(&name_span)
+        {
+            let mut chosen = cands.iter().filter(|(s, _)| {
+                s.span.file == decl.file && s.span.start <= decl.start && decl.end <= s.span.end
+            });
+            if let (Some(c), None) = (chosen.next(), chosen.next()) {
+                return Ok(c.clone());
+            }
         }
         if cands.len() > 1 {
             if let Some(w) = want {

@@ -189,3 +189,33 @@ end;
         errs.join("\n")
     );
 }
+
+/// Overloads that only the context resolves: `f(g(1.0), true)` calls the `f` of `(real,
+/// boolean)` with the `g` that returns real, since no `g` gives the other `f` a boolean's
+/// place. Elaboration takes the overload analysis chose; on its own it lowered `g(1.0)`
+/// without an expected type, took the first `g` (integer) and found no `f` for it.
+#[test]
+fn the_overload_analysis_chose_is_the_one_called() {
+    let d = ok(
+        "entity t is end;
+architecture a of t is
+  function g (x : real) return integer is begin return 1; end function;
+  function g (x : real) return real is begin return 2.5; end function;
+  function f (x : real; b : boolean) return real is begin return x; end function;
+  function f (x : integer; b : integer) return real is begin return 0.0; end function;
+begin
+  process
+    variable r : real;
+  begin
+    r := f(g(1.0), true);
+    wait;
+  end process;
+end;
+",
+        "t",
+    );
+    assert_eq!(d.subprograms.len(), 2, "f and g, once each");
+    for sub in &d.subprograms {
+        assert_eq!(sub.vars[0].ty, crate::design::Type::Real, "{}", sub.name);
+    }
+}
