@@ -32,6 +32,7 @@ mod expr;
 mod host;
 mod operators;
 mod scope;
+mod statics;
 mod stmt;
 #[cfg(test)]
 mod tests;
@@ -41,7 +42,8 @@ mod units;
 pub use error::AnalysisError;
 pub use host::AnalysisHost;
 pub use scope::{
-    DeclId, DeclKind, Declaration, Nature, NatureId, Param, Region, RegionId, Signature,
+    DeclId, DeclKind, Declaration, Nature, NatureId, Param, Purity, Region, RegionId, Signature,
+    Staticness,
 };
 pub use types::{TypeId, TypeInfo, TypeKind, TypeTable};
 
@@ -74,6 +76,8 @@ pub struct AnalysedUnit {
     pub references: Vec<(Span, DeclId)>,
     /// The type of each analysed expression.
     pub types: Vec<(Span, TypeId)>,
+    /// Each analysed expression that is locally or globally static (LRM 7.4).
+    pub statics: Vec<(Span, Staticness)>,
     /// The declarations of the unit (for a package or entity, what it exports).
     pub region: RegionId,
     /// The declaration of an entity or package itself (what `use work.p;` makes visible).
@@ -190,6 +194,20 @@ impl Analysis {
         names.sort();
         names.dedup();
         names
+    }
+
+    /// How static the innermost analysed expression at byte `offset` of `file` is
+    /// ([`Staticness::None`] when it is not static or nothing is there).
+    pub fn staticness_at(&self, file: FileId, offset: u32) -> Staticness {
+        let units = || self.units.iter().filter(|u| u.file == file);
+        // The innermost expression (every analysed one has a type), then its mark: `statics`
+        // holds only the static ones.
+        let spans = units().flat_map(|u| u.types.iter().map(|&(s, _)| (s, s)));
+        let span = innermost(spans.collect::<Vec<_>>().iter(), offset);
+        units()
+            .flat_map(|u| u.statics.iter())
+            .find(|(s, _)| Some(*s) == span)
+            .map_or(Staticness::None, |&(_, st)| st)
     }
 
     /// The type of the innermost expression at byte `offset` of `file`.

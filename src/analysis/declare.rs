@@ -7,7 +7,7 @@ use crate::ast::{
 };
 use crate::ast::{Designator, Expr, ExprKind};
 
-use super::scope::{DeclId, DeclKind, Nature, NatureId, Param, Signature};
+use super::scope::{DeclId, DeclKind, Nature, NatureId, Param, Purity, Signature, Staticness};
 use super::types::{TypeId, TypeKind, UNKNOWN};
 use super::units::Analyzer;
 
@@ -58,7 +58,7 @@ impl Analyzer<'_> {
                     let string = self.std.string;
                     self.expr(e, string);
                 }
-                self.declare_objects(names, ObjectClass::File, ty);
+                self.declare_objects(names, ObjectClass::File, ty, Staticness::None);
             }
             AstDecl::Type { name, def } => self.type_decl(name, def.as_ref()),
             AstDecl::Subtype { name, subtype } => {
@@ -177,6 +177,7 @@ impl Analyzer<'_> {
                         DeclKind::Object {
                             class: p.class,
                             ty: p.ty,
+                            value: Staticness::None,
                         },
                     );
                 }
@@ -210,15 +211,29 @@ impl Analyzer<'_> {
         value: Option<&Expr>,
     ) {
         let ty = self.subtype(subtype);
-        if let Some(v) = value {
+        let init = value.map(|v| {
             self.expr(v, ty);
-        }
-        self.declare_objects(names, class, ty);
+            self.staticness(v)
+        });
+        // A constant is globally static (a deferred one too), locally static when its value
+        // is (LRM 7.4.1 (b), 7.4.2 (b)); other objects' values are the simulation's.
+        let value = match (class, init) {
+            (ObjectClass::Constant, Some(Staticness::Local)) => Staticness::Local,
+            (ObjectClass::Constant, _) => Staticness::Global,
+            _ => Staticness::None,
+        };
+        self.declare_objects(names, class, ty, value);
     }
 
-    fn declare_objects(&mut self, names: &[crate::ast::Ident], class: ObjectClass, ty: TypeId) {
+    fn declare_objects(
+        &mut self,
+        names: &[crate::ast::Ident],
+        class: ObjectClass,
+        ty: TypeId,
+        value: Staticness,
+    ) {
         for n in names {
-            self.declare(&n.name, n.span, DeclKind::Object { class, ty });
+            self.declare(&n.name, n.span, DeclKind::Object { class, ty, value });
         }
     }
 
@@ -252,7 +267,7 @@ impl Analyzer<'_> {
                             let string = self.std.string;
                             self.expr(tol, string);
                         }
-                        self.declare_objects(&b.names, ObjectClass::Quantity, ty);
+                        self.declare_objects(&b.names, ObjectClass::Quantity, ty, Staticness::None);
                     }
                 }
             }
@@ -270,7 +285,7 @@ impl Analyzer<'_> {
                 if let Some(n) = noise {
                     self.expr_any(n);
                 }
-                self.declare_objects(names, ObjectClass::Quantity, ty);
+                self.declare_objects(names, ObjectClass::Quantity, ty, Staticness::None);
             }
         }
     }
@@ -631,7 +646,12 @@ impl Analyzer<'_> {
             for n in &i.names {
                 // Parameters are declared in the body's region, not where the spec is.
                 if role != InterfaceRole::Parameter {
-                    self.declare(&n.name, n.span, DeclKind::Object { class, ty });
+                    // A generic is globally static; a port is a signal or a quantity.
+                    let value = match role {
+                        InterfaceRole::Generic => Staticness::Global,
+                        _ => Staticness::None,
+                    };
+                    self.declare(&n.name, n.span, DeclKind::Object { class, ty, value });
                 }
                 params.push(Param {
                     name: n.name.clone(),
@@ -649,7 +669,16 @@ impl Analyzer<'_> {
     fn subprogram_spec(&mut self, spec: &SubprogramSpec) -> Signature {
         let params = self.interfaces(&spec.params, InterfaceRole::Parameter);
         let result = spec.return_type.as_ref().map(|r| self.type_mark(r));
-        let sig = Signature { params, result };
+        let purity = if spec.is_function && spec.pure {
+            Purity::Pure
+        } else {
+            Purity::Impure
+        };
+        let sig = Signature {
+            params,
+            result,
+            purity,
+        };
         let (name, span) = match &spec.designator {
             Designator::Ident(id) => (id.name.clone(), id.span),
             Designator::Operator(op, span) => (format!("\"{op}\""), *span),

@@ -70,6 +70,20 @@ pub enum AnalysisError {
         help: Option<String>,
     },
 
+    /// `when s =>` with `s` a signal: where the LRM asks for a static expression, a name
+    /// whose value only the simulation knows.
+    #[error("{what} must be {required}, and `{name}` is not")]
+    #[diagnostic(code(vams::analysis::not_static))]
+    NotStatic {
+        #[label("its value is known only as the design runs")]
+        span: Span,
+        what: &'static str,
+        required: &'static str,
+        name: String,
+        #[help]
+        help: Option<String>,
+    },
+
     /// Package `a` uses `b` and `b` uses `a`: neither can be analysed first.
     #[error("circular dependency: {cycle}")]
     #[diagnostic(
@@ -94,6 +108,7 @@ impl Located for AnalysisError {
             | AnalysisError::NoOverload { span, .. }
             | AnalysisError::UnknownFormal { span, .. }
             | AnalysisError::MissingUnit { span, .. }
+            | AnalysisError::NotStatic { span, .. }
             | AnalysisError::CircularDependency { span, .. } => *span,
         }
     }

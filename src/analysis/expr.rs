@@ -6,7 +6,7 @@ use crate::ast::{Actual, Assoc, BinaryOp, Choice, Expr, ExprKind, Ident, Literal
 use crate::source::Span;
 
 use super::error::AnalysisError;
-use super::scope::{DeclId, DeclKind, Signature};
+use super::scope::{DeclId, DeclKind, Signature, Staticness};
 use super::types::{
     AGGREGATE, NULL, STRING_LITERAL, TypeId, TypeKind, UNIVERSAL_INTEGER, UNIVERSAL_REAL, UNKNOWN,
 };
@@ -518,6 +518,10 @@ impl Analyzer<'_> {
     pub fn expr(&mut self, e: &Expr, expected: TypeId) -> TypeId {
         let t = self.expr_inner(e, expected);
         self.record_type(e.span, t);
+        let s = self.staticness(e);
+        if s != Staticness::None {
+            self.out.units[self.cur].statics.push((e.span, s));
+        }
         t
     }
 
@@ -655,6 +659,33 @@ impl Analyzer<'_> {
     pub fn choices(&mut self, choices: &[Choice], ty: TypeId) {
         for c in choices {
             self.choice(c, ty);
+        }
+    }
+
+    /// The choices of a case alternative: of the selector's type and locally static (LRM
+    /// 8.8, 9.5.2).
+    pub fn case_choices(&mut self, choices: &[Choice], ty: TypeId) {
+        self.choices(choices, ty);
+        for c in choices {
+            match c {
+                Choice::Expr(x) => self.require_static(x, "a case choice", "locally static"),
+                Choice::Range(r) => self.require_static_range(r, "a case choice", "locally static"),
+                Choice::Others(_) => {}
+            }
+        }
+    }
+
+    /// Both bounds of an explicit range (an attribute range names an object or a type, whose
+    /// bounds are not read as values).
+    pub fn require_static_range(
+        &mut self,
+        r: &crate::ast::Range,
+        what: &'static str,
+        required: &'static str,
+    ) {
+        if let crate::ast::Range::Explicit { left, right, .. } = r {
+            self.require_static(left, what, required);
+            self.require_static(right, what, required);
         }
     }
 

@@ -4,7 +4,7 @@
 use crate::ast::ObjectClass;
 use crate::source::Span;
 
-use super::scope::{DeclKind, Param, RegionId, Signature};
+use super::scope::{DeclKind, Param, Purity, RegionId, Signature};
 use super::types::{TypeId, TypeKind, UNIVERSAL_INTEGER, UNIVERSAL_REAL};
 use super::units::Analyzer;
 
@@ -246,7 +246,11 @@ impl Analyzer<'_> {
         let d = self.push_decl(
             name,
             span,
-            DeclKind::Subprogram(Signature { params, result }),
+            DeclKind::Subprogram(Signature {
+                params,
+                result,
+                purity: Purity::Impure,
+            }),
         );
         let region = *self.scope.last().expect("a unit always has a region");
         self.out.regions[region.0 as usize].add(name, d);
@@ -271,6 +275,7 @@ impl Analyzer<'_> {
         let sig = Signature {
             params,
             result: Some(result),
+            purity: Purity::Predefined,
         };
         let name = format!("\"{op}\"");
         let d = self.push_decl(&name, span, DeclKind::Subprogram(sig));

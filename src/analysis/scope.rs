@@ -51,6 +51,31 @@ pub struct Signature {
     pub params: Vec<Param>,
     /// `Some` for a function.
     pub result: Option<TypeId>,
+    pub purity: Purity,
+}
+
+/// What kind of subprogram, as far as the staticness of a call goes (LRM 7.4).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Purity {
+    /// A predefined operator: locally static with locally static operands.
+    Predefined,
+    /// A pure function: globally static with globally static arguments.
+    Pure,
+    /// An impure function, a procedure, an implicit file or access subprogram: never static.
+    Impure,
+}
+
+/// How static an expression is (LRM 7.4), ordered so that a compound expression is as static
+/// as the least static of its parts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Staticness {
+    /// Its value depends on the simulation (a signal, a variable, a call of `now`), or on a
+    /// subprogram call's actuals (a parameter), or analysis cannot tell.
+    None,
+    /// Known once the design is elaborated (generics, constants, pure calls of those).
+    Global,
+    /// Known when the unit is analysed (literals, constants initialised with such).
+    Local,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -60,10 +85,12 @@ pub enum DeclKind {
     Package(RegionId),
     Entity(RegionId),
     Component(RegionId),
-    /// A constant, generic, signal, port, variable, file, parameter or quantity.
+    /// A constant, generic, signal, port, variable, file, parameter or quantity; `value`: how
+    /// static its value is as a primary of an expression.
     Object {
         class: ObjectClass,
         ty: TypeId,
+        value: Staticness,
     },
     Terminal(NatureId),
     Type(TypeId),

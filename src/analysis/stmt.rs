@@ -2,15 +2,15 @@
 //! simultaneous; instances are checked against the interface of what they instantiate.
 
 use crate::ast::{
-    Actual, Assertion, Assoc, BreakStmt, Choice, ConcKind, ConcStmt, DelayMechanism, Expr,
-    ExprKind, InstantiatedUnit, LoopScheme, ObjectClass, Sensitivity, SeqKind, SeqStmt, SimKind,
-    Waveform,
+    Actual, Assertion, Assoc, BreakStmt, Choice, ConcKind, ConcStmt, DelayMechanism, DiscreteRange,
+    Expr, ExprKind, InstantiatedUnit, LoopScheme, ObjectClass, Sensitivity, SeqKind, SeqStmt,
+    SimKind, Waveform,
 };
 
 use crate::source::Span;
 
 use super::error::AnalysisError;
-use super::scope::{DeclKind, RegionId};
+use super::scope::{DeclKind, RegionId, Staticness};
 use super::types::{TypeId, UNKNOWN};
 use super::units::Analyzer;
 
@@ -55,7 +55,7 @@ impl Analyzer<'_> {
     ) {
         let t = self.expr_any(selector);
         for (choices, stmts) in alternatives {
-            self.choices(choices, t);
+            self.case_choices(choices, t);
             body(self, stmts);
         }
     }
@@ -113,12 +113,14 @@ impl Analyzer<'_> {
                 LoopScheme::For(param, range) => {
                     let t = self.discrete_range(range);
                     self.in_region(s.span, |a| {
+                        // A loop parameter takes its values as the loop runs.
                         a.declare(
                             &param.name,
                             param.span,
                             DeclKind::Object {
                                 class: ObjectClass::Constant,
                                 ty: t,
+                                value: Staticness::None,
                             },
                         );
                         a.seq_stmts(body);
@@ -275,7 +277,7 @@ impl Analyzer<'_> {
                 self.delay(delay);
                 for (w, choices) in alternatives {
                     self.waveform(w, t);
-                    self.choices(choices, sel);
+                    self.case_choices(choices, sel);
                 }
             }
             ConcKind::Instance {
@@ -290,13 +292,18 @@ impl Analyzer<'_> {
                 stmts,
             } => {
                 let t = self.discrete_range(range);
+                if let DiscreteRange::Range(r) = range {
+                    self.require_static_range(r, "a generate range", "globally static");
+                }
                 self.in_region(s.span, |a| {
+                    // A generate parameter is globally static (LRM 7.4.2 (c)).
                     a.declare(
                         &param.name,
                         param.span,
                         DeclKind::Object {
                             class: ObjectClass::Constant,
                             ty: t,
+                            value: Staticness::Global,
                         },
                     );
                     a.decls(decls);
@@ -309,6 +316,7 @@ impl Analyzer<'_> {
                 stmts,
             } => {
                 self.condition(condition);
+                self.require_static(condition, "a generate condition", "globally static");
                 self.in_region(s.span, |a| {
                     a.decls(decls);
                     a.conc_stmts(stmts);

@@ -267,3 +267,43 @@ fn queries_answer_references_and_the_names_visible_at_a_position() {
             .contains(&"local_v".to_string())
     );
 }
+
+/// Every analysed expression is marked with its staticness (LRM 7.4): literals and constants
+/// initialised with them locally static, generics and what they compute globally static,
+/// signals, variables and impure calls not static.
+#[test]
+fn expressions_are_marked_with_their_staticness() {
+    use super::Staticness::{Global, Local, None};
+    let text = "entity e is generic (g : real := 1.0); end entity e;\n\
+                architecture a of e is\n\
+                  constant c : real := 2.0 * 3.0;\n\
+                  constant d : real := c + g;\n\
+                  signal s : real := 0.0;\n\
+                begin\n\
+                  p : process\n\
+                    variable v : real;\n\
+                  begin\n\
+                    v := c * 2.0;\n\
+                    v := d * 2.0;\n\
+                    v := s * 2.0;\n\
+                    v := real'high;\n\
+                    wait;\n\
+                  end process p;\n\
+                end architecture a;\n";
+    let (sources, files) = load(&[text]);
+    let analysis = analyse(&sources, &files);
+    assert_eq!(analysis.errors().count(), 0);
+    let file = files.last().expect("the test file").0;
+    // At the operator (or the tick): the innermost expression there is the whole one.
+    let at = |needle: &str| {
+        let start = text.find(needle).expect("in the text");
+        let op = needle.find(['*', '+', '\'']).expect("an operator");
+        analysis.staticness_at(file, (start + op) as u32)
+    };
+    assert_eq!(at("2.0 * 3.0"), Local);
+    assert_eq!(at("c + g"), Global);
+    assert_eq!(at("c * 2.0"), Local);
+    assert_eq!(at("d * 2.0"), Global);
+    assert_eq!(at("s * 2.0"), None);
+    assert_eq!(at("real'high"), Global);
+}

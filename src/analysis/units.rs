@@ -10,7 +10,7 @@ use crate::ast::{
 use crate::source::{FileId, Span};
 
 use super::error::AnalysisError;
-use super::scope::{DeclId, DeclKind, Declaration, Nature, Region, RegionId};
+use super::scope::{DeclId, DeclKind, Declaration, Nature, Region, RegionId, Staticness};
 use super::types::{TypeId, TypeTable, UNKNOWN};
 use super::{AnalysedUnit, Analysis, Marks, UnitKind, UnitMap, canonical_library, unit_name};
 
@@ -65,6 +65,10 @@ pub(super) struct Analyzer<'a> {
     muted: bool,
     /// Units analysed so far.
     analysed: Vec<bool>,
+    /// The current unit's resolved names by the span of their use, and the staticness of
+    /// its expressions analysed so far (see `statics`).
+    pub ref_at: FxHashMap<Span, DeclId>,
+    pub static_memo: FxHashMap<Span, Staticness>,
 }
 
 #[derive(Clone, Copy, PartialEq)]
@@ -95,6 +99,7 @@ impl<'a> Analyzer<'a> {
                 errors: Vec::new(),
                 references: Vec::new(),
                 types: Vec::new(),
+                statics: Vec::new(),
                 // Allocated when the unit is analysed.
                 region: RegionId(u32::MAX),
                 decl: None,
@@ -131,6 +136,8 @@ impl<'a> Analyzer<'a> {
             cut: Vec::new(),
             muted: false,
             analysed: vec![false; src.len()],
+            ref_at: FxHashMap::default(),
+            static_memo: FxHashMap::default(),
         }
     }
 
@@ -273,6 +280,8 @@ impl<'a> Analyzer<'a> {
     /// Analyses unit `u`: its context, then its declarations and statements.
     pub fn unit(&mut self, u: usize) {
         self.cur = u;
+        self.ref_at.clear();
+        self.static_memo.clear();
         let (library, _, du) = &self.src[u];
         let (library, du) = (library.as_str(), *du);
         // The use-visible names (std.standard, the libraries, what context clauses import).
@@ -501,6 +510,7 @@ impl<'a> Analyzer<'a> {
             unit.errors = std::mem::take(&mut old.errors);
             unit.references = std::mem::take(&mut old.references);
             unit.types = std::mem::take(&mut old.types);
+            unit.statics = std::mem::take(&mut old.statics);
             unit.scopes = std::mem::take(&mut old.scopes);
             unit.region = old.region;
             unit.decl = old.decl;
@@ -780,6 +790,7 @@ impl<'a> Analyzer<'a> {
     }
 
     pub fn reference(&mut self, span: Span, d: DeclId) {
+        self.ref_at.insert(span, d);
         self.out.units[self.cur].references.push((span, d));
     }
 

@@ -53,7 +53,7 @@ struct Tally {
     printed: HashSet<String>,
     /// Where analysis reported an error: elaboration, which still does its own name lookup,
     /// finds the same ones again.
-    analysed_spans: HashSet<Span>,
+    analysed_spans: Vec<Span>,
 }
 
 impl Tally {
@@ -61,11 +61,25 @@ impl Tally {
         self.syntax + self.analysis + self.elaboration + self.analog
     }
 
+    /// True when analysis reported an error at `span`, or within it when `span` is an
+    /// expression's (at most a line or so): elaboration's view of the same error from further
+    /// out (`this range must be static` around analysis's `top_lane is not static`).
+    fn already_analysed(&self, span: Span) -> bool {
+        const EXPRESSION: u32 = 160;
+        self.analysed_spans.iter().any(|a| {
+            *a == span
+                || (a.file == span.file
+                    && span.end - span.start <= EXPRESSION
+                    && span.start <= a.start
+                    && a.end <= span.end)
+        })
+    }
+
     /// Prints the diagnostics not printed before, at most `max`; returns how many were new.
     fn print<D: Located>(&mut self, errors: &[D], loaded: &Loaded, max: usize) -> usize {
         let mut new = 0;
         for e in errors {
-            if self.analysed_spans.contains(&e.primary_span()) {
+            if self.already_analysed(e.primary_span()) {
                 continue;
             }
             let text = render_located(e, &loaded.sources);
