@@ -259,7 +259,17 @@ fn analyse_from(
 ) -> Analysis {
     let units = flatten(sources, files);
     let mut a = units::Analyzer::new(&units);
-    let order = a.order();
+    let last = match &previous {
+        Some((_, changed)) => *changed,
+        None => &[],
+    };
+    let mut order = a.order(last);
+    if !last.is_empty() && a.found_cycles() {
+        // A walk that enters a cycle elsewhere closes it at another unit: report cycles
+        // where analysis from scratch does.
+        a = units::Analyzer::new(&units);
+        order = a.order(&[]);
+    }
     let kept = match previous {
         Some((prev, changed)) => a.adopt(prev, changed, &order),
         None => 0,

@@ -149,18 +149,56 @@ impl<'a> Analyzer<'a> {
     // Order
 
     /// Every unit once, each after the units it depends on; a dependency that closes a
-    /// cycle is reported on the unit that names it and not followed.
-    pub fn order(&mut self) -> Vec<usize> {
+    /// cycle is reported on the unit that names it and not followed. The units of `last`
+    /// (files just edited) and every unit that depends on them, directly or not, come after
+    /// all the others, so that a re-analysis after the next edit of those files keeps
+    /// everything before them. Nothing else depends on the order: the units outside that set
+    /// never reach into it, so each unit's dependencies and diagnostics are those of any
+    /// other order (the depth-first walks of both parts follow file order, as from scratch).
+    pub fn order(&mut self, last: &[FileId]) -> Vec<usize> {
         let mut order = Vec::with_capacity(self.src.len());
         let mut path = Vec::new();
+        let deferred = self.dependents_of(last);
         // std.standard first: every unit depends on it implicitly.
         if let Some(s) = self.primary("std", "standard", usize::MAX) {
             self.visit(s, &mut path, &mut order);
         }
-        for u in 0..self.src.len() {
+        for u in (0..self.src.len()).filter(|&u| !deferred[u]) {
+            self.visit(u, &mut path, &mut order);
+        }
+        for u in (0..self.src.len()).filter(|&u| deferred[u]) {
             self.visit(u, &mut path, &mut order);
         }
         order
+    }
+
+    /// True when [`Analyzer::order`] found a dependency cycle.
+    pub fn found_cycles(&self) -> bool {
+        !self.cut.is_empty()
+    }
+
+    /// The units of `files` and every unit that depends on one of them, directly or not.
+    fn dependents_of(&self, files: &[FileId]) -> Vec<bool> {
+        let mut marked: Vec<bool> = self.src.iter().map(|(_, f, _)| files.contains(f)).collect();
+        if !marked.contains(&true) {
+            return marked;
+        }
+        let mut users: Vec<Vec<usize>> = vec![Vec::new(); self.src.len()];
+        for u in 0..self.src.len() {
+            for (d, _) in self.dependencies(u) {
+                users[d].push(u);
+            }
+        }
+        let mut stack: Vec<usize> = (0..marked.len()).filter(|&u| marked[u]).collect();
+        while let Some(u) = stack.pop() {
+            for &user in &users[u] {
+                if !marked[user] {
+                    marked[user] = true;
+                    stack.push(user);
+                }
+            }
+        }
+        marked
     }
 
     fn visit(&mut self, u: usize, path: &mut Vec<usize>, order: &mut Vec<usize>) {
