@@ -233,9 +233,26 @@ pub enum DeclKind {
         value: Expr,
     },
     Use(Vec<Expr>),
+    /// A configuration specification: `for u1, u2 : comp use entity work.e(a);` (labels
+    /// `all` or `others` too).
+    Configuration {
+        labels: EntityNames,
+        component: Expr,
+        binding: Binding,
+    },
 }
 
-/// `a, b`, `all` or `others` in attribute and limit specifications.
+/// The binding indication of a configuration specification.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Binding {
+    /// `entity ...` or `configuration ...`; `None` for `use open`.
+    pub unit: Option<InstantiatedUnit>,
+    pub generic_map: Vec<Assoc>,
+    pub port_map: Vec<Assoc>,
+    pub span: Span,
+}
+
+/// `a, b`, `all` or `others` in attribute, limit and configuration specifications.
 #[derive(Clone, Debug, PartialEq)]
 pub enum EntityNames {
     List(Vec<Expr>),

@@ -194,6 +194,16 @@ impl Analyzer<'_> {
                 let real = self.std.real;
                 self.expr(value, real);
             }
+            AstDecl::Configuration {
+                component, binding, ..
+            } => {
+                // The component must be visible here, and the entity it is bound to exist;
+                // the maps are checked where the instance is elaborated.
+                self.resolve_name(component);
+                if let Some(crate::ast::InstantiatedUnit::Entity { name, .. }) = &binding.unit {
+                    self.resolve_name(name);
+                }
+            }
             AstDecl::Use(names) => {
                 let region = *self.scope.last().expect("a unit always has a region");
                 for n in names {

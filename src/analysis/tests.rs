@@ -307,3 +307,27 @@ fn expressions_are_marked_with_their_staticness() {
     assert_eq!(at("s * 2.0"), None);
     assert_eq!(at("real'high"), Global);
 }
+
+/// A configuration specification names a visible component and an entity of the library.
+#[test]
+fn configuration_specifications_name_a_component_and_an_entity() {
+    let leaf =
+        "entity leaf is end entity leaf;\narchitecture a of leaf is begin end architecture a;\n";
+    let good = "entity top is end entity top;\narchitecture a of top is\n\
+                component leaf is end component;\n\
+                for all : leaf use entity work.leaf(a);\n\
+                begin\n  u : leaf;\nend architecture a;\n";
+    assert!(
+        messages(&[good, leaf]).is_empty(),
+        "{:?}",
+        messages(&[good, leaf])
+    );
+    let bad = "entity top is end entity top;\narchitecture a of top is\n\
+               for all : leef use entity work.leaf(a);\n\
+               begin\nend architecture a;\n";
+    let m = messages(&[leaf, bad]);
+    assert!(
+        m.iter().any(|m| m.contains("`leef` is not declared")),
+        "{m:?}"
+    );
+}

@@ -263,6 +263,11 @@ impl<'a> Analyzer<'a> {
                         deps.push(d);
                     }
                 });
+                for d in bound_entities(&a.decls).chain(nested_bound_entities(&a.stmts)) {
+                    if let Some(d) = self.named_unit(library, d, u) {
+                        deps.push(d);
+                    }
+                }
             }
             LibraryUnit::PackageBody(b) => {
                 if let Some(p) = self.primary(library, &b.name.name, u) {
@@ -910,6 +915,34 @@ fn entity_instances<'e>(stmts: &'e [ConcStmt], f: &mut impl FnMut(&'e Expr)) {
             _ => {}
         }
     }
+}
+
+/// The entities that configuration specifications among `decls` bind components to.
+fn bound_entities(decls: &[crate::ast::Decl]) -> impl Iterator<Item = &Expr> {
+    decls.iter().filter_map(|d| match &d.kind {
+        AstDecl::Configuration { binding, .. } => match &binding.unit {
+            Some(InstantiatedUnit::Entity { name, .. }) => Some(name),
+            _ => None,
+        },
+        _ => None,
+    })
+}
+
+/// [`bound_entities`] of the declarative parts of blocks and generate statements.
+fn nested_bound_entities(stmts: &[ConcStmt]) -> Vec<&Expr> {
+    let mut out = Vec::new();
+    for s in stmts {
+        match &s.kind {
+            ConcKind::ForGenerate { decls, stmts, .. }
+            | ConcKind::IfGenerate { decls, stmts, .. }
+            | ConcKind::Block { decls, stmts, .. } => {
+                out.extend(bound_entities(decls));
+                out.extend(nested_bound_entities(stmts));
+            }
+            _ => {}
+        }
+    }
+    out
 }
 
 /// The primary unit `lib.name` declared last before unit `before`, else the last of them.

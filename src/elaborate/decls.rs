@@ -287,6 +287,35 @@ impl<'a> Elab<'a> {
                 }
                 Ok(())
             }
+            DeclKind::Configuration {
+                labels, component, ..
+            } => {
+                let component = match &component.kind {
+                    ast::ExprKind::Name(id) | ast::ExprKind::Selected(_, id) => id.name.as_str(),
+                    _ => "",
+                };
+                let keys: Vec<String> = match labels {
+                    ast::EntityNames::All => vec![format!(" for all {component}")],
+                    ast::EntityNames::Others => vec![format!(" for others {component}")],
+                    ast::EntityNames::List(names) => names
+                        .iter()
+                        .filter_map(|n| match &n.kind {
+                            ast::ExprKind::Name(id) => Some(format!(" for {}", id.name)),
+                            _ => None,
+                        })
+                        .collect(),
+                };
+                for key in keys {
+                    if !sc.declare(&key, Item::Binding(d)) {
+                        return Err(self.error(ElabError::invalid(
+                            d.span,
+                            "this instance is bound by an earlier configuration specification too",
+                            Some("give each instance one binding".into()),
+                        )));
+                    }
+                }
+                Ok(())
+            }
         }
     }
 

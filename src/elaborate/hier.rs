@@ -648,33 +648,7 @@ impl<'a> Elab<'a> {
     ) -> R<()> {
         let (lib, name, arch_name, name_span) = match unit {
             InstantiatedUnit::Entity { name, architecture } => {
-                let (lib, ent) = match &name.kind {
-                    ast::ExprKind::Selected(prefix, ent) => {
-                        let ast::ExprKind::Name(l) = &prefix.kind else {
-                            return Err(self.error(ElabError::invalid(
-                                prefix.span,
-                                "expected a library name",
-                                None,
-                            )));
-                        };
-                        (self.library_name(sc, l)?, ent)
-                    }
-                    ast::ExprKind::Name(ent) => (
-                        match sc.lookup("work") {
-                            Some([Item::Library(l), ..]) => l.clone(),
-                            _ => "work".into(),
-                        },
-                        ent,
-                    ),
-                    _ => {
-                        return Err(self.error(ElabError::invalid(
-                            name.span,
-                            "expected an entity name",
-                            None,
-                        )));
-                    }
-                };
-                (lib, ent.name.clone(), architecture.as_ref(), name.span)
+                self.entity_aspect(sc, name, architecture.as_ref())?
             }
             InstantiatedUnit::Component(name) => {
                 let items = self.lookup(sc, name)?;
@@ -687,12 +661,20 @@ impl<'a> Elab<'a> {
                         help: Some("instantiate an entity with `label : entity work.name`".into()),
                     }));
                 };
-                // Default binding (LRM 7.3.3): the entity of the same name in work.
                 let simple = match &decl.kind {
                     ast::DeclKind::Component { name, .. } => name.name.clone(),
                     _ => String::new(),
                 };
-                ("work".to_string(), simple, None, name.span)
+                match self.binding_of(sc, s, &simple) {
+                    // A configuration specification binds this instance.
+                    Some(binding) => match self.bound_entity(sc, binding)? {
+                        Some(target) => target,
+                        // `use open`: the instance stays unbound, nothing is elaborated.
+                        None => return Ok(()),
+                    },
+                    // Default binding (LRM 7.3.3): the entity of the same name in work.
+                    None => ("work".to_string(), simple, None, name.span),
+                }
             }
             InstantiatedUnit::Configuration(n) => {
                 return Err(self.error(ElabError::unsupported(
@@ -702,6 +684,124 @@ impl<'a> Elab<'a> {
                 )));
             }
         };
+        self.instantiate_entity(
+            sc,
+            s,
+            (lib, name, arch_name, name_span),
+            generics,
+            ports,
+            depth,
+        )
+    }
+
+    /// The configuration specification of the innermost declarative region that binds
+    /// instance `s` of component `component`: one naming its label, else one for `all` or
+    /// `others` of that component (LRM 5.2).
+    fn binding_of(
+        &self,
+        sc: &Scope<'a>,
+        s: &ConcStmt,
+        component: &str,
+    ) -> Option<&'a ast::Binding> {
+        let here = sc.regions.last()?;
+        let keys = [
+            s.label.as_ref().map(|l| format!(" for {}", l.name)),
+            Some(format!(" for all {component}")),
+            Some(format!(" for others {component}")),
+        ];
+        for key in keys.iter().flatten() {
+            for item in here.items.get(key).into_iter().flatten() {
+                let Item::Binding(d) = item else { continue };
+                let d: &'a ast::Decl = d;
+                if let ast::DeclKind::Configuration {
+                    component: c,
+                    binding,
+                    ..
+                } = &d.kind
+                    && simple_name(c) == Some(component)
+                {
+                    return Some(binding);
+                }
+            }
+        }
+        None
+    }
+
+    /// The entity and architecture a binding indication names; `None` for `use open`.
+    #[allow(clippy::type_complexity)]
+    fn bound_entity(
+        &mut self,
+        sc: &Scope<'a>,
+        binding: &'a ast::Binding,
+    ) -> R<Option<(String, String, Option<&'a ast::Ident>, Span)>> {
+        if let Some(first) = binding.generic_map.first().or(binding.port_map.first()) {
+            return Err(self.error(ElabError::unsupported(
+                first.span,
+                "generic and port maps in a binding indication",
+                "leave them out: the component's generics and ports then bind to the entity's of the same names",
+            )));
+        }
+        match &binding.unit {
+            Some(InstantiatedUnit::Entity { name, architecture }) => self
+                .entity_aspect(sc, name, architecture.as_ref())
+                .map(Some),
+            Some(InstantiatedUnit::Configuration(n)) => Err(self.error(ElabError::unsupported(
+                n.span,
+                "binding to a configuration",
+                "bind the entity: `use entity work.e(arch);`",
+            ))),
+            Some(InstantiatedUnit::Component(_)) | None => Ok(None),
+        }
+    }
+
+    /// `entity lib.e(arch)`: the library, the entity's name, the architecture named.
+    #[allow(clippy::type_complexity)]
+    fn entity_aspect(
+        &mut self,
+        sc: &Scope<'a>,
+        name: &'a ast::Expr,
+        architecture: Option<&'a ast::Ident>,
+    ) -> R<(String, String, Option<&'a ast::Ident>, Span)> {
+        let (lib, ent) = match &name.kind {
+            ast::ExprKind::Selected(prefix, ent) => {
+                let ast::ExprKind::Name(l) = &prefix.kind else {
+                    return Err(self.error(ElabError::invalid(
+                        prefix.span,
+                        "expected a library name",
+                        None,
+                    )));
+                };
+                (self.library_name(sc, l)?, ent)
+            }
+            ast::ExprKind::Name(ent) => (
+                match sc.lookup("work") {
+                    Some([Item::Library(l), ..]) => l.clone(),
+                    _ => "work".into(),
+                },
+                ent,
+            ),
+            _ => {
+                return Err(self.error(ElabError::invalid(
+                    name.span,
+                    "expected an entity name",
+                    None,
+                )));
+            }
+        };
+        Ok((lib, ent.name.clone(), architecture, name.span))
+    }
+
+    /// Instantiates `lib.name(arch_name)` for instance `s`.
+    #[allow(clippy::type_complexity)]
+    fn instantiate_entity(
+        &mut self,
+        sc: &mut Scope<'a>,
+        s: &ConcStmt,
+        (lib, name, arch_name, name_span): (String, String, Option<&'a ast::Ident>, Span),
+        generics: &'a [Assoc],
+        ports: &'a [Assoc],
+        depth: usize,
+    ) -> R<()> {
         let key = (canonical_library(&lib).to_string(), name.clone());
         let Some(entity) = self.lib.entities.get(&key).cloned() else {
             let cands = self.lib.work_entities();
@@ -763,5 +863,13 @@ fn literal_help(ty: &Ty) -> String {
         Ty::Boolean => "write `true` or `false`".into(),
         Ty::Enum(e) => format!("write one of {}", list_names(&e.literals)),
         Ty::Array(_) => "array generics cannot be set from the command line".into(),
+    }
+}
+
+/// The identifier a (selected) name ends in.
+fn simple_name(e: &ast::Expr) -> Option<&str> {
+    match &e.kind {
+        ast::ExprKind::Name(id) | ast::ExprKind::Selected(_, id) => Some(&id.name),
+        _ => None,
     }
 }

@@ -129,6 +129,7 @@ impl<'a> Library<'a> {
         for archs in self.architectures.values().chain([&self.orphans]) {
             for arch in archs.iter().filter(|a| a.library == "work") {
                 collect_instantiated(&arch.unit.stmts, &mut used);
+                collect_bound(&arch.unit.decls, &mut used);
             }
         }
         self.work_entities()
@@ -161,6 +162,18 @@ fn collect_instantiated(stmts: &[ConcStmt], out: &mut BTreeSet<String>) {
             | ConcKind::IfGenerate { stmts, .. }
             | ConcKind::Block { stmts, .. } => collect_instantiated(stmts, out),
             _ => {}
+        }
+    }
+}
+
+/// Names of the entities that configuration specifications among `decls` bind components to.
+fn collect_bound(decls: &[crate::ast::Decl], out: &mut BTreeSet<String>) {
+    for d in decls {
+        if let crate::ast::DeclKind::Configuration { binding, .. } = &d.kind
+            && let Some(InstantiatedUnit::Entity { name, .. }) = &binding.unit
+            && let ExprKind::Name(id) | ExprKind::Selected(_, id) = &name.kind
+        {
+            out.insert(id.name.clone());
         }
     }
 }

@@ -67,6 +67,9 @@ pub enum Item<'a> {
     Library(String),
     Package(Rc<PackageScope<'a>>),
     Component(&'a ast::Decl),
+    /// A configuration specification, declared under ` for LABEL`, ` for all COMPONENT` or
+    /// ` for others COMPONENT` (names no identifier can clash with).
+    Binding(&'a ast::Decl),
     /// A user-declared attribute (`attribute symbol : string;`).
     Attribute,
     /// Declared, but its declaration could not be elaborated (a stdlib declaration using an
@@ -95,6 +98,7 @@ impl Item<'_> {
             Item::Library(_) => "a library",
             Item::Package(_) => "a package",
             Item::Component(_) => "a component",
+            Item::Binding(_) => "a configuration specification",
             Item::Attribute => "an attribute",
             Item::Poison(_) => "an unsupported declaration",
         }
