@@ -54,6 +54,7 @@ pub enum UnitKind {
     Architecture { entity: String },
     Package,
     PackageBody,
+    Configuration { entity: String },
 }
 
 /// One analysed design unit.
@@ -313,6 +314,20 @@ fn unit_name(unit: &LibraryUnit) -> (&str, UnitKind) {
         ),
         LibraryUnit::Package(p) => (&p.name.name, UnitKind::Package),
         LibraryUnit::PackageBody(b) => (&b.name.name, UnitKind::PackageBody),
+        LibraryUnit::Configuration(c) => (
+            &c.name.name,
+            UnitKind::Configuration {
+                entity: simple_name(&c.entity).to_string(),
+            },
+        ),
+    }
+}
+
+/// The identifier a (selected) name ends in; empty for other expressions.
+fn simple_name(e: &crate::ast::Expr) -> &str {
+    match &e.kind {
+        crate::ast::ExprKind::Name(id) | crate::ast::ExprKind::Selected(_, id) => &id.name,
+        _ => "",
     }
 }
 

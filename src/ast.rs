@@ -41,6 +41,44 @@ pub enum LibraryUnit {
     Architecture(Architecture),
     Package(Package),
     PackageBody(PackageBody),
+    Configuration(Configuration),
+}
+
+/// `configuration cfg of e is for arch ... end for; end configuration;`
+#[derive(Clone, Debug, PartialEq)]
+pub struct Configuration {
+    pub name: Ident,
+    pub entity: Expr,
+    /// Names its use clauses make visible (kept for analysis; elaboration needs none).
+    pub uses: Vec<Expr>,
+    pub block: BlockConfig,
+    pub span: Span,
+}
+
+/// `for arch_or_label ... end for;`: the configuration of a block (an architecture, a block
+/// or generate statement).
+#[derive(Clone, Debug, PartialEq)]
+pub struct BlockConfig {
+    pub spec: Expr,
+    pub items: Vec<ConfigItem>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum ConfigItem {
+    Block(BlockConfig),
+    Component(ComponentConfig),
+}
+
+/// `for u1, u2 : comp use entity work.e(a); [for a ... end for;] end for;`
+#[derive(Clone, Debug, PartialEq)]
+pub struct ComponentConfig {
+    pub labels: EntityNames,
+    pub component: Expr,
+    pub binding: Option<Binding>,
+    /// The configuration of the bound entity's architecture, for the instances inside it.
+    pub block: Option<BlockConfig>,
+    pub span: Span,
 }
 
 #[derive(Clone, Debug, PartialEq)]

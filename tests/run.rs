@@ -332,3 +332,22 @@ fn an_analysis_error_in_a_unit_the_top_does_not_reach_fails_the_run() {
         .stderr(contains("1 analysis error(s)"));
     assert!(!out.exists(), "nothing was simulated");
 }
+
+/// `--top` names a configuration declaration: its entity is elaborated with the bindings it
+/// gives (r1 ideal, the others doubled: the divider's midpoint at 2/3 V instead of the 1/2 V
+/// of the default binding).
+#[test]
+fn a_configuration_declaration_is_a_top() {
+    vams()
+        .args(["op", "tests/conformance/configuration_declaration.vhd"])
+        .args(["--top", "cfg_mixed"])
+        .assert()
+        .success()
+        .stdout(contains("vmid    0.6666666666666"));
+    vams()
+        .args(["op", "tests/conformance/configuration_declaration.vhd"])
+        .args(["--top", "tb_configuration_declaration"])
+        .assert()
+        .success()
+        .stdout(contains("vmid    0.5 V"));
+}

@@ -166,7 +166,8 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_tracking ... ok"))
         .stdout(contains("test tb_rlc_elimination ... ok"))
         .stdout(contains("test tb_configuration_specification ... ok"))
-        .stdout(contains("14 passed, 0 failed"));
+        .stdout(contains("test tb_configuration_declaration ... ok"))
+        .stdout(contains("15 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

@@ -331,3 +331,17 @@ fn configuration_specifications_name_a_component_and_an_entity() {
         "{m:?}"
     );
 }
+
+/// A configuration declaration is analysed after its entity and the architecture it names,
+/// whatever the file order, and names an entity of the library.
+#[test]
+fn configuration_declarations_follow_their_entity() {
+    let cfg = "configuration c of top is\n  for a\n    for u : leaf use entity work.leaf(a); end for;\n  end for;\nend configuration c;\n";
+    let top = "entity top is end entity top;\narchitecture a of top is\n\
+               component leaf is end component;\nbegin\n  u : leaf;\nend architecture a;\n";
+    let leaf = "entity leaf is end entity leaf;\narchitecture a of leaf is begin end architecture a;\n";
+    assert!(messages(&[cfg, top, leaf]).is_empty(), "{:?}", messages(&[cfg, top, leaf]));
+    let missing = "configuration c of nothing is\n  for a\n  end for;\nend configuration c;\n";
+    let m = messages(&[missing]);
+    assert!(m.iter().any(|m| m.contains("nothing")), "{m:?}");
+}

@@ -4,8 +4,8 @@
 use rustc_hash::FxHashMap;
 
 use crate::ast::{
-    ConcKind, ConcStmt, ContextItem, DeclKind as AstDecl, DesignUnit, Expr, ExprKind, Ident,
-    InstantiatedUnit, LibraryUnit,
+    Binding, ConcKind, ConcStmt, ContextItem, Decl as AstDeclItem, DeclKind as AstDecl, DesignUnit,
+    Expr, ExprKind, Ident, InstantiatedUnit, LibraryUnit,
 };
 use crate::source::{FileId, Span};
 
@@ -111,6 +111,10 @@ impl<'a> Analyzer<'a> {
             let name = match &du.unit {
                 LibraryUnit::Architecture(a) => &a.entity.name,
                 LibraryUnit::PackageBody(b) => &b.name.name,
+                LibraryUnit::Configuration(c) => match &out.units[u].kind {
+                    UnitKind::Configuration { entity } => entity,
+                    _ => &c.name.name,
+                },
                 _ => continue,
             };
             out.units[u].primary = primary_of(&primaries, library, name, u);
@@ -244,6 +248,7 @@ impl<'a> Analyzer<'a> {
             UnitKind::PackageBody => format!("package body `{}`", unit.name),
             UnitKind::Entity => format!("entity `{}`", unit.name),
             UnitKind::Package => format!("package `{}`", unit.name),
+            UnitKind::Configuration { .. } => format!("configuration `{}`", unit.name),
         }
     }
 
@@ -275,13 +280,39 @@ impl<'a> Analyzer<'a> {
                     contexts.push(&self.src[p].2.context);
                 }
             }
+            LibraryUnit::Configuration(c) => {
+                // The entity, its architecture the configuration names, and every entity a
+                // component configuration binds.
+                if let Some(e) = self.out.units[u].primary {
+                    deps.push((e, c.entity.span));
+                    let arch = super::simple_name(&c.block.spec);
+                    deps.extend(
+                        (0..self.src.len())
+                            .filter(|&a| {
+                                self.out.units[a].primary == Some(e)
+                                    && matches!(
+                                        self.out.units[a].kind,
+                                        UnitKind::Architecture { .. }
+                                    )
+                                    && self.out.units[a].name == arch
+                            })
+                            .map(|a| (a, c.block.spec.span)),
+                    );
+                }
+                for name in configured_entities(&c.block) {
+                    if let Some(d) = self.named_unit(library, name, u) {
+                        deps.push(d);
+                    }
+                }
+            }
             _ => {}
         }
-        let decls = match &du.unit {
+        let decls: &[AstDeclItem] = match &du.unit {
             LibraryUnit::Entity(e) => &e.decls,
             LibraryUnit::Architecture(a) => &a.decls,
             LibraryUnit::Package(p) => &p.decls,
             LibraryUnit::PackageBody(b) => &b.decls,
+            LibraryUnit::Configuration(_) => &[],
         };
         let uses = contexts
             .iter()
@@ -345,6 +376,7 @@ impl<'a> Analyzer<'a> {
         let primary = match &du.unit {
             LibraryUnit::Architecture(a) => self.primary(library, &a.entity.name, u),
             LibraryUnit::PackageBody(b) => self.primary(library, &b.name.name, u),
+            LibraryUnit::Configuration(_) => self.out.units[u].primary,
             _ => None,
         };
         if let Some(p) = primary.filter(|&p| self.state_done(p)) {
@@ -401,6 +433,18 @@ impl<'a> Analyzer<'a> {
                     self.cut.push(u);
                 }
                 self.decls(&b.decls);
+            }
+            LibraryUnit::Configuration(c) => {
+                if primary.is_none() {
+                    let name = super::simple_name(&c.entity).to_string();
+                    self.missing_unit(c.entity.span, "entity", &name, library);
+                    self.cut.push(u);
+                }
+                // The components are declared in the architecture (not visible here); the
+                // entities they are bound to must exist.
+                for name in configured_entities(&c.block) {
+                    self.resolve_name(name);
+                }
             }
         }
         self.analysed[u] = true;
@@ -915,6 +959,29 @@ fn entity_instances<'e>(stmts: &'e [ConcStmt], f: &mut impl FnMut(&'e Expr)) {
             _ => {}
         }
     }
+}
+
+/// The entities the component configurations of `block` (and of the blocks nested in it) bind.
+fn configured_entities(block: &crate::ast::BlockConfig) -> Vec<&Expr> {
+    let mut out = Vec::new();
+    for item in &block.items {
+        match item {
+            crate::ast::ConfigItem::Block(b) => out.extend(configured_entities(b)),
+            crate::ast::ConfigItem::Component(c) => {
+                if let Some(Binding {
+                    unit: Some(InstantiatedUnit::Entity { name, .. }),
+                    ..
+                }) = &c.binding
+                {
+                    out.push(name);
+                }
+                if let Some(b) = &c.block {
+                    out.extend(configured_entities(b));
+                }
+            }
+        }
+    }
+    out
 }
 
 /// The entities that configuration specifications among `decls` bind components to.

@@ -288,25 +288,17 @@ impl<'a> Elab<'a> {
                 Ok(())
             }
             DeclKind::Configuration {
-                labels, component, ..
+                labels,
+                component,
+                binding,
             } => {
-                let component = match &component.kind {
-                    ast::ExprKind::Name(id) | ast::ExprKind::Selected(_, id) => id.name.as_str(),
-                    _ => "",
-                };
-                let keys: Vec<String> = match labels {
-                    ast::EntityNames::All => vec![format!(" for all {component}")],
-                    ast::EntityNames::Others => vec![format!(" for others {component}")],
-                    ast::EntityNames::List(names) => names
-                        .iter()
-                        .filter_map(|n| match &n.kind {
-                            ast::ExprKind::Name(id) => Some(format!(" for {}", id.name)),
-                            _ => None,
-                        })
-                        .collect(),
-                };
-                for key in keys {
-                    if !sc.declare(&key, Item::Binding(d)) {
+                let item = Item::Binding(super::scope::BindingRef {
+                    component,
+                    binding: Some(binding),
+                    block: None,
+                });
+                for key in binding_keys(labels, component) {
+                    if !sc.declare(&key, item.clone()) {
                         return Err(self.error(ElabError::invalid(
                             d.span,
                             "this instance is bound by an earlier configuration specification too",
@@ -570,5 +562,25 @@ pub(super) fn fit_array(ty: &Ty, v: &Value) -> Ty {
         (Ty::Array(a), Value::Array(items)) if a.bounds.is_none() => constrain(a, items.len()),
         (Ty::Array(a), Value::String(s)) if a.bounds.is_none() => constrain(a, s.chars().count()),
         _ => ty.clone(),
+    }
+}
+
+/// The names a binding of `labels` of `component` is declared under in a scope (see
+/// [`Item::Binding`]).
+pub(super) fn binding_keys(labels: &ast::EntityNames, component: &ast::Expr) -> Vec<String> {
+    let component = match &component.kind {
+        ast::ExprKind::Name(id) | ast::ExprKind::Selected(_, id) => id.name.as_str(),
+        _ => "",
+    };
+    match labels {
+        ast::EntityNames::All => vec![format!(" for all {component}")],
+        ast::EntityNames::Others => vec![format!(" for others {component}")],
+        ast::EntityNames::List(names) => names
+            .iter()
+            .filter_map(|n| match &n.kind {
+                ast::ExprKind::Name(id) => Some(format!(" for {}", id.name)),
+                _ => None,
+            })
+            .collect(),
     }
 }

@@ -15,7 +15,7 @@ use super::arrays::NatureMark;
 use super::error::ElabError;
 use super::generics::parse_literal;
 use super::library::{Unit, canonical_library};
-use super::scope::{Item, Scope, list_names};
+use super::scope::{BindingRef, Item, Scope, list_names};
 use super::types::Ty;
 use super::{Elab, ElabOptions, R, Reported};
 
@@ -51,8 +51,24 @@ fn flatten(decls: &[InterfaceDecl]) -> Vec<(&ast::Ident, &InterfaceDecl)> {
 
 impl<'a> Elab<'a> {
     pub(super) fn top(&mut self, options: &ElabOptions) {
-        let name = options.top.to_ascii_lowercase();
-        let key = ("work".to_string(), name.clone());
+        let mut name = options.top.to_ascii_lowercase();
+        let mut key = ("work".to_string(), name.clone());
+        // `--top cfg` names a configuration declaration: its entity, configured.
+        let mut config = None;
+        let mut arch_name = None;
+        if !self.lib.entities.contains_key(&key)
+            && let Some(cfg) = self.lib.configurations.get(&key)
+        {
+            let c = cfg.unit;
+            if let ast::ExprKind::Name(id) | ast::ExprKind::Selected(_, id) = &c.entity.kind {
+                name = id.name.clone();
+                key = (cfg.library.clone(), name.clone());
+            }
+            if let ast::ExprKind::Name(id) = &c.block.spec.kind {
+                arch_name = Some(id);
+            }
+            config = Some(&c.block);
+        }
         let Some(entity) = self.lib.entities.get(&key).cloned() else {
             let cands = self.lib.tops();
             let help = match self
@@ -92,11 +108,11 @@ impl<'a> Elab<'a> {
                 });
             }
         }
-        let Ok(arch) = self.architecture(&entity, None, entity.unit.name.span) else {
+        let Ok(arch) = self.architecture(&entity, arch_name, entity.unit.name.span) else {
             return;
         };
         self.design.top = name;
-        let _ = self.instance_body(&entity, &arch, Actuals::Top(&overrides), 0);
+        let _ = self.instance_body(&entity, &arch, Actuals::Top(&overrides), config, 0);
     }
 
     fn architecture(
@@ -213,6 +229,7 @@ impl<'a> Elab<'a> {
         entity: &Unit<'a, Entity>,
         arch: &Unit<'a, Architecture>,
         actuals: Actuals<'_, 'a>,
+        config: Option<&'a ast::BlockConfig>,
         depth: usize,
     ) -> R<()> {
         let ent = entity.unit;
@@ -275,7 +292,38 @@ impl<'a> Elab<'a> {
         self.conc_stmts(&mut sc, &ent.stmts, depth);
         sc.push();
         self.decls(&mut sc, &arch.unit.decls);
+        if let Some(block) = config {
+            self.block_config(&mut sc, block)?;
+        }
         self.conc_stmts(&mut sc, &arch.unit.stmts, depth);
+        Ok(())
+    }
+
+    /// Declares the component configurations of `block` (a configuration declaration's, for
+    /// the architecture being elaborated) as bindings of its instances. A configuration
+    /// specification of the architecture for the same instances stays in force.
+    fn block_config(&mut self, sc: &mut Scope<'a>, block: &'a ast::BlockConfig) -> R<()> {
+        for item in &block.items {
+            match item {
+                ast::ConfigItem::Component(c) => {
+                    let binding = Item::Binding(BindingRef {
+                        component: &c.component,
+                        binding: c.binding.as_ref(),
+                        block: c.block.as_ref(),
+                    });
+                    for key in super::decls::binding_keys(&c.labels, &c.component) {
+                        sc.declare(&key, binding.clone());
+                    }
+                }
+                ast::ConfigItem::Block(b) => {
+                    return Err(self.error(ElabError::unsupported(
+                        b.span,
+                        "configurations of block and generate statements",
+                        "configure the components of the architecture itself, or use configuration specifications inside the generate statement",
+                    )));
+                }
+            }
+        }
         Ok(())
     }
 
@@ -646,6 +694,7 @@ impl<'a> Elab<'a> {
         ports: &'a [Assoc],
         depth: usize,
     ) -> R<()> {
+        let mut config = None;
         let (lib, name, arch_name, name_span) = match unit {
             InstantiatedUnit::Entity { name, architecture } => {
                 self.entity_aspect(sc, name, architecture.as_ref())?
@@ -665,15 +714,32 @@ impl<'a> Elab<'a> {
                     ast::DeclKind::Component { name, .. } => name.name.clone(),
                     _ => String::new(),
                 };
+                // Default binding (LRM 7.3.3): the entity of the same name in work.
+                let default = ("work".to_string(), simple.clone(), None, name.span);
                 match self.binding_of(sc, s, &simple) {
-                    // A configuration specification binds this instance.
-                    Some(binding) => match self.bound_entity(sc, binding)? {
-                        Some(target) => target,
-                        // `use open`: the instance stays unbound, nothing is elaborated.
-                        None => return Ok(()),
-                    },
-                    // Default binding (LRM 7.3.3): the entity of the same name in work.
-                    None => ("work".to_string(), simple, None, name.span),
+                    // A configuration specification or component configuration binds it.
+                    Some(b) => {
+                        let mut target = match b.binding {
+                            Some(binding) => match self.bound_entity(sc, binding)? {
+                                Some(target) => target,
+                                // `use open`: the instance stays unbound.
+                                None => return Ok(()),
+                            },
+                            None => default,
+                        };
+                        if let Some(block) = b.block {
+                            // `for arch ... end for;` names the architecture when the binding
+                            // did not.
+                            if target.2.is_none()
+                                && let ast::ExprKind::Name(id) = &block.spec.kind
+                            {
+                                target.2 = Some(id);
+                            }
+                            config = Some(block);
+                        }
+                        target
+                    }
+                    None => default,
                 }
             }
             InstantiatedUnit::Configuration(n) => {
@@ -684,25 +750,14 @@ impl<'a> Elab<'a> {
                 )));
             }
         };
-        self.instantiate_entity(
-            sc,
-            s,
-            (lib, name, arch_name, name_span),
-            generics,
-            ports,
-            depth,
-        )
+        let target = (lib, name, arch_name, name_span);
+        self.instantiate_entity(sc, s, target, (generics, ports), config, depth)
     }
 
     /// The configuration specification of the innermost declarative region that binds
     /// instance `s` of component `component`: one naming its label, else one for `all` or
     /// `others` of that component (LRM 5.2).
-    fn binding_of(
-        &self,
-        sc: &Scope<'a>,
-        s: &ConcStmt,
-        component: &str,
-    ) -> Option<&'a ast::Binding> {
+    fn binding_of(&self, sc: &Scope<'a>, s: &ConcStmt, component: &str) -> Option<BindingRef<'a>> {
         let here = sc.regions.last()?;
         let keys = [
             s.label.as_ref().map(|l| format!(" for {}", l.name)),
@@ -711,16 +766,10 @@ impl<'a> Elab<'a> {
         ];
         for key in keys.iter().flatten() {
             for item in here.items.get(key).into_iter().flatten() {
-                let Item::Binding(d) = item else { continue };
-                let d: &'a ast::Decl = d;
-                if let ast::DeclKind::Configuration {
-                    component: c,
-                    binding,
-                    ..
-                } = &d.kind
-                    && simple_name(c) == Some(component)
+                if let Item::Binding(b) = item
+                    && simple_name(b.component) == Some(component)
                 {
-                    return Some(binding);
+                    return Some(*b);
                 }
             }
         }
@@ -798,8 +847,8 @@ impl<'a> Elab<'a> {
         sc: &mut Scope<'a>,
         s: &ConcStmt,
         (lib, name, arch_name, name_span): (String, String, Option<&'a ast::Ident>, Span),
-        generics: &'a [Assoc],
-        ports: &'a [Assoc],
+        (generics, ports): (&'a [Assoc], &'a [Assoc]),
+        config: Option<&'a ast::BlockConfig>,
         depth: usize,
     ) -> R<()> {
         let key = (canonical_library(&lib).to_string(), name.clone());
@@ -848,6 +897,7 @@ impl<'a> Elab<'a> {
                 generics,
                 ports,
             },
+            config,
             depth + 1,
         );
         (self.path, self.instance) = saved;

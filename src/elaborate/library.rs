@@ -8,8 +8,8 @@ use rustc_hash::FxHashMap;
 
 use crate::analysis::Analysis;
 use crate::ast::{
-    Architecture, ConcKind, ConcStmt, ContextItem, DesignFile, Entity, ExprKind, InstantiatedUnit,
-    LibraryUnit, Package, PackageBody,
+    Architecture, ConcKind, ConcStmt, Configuration, ContextItem, DesignFile, Entity, ExprKind,
+    InstantiatedUnit, LibraryUnit, Package, PackageBody,
 };
 use crate::source::FileId;
 
@@ -25,6 +25,8 @@ pub struct Library<'a> {
     pub packages: FxHashMap<(String, String), Unit<'a, Package>>,
     /// The body of each package (by its unit index; the last when several complete it).
     pub bodies: FxHashMap<usize, Unit<'a, PackageBody>>,
+    /// Configuration declarations by (library, name).
+    pub configurations: FxHashMap<(String, String), Unit<'a, Configuration>>,
     /// Architectures of an entity that is not in the compilation (they still instantiate).
     pub orphans: Vec<Unit<'a, Architecture>>,
 }
@@ -96,6 +98,15 @@ impl<'a> Library<'a> {
                         index,
                     };
                     lib.packages.insert(key(&p.name.name), unit);
+                }
+                LibraryUnit::Configuration(c) => {
+                    let unit = Unit {
+                        unit: c,
+                        context,
+                        library: library.clone(),
+                        index,
+                    };
+                    lib.configurations.insert(key(&c.name.name), unit);
                 }
                 LibraryUnit::PackageBody(b) => {
                     let Some(package) = au.primary else { continue };

@@ -17,6 +17,15 @@ use crate::source::Span;
 use super::arrays::{ArrayNature, Elements};
 use super::types::{Sub, Ty};
 
+/// How component instances are bound: the component, the binding indication (`None`: the
+/// default binding) and the configuration of the bound entity's architecture.
+#[derive(Clone, Copy, Debug)]
+pub struct BindingRef<'a> {
+    pub component: &'a ast::Expr,
+    pub binding: Option<&'a ast::Binding>,
+    pub block: Option<&'a ast::BlockConfig>,
+}
+
 /// What a name denotes.
 #[derive(Clone, Debug)]
 pub enum Item<'a> {
@@ -67,9 +76,10 @@ pub enum Item<'a> {
     Library(String),
     Package(Rc<PackageScope<'a>>),
     Component(&'a ast::Decl),
-    /// A configuration specification, declared under ` for LABEL`, ` for all COMPONENT` or
-    /// ` for others COMPONENT` (names no identifier can clash with).
-    Binding(&'a ast::Decl),
+    /// A configuration specification, or a component configuration of a configuration
+    /// declaration, declared under ` for LABEL`, ` for all COMPONENT` or ` for others
+    /// COMPONENT` (names no identifier can clash with).
+    Binding(BindingRef<'a>),
     /// A user-declared attribute (`attribute symbol : string;`).
     Attribute,
     /// Declared, but its declaration could not be elaborated (a stdlib declaration using an
