@@ -339,8 +339,13 @@ fn configuration_declarations_follow_their_entity() {
     let cfg = "configuration c of top is\n  for a\n    for u : leaf use entity work.leaf(a); end for;\n  end for;\nend configuration c;\n";
     let top = "entity top is end entity top;\narchitecture a of top is\n\
                component leaf is end component;\nbegin\n  u : leaf;\nend architecture a;\n";
-    let leaf = "entity leaf is end entity leaf;\narchitecture a of leaf is begin end architecture a;\n";
-    assert!(messages(&[cfg, top, leaf]).is_empty(), "{:?}", messages(&[cfg, top, leaf]));
+    let leaf =
+        "entity leaf is end entity leaf;\narchitecture a of leaf is begin end architecture a;\n";
+    assert!(
+        messages(&[cfg, top, leaf]).is_empty(),
+        "{:?}",
+        messages(&[cfg, top, leaf])
+    );
     let missing = "configuration c of nothing is\n  for a\n  end for;\nend configuration c;\n";
     let m = messages(&[missing]);
     assert!(m.iter().any(|m| m.contains("nothing")), "{m:?}");

@@ -27,8 +27,8 @@ enum Actuals<'x, 'a> {
     Top(&'x [(String, String)]),
     Map {
         parent: &'x Scope<'a>,
-        generics: &'a [Assoc],
-        ports: &'a [Assoc],
+        generics: &'x [Assoc],
+        ports: &'x [Assoc],
     },
 }
 
@@ -695,6 +695,9 @@ impl<'a> Elab<'a> {
         depth: usize,
     ) -> R<()> {
         let mut config = None;
+        // The entity's maps when a binding indication has its own (composed with the
+        // instance's); the instance's otherwise.
+        let (mut entity_generics, mut entity_ports) = (None, None);
         let (lib, name, arch_name, name_span) = match unit {
             InstantiatedUnit::Entity { name, architecture } => {
                 self.entity_aspect(sc, name, architecture.as_ref())?
@@ -727,6 +730,28 @@ impl<'a> Elab<'a> {
                             },
                             None => default,
                         };
+                        if let (
+                            Some(binding),
+                            ast::DeclKind::Component {
+                                generics: cg,
+                                ports: cp,
+                                ..
+                            },
+                        ) = (b.binding, &decl.kind)
+                        {
+                            if !binding.generic_map.is_empty() {
+                                entity_generics = Some(compose(
+                                    &flatten(cg),
+                                    generics,
+                                    &binding.generic_map,
+                                    true,
+                                ));
+                            }
+                            if !binding.port_map.is_empty() {
+                                entity_ports =
+                                    Some(compose(&flatten(cp), ports, &binding.port_map, false));
+                            }
+                        }
                         if let Some(block) = b.block {
                             // `for arch ... end for;` names the architecture when the binding
                             // did not.
@@ -751,7 +776,11 @@ impl<'a> Elab<'a> {
             }
         };
         let target = (lib, name, arch_name, name_span);
-        self.instantiate_entity(sc, s, target, (generics, ports), config, depth)
+        let maps = (
+            entity_generics.as_deref().unwrap_or(generics),
+            entity_ports.as_deref().unwrap_or(ports),
+        );
+        self.instantiate_entity(sc, s, target, maps, config, depth)
     }
 
     /// The configuration specification of the innermost declarative region that binds
@@ -783,13 +812,6 @@ impl<'a> Elab<'a> {
         sc: &Scope<'a>,
         binding: &'a ast::Binding,
     ) -> R<Option<(String, String, Option<&'a ast::Ident>, Span)>> {
-        if let Some(first) = binding.generic_map.first().or(binding.port_map.first()) {
-            return Err(self.error(ElabError::unsupported(
-                first.span,
-                "generic and port maps in a binding indication",
-                "leave them out: the component's generics and ports then bind to the entity's of the same names",
-            )));
-        }
         match &binding.unit {
             Some(InstantiatedUnit::Entity { name, architecture }) => self
                 .entity_aspect(sc, name, architecture.as_ref())
@@ -847,7 +869,7 @@ impl<'a> Elab<'a> {
         sc: &mut Scope<'a>,
         s: &ConcStmt,
         (lib, name, arch_name, name_span): (String, String, Option<&'a ast::Ident>, Span),
-        (generics, ports): (&'a [Assoc], &'a [Assoc]),
+        (generics, ports): (&[Assoc], &[Assoc]),
         config: Option<&'a ast::BlockConfig>,
         depth: usize,
     ) -> R<()> {
@@ -922,4 +944,85 @@ fn simple_name(e: &ast::Expr) -> Option<&str> {
         ast::ExprKind::Name(id) | ast::ExprKind::Selected(_, id) => Some(&id.name),
         _ => None,
     }
+}
+
+/// The entity's map from a binding indication's map over the component's formals and the
+/// instance's map of those formals (LRM 5.2.1.2): every name of a component formal in a
+/// binding actual becomes the instance's actual for it (a generic without one its default
+/// value; a port without one leaves the entity's port open), so that the result is evaluated
+/// where the instance is.
+fn compose(
+    formals: &[(&ast::Ident, &InterfaceDecl)],
+    instance: &[Assoc],
+    binding: &[Assoc],
+    generics: bool,
+) -> Vec<Assoc> {
+    let mut actuals: FxHashMap<&str, Option<ast::Expr>> = FxHashMap::default();
+    for (k, (name, decl)) in formals.iter().enumerate() {
+        let given = instance
+            .iter()
+            .find(|a| {
+                matches!(&a.formal, Some(ast::Expr { kind: ast::ExprKind::Name(f), .. }) if f.name == name.name)
+            })
+            .or_else(|| instance.get(k).filter(|a| a.formal.is_none()));
+        let actual = match given.map(|a| &a.actual) {
+            Some(ast::Actual::Expr(e)) => Some(e.clone()),
+            Some(_) => None,
+            None if generics => decl.default.clone(),
+            None => None,
+        };
+        actuals.insert(name.name.as_str(), actual);
+    }
+    binding
+        .iter()
+        .map(|b| {
+            let actual = match &b.actual {
+                ast::Actual::Expr(e) => match substitute(e, &actuals) {
+                    Some(e) => ast::Actual::Expr(e),
+                    None => ast::Actual::Open(b.span),
+                },
+                other => other.clone(),
+            };
+            Assoc {
+                formal: b.formal.clone(),
+                actual,
+                span: b.span,
+            }
+        })
+        .collect()
+}
+
+/// `e` with each name of a component formal replaced by its actual; `None` when one of them
+/// has none (an open port).
+fn substitute(e: &ast::Expr, actuals: &FxHashMap<&str, Option<ast::Expr>>) -> Option<ast::Expr> {
+    use ast::ExprKind as K;
+    let sub = |x: &ast::Expr| substitute(x, actuals).map(Box::new);
+    let kind = match &e.kind {
+        K::Name(id) => match actuals.get(id.name.as_str()) {
+            Some(Some(actual)) => return Some(actual.clone()),
+            Some(None) => return None,
+            None => K::Name(id.clone()),
+        },
+        K::Apply(prefix, args) => {
+            let mut out = Vec::with_capacity(args.len());
+            for a in args {
+                let actual = match &a.actual {
+                    ast::Actual::Expr(x) => ast::Actual::Expr(substitute(x, actuals)?),
+                    other => other.clone(),
+                };
+                out.push(Assoc {
+                    formal: a.formal.clone(),
+                    actual,
+                    span: a.span,
+                });
+            }
+            K::Apply(sub(prefix)?, out)
+        }
+        K::Paren(x) => K::Paren(sub(x)?),
+        K::Unary(op, x) => K::Unary(*op, sub(x)?),
+        K::Binary(op, l, r) => K::Binary(*op, sub(l)?, sub(r)?),
+        K::Qualified(t, x) => K::Qualified(t.clone(), sub(x)?),
+        other => other.clone(),
+    };
+    Some(ast::Expr { kind, span: e.span })
 }
