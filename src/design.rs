@@ -293,6 +293,48 @@ pub enum Value {
     Array(Vec<Value>),
 }
 
+/// `T'pos` and `T'val` ([`Builtin::Pos`], [`Builtin::EnumVal`], [`Builtin::TimeVal`]), the
+/// same at elaboration (folding) and at run time; `Err` with the reason when the result is
+/// outside its type, as VHDL requires.
+pub fn scalar_attribute(f: Builtin, args: &[Value]) -> Result<Value, String> {
+    match (f, args) {
+        (Builtin::Pos, [Value::Enum(p)]) => Ok(Value::Integer(i64::from(*p))),
+        (Builtin::Pos, [Value::Boolean(b)]) => Ok(Value::Integer(i64::from(*b))),
+        (Builtin::Pos, [Value::Integer(i)]) => Ok(Value::Integer(*i)),
+        (Builtin::Pos, [Value::Time(t)]) => {
+            let fs = (t * 1e15).round();
+            if fs.abs() < 9.2e18 {
+                Ok(Value::Integer(fs as i64))
+            } else {
+                Err(format!("time'pos of {t} s does not fit an integer"))
+            }
+        }
+        (
+            Builtin::EnumVal,
+            [
+                Value::Integer(i),
+                Value::Integer(n),
+                Value::Integer(boolean),
+            ],
+        ) => {
+            if (0..*n).contains(i) {
+                Ok(if *boolean == 1 {
+                    Value::Boolean(*i == 1)
+                } else {
+                    Value::Enum(*i as u32)
+                })
+            } else {
+                Err(format!(
+                    "'val({i}) is outside the type's positions 0 to {}",
+                    n - 1
+                ))
+            }
+        }
+        (Builtin::TimeVal, [Value::Integer(i)]) => Ok(Value::Time(*i as f64 * 1e-15)),
+        _ => Err(format!("{f:?} does not apply to these arguments")),
+    }
+}
+
 impl Value {
     /// The value as a number for the analog side and for waveforms: booleans and enums as
     /// 0/1 (their position), time in seconds; `None` for strings and arrays.
@@ -424,6 +466,14 @@ pub enum Builtin {
     ToReal,
     /// Type conversion `integer(x)` (round to nearest).
     ToInteger,
+    /// `T'pos(x)` of an enumeration, boolean or time value: its position (for time, the
+    /// number of femtoseconds).
+    Pos,
+    /// `T'val(i)` of an enumeration type: arguments `i`, the number of literals, and whether
+    /// the type is `boolean` (1) or not (0); an error outside the type.
+    EnumVal,
+    /// `time'val(i)`: `i` femtoseconds.
+    TimeVal,
 }
 
 /// One instruction of a lowered process. Execution starts at index 0 and runs until `Wait` or

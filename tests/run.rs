@@ -351,3 +351,24 @@ fn a_configuration_declaration_is_a_top() {
         .success()
         .stdout(contains("vmid    0.5 V"));
 }
+
+/// `T'val` outside the type is a run-time error, not a value past the last literal.
+#[test]
+fn val_outside_an_enumeration_is_a_run_time_error() {
+    let dir = tempfile::tempdir().expect("temporary directory");
+    let model = dir.path().join("val.vhd");
+    std::fs::write(
+        &model,
+        "entity tb_val is end;\narchitecture t of tb_val is\n  type state is (idle, run, stop);\nbegin\n  \
+         p : process\n    variable k : integer := 7;\n    variable st : state;\n  begin\n    \
+         st := state'val(k);\n    wait;\n  end process;\nend;\n",
+    )
+    .expect("written");
+    vams()
+        .arg("run")
+        .arg(&model)
+        .args(["--stop", "1 ms"])
+        .assert()
+        .code(1)
+        .stderr(contains("'val(7) is outside the type's positions 0 to 2"));
+}

@@ -100,5 +100,8 @@ fn lower_call(
         Builtin::Realmax => two(Bin::Max),
         Builtin::Realmin => two(Bin::Min),
         Builtin::ToReal => arg(0),
+        Builtin::Pos | Builtin::EnumVal | Builtin::TimeVal => {
+            Err(NotAnalog("the 'pos and 'val attributes"))
+        }
     }
 }

@@ -6,7 +6,7 @@
 use std::rc::Rc;
 
 use crate::ast::{self, Actual, Ident, Range};
-use crate::design::{Expr, SignalAttr, Value};
+use crate::design::{BinaryOp, Builtin, Expr, SignalAttr, Value};
 use crate::source::Span;
 
 use super::error::ElabError;
@@ -152,6 +152,16 @@ impl<'a> Elab<'a> {
                 Ok(Typed { e: Expr::Image(ty.to_design(), Box::new(x.e)), ty: string })
             }
             "high" | "low" | "left" | "right" | "length" | "ascending" => self.bound_attribute(sc, prefix, name, span),
+            "pos" | "val" | "succ" | "pred" | "leftof" | "rightof" => {
+                let Some(x) = arg(0) else {
+                    return Err(self.error(ElabError::invalid(
+                        span,
+                        format!("`'{name}` takes one argument: `t'{name}(x)`"),
+                        None,
+                    )));
+                };
+                self.position_attribute(sc, prefix, name, x, span)
+            }
             _ if ANALOG_UNSUPPORTED.contains(&name) || SIGNAL_UNSUPPORTED.contains(&name) => {
                 let _ = want;
                 Err(self.error(ElabError::unsupported(
@@ -163,9 +173,68 @@ impl<'a> Elab<'a> {
             _ => Err(self.error(ElabError::unsupported(
                 attr.span,
                 format!("the attribute `'{name}`"),
-                "supported: 'dot 'integ 'above 'delayed 'ltf 'zoh 'ztf 'ramp 'slew 'event 'active 'last_value 'last_event 'image 'high 'low 'left 'right 'length 'range",
+                "supported: 'dot 'integ 'above 'delayed 'ltf 'zoh 'ztf 'ramp 'slew 'event 'active 'last_value 'last_event 'image 'high 'low 'left 'right 'length 'range 'pos 'val 'succ 'pred 'leftof 'rightof",
             ))),
         }
+    }
+
+    /// `T'pos`, `T'val`, `T'succ`, `T'pred`, `T'leftof`, `T'rightof` of an integer,
+    /// enumeration, boolean or `time` type (LRM 14.1; the types are ascending, so `leftof` is
+    /// `pred`). Positions of enumerations count from 0, of `time` in femtoseconds; a result
+    /// outside the type is a run-time error.
+    fn position_attribute(
+        &mut self,
+        sc: &Scope<'a>,
+        prefix: &ast::Expr,
+        name: &str,
+        x: &ast::Expr,
+        span: Span,
+    ) -> R<Typed> {
+        let ty = self.type_mark(sc, prefix)?.ty.clone();
+        let literals = match &ty {
+            Ty::Enum(e) => Some(e.literals.len() as i64),
+            Ty::Boolean => Some(2),
+            Ty::Integer | Ty::Time => None,
+            Ty::Real | Ty::Array(_) => {
+                return Err(self.error(ElabError::invalid(
+                    span,
+                    format!(
+                        "`'{name}` applies to integer, enumeration and physical types, not `{ty}`"
+                    ),
+                    Some("for a real, convert: `integer(x)`".into()),
+                )));
+            }
+        };
+        let int = |i: i64| Expr::Const(Value::Integer(i));
+        let pos = |e: Expr| match ty {
+            Ty::Integer => e,
+            _ => Expr::Call(Builtin::Pos, vec![e]),
+        };
+        let val = |i: Expr| match (&ty, literals) {
+            (Ty::Time, _) => Expr::Call(Builtin::TimeVal, vec![i]),
+            (_, Some(n)) => Expr::Call(
+                Builtin::EnumVal,
+                vec![i, int(n), int(i64::from(matches!(ty, Ty::Boolean)))],
+            ),
+            _ => i,
+        };
+        let (e, result) = match name {
+            "pos" => (pos(self.expr_of(sc, x, &ty)?.e), Ty::Integer),
+            "val" => (val(self.expr_of(sc, x, &Ty::Integer)?.e), ty.clone()),
+            _ => {
+                let step = if matches!(name, "succ" | "rightof") {
+                    BinaryOp::Add
+                } else {
+                    BinaryOp::Sub
+                };
+                let p = pos(self.expr_of(sc, x, &ty)?.e);
+                (
+                    val(Expr::Binary(step, Box::new(p), Box::new(int(1)))),
+                    ty.clone(),
+                )
+            }
+        };
+        self.folded(e, result, span)
     }
 
     fn wrong_class(

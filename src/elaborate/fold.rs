@@ -241,6 +241,9 @@ fn binary(op: BinaryOp, a: Value, b: Value) -> Result<Value, NoFold> {
 }
 
 fn call(f: Builtin, args: &[Value]) -> Result<Value, NoFold> {
+    if matches!(f, Builtin::Pos | Builtin::EnumVal | Builtin::TimeVal) {
+        return crate::design::scalar_attribute(f, args).map_err(NoFold::Error);
+    }
     if f == Builtin::ToReal {
         return match args {
             [Value::Integer(i)] => Ok(Value::Real(*i as f64)),
@@ -294,7 +297,13 @@ fn call(f: Builtin, args: &[Value]) -> Result<Value, NoFold> {
         }
         Builtin::Realmax => x.max(y),
         Builtin::Realmin => x.min(y),
-        Builtin::ToReal | Builtin::ToInteger => unreachable!("handled above"),
+        Builtin::ToReal
+        | Builtin::ToInteger
+        | Builtin::Pos
+        | Builtin::EnumVal
+        | Builtin::TimeVal => {
+            unreachable!("handled above")
+        }
     };
     if r.is_nan() {
         return err("the result is not a number");

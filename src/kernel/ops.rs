@@ -290,6 +290,14 @@ fn latin1(position: u32) -> char {
 /// The math_real functions and the numeric type conversions.
 pub(crate) fn builtin(f: Builtin, args: &[Value]) -> Result<Value, EvalError> {
     use Builtin::*;
+    if matches!(f, Pos | EnumVal | TimeVal) {
+        return crate::design::scalar_attribute(f, args).map_err(|m| {
+            EvalError::new(
+                m,
+                "keep the argument within the type's range (T'low to T'high)",
+            )
+        });
+    }
     let arity = match f {
         Atan2 | Realmax | Realmin => 2,
         _ => 1,
@@ -368,6 +376,8 @@ pub(crate) fn real_builtin(f: Builtin, x: f64, y: f64) -> f64 {
         Realmin => x.min(y),
         ToReal => x,
         ToInteger => x.round(),
+        // Not real-valued: `builtin` handles them before it reaches here; NaN otherwise.
+        Pos | EnumVal | TimeVal => f64::NAN,
     }
 }
 
