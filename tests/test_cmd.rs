@@ -169,7 +169,9 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_configuration_declaration ... ok"))
         .stdout(contains("test tb_binding_maps ... ok"))
         .stdout(contains("test tb_scalar_attributes ... ok"))
-        .stdout(contains("17 passed, 0 failed"));
+        .stdout(contains("test tb_bit_operators ... ok"))
+        .stdout(contains("test tb_concurrent_statements ... ok"))
+        .stdout(contains("19 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it
