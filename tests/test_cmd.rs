@@ -171,7 +171,9 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_scalar_attributes ... ok"))
         .stdout(contains("test tb_bit_operators ... ok"))
         .stdout(contains("test tb_concurrent_statements ... ok"))
-        .stdout(contains("19 passed, 0 failed"));
+        .stdout(contains("test tb_local_nature ... ok"))
+        .stdout(contains("test tb_mass_spring_damper ... ok"))
+        .stdout(contains("21 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it
