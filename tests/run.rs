@@ -372,3 +372,29 @@ fn val_outside_an_enumeration_is_a_run_time_error() {
         .code(1)
         .stderr(contains("'val(7) is outside the type's positions 0 to 2"));
 }
+
+/// The first step and the step floor come from the model and the current time, not from the
+/// stop time: with `--stop 1e30s`, `x' = -1/x` from 1 still fails where its solution ends
+/// (t = 0.5), as with `--stop 1s`, instead of jumping to t = 3.6e15 s.
+#[test]
+fn a_far_stop_time_does_not_scale_the_first_step() {
+    let dir = tempfile::tempdir().expect("temporary directory");
+    let model = dir.path().join("sing.vhd");
+    std::fs::write(
+        &model,
+        "entity sing is end;\narchitecture a of sing is\n  quantity x : real;\nbegin\n  \
+         break x => 1.0;\n  x'dot == -1.0 / x;\nend;\n",
+    )
+    .expect("written");
+    let out = dir.path().join("x.csv");
+    let run = vams()
+        .arg("run")
+        .arg(&model)
+        .args(["--stop", "1e30s", "-o"])
+        .arg(&out)
+        .output()
+        .expect("runs");
+    assert_eq!(run.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(stderr.contains("failed at t = 0.49"), "{stderr}");
+}

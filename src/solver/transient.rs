@@ -269,20 +269,15 @@ impl Transient {
         if h * nd > 0.5 {
             h = 0.5 / nd;
         }
-        // The `x'` rule is conservative (BDF1's error grows as h^2 x'', not h x'): with a
-        // tight abstol on a state starting at 0 with a huge slope (the first section of a long
-        // RC ladder), it asks for steps below what the time axis resolves. Start where steps
-        // are still well resolved; the error test shrinks the step if it must.
-        h.max(64.0 * self.min_step(t_out))
+        // Never below what the time axis resolves where the run stands. The stop time plays
+        // no part beyond the 1e-3 above: a step floor scaled by it (`--stop 1e30s`) jumped
+        // over everything the model does in its first seconds.
+        h.max(64.0 * self.min_step())
     }
 
-    /// The step floor: the option, but never below 16 ulp of the time span in play.
-    fn min_step(&self, t_out: f64) -> f64 {
-        let scale = self
-            .t
-            .abs()
-            .max(if t_out.is_finite() { t_out.abs() } else { 0.0 });
-        self.opts.min_step.max(16.0 * f64::EPSILON * scale)
+    /// The step floor: the option, but never below 16 ulp of the current time.
+    fn min_step(&self) -> f64 {
+        self.opts.min_step.max(16.0 * f64::EPSILON * self.t.abs())
     }
 
     /// Takes at most one step towards `t_out` (landing on it exactly) and reports the outcome.
@@ -309,7 +304,7 @@ impl Transient {
         // count as reached. Event times that accumulate rounding land that close to a round
         // stop time (a 20 kHz PWM ends 2.4e-16 s short of 20 ms).
         let ulps = 16.0 * f64::EPSILON * self.t.abs().max(t_out.abs());
-        if t_out - self.t <= (64.0 * ulps).max(self.min_step(t_out)) {
+        if t_out - self.t <= (64.0 * ulps).max(self.min_step()) {
             self.t = t_out;
             self.hist_t[0] = t_out;
             return Ok(Advance::Reached(self.t));
@@ -337,7 +332,7 @@ impl Transient {
             } else {
                 self.t + h
             };
-            if h.is_nan() || h < self.min_step(t_out) || t_new <= self.t {
+            if h.is_nan() || h < self.min_step() || t_new <= self.t {
                 return Err(last_err.unwrap_or(SolveError::StepTooSmall {
                     t: self.t,
                     step: h,
