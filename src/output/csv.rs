@@ -10,12 +10,22 @@ use crate::waveform::Waveforms;
 /// The shortest text that parses back to exactly `v`: plain decimals for ordinary magnitudes,
 /// scientific notation for very small and very large ones.
 pub fn format_number(v: f64) -> String {
+    let mut s = String::new();
+    push_number(&mut s, v);
+    s
+}
+
+/// [`format_number`] appended to `out` (no allocation once `out` has grown: a CSV row of a
+/// large design is thousands of numbers).
+pub fn push_number(out: &mut String, v: f64) {
+    use std::fmt::Write as _;
     let magnitude = v.abs();
-    if v == 0.0 || !v.is_finite() || (1e-5..1e16).contains(&magnitude) {
-        format!("{v}")
+    // Writing to a String cannot fail.
+    let _ = if v == 0.0 || !v.is_finite() || (1e-5..1e16).contains(&magnitude) {
+        write!(out, "{v}")
     } else {
-        format!("{v:e}")
-    }
+        write!(out, "{v:e}")
+    };
 }
 
 fn field(name: &str) -> String {
@@ -37,14 +47,15 @@ pub fn write_csv(out: &mut impl Write, waveforms: &Waveforms) -> io::Result<()> 
     let mut row = String::new();
     for (k, &t) in waveforms.times.iter().enumerate() {
         row.clear();
-        row.push_str(&format_number(t));
+        push_number(&mut row, t);
         for column in &waveforms.columns {
             row.push(',');
             // `Waveforms`' invariant: every column has one value per time point.
             let v = column.values.get(k).copied().unwrap_or(f64::NAN);
-            row.push_str(&format_number(v));
+            push_number(&mut row, v);
         }
-        writeln!(out, "{row}")?;
+        row.push('\n');
+        out.write_all(row.as_bytes())?;
     }
     Ok(())
 }
