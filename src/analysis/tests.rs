@@ -350,3 +350,17 @@ fn configuration_declarations_follow_their_entity() {
     let m = messages(&[missing]);
     assert!(m.iter().any(|m| m.contains("nothing")), "{m:?}");
 }
+
+/// The de-facto packages std_logic_arith and std_logic_unsigned resolve: their types, their
+/// arithmetic by operand types, and their conversions.
+#[test]
+fn std_logic_arith_and_unsigned_resolve() {
+    let text = "library ieee;\nuse ieee.std_logic_1164.all;\nuse ieee.std_logic_arith.all;\n\
+                use ieee.std_logic_unsigned.all;\n\
+                entity e is end entity e;\narchitecture a of e is\n\
+                signal u : unsigned(3 downto 0);\nsignal v : std_logic_vector(3 downto 0);\n\
+                begin\n  p : process\n    variable n : integer;\n  begin\n\
+                u <= u + 1;\n    v <= v + 1;\n    n := conv_integer(u) + conv_integer(v);\n\
+                v <= conv_std_logic_vector(n, 4);\n    wait;\n  end process p;\nend architecture a;\n";
+    assert_eq!(messages(&[text]), Vec::<String>::new());
+}

@@ -22,6 +22,10 @@ package mechanical_systems is
   subtype angular_momentum     is real tolerance "DEFAULT_ANGULAR_MOMENTUM";
   subtype angular_stiffness    is real tolerance "DEFAULT_ANGULAR_STIFFNESS";
   subtype angular_damping      is real tolerance "DEFAULT_ANGULAR_DAMPING";
+  -- The drafts of 1076.1.1 (used as library `ieee_proposed`, as in The System Designer's
+  -- Guide to VHDL-AMS) named the moment of inertia `mmoment_i`; models written against them
+  -- still use it.
+  subtype mmoment_i            is moment_inertia;
 
   -- Units, spelt out
   attribute unit of displacement         : subtype is "meter";
