@@ -455,6 +455,7 @@ pub enum ConcKind {
     },
     Block {
         guard: Option<Expr>,
+        header: BlockHeader,
         decls: Vec<Decl>,
         stmts: Vec<ConcStmt>,
     },
@@ -715,4 +716,13 @@ pub enum Choice {
     Expr(Expr),
     Range(Range),
     Others(Span),
+}
+
+/// The generic and port clauses of a block statement with their maps (empty when absent).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct BlockHeader {
+    pub generics: Vec<InterfaceDecl>,
+    pub generic_map: Vec<Assoc>,
+    pub ports: Vec<InterfaceDecl>,
+    pub port_map: Vec<Assoc>,
 }

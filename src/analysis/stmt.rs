@@ -324,13 +324,23 @@ impl Analyzer<'_> {
             }
             ConcKind::Block {
                 guard,
+                header,
                 decls,
                 stmts,
             } => {
                 if let Some(g) = guard {
                     self.condition(g);
                 }
+                // The maps' actuals are the enclosing region's names; the formals are the
+                // block's own interface, declared in its region.
+                for a in header.generic_map.iter().chain(&header.port_map) {
+                    if let Actual::Expr(e) = &a.actual {
+                        self.expr_any(e);
+                    }
+                }
                 self.in_region(s.span, |a| {
+                    a.interfaces(&header.generics, super::declare::InterfaceRole::Generic);
+                    a.interfaces(&header.ports, super::declare::InterfaceRole::Port);
                     a.decls(decls);
                     a.conc_stmts(stmts);
                 });

@@ -648,6 +648,7 @@ impl<'a> Elab<'a> {
                 }
                 ConcKind::Block {
                     guard,
+                    header,
                     decls,
                     stmts,
                 } => {
@@ -659,11 +660,74 @@ impl<'a> Elab<'a> {
                         ));
                         continue;
                     }
-                    self.nested_region(sc, s, decls, stmts, depth);
+                    if header.generics.is_empty() && header.ports.is_empty() {
+                        self.nested_region(sc, s, decls, stmts, depth);
+                    } else {
+                        let _ = self.block_with_header(sc, s, header, (decls, stmts), depth);
+                    }
                 }
                 ConcKind::Simultaneous(kind) => self.simultaneous(sc, s, kind),
             }
         }
+    }
+
+    /// A block with generic and port clauses: its generics take the values of its generic
+    /// map (or their defaults), its ports are the actual objects of its port map, as for an
+    /// instance, in a region inside the enclosing one.
+    fn block_with_header(
+        &mut self,
+        sc: &mut Scope<'a>,
+        s: &ConcStmt,
+        header: &'a ast::BlockHeader,
+        (decls, stmts): (&'a [ast::Decl], &'a [ConcStmt]),
+        depth: usize,
+    ) -> R<()> {
+        let label = s
+            .label
+            .as_ref()
+            .map_or("block", |l| l.name.as_str())
+            .to_string();
+        let generics = flatten(&header.generics);
+        let ports = flatten(&header.ports);
+        let (gmap, _) = self.associate(&generics, &header.generic_map, "generic", &label);
+        let (pmap, elementwise) = self.associate(&ports, &header.port_map, "port", &label);
+        if let Some((name, _)) = elementwise.iter().next() {
+            let span = header.port_map.first().map_or(s.span, |a| a.span);
+            return Err(self.error(ElabError::unsupported(
+                span,
+                format!("element associations of the block port `{name}`"),
+                "associate the whole port",
+            )));
+        }
+        let parent = sc.clone();
+        let actuals = Actuals::Map {
+            parent: &parent,
+            generics: &header.generic_map,
+            ports: &header.port_map,
+        };
+        let saved = self.path.clone();
+        if let Some(l) = &s.label {
+            self.path = self.hier_name(&l.name);
+        }
+        sc.push();
+        let mut ok = true;
+        for (name, decl) in &generics {
+            let actual = gmap.get(&name.name).copied();
+            ok &= self
+                .generic(sc, name, decl, &actuals, actual, Some(&parent), &label)
+                .is_ok();
+        }
+        for (name, decl) in &ports {
+            let actual = PortActual::Whole(pmap.get(&name.name).copied());
+            ok &= self.port(sc, name, decl, actual, Some(&parent)).is_ok();
+        }
+        if ok {
+            self.decls(sc, decls);
+            self.conc_stmts(sc, stmts, depth);
+        }
+        sc.pop();
+        self.path = saved;
+        if ok { Ok(()) } else { Err(Reported) }
     }
 
     fn nested_region(
