@@ -203,11 +203,12 @@ impl Analysis {
         let units = || self.units.iter().filter(|u| u.file == file);
         // The innermost expression (every analysed one has a type), then its mark: `statics`
         // holds only the static ones.
-        let spans = units().flat_map(|u| u.types.iter().map(|&(s, _)| (s, s)));
-        let span = innermost(spans.collect::<Vec<_>>().iter(), offset);
+        let Some(&(span, _)) = innermost_entry(units().flat_map(|u| u.types.iter()), offset) else {
+            return Staticness::None;
+        };
         units()
             .flat_map(|u| u.statics.iter())
-            .find(|(s, _)| Some(*s) == span)
+            .find(|(s, _)| *s == span)
             .map_or(Staticness::None, |&(_, st)| st)
     }
 
@@ -228,10 +229,17 @@ fn innermost<'a, T: Copy + 'a>(
     spans: impl Iterator<Item = &'a (Span, T)>,
     offset: u32,
 ) -> Option<T> {
+    innermost_entry(spans, offset).map(|(_, v)| *v)
+}
+
+/// The entry of the shortest span that contains `offset`.
+fn innermost_entry<'a, T: 'a>(
+    spans: impl Iterator<Item = &'a (Span, T)>,
+    offset: u32,
+) -> Option<&'a (Span, T)> {
     spans
         .filter(|(s, _)| s.start <= offset && offset < s.end.max(s.start + 1))
         .min_by_key(|(s, _)| s.end - s.start)
-        .map(|(_, v)| *v)
 }
 
 /// Analyses every design unit of `files`.
@@ -325,10 +333,7 @@ fn unit_name(unit: &LibraryUnit) -> (&str, UnitKind) {
 
 /// The identifier a (selected) name ends in; empty for other expressions.
 fn simple_name(e: &crate::ast::Expr) -> &str {
-    match &e.kind {
-        crate::ast::ExprKind::Name(id) | crate::ast::ExprKind::Selected(_, id) => &id.name,
-        _ => "",
-    }
+    e.name_ident().map_or("", |id| &id.name)
 }
 
 /// The library a name in a `library` clause or selected name stands for.

@@ -616,6 +616,17 @@ pub struct Expr {
     pub span: Span,
 }
 
+impl Expr {
+    /// The identifier a simple or selected name ends in (`u`, `work.e`'s `e`); `None` for
+    /// any other expression.
+    pub fn name_ident(&self) -> Option<&Ident> {
+        match &self.kind {
+            ExprKind::Name(id) | ExprKind::Selected(_, id) => Some(id),
+            _ => None,
+        }
+    }
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum BinaryOp {
     And,

@@ -668,8 +668,10 @@ impl Analyzer<'_> {
         self.choices(choices, ty);
         for c in choices {
             match c {
-                Choice::Expr(x) => self.require_static(x, "a case choice", "locally static"),
-                Choice::Range(r) => self.require_static_range(r, "a case choice", "locally static"),
+                Choice::Expr(x) => self.require_static(x, "a case choice", Staticness::Local),
+                Choice::Range(r) => {
+                    self.require_static_range(r, "a case choice", Staticness::Local)
+                }
                 Choice::Others(_) => {}
             }
         }
@@ -681,7 +683,7 @@ impl Analyzer<'_> {
         &mut self,
         r: &crate::ast::Range,
         what: &'static str,
-        required: &'static str,
+        required: Staticness,
     ) {
         if let crate::ast::Range::Explicit { left, right, .. } = r {
             self.require_static(left, what, required);

@@ -81,9 +81,8 @@ impl Analyzer<'_> {
         if let ExprKind::Attribute(p, _) = &prefix.kind {
             return self.attribute_staticness(p).min(actuals);
         }
-        let span = match &prefix.kind {
-            ExprKind::Name(id) | ExprKind::Selected(_, id) => id.span,
-            _ => return Staticness::None,
+        let Some(span) = prefix.name_ident().map(|id| id.span) else {
+            return Staticness::None;
         };
         let Some(&d) = self.ref_at.get(&span) else {
             return Staticness::None;
@@ -103,9 +102,8 @@ impl Analyzer<'_> {
     /// bounds may be generics); an attribute of an object (a signal's `'event`, a quantity's
     /// `'dot`, an array's `'length`) is not marked.
     fn attribute_staticness(&self, prefix: &Expr) -> Staticness {
-        let span = match &prefix.kind {
-            ExprKind::Name(id) | ExprKind::Selected(_, id) => id.span,
-            _ => return Staticness::None,
+        let Some(span) = prefix.name_ident().map(|id| id.span) else {
+            return Staticness::None;
         };
         match self.ref_at.get(&span).map(|&d| &self.out.decl(d).kind) {
             Some(DeclKind::Type(_)) => Staticness::Global,
@@ -120,17 +118,24 @@ impl Analyzer<'_> {
     /// asks for a `required` static expression as `what`. Only such names are reported: they
     /// make any expression non-static, whatever the standard's revision, so the diagnostic is
     /// certain (constants initialised by calls are locally static in some revisions only).
-    pub fn require_static(&mut self, e: &Expr, what: &'static str, required: &'static str) {
+    pub fn require_static(&mut self, e: &Expr, what: &'static str, required: Staticness) {
         if let Some((span, name)) = self.dynamic_name(e) {
+            let (required, help) = match required {
+                Staticness::Local => (
+                    "locally static",
+                    "use literals, or constants declared with literal values",
+                ),
+                _ => (
+                    "globally static",
+                    "use literals, constants and generics (a signal's or variable's value is known only as the design runs)",
+                ),
+            };
             self.error(super::AnalysisError::NotStatic {
                 span,
                 what,
                 required,
                 name,
-                help: Some(match required {
-                    "locally static" => "use literals, or constants declared with literal values".into(),
-                    _ => "use literals, constants and generics (a signal's or variable's value is known only as the design runs)".into(),
-                }),
+                help: Some(help.into()),
             });
         }
     }

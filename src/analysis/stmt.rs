@@ -293,7 +293,7 @@ impl Analyzer<'_> {
             } => {
                 let t = self.discrete_range(range);
                 if let DiscreteRange::Range(r) = range {
-                    self.require_static_range(r, "a generate range", "globally static");
+                    self.require_static_range(r, "a generate range", Staticness::Global);
                 }
                 self.in_region(s.span, |a| {
                     // A generate parameter is globally static (LRM 7.4.2 (c)).
@@ -316,7 +316,7 @@ impl Analyzer<'_> {
                 stmts,
             } => {
                 self.condition(condition);
-                self.require_static(condition, "a generate condition", "globally static");
+                self.require_static(condition, "a generate condition", Staticness::Global);
                 self.in_region(s.span, |a| {
                     a.decls(decls);
                     a.conc_stmts(stmts);

@@ -568,19 +568,34 @@ pub(super) fn fit_array(ty: &Ty, v: &Value) -> Ty {
 /// The names a binding of `labels` of `component` is declared under in a scope (see
 /// [`Item::Binding`]).
 pub(super) fn binding_keys(labels: &ast::EntityNames, component: &ast::Expr) -> Vec<String> {
-    let component = match &component.kind {
-        ast::ExprKind::Name(id) | ast::ExprKind::Selected(_, id) => id.name.as_str(),
-        _ => "",
-    };
+    let component = component.name_ident().map_or("", |id| id.name.as_str());
     match labels {
-        ast::EntityNames::All => vec![format!(" for all {component}")],
-        ast::EntityNames::Others => vec![format!(" for others {component}")],
+        ast::EntityNames::All => vec![binding_key(BindingKey::All, component)],
+        ast::EntityNames::Others => vec![binding_key(BindingKey::Others, component)],
         ast::EntityNames::List(names) => names
             .iter()
             .filter_map(|n| match &n.kind {
-                ast::ExprKind::Name(id) => Some(format!(" for {}", id.name)),
+                ast::ExprKind::Name(id) => Some(binding_key(BindingKey::Label, &id.name)),
                 _ => None,
             })
             .collect(),
+    }
+}
+
+/// Which instances a binding names: one label, or `all` or `others` of a component.
+#[derive(Clone, Copy)]
+pub(super) enum BindingKey {
+    Label,
+    All,
+    Others,
+}
+
+/// The scope name of a binding for the label or component `name`: ` for u1`, ` for all c`,
+/// ` for others c` (no identifier can clash with them).
+pub(super) fn binding_key(key: BindingKey, name: &str) -> String {
+    match key {
+        BindingKey::Label => format!(" for {name}"),
+        BindingKey::All => format!(" for all {name}"),
+        BindingKey::Others => format!(" for others {name}"),
     }
 }

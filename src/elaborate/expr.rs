@@ -544,20 +544,7 @@ impl<'a> Elab<'a> {
                 | BinaryOp::Mod
                 | BinaryOp::Rem
         );
-        let hint = if arith
-            || matches!(
-                bop,
-                BinaryOp::And
-                    | BinaryOp::Or
-                    | BinaryOp::Nand
-                    | BinaryOp::Nor
-                    | BinaryOp::Xor
-                    | BinaryOp::Xnor
-            ) {
-            want
-        } else {
-            None
-        };
+        let hint = if arith || is_logical(bop) { want } else { None };
         // A context-typed left operand (`now - t`, `'1' = b`) takes its type from the right.
         let (lt, rt) = if context_typed(l) && !context_typed(r) {
             let rt = self.expr(sc, r, hint);
@@ -596,17 +583,7 @@ impl<'a> Elab<'a> {
                 }));
             }
         };
-        if lt.ty.is_enum_named("bit")
-            && matches!(
-                bop,
-                BinaryOp::And
-                    | BinaryOp::Or
-                    | BinaryOp::Nand
-                    | BinaryOp::Nor
-                    | BinaryOp::Xor
-                    | BinaryOp::Xnor
-            )
-        {
+        if lt.ty.is_enum_named("bit") && is_logical(bop) {
             return self.folded(bit_logic(bop, lt.e, rt.e), ty, span);
         }
         self.folded(Expr::Binary(bop, Box::new(lt.e), Box::new(rt.e)), ty, span)
@@ -960,10 +937,20 @@ fn logic_help(ty: &Ty) -> String {
 /// The span of the identifier a (selected) name ends in, where analysis records what it
 /// denotes; the whole span for any other expression.
 pub(super) fn designator_span(e: &ast::Expr) -> Span {
-    match &e.kind {
-        ExprKind::Name(id) | ExprKind::Selected(_, id) => id.span,
-        _ => e.span,
-    }
+    e.name_ident().map_or(e.span, |id| id.span)
+}
+
+/// `and`, `or`, `nand`, `nor`, `xor`, `xnor`.
+fn is_logical(op: BinaryOp) -> bool {
+    matches!(
+        op,
+        BinaryOp::And
+            | BinaryOp::Or
+            | BinaryOp::Nand
+            | BinaryOp::Nor
+            | BinaryOp::Xor
+            | BinaryOp::Xnor
+    )
 }
 
 /// A logical operator on two `bit` values, computed on their positions ('0' is 0, '1' is 1):

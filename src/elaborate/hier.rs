@@ -12,6 +12,7 @@ use crate::design::{QuantityKind, Value};
 use crate::source::Span;
 
 use super::arrays::NatureMark;
+use super::decls::{BindingKey, binding_key};
 use super::error::ElabError;
 use super::generics::parse_literal;
 use super::library::{Unit, canonical_library};
@@ -60,7 +61,7 @@ impl<'a> Elab<'a> {
             && let Some(cfg) = self.lib.configurations.get(&key)
         {
             let c = cfg.unit;
-            if let ast::ExprKind::Name(id) | ast::ExprKind::Selected(_, id) = &c.entity.kind {
+            if let Some(id) = c.entity.name_ident() {
                 name = id.name.clone();
                 key = (cfg.library.clone(), name.clone());
             }
@@ -853,14 +854,16 @@ impl<'a> Elab<'a> {
     fn binding_of(&self, sc: &Scope<'a>, s: &ConcStmt, component: &str) -> Option<BindingRef<'a>> {
         let here = sc.regions.last()?;
         let keys = [
-            s.label.as_ref().map(|l| format!(" for {}", l.name)),
-            Some(format!(" for all {component}")),
-            Some(format!(" for others {component}")),
+            s.label
+                .as_ref()
+                .map(|l| binding_key(BindingKey::Label, &l.name)),
+            Some(binding_key(BindingKey::All, component)),
+            Some(binding_key(BindingKey::Others, component)),
         ];
         for key in keys.iter().flatten() {
             for item in here.items.get(key).into_iter().flatten() {
                 if let Item::Binding(b) = item
-                    && simple_name(b.component) == Some(component)
+                    && b.component.name_ident().map(|id| id.name.as_str()) == Some(component)
                 {
                     return Some(*b);
                 }
@@ -999,14 +1002,6 @@ fn literal_help(ty: &Ty) -> String {
         Ty::Boolean => "write `true` or `false`".into(),
         Ty::Enum(e) => format!("write one of {}", list_names(&e.literals)),
         Ty::Array(_) => "array generics cannot be set from the command line".into(),
-    }
-}
-
-/// The identifier a (selected) name ends in.
-fn simple_name(e: &ast::Expr) -> Option<&str> {
-    match &e.kind {
-        ast::ExprKind::Name(id) | ast::ExprKind::Selected(_, id) => Some(&id.name),
-        _ => None,
     }
 }
 

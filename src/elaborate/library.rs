@@ -8,7 +8,7 @@ use rustc_hash::FxHashMap;
 
 use crate::analysis::Analysis;
 use crate::ast::{
-    Architecture, ConcKind, ConcStmt, Configuration, ContextItem, DesignFile, Entity, ExprKind,
+    Architecture, ConcKind, ConcStmt, Configuration, ContextItem, DesignFile, Entity,
     InstantiatedUnit, LibraryUnit, Package, PackageBody,
 };
 use crate::source::FileId;
@@ -39,6 +39,17 @@ pub struct Unit<'a, T> {
     pub index: usize,
 }
 
+impl<'a, T> Unit<'a, T> {
+    fn new(unit: &'a T, context: &'a [ContextItem], library: &str, index: usize) -> Self {
+        Unit {
+            unit,
+            context,
+            library: library.to_string(),
+            index,
+        }
+    }
+}
+
 impl<T> Clone for Unit<'_, T> {
     fn clone(&self) -> Self {
         Unit {
@@ -65,58 +76,33 @@ impl<'a> Library<'a> {
         let mut lib = Library::default();
         let units = files.iter().flat_map(|(_, design)| design.units.iter());
         for (index, (du, au)) in units.zip(&analysis.units).enumerate() {
-            let library = au.library.clone();
+            let library = &au.library;
             let key = |name: &str| (library.clone(), name.to_string());
             let context = du.context.as_slice();
             match &du.unit {
                 LibraryUnit::Entity(e) => {
-                    let unit = Unit {
-                        unit: e,
-                        context,
-                        library: library.clone(),
-                        index,
-                    };
+                    let unit = Unit::new(e, context, library, index);
                     lib.entities.insert(key(&e.name.name), unit);
                 }
                 LibraryUnit::Architecture(a) => {
-                    let unit = Unit {
-                        unit: a,
-                        context,
-                        library: library.clone(),
-                        index,
-                    };
+                    let unit = Unit::new(a, context, library, index);
                     match au.primary {
                         Some(entity) => lib.architectures.entry(entity).or_default().push(unit),
                         None => lib.orphans.push(unit),
                     }
                 }
                 LibraryUnit::Package(p) => {
-                    let unit = Unit {
-                        unit: p,
-                        context,
-                        library: library.clone(),
-                        index,
-                    };
+                    let unit = Unit::new(p, context, library, index);
                     lib.packages.insert(key(&p.name.name), unit);
                 }
                 LibraryUnit::Configuration(c) => {
-                    let unit = Unit {
-                        unit: c,
-                        context,
-                        library: library.clone(),
-                        index,
-                    };
+                    let unit = Unit::new(c, context, library, index);
                     lib.configurations.insert(key(&c.name.name), unit);
                 }
                 LibraryUnit::PackageBody(b) => {
                     let Some(package) = au.primary else { continue };
-                    let unit = Unit {
-                        unit: b,
-                        context,
-                        library: library.clone(),
-                        index,
-                    };
-                    lib.bodies.insert(package, unit);
+                    lib.bodies
+                        .insert(package, Unit::new(b, context, library, index));
                 }
             }
         }
@@ -160,13 +146,8 @@ fn collect_instantiated(stmts: &[ConcStmt], out: &mut BTreeSet<String>) {
                     InstantiatedUnit::Entity { name, .. } => name,
                     InstantiatedUnit::Configuration(_) => continue,
                 };
-                let simple = match &name.kind {
-                    ExprKind::Name(id) => Some(&id.name),
-                    ExprKind::Selected(_, id) => Some(&id.name),
-                    _ => None,
-                };
-                if let Some(s) = simple {
-                    out.insert(s.clone());
+                if let Some(id) = name.name_ident() {
+                    out.insert(id.name.clone());
                 }
             }
             ConcKind::ForGenerate { stmts, .. }
@@ -182,7 +163,7 @@ fn collect_bound(decls: &[crate::ast::Decl], out: &mut BTreeSet<String>) {
     for d in decls {
         if let crate::ast::DeclKind::Configuration { binding, .. } = &d.kind
             && let Some(InstantiatedUnit::Entity { name, .. }) = &binding.unit
-            && let ExprKind::Name(id) | ExprKind::Selected(_, id) = &name.kind
+            && let Some(id) = name.name_ident()
         {
             out.insert(id.name.clone());
         }

@@ -298,28 +298,25 @@ impl Newton {
         x: &[f64],
         tol: &Tolerances,
     ) -> bool {
-        let terms = p.residual_scale(&mut self.row_tol);
-        if terms {
+        // What each unknown's change is measured in through the Jacobian: its abstol beside
+        // the terms, its whole tolerance (the inverse of its weight) without them.
+        if p.residual_scale(&mut self.row_tol) {
             for t in self.row_tol.iter_mut() {
                 *t *= tol.reltol;
             }
-            for (&(i, j), &a) in self.pattern.iter().zip(&self.jac) {
-                let scaled = a.abs() * tol.abstol[j];
-                if scaled > self.row_tol[i] {
-                    self.row_tol[i] = scaled;
-                }
+            for (u, &a) in self.w.iter_mut().zip(&tol.abstol) {
+                *u = a;
             }
         } else {
-            // Each unknown's tolerance (the inverse of its weight, without the division).
+            self.row_tol.fill(0.0);
             for ((u, &x), &a) in self.w.iter_mut().zip(x).zip(&tol.abstol) {
                 *u = tol.reltol * x.abs() + a;
             }
-            self.row_tol.fill(0.0);
-            for (&(i, j), &a) in self.pattern.iter().zip(&self.jac) {
-                let scaled = a.abs() * self.w[j];
-                if scaled > self.row_tol[i] {
-                    self.row_tol[i] = scaled;
-                }
+        }
+        for (&(i, j), &a) in self.pattern.iter().zip(&self.jac) {
+            let scaled = a.abs() * self.w[j];
+            if scaled > self.row_tol[i] {
+                self.row_tol[i] = scaled;
             }
         }
         self.r.iter().zip(&self.row_tol).all(|(r, t)| r.abs() <= *t)
