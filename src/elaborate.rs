@@ -186,22 +186,28 @@ struct Elab<'a> {
     quiet: bool,
     /// Use regions already built, by [`context_key`].
     use_regions: FxHashMap<String, scope::Region<'a>>,
-    /// The subprogram analysis chose at each call: the span of the name called -> the span
-    /// of the chosen declaration's designator.
-    overloads: FxHashMap<Span, Span>,
+    /// The declaration analysis resolved each name to: the span of the name as used -> the
+    /// span of the declaration's identifier (for a call, the overload it chose). Elaboration
+    /// finds what a name denotes by the latter ([`Scope::declared`], `package_decls`).
+    resolved: FxHashMap<Span, Span>,
+    /// The items of every package elaborated so far, by the span of their declaration.
+    package_decls: FxHashMap<Span, Item<'a>>,
+    /// Names found by the visibility rules of a scope, not by their analysed declaration (a
+    /// name analysis left unresolved, or one whose declaration elaboration could not build).
+    name_lookups: usize,
 }
 
-/// Every call of a subprogram whose overload analysis resolved: the called name's span ->
-/// the declaration's.
-fn chosen_overloads(analysis: &Analysis) -> FxHashMap<Span, Span> {
+/// Every name analysis resolved to one declaration: the name's span -> the declaration's.
+/// Operators are left out: an implicit operator carries its type's span, and elaboration
+/// lowers operators by their symbol.
+fn resolved_names(analysis: &Analysis) -> FxHashMap<Span, Span> {
     analysis
         .units
         .iter()
         .flat_map(|u| &u.references)
         .filter_map(|&(span, d)| {
             let decl = analysis.decl(d);
-            matches!(decl.kind, crate::analysis::DeclKind::Subprogram(_))
-                .then_some((span, decl.span))
+            (span != decl.span && !decl.name.starts_with('"')).then_some((span, decl.span))
         })
         .collect()
 }
@@ -215,7 +221,9 @@ impl<'a> Elab<'a> {
         Elab {
             sources,
             lib: Library::index(analysis, files),
-            overloads: chosen_overloads(analysis),
+            resolved: resolved_names(analysis),
+            package_decls: FxHashMap::default(),
+            name_lookups: 0,
             design: Design::default(),
             errors: Vec::new(),
             packages: FxHashMap::default(),
@@ -481,6 +489,8 @@ impl<'a> Elab<'a> {
         (self.quiet, self.native_names, self.path) = saved;
         self.packages_in_progress.remove(&key);
         let region = sc.regions.pop().unwrap_or_default();
+        self.package_decls
+            .extend(region.decls.iter().map(|(s, i)| (*s, i.clone())));
         let pkg = Rc::new(PackageScope {
             name: key.1.clone(),
             items: Rc::unwrap_or_clone(region.items),

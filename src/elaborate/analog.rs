@@ -62,8 +62,12 @@ impl<'a> Elab<'a> {
             through,
             id: None,
         });
-        sc.declare(&name.name, Item::Nature(idx));
-        sc.declare(&reference.name, Item::RefTerminal { nature: idx });
+        sc.declare_at(&name.name, name.span, Item::Nature(idx));
+        sc.declare_at(
+            &reference.name,
+            reference.span,
+            Item::RefTerminal { nature: idx },
+        );
         Ok(())
     }
 
@@ -125,7 +129,7 @@ impl<'a> Elab<'a> {
         };
         for name in names {
             let id = self.new_terminal(&name.name, n, name.span);
-            if !sc.declare(&name.name, Item::Terminal { id, nature: n }) {
+            if !sc.declare_at(&name.name, name.span, Item::Terminal { id, nature: n }) {
                 return Err(self.error(ElabError::Redeclared {
                     span: name.span,
                     name: name.name.clone(),
@@ -238,7 +242,7 @@ impl<'a> Elab<'a> {
                         init,
                         n.span,
                     );
-                    if !sc.declare(&n.name, Item::Quantity(id)) {
+                    if !sc.declare_at(&n.name, n.span, Item::Quantity(id)) {
                         return Err(self.error(ElabError::Redeclared {
                             span: n.span,
                             name: n.name.clone(),
@@ -303,7 +307,7 @@ impl<'a> Elab<'a> {
                         for n in &b.names {
                             let id =
                                 self.new_quantity(&n.name, kind, &sub, tol.clone(), init, n.span);
-                            if !sc.declare(&n.name, Item::Quantity(id)) {
+                            if !sc.declare_at(&n.name, n.span, Item::Quantity(id)) {
                                 return Err(self.error(ElabError::Redeclared {
                                     span: n.span,
                                     name: n.name.clone(),

@@ -129,7 +129,7 @@ impl<'a> Elab<'a> {
             element,
             bounds,
         };
-        if sc.declare(&name.name, Item::ArrayNature(Rc::new(nature))) {
+        if sc.declare_at(&name.name, name.span, Item::ArrayNature(Rc::new(nature))) {
             Ok(())
         } else {
             Err(self.error(ElabError::Redeclared {
@@ -304,7 +304,7 @@ impl<'a> Elab<'a> {
             elements,
             nature: nature.element,
         };
-        if sc.declare(&name.name, item) {
+        if sc.declare_at(&name.name, name.span, item) {
             Ok(())
         } else {
             Err(self.error(ElabError::Redeclared {
@@ -654,7 +654,7 @@ impl<'a> Elab<'a> {
                 ascending: bounds.2,
                 ids,
             });
-            if !sc.declare(&name.name, Item::QuantityArray(elements)) {
+            if !sc.declare_at(&name.name, name.span, Item::QuantityArray(elements)) {
                 return Err(self.error(ElabError::Redeclared {
                     span: name.span,
                     name: name.name.clone(),

@@ -127,7 +127,7 @@ impl<'a> Elab<'a> {
     }
 
     fn declare(&mut self, sc: &mut Scope<'a>, name: &ast::Ident, item: Item<'a>) -> R<()> {
-        if sc.declare(&name.name, item) {
+        if sc.declare_at(&name.name, name.span, item) {
             Ok(())
         } else {
             Err(self.error(ElabError::Redeclared {
@@ -151,7 +151,7 @@ impl<'a> Elab<'a> {
                             "deferred constant `{}` has no value in the package body",
                             n.name
                         );
-                        sc.declare(&n.name, Item::Poison(Some(reason.into())));
+                        sc.declare_at(&n.name, n.span, Item::Poison(Some(reason.into())));
                     }
                     return Ok(());
                 };
@@ -226,7 +226,7 @@ impl<'a> Elab<'a> {
             DeclKind::Alias { name, target, .. } => {
                 let items = self.lookup(sc, target)?;
                 for item in items {
-                    if !sc.declare(&name.name, item) {
+                    if !sc.declare_at(&name.name, name.span, item) {
                         return Err(self.error(ElabError::Redeclared {
                             span: name.span,
                             name: name.name.clone(),
@@ -340,14 +340,16 @@ impl<'a> Elab<'a> {
                     name,
                     Item::Type(Rc::new(Sub::of(ty.clone(), &name.name))),
                 )?;
-                for (pos, lit) in literals.iter().enumerate() {
-                    sc.declare(
-                        lit,
-                        Item::EnumLiteral {
-                            ty: ty.clone(),
-                            pos: pos as u32,
-                        },
-                    );
+                for (pos, (lit, def)) in literals.iter().zip(lits).enumerate() {
+                    let span = match def {
+                        EnumLiteral::Ident(id) => id.span,
+                        EnumLiteral::Char(_, span) => *span,
+                    };
+                    let item = Item::EnumLiteral {
+                        ty: ty.clone(),
+                        pos: pos as u32,
+                    };
+                    sc.declare_at(lit, span, item);
                 }
                 Ok(())
             }
@@ -388,14 +390,14 @@ impl<'a> Elab<'a> {
                     )));
                 }
                 self.declare(sc, name, Item::Type(Rc::new(Sub::of(Ty::Time, "time"))))?;
-                sc.declare(&primary.name, Item::TimeUnit(1.0));
+                sc.declare_at(&primary.name, primary.span, Item::TimeUnit(1.0));
                 for (unit, value) in secondary {
                     let Value::Time(s) =
                         self.static_value(sc, value, &Ty::Time, "a unit's value")?
                     else {
                         return Err(super::Reported);
                     };
-                    sc.declare(&unit.name, Item::TimeUnit((s * 1e15).round()));
+                    sc.declare_at(&unit.name, unit.span, Item::TimeUnit((s * 1e15).round()));
                 }
                 Ok(())
             }

@@ -102,8 +102,27 @@ fn context_typed(e: &ast::Expr) -> bool {
 }
 
 impl<'a> Elab<'a> {
+    /// What the (simple or selected) name `id` denotes, when analysis resolved it to one
+    /// declaration and elaboration has its item: in `sc`, or among the items of the packages
+    /// elaborated so far. `None` leaves the name to the visibility rules of `sc` (a name
+    /// analysis could not resolve to one declaration, such as an overloaded name without
+    /// context, or a declaration elaboration could not build).
+    pub(super) fn resolved_item(&self, sc: &Scope<'a>, id: &ast::Ident) -> Option<Item<'a>> {
+        let decl = self.resolved.get(&id.span)?;
+        let item = sc
+            .declared(*decl)
+            .or_else(|| self.package_decls.get(decl))?;
+        (!matches!(item, Item::Poison(_))).then(|| item.clone())
+    }
+
     /// Every item a (simple or selected) name denotes.
     pub(super) fn lookup(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<Vec<Item<'a>>> {
+        if let ExprKind::Name(id) | ExprKind::Selected(_, id) = &e.kind
+            && let Some(item) = self.resolved_item(sc, id)
+        {
+            return Ok(vec![item]);
+        }
+        self.name_lookups += 1;
         let items = match &e.kind {
             // Borrowed: only the usable items are copied out, once.
             ExprKind::Name(id) => match sc.lookup(&id.name) {
@@ -180,7 +199,11 @@ impl<'a> Elab<'a> {
             ExprKind::Literal(lit) => self.literal(sc, lit, e.span, want),
             ExprKind::Name(id) => match sc.lookup(&id.name) {
                 // The usual case, read in place: [`Elab::lookup`] would copy the same items.
+                _ if let Some(item) = self.resolved_item(sc, id) => {
+                    self.object(sc, &[item], e, want)
+                }
                 Some(items) if !items.iter().any(|i| matches!(i, Item::Poison(_))) => {
+                    self.name_lookups += 1;
                     self.object(sc, items, e, want)
                 }
                 _ => {

@@ -380,7 +380,7 @@ impl<'a> Elab<'a> {
             }));
         };
         let ty = super::decls::fit_array(&sub.ty, &value);
-        sc.declare(&name.name, Item::Constant { value, ty });
+        sc.declare_at(&name.name, name.span, Item::Constant { value, ty });
         Ok(())
     }
 
@@ -396,7 +396,7 @@ impl<'a> Elab<'a> {
             (PortActual::Whole(a), _) => a,
             (PortActual::Elements(elements), Some(parent)) => {
                 let item = self.terminal_port_elements(sc, parent, name, decl, elements)?;
-                sc.declare(&name.name, item);
+                sc.declare_at(&name.name, name.span, item);
                 return Ok(());
             }
             (PortActual::Elements(_), None) => None,
@@ -444,7 +444,7 @@ impl<'a> Elab<'a> {
                     NatureMark::Scalar(n) => n,
                     NatureMark::Array(array) => {
                         let item = self.terminal_array_port(name, &array, actual_expr)?;
-                        sc.declare(&name.name, item);
+                        sc.declare_at(&name.name, name.span, item);
                         return Ok(());
                     }
                 };
@@ -575,7 +575,7 @@ impl<'a> Elab<'a> {
                 )));
             }
         };
-        sc.declare(&name.name, item);
+        sc.declare_at(&name.name, name.span, item);
         Ok(())
     }
 
@@ -620,8 +620,9 @@ impl<'a> Elab<'a> {
                         let saved = self.path.clone();
                         self.path = format!("{}({i})", self.hier_name(label));
                         sc.push();
-                        sc.declare(
+                        sc.declare_at(
                             &param.name,
+                            param.span,
                             Item::Constant {
                                 value: Value::Integer(i),
                                 ty: Ty::Integer,

@@ -247,8 +247,9 @@ impl<'a> Elab<'a> {
                                 value: e.clone(),
                             });
                         }
-                        if !sc.declare(
+                        if !sc.declare_at(
                             &n.name,
+                            n.span,
                             Item::Variable {
                                 id,
                                 ty: ty.clone(),
@@ -299,7 +300,7 @@ impl<'a> Elab<'a> {
                                 }
                             }
                         };
-                        if !sc.declare(&n.name, item) {
+                        if !sc.declare_at(&n.name, n.span, item) {
                             return Err(self.error(ElabError::Redeclared {
                                 span: n.span,
                                 name: n.name.clone(),
@@ -733,8 +734,9 @@ impl<'a> Elab<'a> {
                 let test = p.emit(Instr::JumpIfNot { cond, target: 0 });
                 sc.push();
                 pushed = true;
-                sc.declare(
+                sc.declare_at(
                     &param.name,
+                    param.span,
                     Item::Variable {
                         id: var,
                         ty: Ty::Integer,

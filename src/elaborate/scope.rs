@@ -88,7 +88,7 @@ pub enum Item<'a> {
     Poison(Option<Rc<str>>),
 }
 
-impl Item<'_> {
+impl<'a> Item<'a> {
     /// "a signal", "a quantity", ... for wrong-class diagnostics.
     pub fn class(&self) -> &'static str {
         match self {
@@ -111,6 +111,16 @@ impl Item<'_> {
             Item::Binding(_) => "a configuration specification",
             Item::Attribute => "an attribute",
             Item::Poison(_) => "an unsupported declaration",
+        }
+    }
+
+    /// The same declaration's item (for those shared by `Rc`: types, subprograms, poison).
+    fn same(&self, other: &Item<'a>) -> bool {
+        match (self, other) {
+            (Item::Type(a), Item::Type(b)) => Rc::ptr_eq(a, b),
+            (Item::Subprogram(a), Item::Subprogram(b)) => Rc::ptr_eq(a, b),
+            (Item::Poison(Some(a)), Item::Poison(Some(b))) => Rc::ptr_eq(a, b),
+            _ => false,
         }
     }
 
@@ -137,6 +147,8 @@ pub struct Subprogram<'a> {
 #[derive(Debug)]
 pub struct Param<'a> {
     pub name: String,
+    /// Where the parameter is declared.
+    pub span: Span,
     pub ty: Ty,
     pub has_default: bool,
     pub default: Option<&'a ast::Expr>,
@@ -152,6 +164,9 @@ pub struct Body<'a> {
     pub decls: &'a [ast::Decl],
     pub stmts: &'a [ast::SeqStmt],
     pub scope: Scope<'a>,
+    /// Where the body declares each parameter (a body completing a declaration repeats the
+    /// parameters, and names in the body denote the body's).
+    pub params: Vec<Span>,
 }
 
 impl std::fmt::Debug for Body<'_> {
@@ -188,6 +203,9 @@ pub struct PackageScope<'a> {
 #[derive(Debug, Default, Clone)]
 pub struct Region<'a> {
     pub items: Rc<FxHashMap<String, Vec<Item<'a>>>>,
+    /// The items declared here by the span of their declaration's identifier: what a name
+    /// that analysis resolved denotes (see `Elab::resolved`).
+    pub decls: Rc<FxHashMap<Span, Item<'a>>>,
 }
 
 #[derive(Debug, Default, Clone)]
@@ -236,6 +254,24 @@ impl<'a> Scope<'a> {
         true
     }
 
+    /// [`Scope::declare`] for a declaration whose identifier is written at `decl`: names that
+    /// analysis resolved to it find it by that span.
+    pub fn declare_at(&mut self, name: &str, decl: Span, item: Item<'a>) -> bool {
+        if !self.declare(name, item.clone()) {
+            return false;
+        }
+        // Invariant: a scope always has at least its use region.
+        let region = self.regions.last_mut().expect("scope has a region");
+        Rc::make_mut(&mut region.decls).insert(decl, item);
+        true
+    }
+
+    /// The item declared at `decl` (the span of its identifier) in the innermost region that
+    /// has one.
+    pub fn declared(&self, decl: Span) -> Option<&Item<'a>> {
+        self.regions.iter().rev().find_map(|r| r.decls.get(&decl))
+    }
+
     /// Makes `item` use-visible (outermost region); repeated imports are harmless.
     pub fn import(&mut self, name: &str, item: Item<'a>) {
         let region = &mut self.regions[0];
@@ -245,10 +281,20 @@ impl<'a> Scope<'a> {
             .push(item);
     }
 
-    /// Replaces the items of `name` in the innermost region that declares it.
+    /// Replaces the items of `name` in the innermost region that declares it (by their
+    /// declarations' spans too, when one item replaces one).
     pub fn replace(&mut self, name: &str, items: Vec<Item<'a>>) {
         for region in self.regions.iter_mut().rev() {
-            if region.items.contains_key(name) {
+            if let Some(old) = region.items.get(name) {
+                if let ([old], [new]) = (old.as_slice(), items.as_slice()) {
+                    let at: Vec<Span> = (region.decls.iter())
+                        .filter(|(_, item)| item.same(old))
+                        .map(|(span, _)| *span)
+                        .collect();
+                    for span in at {
+                        Rc::make_mut(&mut region.decls).insert(span, new.clone());
+                    }
+                }
                 Rc::make_mut(&mut region.items).insert(name.to_string(), items);
                 return;
             }

@@ -7,7 +7,9 @@
 use std::cell::RefCell;
 use std::rc::Rc;
 
-use crate::ast::{self, Actual, Decl, ExprKind, Mode, ObjectClass, SeqStmt, SubprogramSpec};
+use crate::ast::{
+    self, Actual, Decl, Designator, ExprKind, Mode, ObjectClass, SeqStmt, SubprogramSpec,
+};
 use crate::design::{self, Expr, Instr, ParamMode, SignalId, SubprogramId, SubprogramKind, VarId};
 use crate::source::Span;
 
@@ -71,12 +73,20 @@ fn body_scope<'a>(sc: &Scope<'a>) -> Scope<'a> {
         if !has_variable {
             continue;
         }
+        let hidden = || {
+            Item::Poison(Some(
+                "a variable of the enclosing process, which a subprogram cannot read; pass it as a parameter".into(),
+            ))
+        };
+        for item in std::rc::Rc::make_mut(&mut region.decls).values_mut() {
+            if matches!(item, Item::Variable { .. }) {
+                *item = hidden();
+            }
+        }
         for items in std::rc::Rc::make_mut(&mut region.items).values_mut() {
             for item in items.iter_mut() {
                 if matches!(item, Item::Variable { .. }) {
-                    *item = Item::Poison(Some(
-                        "a variable of the enclosing process, which a subprogram cannot read; pass it as a parameter".into(),
-                    ));
+                    *item = hidden();
                 }
             }
         }
@@ -100,6 +110,7 @@ impl<'a> Elab<'a> {
             for n in &p.names {
                 params.push(Param {
                     name: n.name.clone(),
+                    span: n.span,
                     ty: sub.ty.clone(),
                     has_default: p.default.is_some(),
                     default: p.default.as_ref(),
@@ -130,6 +141,7 @@ impl<'a> Elab<'a> {
                     decls,
                     stmts,
                     scope: body_scope(sc),
+                    params: params.iter().map(|p| p.span).collect(),
                 }));
                 return Ok(());
             }
@@ -149,13 +161,17 @@ impl<'a> Elab<'a> {
             body: RefCell::new(None),
             instances: RefCell::new(Vec::new()),
         });
-        sc.declare(&name, Item::Subprogram(sub.clone()));
+        match &spec.designator {
+            Designator::Ident(id) => sc.declare_at(&name, id.span, Item::Subprogram(sub.clone())),
+            Designator::Operator(..) => sc.declare(&name, Item::Subprogram(sub.clone())),
+        };
         if let Some((decls, stmts)) = body {
             // Declared first, so that the body sees itself (recursion).
             *sub.body.borrow_mut() = Some(Rc::new(Body {
                 decls,
                 stmts,
                 scope: body_scope(sc),
+                params: sub.params.iter().map(|p| p.span).collect(),
             }));
         }
         Ok(())
@@ -190,7 +206,7 @@ impl<'a> Elab<'a> {
             )));
         }
         if cands.len() > 1
-            && let Some(decl) = self.overloads.get(&name_span)
+            && let Some(decl) = self.resolved.get(&name_span)
         {
             let mut chosen = cands.iter().filter(|(s, _)| {
                 s.span.file == decl.file && s.span.start <= decl.start && decl.end <= s.span.end
@@ -434,7 +450,9 @@ impl<'a> Elab<'a> {
         });
         let mut params = Vec::new();
         let mut signals = signals.iter();
-        for param in &sub.params {
+        for (i, param) in sub.params.iter().enumerate() {
+            // Same length by `same_signature`; the declaration's span otherwise.
+            let at = body.params.get(i).copied().unwrap_or(param.span);
             let item = if param.is_signal {
                 let Some(s) = signals.next() else {
                     return Err(super::Reported);
@@ -452,7 +470,7 @@ impl<'a> Elab<'a> {
                     readonly: param.mode == ParamMode::In,
                 }
             };
-            sc.declare(&param.name, item);
+            sc.declare_at(&param.name, at, item);
         }
         let before = self.errors.len();
         let decls_ok = self.process_decls(&mut sc, &mut p, body.decls).is_ok();
