@@ -817,6 +817,10 @@ impl Analyzer<'_> {
                     })
                     .collect();
                 if functions.is_empty() {
+                    // An element of a terminal array, or something analysis does not model.
+                    if let [d] = ds.as_slice() {
+                        self.reference(name_span, *d);
+                    }
                     for a in args {
                         self.assoc_any(a);
                     }

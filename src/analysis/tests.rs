@@ -364,3 +364,25 @@ fn std_logic_arith_and_unsigned_resolve() {
                 v <= conv_std_logic_vector(n, 4);\n    wait;\n  end process p;\nend architecture a;\n";
     assert_eq!(messages(&[text]), Vec::<String>::new());
 }
+
+#[test]
+fn an_element_of_a_terminal_array_resolves_to_the_array() {
+    let cell = "library ieee;\nuse ieee.electrical_systems.all;\n\
+                entity cell is\n  port (terminal p : electrical);\nend entity cell;\n\
+                architecture a of cell is begin end architecture a;";
+    let top = "library ieee;\nuse ieee.electrical_systems.all;\n\
+               entity top is\nend entity top;\narchitecture a of top is\n\
+               \x20 terminal node : electrical_vector(0 to 3);\nbegin\n\
+               \x20 g : for k in 1 to 3 generate\n\
+               \x20   u : entity work.cell port map (p => node(k - 1));\n\
+               \x20 end generate g;\nend architecture a;";
+    let (sources, files) = load(&[cell, top]);
+    let a = analyse(&sources, &files);
+    let file = files.last().expect("the user file").0;
+    let use_at = top.rfind("node(k").expect("a use of node") as u32;
+    let d = a.declaration_at(file, use_at).expect("node resolves");
+    // The terminal array's declaration (an array nature is not modelled yet: `Opaque`).
+    assert_eq!(a.decl(d).name, "node");
+    let declared_at = top.find("node :").expect("the declaration") as u32;
+    assert_eq!(a.decl(d).span.start, declared_at);
+}

@@ -346,7 +346,12 @@ impl<'a> Elab<'a> {
             Literal::Integer(i) => Typed::new(Expr::Const(Value::Integer(*i)), Ty::Integer),
             Literal::Real(x) => Typed::new(Expr::Const(Value::Real(*x)), Ty::Real),
             Literal::Physical(n, unit) => {
-                let factor = match sc.lookup(&unit.name) {
+                let resolved = self.resolved_item(sc, unit);
+                let factor = match resolved
+                    .as_ref()
+                    .map(std::slice::from_ref)
+                    .or_else(|| sc.lookup(&unit.name))
+                {
                     Some([Item::TimeUnit(f), ..]) => *f,
                     _ => {
                         return Err(self.error(ElabError::Undeclared {

@@ -124,16 +124,33 @@ impl<'a> Elab<'a> {
             None => None,
         };
         if let Some((decls, stmts)) = body {
-            let earlier = sc.lookup(&name).and_then(|items| {
-                items.iter().find_map(|i| match i {
-                    Item::Subprogram(s)
-                        if s.body.borrow().is_none()
-                            && s.native.is_none()
-                            && same_signature(s, &params, ret.as_ref()) =>
-                    {
-                        Some(s.clone())
-                    }
-                    _ => None,
+            // The declaration this body completes: the one analysis bound it to, else the
+            // visible one of the same signature.
+            let bound = match &spec.designator {
+                Designator::Ident(id) => self
+                    .resolved
+                    .get(&id.span)
+                    .and_then(|d| sc.declared(*d))
+                    .and_then(|i| match i {
+                        Item::Subprogram(s) if s.body.borrow().is_none() && s.native.is_none() => {
+                            Some(s.clone())
+                        }
+                        _ => None,
+                    }),
+                Designator::Operator(..) => None,
+            };
+            let earlier = bound.or_else(|| {
+                sc.lookup(&name).and_then(|items| {
+                    items.iter().find_map(|i| match i {
+                        Item::Subprogram(s)
+                            if s.body.borrow().is_none()
+                                && s.native.is_none()
+                                && same_signature(s, &params, ret.as_ref()) =>
+                        {
+                            Some(s.clone())
+                        }
+                        _ => None,
+                    })
                 })
             });
             if let Some(s) = earlier {
