@@ -1,13 +1,19 @@
 entity t is end;
 architecture a of t is
-  function clipped (v : real) return real is
+  -- How many halvings bring v below 1: the loop's count depends on the operand, so the
+  -- function cannot be expanded into an equation.
+  function halvings (v : real) return real is
+    variable x : real := v;
+    variable n : real := 0.0;
   begin
-    if v > 1.0 then
-      return 1.0;
-    end if;
-    return v;
+    while x > 1.0 loop
+      x := x / 2.0;
+      n := n + 1.0;
+    end loop;
+    return n;
   end function;
-  quantity x : real;
+  quantity x, y : real;
 begin
-  x == clipped(2.0);
+  x == 1.0e6 * (1.0 + now);
+  y == halvings(x);
 end;
