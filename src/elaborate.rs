@@ -192,9 +192,35 @@ struct Elab<'a> {
     resolved: FxHashMap<Span, Span>,
     /// The items of every package elaborated so far, by the span of their declaration.
     package_decls: FxHashMap<Span, Item<'a>>,
+    /// The multiplications and divisions analysis resolved to the mixed universal operators
+    /// (`universal_integer * universal_real`, LRM 7.5.5): their integer operand is converted.
+    mixed_universal: FxHashSet<Span>,
     /// Names found by the visibility rules of a scope, not by their analysed declaration (a
     /// name analysis left unresolved, or one whose declaration elaboration could not build).
     name_lookups: usize,
+}
+
+/// The spans of the operations analysis resolved to `"*"` or `"/"` of a universal integer and
+/// a universal real operand.
+fn mixed_universal_operations(analysis: &Analysis) -> FxHashSet<Span> {
+    use crate::analysis::DeclKind;
+    use crate::analysis::types::{UNIVERSAL_INTEGER, UNIVERSAL_REAL};
+    analysis
+        .units
+        .iter()
+        .flat_map(|u| &u.references)
+        .filter(|&&(_, d)| {
+            let decl = analysis.decl(d);
+            let DeclKind::Subprogram(sig) = &decl.kind else {
+                return false;
+            };
+            let types: Vec<_> = sig.params.iter().map(|p| p.ty).collect();
+            matches!(decl.name.as_str(), "\"*\"" | "\"/\"")
+                && types.contains(&UNIVERSAL_INTEGER)
+                && types.contains(&UNIVERSAL_REAL)
+        })
+        .map(|&(span, _)| span)
+        .collect()
 }
 
 /// Every name analysis resolved to one declaration: the name's span -> the declaration's.
@@ -222,6 +248,7 @@ impl<'a> Elab<'a> {
             sources,
             lib: Library::index(analysis, files),
             resolved: resolved_names(analysis),
+            mixed_universal: mixed_universal_operations(analysis),
             package_decls: FxHashMap::default(),
             name_lookups: 0,
             design: Design::default(),

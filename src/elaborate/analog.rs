@@ -318,11 +318,35 @@ impl<'a> Elab<'a> {
                 }
                 Ok(())
             }
-            QuantityDecl::Source { .. } => Err(self.error(ElabError::unsupported(
-                span,
-                "source quantities (`spectrum`, `noise`)",
-                "frequency-domain analysis is not supported",
-            ))),
+            // A spectral or noise source quantity is zero in the quiescent and time domains
+            // (LRM 1076.1 12.6.4): it contributes only to a frequency-domain analysis, which
+            // vams does not run yet, so its magnitude, phase and density are not evaluated.
+            QuantityDecl::Source { names, subtype, .. } => {
+                let sub = self.subtype_indication(sc, subtype)?;
+                if sub.ty != Ty::Real {
+                    return Err(self.error(ElabError::unsupported(
+                        subtype.span,
+                        format!("source quantities of type {}", sub.ty),
+                        "source quantities are scalar reals in vams",
+                    )));
+                }
+                for n in names {
+                    let id =
+                        self.new_quantity(&n.name, QuantityKind::Free, &sub, None, None, n.span);
+                    if !sc.declare_at(&n.name, n.span, Item::Quantity(id)) {
+                        return Err(self.error(ElabError::Redeclared {
+                            span: n.span,
+                            name: n.name.clone(),
+                        }));
+                    }
+                    let text = format!(
+                        "{} == 0.0 (a source quantity outside the frequency domain)",
+                        n.name
+                    );
+                    self.generated_equation(Expr::Quantity(id), n.span, text);
+                }
+                Ok(())
+            }
         }
     }
 

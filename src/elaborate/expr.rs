@@ -312,6 +312,7 @@ impl<'a> Elab<'a> {
         let t = self.expr_of(sc, e, ty)?;
         match t.e {
             Expr::Const(v) => Ok(v),
+            e if let Some(v) = super::inline::static_call_value(&self.design, &e) => Ok(v),
             _ => Err(self.error(ElabError::NotStatic {
                 span: e.span,
                 what: what.to_string(),
@@ -588,6 +589,16 @@ impl<'a> Elab<'a> {
             };
             let rt = self.expr(sc, r, rhint.as_ref().or(hint));
             (lt?, rt?)
+        };
+        // `time'pos(t) * 1.0e-15`: universal_integer times universal_real is real.
+        let (lt, rt) = if self.mixed_universal.contains(&span) {
+            let real = |t: Typed| match t.ty {
+                Ty::Integer => Typed::new(Expr::Call(Builtin::ToReal, vec![t.e]), Ty::Real),
+                _ => t,
+            };
+            (real(lt), real(rt))
+        } else {
+            (lt, rt)
         };
         let ty = match result_type(bop, &lt.ty, &rt.ty) {
             Some(t) => t,

@@ -9,7 +9,7 @@
 //! iteration it can take (a binary search over a table of n points: about 2 log2 n levels). The
 //! analog engine evaluates only the branch taken, and differentiates it exactly.
 
-use crate::design::{Design, Expr, Instr, Subprogram, Type, Value};
+use crate::design::{BinaryOp, Design, Expr, Instr, Subprogram, Type, UnaryOp, Value};
 use crate::source::Span;
 
 use super::error::ElabError;
@@ -42,8 +42,18 @@ pub(super) fn inline(design: &Design, e: &Expr, depth: usize) -> Result<Expr, No
         design,
         steps: 0,
         open: 0,
+        facts: Vec::new(),
     }
     .expr(e, depth)
+}
+
+/// The value of `e` when its user function calls, executed for their arguments, leave it
+/// static (a constant initialised by a pure function of constants: `time2real(t_step)`).
+pub(super) fn static_call_value(design: &Design, e: &Expr) -> Option<Value> {
+    match inline(design, e, 0).ok().map(fold_parts) {
+        Some(Ok(Expr::Const(v))) => Some(v),
+        _ => None,
+    }
 }
 
 struct Expander<'d> {
@@ -51,6 +61,100 @@ struct Expander<'d> {
     steps: usize,
     /// Conditions forked and not yet joined on the current path.
     open: usize,
+    /// What the conditions taken on the current path say about the operands (`x > 1.0` on
+    /// one branch, `x <= 1.0` on the other): a later comparison they decide is not forked,
+    /// so a table lookup does not expand paths that no operand can take (where an index runs
+    /// off the table).
+    facts: Vec<Comparison>,
+}
+
+/// `e op bound`, `op` one of `<`, `<=`, `>`, `>=`.
+#[derive(Clone, Debug, PartialEq)]
+struct Comparison {
+    e: Expr,
+    op: BinaryOp,
+    bound: f64,
+}
+
+impl Comparison {
+    /// `c` as `e op bound` with a numeric constant on one side.
+    fn of(c: &Expr) -> Option<Comparison> {
+        let number = |e: &Expr| match e {
+            Expr::Const(Value::Real(x)) => Some(*x),
+            Expr::Const(Value::Integer(i)) => Some(*i as f64),
+            _ => None,
+        };
+        match c {
+            Expr::Unary(UnaryOp::Not, inner) => Comparison::of(inner).map(|c| c.negated()),
+            Expr::Binary(
+                op @ (BinaryOp::Lt | BinaryOp::Le | BinaryOp::Gt | BinaryOp::Ge),
+                a,
+                b,
+            ) => match (number(a), number(b)) {
+                (None, Some(bound)) => Some(Comparison {
+                    e: (**a).clone(),
+                    op: *op,
+                    bound,
+                }),
+                (Some(bound), None) => Some(Comparison {
+                    e: (**b).clone(),
+                    op: match op {
+                        BinaryOp::Lt => BinaryOp::Gt,
+                        BinaryOp::Le => BinaryOp::Ge,
+                        BinaryOp::Gt => BinaryOp::Lt,
+                        _ => BinaryOp::Le,
+                    },
+                    bound,
+                }),
+                _ => None,
+            },
+            _ => None,
+        }
+    }
+
+    fn negated(self) -> Comparison {
+        let op = match self.op {
+            BinaryOp::Lt => BinaryOp::Ge,
+            BinaryOp::Le => BinaryOp::Gt,
+            BinaryOp::Gt => BinaryOp::Le,
+            _ => BinaryOp::Lt,
+        };
+        Comparison { op, ..self }
+    }
+
+    /// Whether `facts` make this comparison always true or always false.
+    fn decided_by(&self, facts: &[Comparison]) -> Option<bool> {
+        // The interval of `e`: (lo, lo closed), (hi, hi closed).
+        let (mut lo, mut lo_closed) = (f64::NEG_INFINITY, false);
+        let (mut hi, mut hi_closed) = (f64::INFINITY, false);
+        for f in facts.iter().filter(|f| f.e == self.e) {
+            let v = f.bound;
+            match f.op {
+                BinaryOp::Lt if v < hi || (v == hi && hi_closed) => (hi, hi_closed) = (v, false),
+                BinaryOp::Le if v < hi => (hi, hi_closed) = (v, true),
+                BinaryOp::Gt if v > lo || (v == lo && lo_closed) => (lo, lo_closed) = (v, false),
+                BinaryOp::Ge if v > lo => (lo, lo_closed) = (v, true),
+                _ => {}
+            }
+        }
+        let c = self.bound;
+        // Always below c (or at most c), always above c (or at least c).
+        let below = hi < c || (hi == c && !hi_closed);
+        let at_most = hi <= c;
+        let above = lo > c || (lo == c && !lo_closed);
+        let at_least = lo >= c;
+        match self.op {
+            BinaryOp::Lt if below => Some(true),
+            BinaryOp::Lt if at_least => Some(false),
+            BinaryOp::Le if at_most => Some(true),
+            BinaryOp::Le if above => Some(false),
+            BinaryOp::Gt if above => Some(true),
+            BinaryOp::Gt if at_most => Some(false),
+            BinaryOp::Ge if at_least => Some(true),
+            BinaryOp::Ge if below => Some(false),
+            _ => None,
+        }
+    }
 }
 
 impl Expander<'_> {
@@ -112,6 +216,26 @@ impl Expander<'_> {
         })
     }
 
+    /// [`Expander::run`] on one way of a forked condition, knowing `fact` there.
+    fn branch(
+        &mut self,
+        f: &Subprogram,
+        pc: usize,
+        frame: Vec<Expr>,
+        depth: usize,
+        fact: Option<Comparison>,
+    ) -> Result<Expr, NotInlinable> {
+        self.open += 1;
+        let known = fact.is_some();
+        self.facts.extend(fact);
+        let result = self.run(f, pc, frame, depth);
+        if known {
+            self.facts.pop();
+        }
+        self.open -= 1;
+        result
+    }
+
     /// The result of `f` from instruction `pc` with its variables at `frame`.
     fn run(
         &mut self,
@@ -150,13 +274,21 @@ impl Expander<'_> {
                     Expr::Const(Value::Boolean(true)) => pc += 1,
                     Expr::Const(Value::Boolean(false)) => pc = *target,
                     c => {
-                        self.open += 1;
-                        let then = self.run(f, pc + 1, frame.clone(), depth);
-                        let other =
-                            then.and_then(|then| Ok((then, self.run(f, *target, frame, depth)?)));
-                        self.open -= 1;
-                        let (then, other) = other?;
-                        return Ok(Expr::If(Box::new(c), Box::new(then), Box::new(other)));
+                        let known = Comparison::of(&c);
+                        match known.as_ref().and_then(|k| k.decided_by(&self.facts)) {
+                            Some(true) => pc += 1,
+                            Some(false) => pc = *target,
+                            None => {
+                                let then =
+                                    self.branch(f, pc + 1, frame.clone(), depth, known.clone());
+                                let other = then.and_then(|then| {
+                                    let negated = known.map(Comparison::negated);
+                                    Ok((then, self.branch(f, *target, frame, depth, negated)?))
+                                });
+                                let (then, other) = other?;
+                                return Ok(Expr::If(Box::new(c), Box::new(then), Box::new(other)));
+                            }
+                        }
                     }
                 },
                 Instr::Assert { cond, .. } => {
@@ -457,5 +589,35 @@ mod tests {
         let recursive = function(vec![Instr::Return(Some(call.clone()))]);
         let err = inline(&recursive, &call, 0).unwrap_err();
         assert_eq!(err.reason, "it calls itself");
+    }
+
+    #[test]
+    fn comparisons_taken_decide_later_ones() {
+        let q = Expr::Quantity(QuantityId(0));
+        let cmp = |op, bound| Comparison {
+            e: q.clone(),
+            op,
+            bound,
+        };
+        // On the way where x > 1 and x <= 4 were taken:
+        let facts = [cmp(BinaryOp::Gt, 1.0), cmp(BinaryOp::Le, 4.0)];
+        assert_eq!(cmp(BinaryOp::Gt, 0.5).decided_by(&facts), Some(true));
+        assert_eq!(cmp(BinaryOp::Le, 1.0).decided_by(&facts), Some(false));
+        assert_eq!(cmp(BinaryOp::Le, 4.0).decided_by(&facts), Some(true));
+        assert_eq!(cmp(BinaryOp::Gt, 4.0).decided_by(&facts), Some(false));
+        assert_eq!(cmp(BinaryOp::Lt, 4.0).decided_by(&facts), None);
+        assert_eq!(cmp(BinaryOp::Ge, 2.0).decided_by(&facts), None);
+        // `3.0 < x` reads as `x > 3.0`; `not (x > 1.0)` as `x <= 1.0`.
+        let flipped = gt(Expr::real(3.0), q.clone());
+        assert_eq!(Comparison::of(&flipped), Some(cmp(BinaryOp::Lt, 3.0)));
+        let negated = Expr::Unary(UnaryOp::Not, Box::new(gt(q.clone(), Expr::real(1.0))));
+        assert_eq!(Comparison::of(&negated), Some(cmp(BinaryOp::Le, 1.0)));
+        // Another operand is not constrained by these facts.
+        let other = Comparison {
+            e: Expr::Quantity(QuantityId(1)),
+            op: BinaryOp::Gt,
+            bound: 0.5,
+        };
+        assert_eq!(other.decided_by(&facts), None);
     }
 }

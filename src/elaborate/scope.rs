@@ -129,6 +129,18 @@ impl<'a> Item<'a> {
     }
 }
 
+/// Index bounds `(left, right, ascending)`.
+pub type Bounds = (i64, i64, bool);
+
+/// A subprogram lowered into the design for one set of actual signals (of its signal
+/// parameters) and actual bounds (of its unconstrained array parameters, one per parameter).
+#[derive(Debug)]
+pub struct Instance {
+    pub signals: Vec<SignalId>,
+    pub bounds: Vec<Option<Bounds>>,
+    pub id: SubprogramId,
+}
+
 /// A function or procedure declaration.
 #[derive(Debug)]
 pub struct Subprogram<'a> {
@@ -140,8 +152,9 @@ pub struct Subprogram<'a> {
     pub span: Span,
     /// The body, once seen (a package body completes its package's declarations).
     pub body: RefCell<Option<Rc<Body<'a>>>>,
-    /// Lowered instances in the design, by the actual signals of the signal parameters.
-    pub instances: RefCell<Vec<(Vec<SignalId>, SubprogramId)>>,
+    /// Lowered instances in the design, by the actual signals of the signal parameters and
+    /// the bounds of the actuals of unconstrained array parameters.
+    pub instances: RefCell<Vec<Instance>>,
 }
 
 #[derive(Debug)]

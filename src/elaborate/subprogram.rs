@@ -10,15 +10,17 @@ use std::rc::Rc;
 use crate::ast::{
     self, Actual, Decl, Designator, ExprKind, Mode, ObjectClass, SeqStmt, SubprogramSpec,
 };
-use crate::design::{self, Expr, Instr, ParamMode, SignalId, SubprogramId, SubprogramKind, VarId};
+use crate::design::{
+    self, Expr, Instr, ParamMode, SignalId, SubprogramId, SubprogramKind, Value, VarId,
+};
 use crate::source::Span;
 
 use super::decls::{designator, native};
 use super::error::ElabError;
 use super::expr::Typed;
 use super::process::{Proc, SubContext};
-use super::scope::{Body, Item, Param, Scope, Subprogram};
-use super::types::Ty;
+use super::scope::{Body, Bounds, Instance, Item, Param, Scope, Subprogram};
+use super::types::{ArrayTy, Ty};
 use super::{Elab, R};
 
 /// Arguments bound to a subprogram's parameters: one optional actual per parameter.
@@ -327,25 +329,30 @@ impl<'a> Elab<'a> {
     ) -> R<Expr> {
         let mut args = Vec::new();
         let mut signals = Vec::new();
+        let mut bounds = Vec::new();
         for (p, actual) in sub.params.iter().zip(slots) {
             if p.is_signal {
                 signals.push(self.signal_actual(sc, p, *actual, span)?);
+                bounds.push(None);
             } else {
-                args.push(self.argument(sc, p, *actual, span)?.e);
+                let t = self.argument(sc, p, *actual, span)?;
+                bounds.push(actual_bounds(&p.ty, &t.ty, &t.e));
+                args.push(t.e);
             }
         }
-        self.function_expr(sub, args, signals, span)
+        self.function_expr(sub, args, signals, &bounds, span)
     }
 
-    /// `FnCall` of the instance of `sub` for `signals`.
+    /// `FnCall` of the instance of `sub` for `signals` and the actuals' `bounds`.
     pub(super) fn function_expr(
         &mut self,
         sub: &Rc<Subprogram<'a>>,
         args: Vec<Expr>,
         signals: Vec<SignalId>,
+        bounds: &[Option<Bounds>],
         span: Span,
     ) -> R<Expr> {
-        let id = self.instance(sub, &signals, span)?;
+        let id = self.instance(sub, &signals, bounds, span)?;
         Ok(Expr::FnCall {
             sub: id,
             args,
@@ -365,14 +372,20 @@ impl<'a> Elab<'a> {
         let mut args = Vec::new();
         let mut signals = Vec::new();
         let mut copy_back = Vec::new();
+        let mut bounds = Vec::new();
         for (p, actual) in sub.params.iter().zip(slots) {
             if p.is_signal {
                 signals.push(self.signal_actual(sc, p, *actual, span)?);
+                bounds.push(None);
                 continue;
             }
             let param = VarId(args.len() as u32);
             match p.mode {
-                ParamMode::In => args.push(self.argument(sc, p, *actual, span)?.e),
+                ParamMode::In => {
+                    let t = self.argument(sc, p, *actual, span)?;
+                    bounds.push(actual_bounds(&p.ty, &t.ty, &t.e));
+                    args.push(t.e);
+                }
                 ParamMode::Out | ParamMode::InOut => {
                     let Some(actual) = actual else {
                         return Err(self.error(ElabError::invalid(
@@ -399,6 +412,7 @@ impl<'a> Elab<'a> {
                             )),
                         }));
                     };
+                    bounds.push(actual_bounds(&p.ty, ty, &Expr::Var(*id)));
                     if !ty.same(&p.ty) {
                         self.error(ElabError::TypeMismatch {
                             span: actual.span,
@@ -416,7 +430,7 @@ impl<'a> Elab<'a> {
                 }
             }
         }
-        let id = self.instance(sub, &signals, span)?;
+        let id = self.instance(sub, &signals, &bounds, span)?;
         Ok(Instr::Call {
             sub: id,
             args,
@@ -426,15 +440,21 @@ impl<'a> Elab<'a> {
         })
     }
 
-    /// The design subprogram of `sub` for the actual signals `signals`, lowered on first use.
+    /// The design subprogram of `sub` for the actual signals `signals` and the bounds of the
+    /// actuals of its unconstrained array parameters (one entry per parameter), lowered on
+    /// first use: in the body such a parameter has its actual's bounds, so `x'right` and
+    /// `x'range` are static there.
     fn instance(
         &mut self,
         sub: &Rc<Subprogram<'a>>,
         signals: &[SignalId],
+        bounds: &[Option<Bounds>],
         span: Span,
     ) -> R<SubprogramId> {
-        if let Some((_, id)) = sub.instances.borrow().iter().find(|(s, _)| s == signals) {
-            return Ok(*id);
+        if let Some(i) = (sub.instances.borrow().iter())
+            .find(|i| i.signals == signals && i.bounds.as_slice() == bounds)
+        {
+            return Ok(i.id);
         }
         let Some(body) = sub.body.borrow().clone() else {
             return Err(self.error(ElabError::invalid(
@@ -458,7 +478,11 @@ impl<'a> Elab<'a> {
             code: vec![Instr::Return(None)],
             span: sub.span,
         });
-        sub.instances.borrow_mut().push((signals.to_vec(), id));
+        sub.instances.borrow_mut().push(Instance {
+            signals: signals.to_vec(),
+            bounds: bounds.to_vec(),
+            id,
+        });
         let mut sc = body.scope.clone();
         sc.push();
         let mut p = Proc::default();
@@ -480,10 +504,19 @@ impl<'a> Elab<'a> {
                 }
             } else {
                 params.push(param.mode);
-                let var = p.new_var(&param.name, &param.ty, param.ty.default_value());
+                let ty = match (&param.ty, bounds.get(i).copied().flatten()) {
+                    (Ty::Array(a), Some(b)) if a.bounds.is_none() => Ty::Array(Rc::new(ArrayTy {
+                        name: a.name.clone(),
+                        element: a.element.clone(),
+                        bounds: Some(b),
+                        index_low: a.index_low,
+                    })),
+                    (ty, _) => ty.clone(),
+                };
+                let var = p.new_var(&param.name, &ty, ty.default_value());
                 Item::Variable {
                     id: var,
-                    ty: param.ty.clone(),
+                    ty,
                     readonly: param.mode == ParamMode::In,
                 }
             };
@@ -529,11 +562,33 @@ impl<'a> Elab<'a> {
             _ => None,
         })?;
         let ret = sub.ret.clone()?;
+        let bounds: Vec<_> = (sub.params.iter().zip(&operands))
+            .map(|(p, t)| actual_bounds(&p.ty, &t.ty, &t.e))
+            .collect();
         let args = operands.into_iter().map(|t| t.e).collect();
         Some(
-            self.function_expr(&sub, args, Vec::new(), span)
+            self.function_expr(&sub, args, Vec::new(), &bounds, span)
                 .map(|e| Typed { e, ty: ret }),
         )
+    }
+}
+
+/// The bounds an unconstrained array parameter of type `formal` takes from its actual: the
+/// actual's subtype's, or for an unconstrained value (an aggregate) its length from the index
+/// subtype's low end. `None` for any other parameter.
+fn actual_bounds(formal: &Ty, actual: &Ty, value: &Expr) -> Option<Bounds> {
+    let Ty::Array(f) = formal else {
+        return None;
+    };
+    if f.bounds.is_some() {
+        return None;
+    }
+    match (actual, value) {
+        (Ty::Array(a), _) if a.bounds.is_some() => a.bounds,
+        (_, Expr::Const(Value::Array(v))) => {
+            Some((f.index_low, f.index_low + v.len() as i64 - 1, true))
+        }
+        _ => None,
     }
 }
 
