@@ -176,7 +176,7 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_simultaneous_case ... ok"))
         .stdout(contains("test tb_bouncing_ball ... ok"))
         .stdout(contains("test tb_block_ports ... ok"))
-        .stdout(contains("27 passed, 0 failed"));
+        .stdout(contains("28 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

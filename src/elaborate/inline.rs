@@ -9,7 +9,7 @@
 //! iteration it can take (a binary search over a table of n points: about 2 log2 n levels). The
 //! analog engine evaluates only the branch taken, and differentiates it exactly.
 
-use crate::design::{BinaryOp, Design, Expr, Instr, Subprogram, Type, UnaryOp, Value};
+use crate::design::{BinaryOp, Design, Expr, Instr, Subprogram, Type, UnaryOp, Value, VarId};
 use crate::source::Span;
 
 use super::error::ElabError;
@@ -38,14 +38,26 @@ pub(super) struct NotInlinable {
 
 /// `e` with every `FnCall` replaced by what its function computes.
 pub(super) fn inline(design: &Design, e: &Expr, depth: usize) -> Result<Expr, NotInlinable> {
-    Expander {
-        design,
-        steps: 0,
-        open: 0,
-        facts: Vec::new(),
-    }
-    .expr(e, depth)
+    Expander::new(design, None).expr(e, depth)
 }
+
+/// What the body of a simultaneous procedural statement, lowered as `body` (a procedure
+/// without parameters), leaves in each of `outputs` (the variables standing for the
+/// quantities it assigns), starting from `frame`.
+pub(super) fn procedural_values(
+    design: &Design,
+    body: &Subprogram,
+    frame: &[Expr],
+    outputs: &[VarId],
+) -> Result<Vec<Expr>, NotInlinable> {
+    outputs
+        .iter()
+        .map(|&v| Expander::new(design, Some(v)).run(body, 0, frame.to_vec(), PROCEDURAL))
+        .collect()
+}
+
+/// The call depth of a procedural's own body (functions it calls run deeper).
+const PROCEDURAL: usize = 0;
 
 /// The value of `e` when its user function calls, executed for their arguments, leave it
 /// static (a constant initialised by a pure function of constants: `time2real(t_step)`).
@@ -66,6 +78,20 @@ struct Expander<'d> {
     /// so a table lookup does not expand paths that no operand can take (where an index runs
     /// off the table).
     facts: Vec<Comparison>,
+    /// For a procedural: the variable whose value at the end of the body is the result.
+    result: Option<VarId>,
+}
+
+impl<'d> Expander<'d> {
+    fn new(design: &'d Design, result: Option<VarId>) -> Expander<'d> {
+        Expander {
+            design,
+            steps: 0,
+            open: 0,
+            facts: Vec::new(),
+            result,
+        }
+    }
 }
 
 /// `e op bound`, `op` one of `<`, `<=`, `>`, `>=`.
@@ -306,6 +332,12 @@ impl Expander<'_> {
                     pc += 1;
                 }
                 Instr::Return(Some(r)) => return self.value(f, r, &frame, depth),
+                Instr::Return(None) if depth == PROCEDURAL => {
+                    if let Some(v) = self.result {
+                        return Ok(frame[v.index()].clone());
+                    }
+                    return Err(refuse(f, "it has no result"));
+                }
                 _ => {
                     return Err(refuse(
                         f,

@@ -3,11 +3,14 @@
 //! [`Expr::If`] over its branches.
 
 use crate::ast::{self, Choice, ConcKind, ConcStmt, SimKind};
-use crate::design::{BinaryOp, Equation, Expr, UnaryOp, Value};
+use crate::design::{
+    BinaryOp, Equation, Expr, Instr, QuantityId, Subprogram, SubprogramKind, UnaryOp, Value, VarId,
+};
 use crate::source::Span;
 
 use super::error::ElabError;
-use super::scope::Scope;
+use super::process::{Proc, SubContext};
+use super::scope::{Item, Scope};
 use super::types::Ty;
 use super::{Elab, R};
 
@@ -23,7 +26,7 @@ struct Eqn {
 
 impl<'a> Elab<'a> {
     /// Elaborates one simultaneous statement into the design's equations.
-    pub(super) fn simultaneous(&mut self, sc: &Scope<'a>, stmt: &ConcStmt, kind: &SimKind) {
+    pub(super) fn simultaneous(&mut self, sc: &Scope<'a>, stmt: &'a ConcStmt, kind: &'a SimKind) {
         if let Ok(eqns) = self.sim_equations(sc, stmt, kind) {
             for e in eqns {
                 self.design.equations.push(Equation {
@@ -50,7 +53,12 @@ impl<'a> Elab<'a> {
         Ok(t.e)
     }
 
-    fn sim_equations(&mut self, sc: &Scope<'a>, stmt: &ConcStmt, kind: &SimKind) -> R<Vec<Eqn>> {
+    fn sim_equations(
+        &mut self,
+        sc: &Scope<'a>,
+        stmt: &'a ConcStmt,
+        kind: &'a SimKind,
+    ) -> R<Vec<Eqn>> {
         match kind {
             SimKind::Simple { lhs, rhs, .. } => {
                 let l = self.analog(sc, lhs, &Ty::Real);
@@ -64,11 +72,7 @@ impl<'a> Elab<'a> {
                 }])
             }
             SimKind::Null => Ok(Vec::new()),
-            SimKind::Procedural { .. } => Err(self.error(ElabError::unsupported(
-                stmt.span,
-                "simultaneous procedural statements",
-                "write the equations as simple simultaneous statements (`lhs == rhs;`)",
-            ))),
+            SimKind::Procedural { decls, stmts } => self.procedural(sc, stmt, decls, stmts),
             SimKind::If {
                 branches,
                 otherwise,
@@ -117,6 +121,107 @@ impl<'a> Elab<'a> {
         }
     }
 
+    /// A simultaneous procedural statement (LRM 1076.1 15.4): equivalent to one equation per
+    /// quantity it assigns, `q == (the value its body leaves in q)`. The body is lowered like a
+    /// procedure, each assigned quantity a variable that starts at the quantity's value (so a
+    /// read before the assignment reads the quantity), and executed symbolically as a function
+    /// called in an equation is (`inline`): branches on quantities become conditional
+    /// expressions, loops with static bounds unroll.
+    fn procedural(
+        &mut self,
+        sc: &Scope<'a>,
+        stmt: &'a ConcStmt,
+        decls: &'a [ast::Decl],
+        stmts: &'a [ast::SeqStmt],
+    ) -> R<Vec<Eqn>> {
+        let mut targets: Vec<&ast::Ident> = Vec::new();
+        assigned_names(stmts, &mut targets);
+        let mut inner = sc.clone();
+        inner.push();
+        let mut p = Proc::default();
+        p.subprogram = Some(SubContext { ret: None });
+        let mut outputs: Vec<(QuantityId, VarId)> = Vec::new();
+        for id in targets {
+            let (Some(decl), Some(Item::Quantity(q))) = (
+                self.resolved.get(&id.span).copied(),
+                self.resolved_item(sc, id),
+            ) else {
+                continue;
+            };
+            if outputs.iter().any(|(o, _)| *o == q) {
+                continue;
+            }
+            let var = p.new_var(&id.name, &Ty::Real, Value::Real(0.0));
+            let item = Item::Variable {
+                id: var,
+                ty: Ty::Real,
+                readonly: false,
+            };
+            // Declared at the quantity's own declaration, so that the names analysis resolved
+            // to the quantity find the variable inside the body.
+            inner.declare_at(&id.name, decl, item);
+            outputs.push((q, var));
+        }
+        if outputs.is_empty() {
+            return Err(self.error(ElabError::invalid(
+                stmt.span,
+                "this procedural assigns no quantity, so it gives no equation",
+                Some("assign the quantities it computes with `q := expression;`".into()),
+            )));
+        }
+        let before = self.errors.len();
+        let decls_ok = self.process_decls(&mut inner, &mut p, decls).is_ok();
+        self.seq(&mut inner, &mut p, stmts);
+        p.emit(Instr::Return(None));
+        if !decls_ok || self.errors.len() > before {
+            return Err(super::Reported);
+        }
+        let (vars, code) = p.into_parts();
+        let mut frame: Vec<Expr> = vars.iter().map(|v| Expr::Const(v.init.clone())).collect();
+        for &(q, var) in &outputs {
+            frame[var.index()] = Expr::Quantity(q);
+        }
+        let body = Subprogram {
+            name: "procedural".into(),
+            kind: SubprogramKind::Procedure,
+            params: Vec::new(),
+            vars,
+            code,
+            span: stmt.span,
+        };
+        let vars: Vec<VarId> = outputs.iter().map(|&(_, v)| v).collect();
+        let values = match super::inline::procedural_values(&self.design, &body, &frame, &vars) {
+            Ok(values) => values,
+            Err(e) => {
+                return Err(self.error(ElabError::invalid(
+                    stmt.span,
+                    format!("this procedural cannot be turned into equations: {}", e.reason),
+                    Some("a procedural computes its quantities with variable assignments, `if`, `case`, loops with bounds known before the run, and calls of such functions".into()),
+                )));
+            }
+        };
+        let text = self.text(stmt.span);
+        let mut eqns = Vec::new();
+        for ((q, _), value) in outputs.into_iter().zip(values) {
+            if !value.is_analog() {
+                return Err(self.error(ElabError::invalid(
+                    stmt.span,
+                    "this procedural computes a value an equation cannot hold",
+                    Some("equations read quantities, signals, constants and `now`".into()),
+                )));
+            }
+            let residual =
+                Expr::Binary(BinaryOp::Sub, Box::new(Expr::Quantity(q)), Box::new(value));
+            let residual = self.folded(residual, Ty::Real, stmt.span)?.e;
+            eqns.push(Eqn {
+                residual,
+                span: stmt.span,
+                text: format!("{} := ... in {text}", self.qname(q)),
+            });
+        }
+        Ok(eqns)
+    }
+
     /// Merges branch equation lists position by position into `If` chains. `arms` ends with
     /// the default branch (condition `None`).
     fn combine(
@@ -124,7 +229,7 @@ impl<'a> Elab<'a> {
         sc: &Scope<'a>,
         stmt: &ConcStmt,
         what: &'static str,
-        arms: Vec<Arm<'_>>,
+        arms: Vec<Arm<'a>>,
     ) -> R<Vec<Eqn>> {
         let mut lists = Vec::new();
         let mut failed = false;
@@ -257,5 +362,36 @@ fn choice_span(c: &Choice) -> Span {
         Choice::Range(ast::Range::Explicit { span, .. }) => *span,
         Choice::Range(ast::Range::Attribute(e)) => e.span,
         Choice::Others(s) => *s,
+    }
+}
+
+/// The simple names assigned with `:=` anywhere in `stmts` (nested statements included).
+fn assigned_names<'s>(stmts: &'s [ast::SeqStmt], out: &mut Vec<&'s ast::Ident>) {
+    for s in stmts {
+        match &s.kind {
+            ast::SeqKind::VariableAssign { target, .. } => {
+                if let ast::ExprKind::Name(id) = &target.kind {
+                    out.push(id);
+                }
+            }
+            ast::SeqKind::If {
+                branches,
+                otherwise,
+            } => {
+                for (_, body) in branches {
+                    assigned_names(body, out);
+                }
+                if let Some(body) = otherwise {
+                    assigned_names(body, out);
+                }
+            }
+            ast::SeqKind::Case { alternatives, .. } => {
+                for (_, body) in alternatives {
+                    assigned_names(body, out);
+                }
+            }
+            ast::SeqKind::Loop { body, .. } => assigned_names(body, out),
+            _ => {}
+        }
     }
 }
