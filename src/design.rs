@@ -223,6 +223,8 @@ pub struct Signal {
     pub init: Value,
     pub kind: SignalKind,
     pub span: Span,
+    /// The bounds of an integer subtype, as for [`Variable::range`] (LRM 8.4).
+    pub range: Option<(i64, i64)>,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -254,6 +256,9 @@ pub struct Variable {
     pub name: String,
     pub ty: Type,
     pub init: Value,
+    /// The bounds of an integer subtype (`natural`, `integer range 0 to 7`, `integer`
+    /// itself): assigning a value outside them is a run-time error (LRM 8.5).
+    pub range: Option<(i64, i64)>,
 }
 
 /// The scalar and composite types the kernel handles.

@@ -398,3 +398,49 @@ fn a_far_stop_time_does_not_scale_the_first_step() {
     let stderr = String::from_utf8_lossy(&run.stderr);
     assert!(stderr.contains("failed at t = 0.49"), "{stderr}");
 }
+
+#[test]
+fn integers_outside_their_range_stop_the_run() {
+    vams()
+        .args(["run", "tests/run/range_check.vhd"])
+        .assert()
+        .code(1)
+        .stderr(contains("signal `k` assigned 8, outside its range 0 to 7"))
+        .stderr(contains("at t = 0.000000008 s"));
+    vams()
+        .args(["run", "tests/run/range_check.vhd", "-g", "wrap=true"])
+        .assert()
+        .success();
+    // 2147483000 + 7 * 100 passes 2**31 - 1 at 7 ns, before `n` (10 at the start) passes 0 at 11 ns.
+    vams()
+        .args(["run", "tests/run/overflow.vhd"])
+        .assert()
+        .code(1)
+        .stderr(contains(
+            "variable `big` assigned 2147483700, outside its range -2147483648 to 2147483647",
+        ));
+    vams()
+        .args(["run", "tests/run/overflow.vhd", "-g", "step=0"])
+        .assert()
+        .code(1)
+        .stderr(contains(
+            "variable `n` assigned -1, outside its range 0 to 2147483647",
+        ));
+    // An initial value outside the range is found before the run.
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("init.vhd");
+    std::fs::write(
+        &file,
+        "entity t is end;\narchitecture a of t is\n  signal s : integer range 0 to 3 := 5;\nbegin\nend;\n",
+    )
+    .unwrap();
+    vams()
+        .arg("check")
+        .arg(&file)
+        .assert()
+        .code(1)
+        .stderr(contains(
+            "the initial value 5 is outside the subtype's range 0 to 3",
+        ))
+        .stderr(contains("init.vhd:3:38"));
+}

@@ -115,6 +115,7 @@ mod tests {
             span: Span::default(),
         };
         let signal = |name: &str, ty: Type| Signal {
+            range: None,
             name: name.into(),
             ty,
             init: Value::Integer(0),

@@ -501,6 +501,7 @@ impl<'a> Elab<'a> {
         };
         let id = SignalId(self.design.signals.len() as u32);
         self.design.signals.push(Signal {
+            range: None,
             name: format!(
                 "{}'above({level_text})",
                 self.design.quantities[q.index()].name

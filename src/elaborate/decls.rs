@@ -177,12 +177,15 @@ impl<'a> Elab<'a> {
                 let sub = self.subtype_indication(sc, subtype)?;
                 let init = match value {
                     Some(v) => {
-                        self.static_value(sc, v, &sub.ty, "the initial value of a signal")?
+                        let init =
+                            self.static_value(sc, v, &sub.ty, "the initial value of a signal")?;
+                        self.check_initial(&sub, &init, v.span)?;
+                        init
                     }
-                    None => sub.ty.default_value(),
+                    None => default_value(&sub),
                 };
                 for n in names {
-                    let id = self.new_signal(&n.name, &sub.ty, init.clone(), n.span);
+                    let id = self.new_signal(&n.name, &sub, init.clone(), n.span);
                     self.declare(
                         sc,
                         n,
@@ -539,22 +542,67 @@ impl<'a> Elab<'a> {
         Ok(Rc::new(sub))
     }
 
+    /// A declared signal of subtype `sub` (its integer range checked at each assignment).
     pub(super) fn new_signal(
         &mut self,
         name: &str,
-        ty: &Ty,
+        sub: &Sub,
         init: Value,
         span: crate::source::Span,
     ) -> SignalId {
         let id = SignalId(self.design.signals.len() as u32);
         self.design.signals.push(Signal {
+            range: integer_bounds(sub),
             name: self.hier_name(name),
-            ty: ty.to_design(),
+            ty: sub.ty.to_design(),
             init,
             kind: SignalKind::Explicit,
             span,
         });
         id
+    }
+}
+
+/// The bounds, low first, that an integer object of subtype `sub` must stay within: its range
+/// constraint, or `integer`'s own (-2**31 to 2**31 - 1) without one. `None` for other types.
+pub(super) fn integer_bounds(sub: &Sub) -> Option<(i64, i64)> {
+    if sub.ty != Ty::Integer {
+        return None;
+    }
+    match &sub.range {
+        Some((Value::Integer(a), Value::Integer(b))) => Some(((*a).min(*b), (*a).max(*b))),
+        _ => Some((i32::MIN as i64, i32::MAX as i64)),
+    }
+}
+
+/// The default initial value of an object of subtype `sub`: `T'left` (LRM 4.3.1.1), so a
+/// `positive` starts at 1.
+pub(super) fn default_value(sub: &Sub) -> Value {
+    match (&sub.ty, &sub.range) {
+        (Ty::Integer, Some((left @ Value::Integer(_), _))) => left.clone(),
+        _ => sub.ty.default_value(),
+    }
+}
+
+impl Elab<'_> {
+    /// `init` for an object of subtype `sub`, or a diagnostic at `span` when it is outside the
+    /// subtype's integer range.
+    pub(super) fn check_initial(
+        &mut self,
+        sub: &Sub,
+        init: &Value,
+        span: crate::source::Span,
+    ) -> R<()> {
+        match (init, integer_bounds(sub)) {
+            (Value::Integer(i), Some((lo, hi))) if *i < lo || *i > hi => {
+                Err(self.error(ElabError::invalid(
+                    span,
+                    format!("the initial value {i} is outside the subtype's range {lo} to {hi}"),
+                    Some("give an initial value within the subtype's range".into()),
+                )))
+            }
+            _ => Ok(()),
+        }
     }
 }
 

@@ -101,6 +101,7 @@ impl<'a> Elab<'a> {
             .iter()
             .zip([init, -1.0, 0.0, 0.0])
             .map(|(n, v)| Variable {
+                range: None,
                 name: format!("{base}.{n}"),
                 ty: Type::Real,
                 init: Value::Real(v),

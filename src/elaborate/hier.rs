@@ -557,9 +557,9 @@ impl<'a> Elab<'a> {
                     None => {
                         let init = match &decl.default {
                             Some(d) => self.static_value(sc, d, &sub.ty, "a port's default")?,
-                            None => sub.ty.default_value(),
+                            None => super::decls::default_value(&sub),
                         };
-                        let id = self.new_signal(&name.name, &sub.ty, init, name.span);
+                        let id = self.new_signal(&name.name, &sub, init, name.span);
                         Item::Signal {
                             id,
                             ty: sub.ty.clone(),

@@ -474,6 +474,7 @@ mod tests {
 
     fn var(name: &str) -> Variable {
         Variable {
+            range: None,
             name: name.into(),
             ty: Type::Real,
             init: Value::Real(0.0),

@@ -61,8 +61,16 @@ impl Proc {
         }
     }
 
+    /// Gives variable `id` the integer range its assignments must stay within.
+    pub(super) fn bound(&mut self, id: VarId, range: Option<(i64, i64)>) {
+        if let Some(v) = self.vars.get_mut(id.index()) {
+            v.range = range;
+        }
+    }
+
     pub(super) fn new_var(&mut self, name: &str, ty: &Ty, init: Value) -> VarId {
         self.vars.push(Variable {
+            range: None,
             name: name.to_string(),
             ty: ty.to_design(),
             init,
@@ -232,15 +240,18 @@ impl<'a> Elab<'a> {
                                 e => (sub.ty.default_value(), Some(e)),
                             }
                         }
-                        Some(v) => (
-                            self.static_value(sc, v, &sub.ty, "a variable's initial value")?,
-                            None,
-                        ),
-                        None => (sub.ty.default_value(), None),
+                        Some(v) => {
+                            let init =
+                                self.static_value(sc, v, &sub.ty, "a variable's initial value")?;
+                            self.check_initial(&sub, &init, v.span)?;
+                            (init, None)
+                        }
+                        None => (super::decls::default_value(&sub), None),
                     };
                     let ty = super::decls::fit_array(&sub.ty, &init);
                     for n in names {
                         let id = p.new_var(&n.name, &ty, init.clone());
+                        p.bound(id, super::decls::integer_bounds(&sub));
                         if let Some(e) = &dynamic {
                             p.emit(Instr::SetVar {
                                 var: id,

@@ -158,6 +158,7 @@ fn ztf_code(
     let mut vars = Vec::new();
     let mut var = |n: String| {
         vars.push(Variable {
+            range: None,
             name: n,
             ty: Type::Real,
             init: Value::Real(0.0),

@@ -79,11 +79,13 @@ impl<'a> Elab<'a> {
             name: format!("{base}_mode"),
             vars: vec![
                 Variable {
+                    range: None,
                     name: format!("{base}.switched"),
                     ty: Type::Real,
                     init: Value::Real(-1.0),
                 },
                 Variable {
+                    range: None,
                     name: format!("{base}.next"),
                     ty: Type::Real,
                     init: Value::Real(0.0),
@@ -99,6 +101,7 @@ impl<'a> Elab<'a> {
     fn root_signal(&mut self, name: String, f: Expr, span: Span) -> SignalId {
         let id = SignalId(self.design.signals.len() as u32);
         self.design.signals.push(Signal {
+            range: None,
             name,
             ty: Type::Boolean,
             init: Value::Boolean(false),

@@ -139,6 +139,7 @@ impl<'a> Elab<'a> {
     pub(super) fn implicit_signal(&mut self, name: String, init: f64, span: Span) -> SignalId {
         let id = SignalId(self.design.signals.len() as u32);
         self.design.signals.push(Signal {
+            range: None,
             name,
             ty: Type::Real,
             init: Value::Real(init),

@@ -183,6 +183,7 @@ impl<'d> EventKernel<'d> {
                 on_report,
                 waveform: &mut self.waveform,
                 subprograms: &self.design.subprograms,
+                design_signals: &self.design.signals,
             };
             match process::run(i, &self.design.processes[i], &mut self.procs[i], &mut cx)? {
                 Suspend::Wait | Suspend::Halt => {}

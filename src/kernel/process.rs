@@ -136,6 +136,20 @@ pub(crate) struct Context<'a> {
     pub waveform: &'a mut Vec<(Value, f64)>,
     /// The design's subprograms.
     pub subprograms: &'a [Subprogram],
+    /// The design's signals (their names and integer ranges, for range checks).
+    pub design_signals: &'a [crate::design::Signal],
+}
+
+/// `v` within `range` (an integer subtype's bounds), or the run-time error VHDL requires for
+/// an assignment of a value outside them (LRM 8.4, 8.5).
+fn in_range(v: &Value, range: Option<(i64, i64)>, what: &str, name: &str) -> Result<(), EvalError> {
+    match (v, range) {
+        (Value::Integer(i), Some((lo, hi))) if *i < lo || *i > hi => Err(EvalError::new(
+            format!("{what} `{name}` assigned {i}, outside its range {lo} to {hi}"),
+            "an integer object must stay within its subtype's range (bound check, LRM 8.4 and              8.5); widen the subtype, or keep the value in range",
+        )),
+        _ => Ok(()),
+    }
 }
 
 /// Runs process `index` until it suspends.
@@ -181,7 +195,11 @@ pub(crate) fn run(
         state.pc += 1;
         match instr {
             Instr::SetVar { var, value } => {
-                state.vars[var.index()] = eval(value, &env).map_err(at)?;
+                let v = eval(value, &env).map_err(at)?;
+                if let Some(decl) = decls.get(var.index()) {
+                    in_range(&v, decl.range, "variable", &decl.name).map_err(at)?;
+                }
+                state.vars[var.index()] = v;
             }
             Instr::SetVarElement { var, index, value } => {
                 let i = integer(&eval(index, &env).map_err(at)?).map_err(at)?;
@@ -207,8 +225,12 @@ pub(crate) fn run(
             } => {
                 cx.waveform.clear();
                 let mut last = cx.now;
+                let signal = cx.design_signals.get(target.index());
                 for (value, delay) in waveform {
                     let v = eval(value, &env).map_err(at)?;
+                    if let Some(s) = signal {
+                        in_range(&v, s.range, "signal", &s.name).map_err(at)?;
+                    }
                     let d = seconds(&eval(delay, &env).map_err(at)?).map_err(at)?;
                     let t = cx.now + d;
                     if d < 0.0 || t < last {

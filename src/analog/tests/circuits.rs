@@ -240,6 +240,7 @@ fn above_signals_are_root_functions() {
     b.equation("x'dot == 2.0;", dot(x), c(2.0));
     let (mut d, _) = b.finish();
     d.signals.push(Signal {
+        range: None,
         name: "x'above(0.5)".into(),
         ty: Type::Boolean,
         init: Value::Boolean(false),

@@ -144,6 +144,7 @@ impl Builder {
     pub fn signal(&mut self, name: &str, init: f64) -> SignalId {
         let span = self.line(&format!("signal {name} : real := {init:?};"));
         self.design.signals.push(Signal {
+            range: None,
             name: name.into(),
             ty: Type::Real,
             init: Value::Real(init),

@@ -25,6 +25,7 @@ pub fn std_logic() -> Type {
 /// Adds an explicit signal and returns its id.
 pub fn signal(d: &mut Design, name: &str, ty: Type, init: Value) -> SignalId {
     d.signals.push(Signal {
+        range: None,
         name: name.into(),
         ty,
         init,
@@ -40,6 +41,7 @@ pub fn process(d: &mut Design, name: &str, vars: Vec<(&str, Type, Value)>, code:
         vars: vars
             .into_iter()
             .map(|(n, ty, init)| Variable {
+                range: None,
                 name: n.into(),
                 ty,
                 init,

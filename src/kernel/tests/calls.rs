@@ -21,6 +21,7 @@ fn run(design: &Design, stop: f64) -> Result<SimResult, SimError> {
 
 fn int_var(name: &str) -> Variable {
     Variable {
+        range: None,
         name: name.into(),
         ty: Type::Integer,
         init: Value::Integer(0),
