@@ -444,3 +444,19 @@ fn integers_outside_their_range_stop_the_run() {
         ))
         .stderr(contains("init.vhd:3:38"));
 }
+
+#[test]
+fn a_quantity_that_is_not_a_number_stops_the_run() {
+    vams()
+        .args(["run", "tests/run/not_finite.vhd"])
+        .assert()
+        .code(1)
+        .stderr(contains("quantity `r` is not a number at t ="))
+        .stderr(contains("not_finite.vhd:12:15"))
+        .stderr(contains("`r == sqrt(y);`"));
+    // Before y turns negative the run is fine.
+    vams()
+        .args(["run", "tests/run/not_finite.vhd", "--stop", "0.9 s"])
+        .assert()
+        .success();
+}

@@ -8,7 +8,7 @@
 //! signal the equations read, or an executed break, is a discontinuity: new signal values go to
 //! the analog system, break values replace quantities, and the integrator restarts (order 1).
 
-use crate::design::{Design, QuantityId, SignalId, Value};
+use crate::design::{Design, Expr, QuantityId, SignalId, Value};
 use crate::solver::{Advance, OpOptions, Transient, TransientOptions};
 
 use super::analog_model::AnalogModel;
@@ -89,7 +89,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         };
         if let Some(sys) = analog {
             this.analog = Some(this.quiescent(sys, options)?);
-            this.refresh();
+            this.refresh()?;
         }
         // Signal changes from here on count as discontinuities; initial values are pushed.
         this.kernel.signals.take_changed(&mut this.changed);
@@ -229,14 +229,20 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
 
     /// Copies the integrator's state into the per-quantity values processes read, and into
     /// the `Q'delayed` histories (every caller has just accepted a point).
-    fn refresh(&mut self) {
+    /// A quantity that is not a number (or infinite) stops the run here, before it reaches
+    /// a process or the waveforms.
+    fn refresh(&mut self) -> Result<(), SimError> {
         if let Some(a) = &mut self.analog {
             let (x, xd) = (a.integ.state(), a.integ.derivative());
             let t = a.integ.time();
             a.sys.record_history(t, x, xd);
             a.sys
                 .quantity_values(t, x, xd, &mut self.values, &mut self.derivatives);
+            if let Some(q) = self.values.iter().position(|v| !v.is_finite()) {
+                return Err(not_finite(self.design, q, self.values[q], t));
+            }
         }
+        Ok(())
     }
 
     /// The quiescent point by name: every quantity, then every explicit signal.
@@ -326,7 +332,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         loop {
             match self.step(t, target)? {
                 Advance::StepAccepted(t1) => {
-                    self.refresh();
+                    self.refresh()?;
                     let crossed = self.sync_above(t1);
                     recorder.record(t1, &self.values, &self.kernel.signals.states);
                     self.progress.tick(t1);
@@ -335,7 +341,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                     }
                 }
                 Advance::Reached(t1) => {
-                    self.refresh();
+                    self.refresh()?;
                     self.sync_above(t1);
                     recorder.record(t1, &self.values, &self.kernel.signals.states);
                     return Ok(t1);
@@ -350,7 +356,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                     while let Advance::Root { index, rising, .. } = self.step(tr, tr)? {
                         self.force_above(index, rising);
                     }
-                    self.refresh();
+                    self.refresh()?;
                     recorder.record(tr, &self.values, &self.kernel.signals.states);
                     return Ok(tr);
                 }
@@ -430,7 +436,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         a.integ
             .restart(&mut a.sys, t, &a.x)
             .map_err(|e| solve_error(e, t, &a.sys, &a.slots, design))?;
-        self.refresh();
+        self.refresh()?;
         self.sync_above(t);
         Ok(true)
     }
@@ -457,6 +463,39 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
 }
 
 /// A signal's value as the equations see it (booleans and enumerations as positions).
+/// The error for quantity `q` at `value` (NaN or infinite) at time `t`, with the equations
+/// that name it.
+fn not_finite(design: &Design, q: usize, value: f64, t: f64) -> SimError {
+    let quantity = &design.quantities[q];
+    let id = QuantityId(q as u32);
+    let mut equations: Vec<String> = Vec::new();
+    for e in &design.equations {
+        let mut names = false;
+        e.residual
+            .visit(&mut |x| names |= matches!(x, Expr::Quantity(v) | Expr::Dot(v) if *v == id));
+        if names && equations.len() < 3 {
+            equations.push(format!("`{}`", e.text));
+        }
+    }
+    let mut help = "an equation computes it outside its domain: the square root or logarithm                     of a negative number, a division by zero, an exponential that overflows"
+        .to_string();
+    if !equations.is_empty() {
+        help.push_str("; the equations that name it: ");
+        help.push_str(&equations.join(", "));
+    }
+    SimError::NotFinite {
+        quantity: quantity.name.clone(),
+        value: if value.is_nan() {
+            "not a number".into()
+        } else {
+            format!("{value}")
+        },
+        time: t,
+        span: quantity.span,
+        help,
+    }
+}
+
 fn number(v: &Value) -> f64 {
     v.as_f64().unwrap_or(f64::NAN)
 }

@@ -32,6 +32,20 @@ pub enum SimError {
         help: String,
     },
 
+    /// `r == sqrt(y)` with `y` gone negative: a quantity is NaN or infinite at an accepted
+    /// point (its value would reach the waveforms).
+    #[error("quantity `{quantity}` is {value} at t = {time} s")]
+    #[diagnostic(code(vams::sim::not_finite))]
+    NotFinite {
+        quantity: String,
+        value: String,
+        time: f64,
+        #[label("declared here")]
+        span: Span,
+        #[help]
+        help: String,
+    },
+
     /// `process begin x := x + 1; end process;` never reaches a wait.
     #[error("process `{process}` ran {limit} instructions at t = {time} s without waiting")]
     #[diagnostic(
@@ -141,6 +155,7 @@ impl Located for SimError {
     fn primary_span(&self) -> Span {
         match self {
             SimError::Runtime { span, .. }
+            | SimError::NotFinite { span, .. }
             | SimError::Runaway { span, .. }
             | SimError::DeltaLimit { span, .. }
             | SimError::MultipleDrivers { span, .. } => *span,
