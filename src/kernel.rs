@@ -161,12 +161,39 @@ pub fn simulate(
     options: &SimOptions,
     on_report: &mut dyn FnMut(&Report),
 ) -> Result<SimResult, SimError> {
-    let recorder = Recorder::new(design, &options.probes)?;
-    let mut analog = analog_system(design, options)?;
+    simulate_keeping(design, options, on_report).map_err(|failed| failed.error)
+}
+
+/// A run that stopped with an error, and what it recorded before.
+#[derive(Debug)]
+pub struct Failed {
+    pub error: SimError,
+    /// The waveforms up to the error; `None` when it came before time 0 (building the analog
+    /// system, the quiescent point).
+    pub partial: Option<Waveforms>,
+}
+
+/// [`simulate`], keeping the waveforms recorded before an error.
+pub fn simulate_keeping(
+    design: &Design,
+    options: &SimOptions,
+    on_report: &mut dyn FnMut(&Report),
+) -> Result<SimResult, Failed> {
+    let early = |error| Failed {
+        error,
+        partial: None,
+    };
+    let recorder = Recorder::new(design, &options.probes).map_err(early)?;
+    let mut analog = analog_system(design, options).map_err(early)?;
     if let Some(a) = analog.as_mut() {
         a.select_quantities(&wanted_quantities(design, &recorder));
     }
-    Simulation::start(design, options, analog, on_report)?.run(recorder, on_report)
+    let sim = Simulation::start(design, options, analog, on_report).map_err(early)?;
+    sim.run(recorder, on_report)
+        .map_err(|(error, waveforms)| Failed {
+            error,
+            partial: Some(waveforms),
+        })
 }
 
 /// The quiescent point after initialisation (processes run to their first wait, breaks

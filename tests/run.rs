@@ -447,13 +447,26 @@ fn integers_outside_their_range_stop_the_run() {
 
 #[test]
 fn a_quantity_that_is_not_a_number_stops_the_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("partial.csv");
     vams()
-        .args(["run", "tests/run/not_finite.vhd"])
+        .args(["run", "tests/run/not_finite.vhd", "-o"])
+        .arg(&csv)
         .assert()
         .code(1)
         .stderr(contains("quantity `r` is not a number at t ="))
         .stderr(contains("not_finite.vhd:12:15"))
-        .stderr(contains("`r == sqrt(y);`"));
+        .stderr(contains("`r == sqrt(y);`"))
+        .stderr(contains("wrote the waveforms up to t ="));
+    // What the run computed before the error is written, and none of it is NaN.
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let r = csv_column(&text, "r");
+    assert!(r.len() > 2, "{text}");
+    assert!(r.iter().all(|(t, v)| *t < 1.0 && v.is_finite()), "{text}");
+    assert!(
+        r.iter().all(|(t, v)| (v - (1.0 - t).sqrt()).abs() < 1e-9),
+        "{text}"
+    );
     // Before y turns negative the run is fine.
     vams()
         .args(["run", "tests/run/not_finite.vhd", "--stop", "0.9 s"])

@@ -7,7 +7,7 @@ use std::time::Instant;
 use clap::Args;
 use miette::Report;
 
-use crate::kernel::{Outcome, SimOptions, SimResult, SimStats, simulate};
+use crate::kernel::{Failed, Outcome, SimOptions, SimResult, SimStats, simulate_keeping};
 use crate::output::atomic::{commit, temp_path, write_atomically};
 use crate::output::csv::write_csv;
 use crate::output::vcd::write_vcd;
@@ -180,20 +180,36 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
         }
         eprintln!("{}", format_report(r, &loaded.sources));
     };
-    let result = simulate(design, &options, &mut print);
+    let result = simulate_keeping(design, &options, &mut print);
     if let Some(bar) = &bar {
         bar.clear();
     }
-    let result = result.map_err(|e| {
-        eprint!("{}", render_sim_error(&e, &loaded.sources));
-        CliError::Simulation {
-            top: design.top.clone(),
-        }
-    })?;
     // Without --panel, the testbench's own `-- vams: panel` comments lay out the plot.
     let file_panels = match declaring_file(loaded, &design.top) {
         Some(f) if panels.is_empty() => panel_comments(&loaded.sources, f),
         _ => Vec::new(),
+    };
+    let result = match result {
+        Ok(result) => result,
+        Err(Failed { error, partial }) => {
+            eprint!("{}", render_sim_error(&error, &loaded.sources));
+            // What the run computed before the error is kept: the waveforms up to it.
+            if let Some(w) = partial.filter(|w| !w.times.is_empty()) {
+                let written = write_outputs(args, &w, &design.top, stop, &panels, &file_panels)?;
+                if !written.is_empty() {
+                    let last = w.times.last().copied().unwrap_or(0.0);
+                    eprintln!(
+                        "wrote the waveforms up to t = {} to {}",
+                        format_time(last),
+                        written.join(", ")
+                    );
+                }
+            }
+            return Err(CliError::Simulation {
+                top: design.top.clone(),
+            }
+            .into());
+        }
     };
     let written = write_outputs(
         args,

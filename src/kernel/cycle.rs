@@ -10,6 +10,7 @@
 
 use crate::design::{Design, Expr, QuantityId, SignalId, Value};
 use crate::solver::{Advance, OpOptions, Transient, TransientOptions};
+use crate::waveform::Waveforms;
 
 use super::analog_model::AnalogModel;
 use super::error::SimError;
@@ -273,12 +274,30 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         quantities.chain(signals).collect()
     }
 
-    /// Runs from time 0 to the stop time (or a stop or failure).
+    /// Runs from time 0 to the stop time (or a stop or failure). On an error, the waveforms
+    /// recorded up to it come back with it.
     pub fn run(
         mut self,
         mut recorder: Recorder,
         on_report: &mut dyn FnMut(&Report),
-    ) -> Result<SimResult, SimError> {
+    ) -> Result<SimResult, (SimError, Waveforms)> {
+        if let Err(e) = self.run_recording(&mut recorder, on_report) {
+            return Err((e, recorder.waveforms));
+        }
+        let stats = self.stats();
+        Ok(SimResult {
+            waveforms: recorder.waveforms,
+            reports: std::mem::take(&mut self.kernel.reports),
+            outcome: self.outcome.unwrap_or(Outcome::Finished),
+            stats,
+        })
+    }
+
+    fn run_recording(
+        &mut self,
+        recorder: &mut Recorder,
+        on_report: &mut dyn FnMut(&Report),
+    ) -> Result<(), SimError> {
         let mut t = 0.0;
         recorder.record(t, &self.values, &self.kernel.signals.states);
         while self.outcome.is_none() {
@@ -303,7 +322,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             }
             let target = self.kernel.next_time(t).min(self.stop);
             t = match self.analog.is_some() {
-                true => self.advance(t, target, &mut recorder)?,
+                true => self.advance(t, target, recorder)?,
                 false => target,
             };
             self.progress.tick(t);
@@ -312,13 +331,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         if recorder.last_time().is_some_and(|last| last < t) {
             recorder.record(t, &self.values, &self.kernel.signals.states);
         }
-        let stats = self.stats();
-        Ok(SimResult {
-            waveforms: recorder.waveforms,
-            reports: std::mem::take(&mut self.kernel.reports),
-            outcome: self.outcome.unwrap_or(Outcome::Finished),
-            stats,
-        })
+        Ok(())
     }
 
     /// Integrates from `t` towards `target`, recording every accepted step; stops early at a
