@@ -178,10 +178,12 @@ pub fn simulate_keeping(
     design: &Design,
     options: &SimOptions,
     on_report: &mut dyn FnMut(&Report),
-) -> Result<SimResult, Failed> {
-    let early = |error| Failed {
-        error,
-        partial: None,
+) -> Result<SimResult, Box<Failed>> {
+    let early = |error| {
+        Box::new(Failed {
+            error,
+            partial: None,
+        })
     };
     let recorder = Recorder::new(design, &options.probes).map_err(early)?;
     let mut analog = analog_system(design, options).map_err(early)?;
@@ -189,11 +191,13 @@ pub fn simulate_keeping(
         a.select_quantities(&wanted_quantities(design, &recorder));
     }
     let sim = Simulation::start(design, options, analog, on_report).map_err(early)?;
-    sim.run(recorder, on_report)
-        .map_err(|(error, waveforms)| Failed {
+    sim.run(recorder, on_report).map_err(|failed| {
+        let (error, waveforms) = *failed;
+        Box::new(Failed {
             error,
             partial: Some(waveforms),
         })
+    })
 }
 
 /// The quiescent point after initialisation (processes run to their first wait, breaks

@@ -191,7 +191,8 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
     };
     let result = match result {
         Ok(result) => result,
-        Err(Failed { error, partial }) => {
+        Err(failed) => {
+            let Failed { error, partial } = *failed;
             eprint!("{}", render_sim_error(&error, &loaded.sources));
             // What the run computed before the error is kept: the waveforms up to it.
             if let Some(w) = partial.filter(|w| !w.times.is_empty()) {

@@ -280,9 +280,9 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         mut self,
         mut recorder: Recorder,
         on_report: &mut dyn FnMut(&Report),
-    ) -> Result<SimResult, (SimError, Waveforms)> {
+    ) -> Result<SimResult, Box<(SimError, Waveforms)>> {
         if let Err(e) = self.run_recording(&mut recorder, on_report) {
-            return Err((e, recorder.waveforms));
+            return Err(Box::new((e, recorder.waveforms)));
         }
         let stats = self.stats();
         Ok(SimResult {
