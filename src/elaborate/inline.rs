@@ -25,9 +25,10 @@ const MAX_INLINE_DEPTH: usize = 32;
 /// is refused rather than expanded into an equation too large to evaluate.
 const MAX_STEPS: usize = 50_000;
 
-/// Conditions open at once on one path (each is a level of recursion here): a linear search
-/// through a table of this many points.
-const MAX_OPEN_BRANCHES: usize = 256;
+/// Conditions open at once on one path (each is a level of recursion here, a few kilobytes
+/// of stack in a debug build): a linear search through a table of this many points, a binary
+/// search through any table.
+const MAX_OPEN_BRANCHES: usize = 64;
 
 /// Why a call could not be inlined: the function's name and the reason.
 #[derive(Debug, PartialEq)]
