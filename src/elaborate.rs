@@ -200,42 +200,32 @@ struct Elab<'a> {
     name_lookups: usize,
 }
 
-/// The spans of the operations analysis resolved to `"*"` or `"/"` of a universal integer and
-/// a universal real operand.
-fn mixed_universal_operations(analysis: &Analysis) -> FxHashSet<Span> {
+/// What elaboration takes from analysis's resolution of names, in one pass over the
+/// references: every name resolved to one declaration (the name's span -> the declaration's;
+/// operators left out, since an implicit operator carries its type's span and elaboration
+/// lowers operators by their symbol), and the operations resolved to `"*"` or `"/"` of a
+/// universal integer and a universal real operand.
+fn resolutions(analysis: &Analysis) -> (FxHashMap<Span, Span>, FxHashSet<Span>) {
     use crate::analysis::DeclKind;
     use crate::analysis::types::{UNIVERSAL_INTEGER, UNIVERSAL_REAL};
-    analysis
-        .units
-        .iter()
-        .flat_map(|u| &u.references)
-        .filter(|&&(_, d)| {
-            let decl = analysis.decl(d);
-            let DeclKind::Subprogram(sig) = &decl.kind else {
-                return false;
-            };
-            let types: Vec<_> = sig.params.iter().map(|p| p.ty).collect();
-            matches!(decl.name.as_str(), "\"*\"" | "\"/\"")
-                && types.contains(&UNIVERSAL_INTEGER)
-                && types.contains(&UNIVERSAL_REAL)
-        })
-        .map(|&(span, _)| span)
-        .collect()
-}
-
-/// Every name analysis resolved to one declaration: the name's span -> the declaration's.
-/// Operators are left out: an implicit operator carries its type's span, and elaboration
-/// lowers operators by their symbol.
-fn resolved_names(analysis: &Analysis) -> FxHashMap<Span, Span> {
-    analysis
-        .units
-        .iter()
-        .flat_map(|u| &u.references)
-        .filter_map(|&(span, d)| {
-            let decl = analysis.decl(d);
-            (span != decl.span && !decl.name.starts_with('"')).then_some((span, decl.span))
-        })
-        .collect()
+    let count = analysis.units.iter().map(|u| u.references.len()).sum();
+    let mut names = FxHashMap::with_capacity_and_hasher(count, Default::default());
+    let mut mixed = FxHashSet::default();
+    for &(span, d) in analysis.units.iter().flat_map(|u| &u.references) {
+        let decl = analysis.decl(d);
+        if !decl.name.starts_with('"') {
+            if span != decl.span {
+                names.insert(span, decl.span);
+            }
+        } else if let DeclKind::Subprogram(sig) = &decl.kind
+            && matches!(decl.name.as_str(), "\"*\"" | "\"/\"")
+            && sig.params.iter().any(|p| p.ty == UNIVERSAL_INTEGER)
+            && sig.params.iter().any(|p| p.ty == UNIVERSAL_REAL)
+        {
+            mixed.insert(span);
+        }
+    }
+    (names, mixed)
 }
 
 impl<'a> Elab<'a> {
@@ -244,11 +234,12 @@ impl<'a> Elab<'a> {
         sources: &'a SourceMap,
         files: &'a [(FileId, DesignFile)],
     ) -> Elab<'a> {
+        let (resolved, mixed_universal) = resolutions(analysis);
         Elab {
             sources,
             lib: Library::index(analysis, files),
-            resolved: resolved_names(analysis),
-            mixed_universal: mixed_universal_operations(analysis),
+            resolved,
+            mixed_universal,
             package_decls: FxHashMap::default(),
             name_lookups: 0,
             design: Design::default(),
