@@ -115,6 +115,8 @@ pub struct Subprogram {
     pub params: Vec<ParamMode>,
     pub vars: Vec<Variable>,
     pub code: Vec<Instr>,
+    /// The source statement of each instruction, as for [`Process::spans`].
+    pub spans: Vec<Span>,
     pub span: Span,
 }
 
@@ -248,6 +250,9 @@ pub struct Process {
     pub name: String,
     pub vars: Vec<Variable>,
     pub code: Vec<Instr>,
+    /// The source statement of each instruction, for run-time errors (empty for processes
+    /// elaboration generates).
+    pub spans: Vec<Span>,
     pub span: Span,
 }
 

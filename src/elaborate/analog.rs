@@ -463,6 +463,7 @@ impl<'a> Elab<'a> {
             text: format!("{name}'dot == {}", self.design.quantities[q.index()].name),
         });
         self.design.processes.push(Process {
+            spans: Vec::new(),
             name: format!("{name}_init"),
             vars: Vec::new(),
             code: vec![

@@ -108,6 +108,7 @@ impl<'a> Elab<'a> {
             })
             .collect();
         self.design.processes.push(Process {
+            spans: Vec::new(),
             name: format!("{base}_follower"),
             vars,
             code,

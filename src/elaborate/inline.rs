@@ -485,6 +485,7 @@ mod tests {
     fn function(code: Vec<Instr>) -> Design {
         Design {
             subprograms: vec![Subprogram {
+                spans: Vec::new(),
                 name: "f".into(),
                 kind: SubprogramKind::Function,
                 params: vec![ParamMode::In],

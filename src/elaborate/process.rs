@@ -21,6 +21,10 @@ use super::{Elab, R, Reported};
 pub(super) struct Proc {
     vars: Vec<Variable>,
     code: Vec<Instr>,
+    /// The statement each instruction comes from (for run-time errors), and the statement
+    /// being lowered.
+    spans: Vec<Span>,
+    at: Span,
     loops: Vec<LoopFrame>,
     /// Set while lowering a subprogram body.
     pub(super) subprogram: Option<SubContext>,
@@ -41,12 +45,14 @@ struct LoopFrame {
 }
 
 impl Proc {
-    pub(super) fn into_parts(self) -> (Vec<Variable>, Vec<Instr>) {
-        (self.vars, self.code)
+    /// The variables, the instructions and the statement span of each instruction.
+    pub(super) fn into_parts(self) -> (Vec<Variable>, Vec<Instr>, Vec<Span>) {
+        (self.vars, self.code, self.spans)
     }
 
     pub(super) fn emit(&mut self, i: Instr) -> usize {
         self.code.push(i);
+        self.spans.push(self.at);
         self.code.len() - 1
     }
 
@@ -142,13 +148,15 @@ impl<'a> Elab<'a> {
             }
         };
         // A design may hold one process per instance: no spare capacity in each.
-        let (mut vars, mut code) = (p.vars, p.code);
+        let (mut vars, mut code, mut spans) = p.into_parts();
         vars.shrink_to_fit();
         code.shrink_to_fit();
+        spans.shrink_to_fit();
         self.design.processes.push(Process {
             name,
             vars,
             code,
+            spans,
             span,
         });
     }
@@ -357,7 +365,9 @@ impl<'a> Elab<'a> {
 
     pub(super) fn seq(&mut self, sc: &mut Scope<'a>, p: &mut Proc, stmts: &'a [SeqStmt]) {
         for s in stmts {
+            let enclosing = std::mem::replace(&mut p.at, s.span);
             let _ = self.seq_stmt(sc, p, s);
+            p.at = enclosing;
         }
     }
 

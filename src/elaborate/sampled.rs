@@ -139,6 +139,7 @@ impl<'a> Elab<'a> {
         code.push(wait(s.period));
         code.push(Instr::Jump(1));
         self.design.processes.push(Process {
+            spans: Vec::new(),
             name: format!("{name}_sampler"),
             vars,
             code,

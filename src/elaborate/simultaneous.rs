@@ -176,7 +176,7 @@ impl<'a> Elab<'a> {
         if !decls_ok || self.errors.len() > before {
             return Err(super::Reported);
         }
-        let (vars, code) = p.into_parts();
+        let (vars, code, spans) = p.into_parts();
         let mut frame: Vec<Expr> = vars.iter().map(|v| Expr::Const(v.init.clone())).collect();
         for &(q, var) in &outputs {
             frame[var.index()] = Expr::Quantity(q);
@@ -187,6 +187,7 @@ impl<'a> Elab<'a> {
             params: Vec::new(),
             vars,
             code,
+            spans,
             span: stmt.span,
         };
         let vars: Vec<VarId> = outputs.iter().map(|&(_, v)| v).collect();

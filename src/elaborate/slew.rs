@@ -76,6 +76,7 @@ impl<'a> Elab<'a> {
         let up = self.root_signal(format!("{base}.up"), up, span);
         let down = self.root_signal(format!("{base}.down"), down, span);
         self.design.processes.push(Process {
+            spans: Vec::new(),
             name: format!("{base}_mode"),
             vars: vec![
                 Variable {

@@ -471,6 +471,7 @@ impl<'a> Elab<'a> {
         let id = SubprogramId(self.design.subprograms.len() as u32);
         // Registered before the body is lowered, so that recursive calls find it.
         self.design.subprograms.push(design::Subprogram {
+            spans: Vec::new(),
             name: self.hier_name(&sub.name),
             kind,
             params: Vec::new(),
@@ -529,11 +530,12 @@ impl<'a> Elab<'a> {
         if !decls_ok || self.errors.len() > before {
             return Err(super::Reported);
         }
-        let (vars, code) = p.into_parts();
+        let (vars, code, spans) = p.into_parts();
         let slot = &mut self.design.subprograms[id.index()];
         slot.params = params;
         slot.vars = vars;
         slot.code = code;
+        slot.spans = spans;
         Ok(id)
     }
 

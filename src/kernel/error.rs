@@ -26,7 +26,7 @@ pub enum SimError {
         process: String,
         time: f64,
         message: String,
-        #[label("in this process")]
+        #[label("here")]
         span: Span,
         #[help]
         help: String,

@@ -113,10 +113,10 @@ fn code_of<'p>(
     process: &'p Process,
     subs: &'p [Subprogram],
     running: Option<SubprogramId>,
-) -> (&'p [Instr], &'p [Variable]) {
+) -> (&'p [Instr], &'p [Variable], &'p [Span]) {
     match running.and_then(|id| subs.get(id.index())) {
-        Some(sub) => (&sub.code, &sub.vars),
-        None => (&process.code, &process.vars),
+        Some(sub) => (&sub.code, &sub.vars, &sub.spans),
+        None => (&process.code, &process.vars, &process.spans),
     }
 }
 
@@ -171,7 +171,7 @@ pub(crate) fn run(
     state.timeout_at = None;
     let subs = cx.subprograms;
     for _ in 0..INSTRUCTION_LIMIT {
-        let (code, decls) = code_of(process, subs, state.running);
+        let (code, decls, spans) = code_of(process, subs, state.running);
         let Some(instr) = code.get(state.pc) else {
             // Elaboration guarantees every path ends in a wait; stop here rather than panic.
             return Err(fail(
@@ -191,7 +191,9 @@ pub(crate) fn run(
             subprograms: subs,
             depth: state.stack.len(),
         };
-        let at = |e: EvalError| fail(e, process.span);
+        // The statement the instruction comes from, else the process.
+        let span = spans.get(state.pc).copied().unwrap_or(process.span);
+        let at = |e: EvalError| fail(e, span);
         state.pc += 1;
         match instr {
             Instr::SetVar { var, value } => {
@@ -399,7 +401,7 @@ pub(crate) fn run(
                 state.running = caller.running;
                 state.pc = caller.pc;
                 // `out` and `inout` parameters go back to the caller's variables.
-                let (code, _) = code_of(process, subs, state.running);
+                let (code, ..) = code_of(process, subs, state.running);
                 if let Some(Instr::Call { copy_back, .. }) = code.get(state.pc.wrapping_sub(1)) {
                     for (param, actual) in copy_back {
                         state.vars[actual.index()] = callee_vars[param.index()].clone();

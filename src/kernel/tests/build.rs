@@ -37,6 +37,7 @@ pub fn signal(d: &mut Design, name: &str, ty: Type, init: Value) -> SignalId {
 
 pub fn process(d: &mut Design, name: &str, vars: Vec<(&str, Type, Value)>, code: Vec<Instr>) {
     d.processes.push(Process {
+        spans: Vec::new(),
         name: name.into(),
         vars: vars
             .into_iter()

@@ -38,6 +38,7 @@ fn subprogram(
         .map(|k| int_var(&format!("v{k}")))
         .collect();
     d.subprograms.push(Subprogram {
+        spans: Vec::new(),
         name: format!("sub{}", d.subprograms.len()),
         kind,
         params,
