@@ -475,3 +475,32 @@ fn a_quantity_that_is_not_a_number_stops_the_run() {
         .assert()
         .success();
 }
+
+#[test]
+fn math_real_outside_its_domain_and_real_division_by_zero_are_errors() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("domain.vhd");
+    let model = |body: &str| {
+        format!(
+            "-- vams: stop 5 ns\nlibrary ieee;\nuse ieee.math_real.all;\n\
+             entity domain is end;\narchitecture a of domain is\nbegin\n\
+             p : process is\n  variable x : real := 1.0;\nbegin\n  wait for 1 ns;\n  \
+             x := x - 1.5;\n  {body}\nend process;\nend;\n"
+        )
+    };
+    std::fs::write(&file, model("x := sqrt(x);")).unwrap();
+    vams()
+        .arg("run")
+        .arg(&file)
+        .assert()
+        .code(1)
+        .stderr(contains("X < 0.0 in SQRT(X), with X = -0.5"))
+        .stderr(contains("domain.vhd:12:3"));
+    std::fs::write(&file, model("x := 1.0 / (x + 0.5);")).unwrap();
+    vams()
+        .arg("run")
+        .arg(&file)
+        .assert()
+        .code(1)
+        .stderr(contains("real division by zero"));
+}

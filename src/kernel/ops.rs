@@ -117,7 +117,19 @@ fn arithmetic(op: BinaryOp, a: Value, b: Value) -> Result<Value, EvalError> {
         _ => x / y,
     };
     Ok(match (op, &a, &b) {
-        (_, Real(x), Real(y)) => Real(real(*x, *y)),
+        (Div, Real(_), Real(y)) if *y == 0.0 => {
+            return Err(EvalError::new(
+                "real division by zero",
+                "guard the division (LRM 9.2.7 makes it an error, not an infinity)",
+            ));
+        }
+        (_, Real(x), Real(y)) => {
+            let r = real(*x, *y);
+            if !r.is_finite() && x.is_finite() && y.is_finite() {
+                return Err(overflow("real arithmetic"));
+            }
+            Real(r)
+        }
         (Div, Integer(_), Integer(0)) => {
             return Err(EvalError::new(
                 "integer division by zero",
@@ -335,7 +347,35 @@ pub(crate) fn builtin(f: Builtin, args: &[Value]) -> Result<Value, EvalError> {
     } else {
         0.0
     };
-    Ok(Value::Real(real_builtin(f, x, y)))
+    if let Some(message) = outside_domain(f, x, y) {
+        return Err(EvalError::new(
+            message,
+            "math_real reports an argument outside the function's domain as an error \
+             (IEEE 1076.2); keep the argument inside it",
+        ));
+    }
+    let r = real_builtin(f, x, y);
+    if !r.is_finite() && x.is_finite() && y.is_finite() {
+        return Err(overflow(&format!("{f:?}({x})")));
+    }
+    Ok(Value::Real(r))
+}
+
+/// math_real's message for an argument outside the domain of `f` (IEEE 1076.2), or `None`.
+fn outside_domain(f: Builtin, x: f64, y: f64) -> Option<String> {
+    use Builtin::*;
+    let (bad, rule) = match f {
+        Sqrt => (x < 0.0, "X < 0.0 in SQRT(X)"),
+        Log => (x <= 0.0, "X <= 0.0 in LOG(X)"),
+        Log10 => (x <= 0.0, "X <= 0.0 in LOG10(X)"),
+        Asin => (x.abs() > 1.0, "ABS(X) > 1.0 in ARCSIN(X)"),
+        Acos => (x.abs() > 1.0, "ABS(X) > 1.0 in ARCCOS(X)"),
+        Acosh => (x < 1.0, "X < 1.0 in ARCCOSH(X)"),
+        Atanh => (x.abs() >= 1.0, "ABS(X) >= 1.0 in ARCTANH(X)"),
+        Atan2 => (x == 0.0 && y == 0.0, "X = 0.0 and Y = 0.0 in ARCTAN(Y, X)"),
+        _ => (false, ""),
+    };
+    bad.then(|| format!("{rule}, with X = {x}"))
 }
 
 /// The real-valued builtins on plain numbers, shared with equation evaluation.
