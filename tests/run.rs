@@ -504,3 +504,24 @@ fn math_real_outside_its_domain_and_real_division_by_zero_are_errors() {
         .code(1)
         .stderr(contains("real division by zero"));
 }
+
+#[test]
+fn an_array_too_large_to_hold_is_a_diagnostic_not_an_abort() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("huge.vhd");
+    std::fs::write(
+        &file,
+        "entity huge is end;\narchitecture a of huge is\n  \
+         signal s : bit_vector(0 to 2000000000);\nbegin\nend;\n",
+    )
+    .unwrap();
+    vams()
+        .arg("check")
+        .arg(&file)
+        .assert()
+        .code(1)
+        .stderr(contains(
+            "not supported yet: an array of 2000000001 elements",
+        ))
+        .stderr(contains("huge.vhd:3:14"));
+}

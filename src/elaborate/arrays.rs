@@ -207,11 +207,17 @@ impl<'a> Elab<'a> {
                 "use one range",
             )));
         };
-        match actual {
-            Actual::Range(r) => self.range_bounds(sc, r),
-            Actual::Expr(e) => self.range_bounds(sc, &ast::Range::Attribute(Box::new(e.clone()))),
-            Actual::Open(s) => Err(self.error(ElabError::invalid(*s, "expected a range", None))),
-        }
+        let (l, r, asc) = match actual {
+            Actual::Range(r) => self.range_bounds(sc, r)?,
+            Actual::Expr(e) => {
+                self.range_bounds(sc, &ast::Range::Attribute(Box::new(e.clone())))?
+            }
+            Actual::Open(s) => {
+                return Err(self.error(ElabError::invalid(*s, "expected a range", None)));
+            }
+        };
+        self.array_size(l, r, asc, span)?;
+        Ok((l, r, asc))
     }
 
     /// `electrical'across`, `electrical_vector'through`: the across or through subtype of a

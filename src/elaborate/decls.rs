@@ -424,6 +424,7 @@ impl<'a> Elab<'a> {
                     }
                     IndexDef::Constrained(r) => {
                         let (l, r, asc) = self.discrete_range(sc, r)?;
+                        self.array_size(l, r, asc, d.span)?;
                         (Some((l, r, asc)), l.min(r))
                     }
                 };
@@ -486,6 +487,7 @@ impl<'a> Elab<'a> {
                         return Err(self.error(ElabError::invalid(*s, "expected a range", None)));
                     }
                 };
+                self.array_size(l, r, asc, si.span)?;
                 let ty = Ty::Array(Rc::new(ArrayTy {
                     name: arr.name.clone(),
                     element: arr.element.clone(),
@@ -584,7 +586,34 @@ pub(super) fn default_value(sub: &Sub) -> Value {
     }
 }
 
+/// The most elements an array may have: each is a value in memory (and a column or a
+/// signal's worth of events), so a bound typed a few digits too long is a diagnostic rather
+/// than an allocation of gigabytes.
+const MAX_ARRAY_ELEMENTS: usize = 1 << 24;
+
 impl Elab<'_> {
+    /// An array constrained to `left to/downto right`, or a diagnostic at `span` when it would
+    /// hold more than [`MAX_ARRAY_ELEMENTS`].
+    pub(super) fn array_size(
+        &mut self,
+        left: i64,
+        right: i64,
+        ascending: bool,
+        span: crate::source::Span,
+    ) -> R<()> {
+        let n = (i128::from(right) - i128::from(left)) * if ascending { 1 } else { -1 } + 1;
+        if n > MAX_ARRAY_ELEMENTS as i128 {
+            return Err(self.error(ElabError::unsupported(
+                span,
+                format!("an array of {n} elements"),
+                format!(
+                    "vams holds arrays of up to {MAX_ARRAY_ELEMENTS} elements; check the bounds"
+                ),
+            )));
+        }
+        Ok(())
+    }
+
     /// `init` for an object of subtype `sub`, or a diagnostic at `span` when it is outside the
     /// subtype's integer range.
     pub(super) fn check_initial(
