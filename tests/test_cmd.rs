@@ -176,6 +176,10 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_simultaneous_case ... ok"))
         .stdout(contains("test tb_bouncing_ball ... ok"))
         .stdout(contains("test tb_block_ports ... ok"))
+        .stdout(contains("test tb_analog_functions ... ok"))
+        .stdout(contains("test tb_pwl_table_generic ... ok"))
+        .stdout(contains("test tb_static_calls_and_sources ... ok"))
+        .stdout(contains("test tb_procedural ... ok"))
         .stdout(contains("28 passed, 0 failed"));
 }
 
