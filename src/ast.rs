@@ -553,6 +553,35 @@ pub struct SeqStmt {
     pub span: Span,
 }
 
+impl SeqStmt {
+    /// Calls `f` on this statement and on every statement nested in it (the branches of an
+    /// `if` or `case`, the body of a loop), outer first.
+    pub fn walk<'s>(&'s self, f: &mut impl FnMut(&'s SeqStmt)) {
+        f(self);
+        let mut all = |body: &'s [SeqStmt]| body.iter().for_each(|s| s.walk(f));
+        match &self.kind {
+            SeqKind::If {
+                branches,
+                otherwise,
+            } => {
+                for (_, body) in branches {
+                    all(body);
+                }
+                if let Some(body) = otherwise {
+                    all(body);
+                }
+            }
+            SeqKind::Case { alternatives, .. } => {
+                for (_, body) in alternatives {
+                    all(body);
+                }
+            }
+            SeqKind::Loop { body, .. } => all(body),
+            _ => {}
+        }
+    }
+}
+
 #[derive(Clone, Debug, PartialEq)]
 pub enum SeqKind {
     Wait {

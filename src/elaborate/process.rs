@@ -1084,21 +1084,9 @@ impl<'a> Elab<'a> {
 }
 
 fn contains_wait(s: &SeqStmt) -> bool {
-    match &s.kind {
-        SeqKind::Wait { .. } => true,
-        SeqKind::If {
-            branches,
-            otherwise,
-        } => {
-            branches.iter().any(|(_, b)| b.iter().any(contains_wait))
-                || otherwise.iter().flatten().any(contains_wait)
-        }
-        SeqKind::Case { alternatives, .. } => alternatives
-            .iter()
-            .any(|(_, b)| b.iter().any(contains_wait)),
-        SeqKind::Loop { body, .. } => body.iter().any(contains_wait),
-        _ => false,
-    }
+    let mut found = false;
+    s.walk(&mut |s| found |= matches!(s.kind, SeqKind::Wait { .. }));
+    found
 }
 
 /// Whether hierarchical path `outer` is `inner` or encloses it (`a` encloses `a.b` and `a(1)`,

@@ -369,30 +369,12 @@ fn choice_span(c: &Choice) -> Span {
 /// The simple names assigned with `:=` anywhere in `stmts` (nested statements included).
 fn assigned_names<'s>(stmts: &'s [ast::SeqStmt], out: &mut Vec<&'s ast::Ident>) {
     for s in stmts {
-        match &s.kind {
-            ast::SeqKind::VariableAssign { target, .. } => {
-                if let ast::ExprKind::Name(id) = &target.kind {
-                    out.push(id);
-                }
+        s.walk(&mut |s| {
+            if let ast::SeqKind::VariableAssign { target, .. } = &s.kind
+                && let ast::ExprKind::Name(id) = &target.kind
+            {
+                out.push(id);
             }
-            ast::SeqKind::If {
-                branches,
-                otherwise,
-            } => {
-                for (_, body) in branches {
-                    assigned_names(body, out);
-                }
-                if let Some(body) = otherwise {
-                    assigned_names(body, out);
-                }
-            }
-            ast::SeqKind::Case { alternatives, .. } => {
-                for (_, body) in alternatives {
-                    assigned_names(body, out);
-                }
-            }
-            ast::SeqKind::Loop { body, .. } => assigned_names(body, out),
-            _ => {}
-        }
+        });
     }
 }
