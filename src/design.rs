@@ -681,6 +681,39 @@ impl Expr {
         }
     }
 
+    /// This expression with each direct sub-expression replaced by `f` of it (a leaf is
+    /// cloned): the one place that knows the shape of every node, for rewrites that change
+    /// a few kinds of node and rebuild the rest.
+    pub fn try_map_children<E>(
+        &self,
+        mut f: impl FnMut(&Expr) -> Result<Expr, E>,
+    ) -> Result<Expr, E> {
+        Ok(match self {
+            Expr::Const(_)
+            | Expr::Quantity(_)
+            | Expr::Dot(_)
+            | Expr::Signal(_)
+            | Expr::Var(_)
+            | Expr::Now
+            | Expr::SignalAttr(..) => self.clone(),
+            Expr::Unary(op, a) => Expr::Unary(*op, Box::new(f(a)?)),
+            Expr::Binary(op, l, r) => Expr::Binary(*op, Box::new(f(l)?), Box::new(f(r)?)),
+            Expr::Call(g, args) => Expr::Call(*g, args.iter().map(f).collect::<Result<_, _>>()?),
+            Expr::FnCall { sub, args, signals } => Expr::FnCall {
+                sub: *sub,
+                args: args.iter().map(f).collect::<Result<_, _>>()?,
+                signals: signals.clone(),
+            },
+            Expr::If(c, x, y) => Expr::If(Box::new(f(c)?), Box::new(f(x)?), Box::new(f(y)?)),
+            Expr::Index { array, index, ty } => Expr::Index {
+                array: Box::new(f(array)?),
+                index: Box::new(f(index)?),
+                ty: ty.clone(),
+            },
+            Expr::Image(ty, x) => Expr::Image(ty.clone(), Box::new(f(x)?)),
+        })
+    }
+
     /// The signals the expression reads (with repetitions), for implicit sensitivity.
     pub fn signals(&self) -> Vec<SignalId> {
         let mut out = Vec::new();

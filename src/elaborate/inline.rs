@@ -63,7 +63,7 @@ const PROCEDURAL: usize = 0;
 /// The value of `e` when its user function calls, executed for their arguments, leave it
 /// static (a constant initialised by a pure function of constants: `time2real(t_step)`).
 pub(super) fn static_call_value(design: &Design, e: &Expr) -> Option<Value> {
-    match inline(design, e, 0).ok().map(fold_parts) {
+    match inline(design, e, 0).ok().map(|e| fold_parts(&e)) {
         Some(Ok(Expr::Const(v))) => Some(v),
         _ => None,
     }
@@ -186,46 +186,29 @@ impl Comparison {
 
 impl Expander<'_> {
     fn expr(&mut self, e: &Expr, depth: usize) -> Result<Expr, NotInlinable> {
-        let design = self.design;
-        let mut go = |e: &Expr| self.expr(e, depth);
-        Ok(match e {
-            Expr::FnCall { sub, args, .. } => {
-                let Some(f) = design.subprograms.get(sub.index()) else {
-                    return Err(NotInlinable {
-                        name: String::new(),
-                        reason: "it is not in the design".into(),
-                    });
-                };
-                if depth >= MAX_INLINE_DEPTH {
-                    return Err(refuse(f, "it calls itself"));
-                }
-                let mut frame: Vec<Expr> = args.iter().map(&mut go).collect::<Result<_, _>>()?;
-                // A function whose body was not lowered (its package body failed, or it has
-                // none) has no variables for its parameters yet.
-                let Some(locals) = f.vars.get(frame.len()..) else {
-                    return Err(refuse(f, "its body could not be elaborated"));
-                };
-                frame.extend(locals.iter().map(|v| Expr::Const(v.init.clone())));
-                self.run(f, 0, frame, depth + 1)?
-            }
-            Expr::Const(_)
-            | Expr::Quantity(_)
-            | Expr::Dot(_)
-            | Expr::Signal(_)
-            | Expr::Var(_)
-            | Expr::Now
-            | Expr::SignalAttr(..) => e.clone(),
-            Expr::Unary(op, a) => Expr::Unary(*op, Box::new(go(a)?)),
-            Expr::Binary(op, l, r) => Expr::Binary(*op, Box::new(go(l)?), Box::new(go(r)?)),
-            Expr::Call(f, args) => Expr::Call(*f, args.iter().map(go).collect::<Result<_, _>>()?),
-            Expr::If(c, x, y) => Expr::If(Box::new(go(c)?), Box::new(go(x)?), Box::new(go(y)?)),
-            Expr::Index { array, index, ty } => Expr::Index {
-                array: Box::new(go(array)?),
-                index: Box::new(go(index)?),
-                ty: ty.clone(),
-            },
-            Expr::Image(ty, x) => Expr::Image(ty.clone(), Box::new(go(x)?)),
-        })
+        let Expr::FnCall { sub, args, .. } = e else {
+            return e.try_map_children(|c| self.expr(c, depth));
+        };
+        let Some(f) = self.design.subprograms.get(sub.index()) else {
+            return Err(NotInlinable {
+                name: String::new(),
+                reason: "it is not in the design".into(),
+            });
+        };
+        if depth >= MAX_INLINE_DEPTH {
+            return Err(refuse(f, "it calls itself"));
+        }
+        let mut frame: Vec<Expr> = args
+            .iter()
+            .map(|a| self.expr(a, depth))
+            .collect::<Result<_, _>>()?;
+        // A function whose body was not lowered (its package body failed, or it has none) has
+        // no variables for its parameters yet.
+        let Some(locals) = f.vars.get(frame.len()..) else {
+            return Err(refuse(f, "its body could not be elaborated"));
+        };
+        frame.extend(locals.iter().map(|v| Expr::Const(v.init.clone())));
+        self.run(f, 0, frame, depth + 1)
     }
 
     /// `e` in `frame`, its calls inlined, folded where static.
@@ -237,7 +220,7 @@ impl Expander<'_> {
         depth: usize,
     ) -> Result<Expr, NotInlinable> {
         let e = self.expr(&substitute(e, frame), depth)?;
-        fold_parts(e).map_err(|m| NotInlinable {
+        fold_parts(&e).map_err(|m| NotInlinable {
             name: f.name.clone(),
             reason: m,
         })
@@ -353,27 +336,18 @@ impl Expander<'_> {
 /// `e` with every static part folded (an element of a constant table at a static index, the
 /// branch of an `if` whose condition is static), bottom-up; the untaken branch of a static
 /// condition is dropped unevaluated.
-fn fold_parts(e: Expr) -> Result<Expr, String> {
-    let part = |e: Box<Expr>| fold_parts(*e).map(Box::new);
+fn fold_parts(e: &Expr) -> Result<Expr, String> {
     let e = match e {
-        Expr::Unary(op, a) => Expr::Unary(op, part(a)?),
-        Expr::Binary(op, l, r) => Expr::Binary(op, part(l)?, part(r)?),
-        Expr::Call(f, args) => Expr::Call(
-            f,
-            args.into_iter().map(fold_parts).collect::<Result<_, _>>()?,
-        ),
-        Expr::If(c, x, y) => match fold_parts(*c)? {
-            Expr::Const(Value::Boolean(true)) => return fold_parts(*x),
-            Expr::Const(Value::Boolean(false)) => return fold_parts(*y),
-            c => Expr::If(Box::new(c), part(x)?, part(y)?),
+        Expr::If(c, x, y) => match fold_parts(c)? {
+            Expr::Const(Value::Boolean(true)) => return fold_parts(x),
+            Expr::Const(Value::Boolean(false)) => return fold_parts(y),
+            c => Expr::If(
+                Box::new(c),
+                Box::new(fold_parts(x)?),
+                Box::new(fold_parts(y)?),
+            ),
         },
-        Expr::Index { array, index, ty } => Expr::Index {
-            array: part(array)?,
-            index: part(index)?,
-            ty,
-        },
-        Expr::Image(ty, x) => Expr::Image(ty, part(x)?),
-        other => other,
+        _ => e.try_map_children(fold_parts)?,
     };
     fold(e)
 }
@@ -417,30 +391,13 @@ fn set_element(
 
 /// `e` with each `Var(v)` replaced by `frame[v]`.
 fn substitute(e: &Expr, frame: &[Expr]) -> Expr {
-    let s = |e: &Expr| Box::new(substitute(e, frame));
-    match e {
-        Expr::Var(v) => frame.get(v.index()).cloned().unwrap_or_else(|| e.clone()),
-        Expr::Const(_)
-        | Expr::Quantity(_)
-        | Expr::Dot(_)
-        | Expr::Signal(_)
-        | Expr::Now
-        | Expr::SignalAttr(..) => e.clone(),
-        Expr::Unary(op, a) => Expr::Unary(*op, s(a)),
-        Expr::Binary(op, l, r) => Expr::Binary(*op, s(l), s(r)),
-        Expr::Call(f, args) => Expr::Call(*f, args.iter().map(|a| substitute(a, frame)).collect()),
-        Expr::FnCall { sub, args, signals } => Expr::FnCall {
-            sub: *sub,
-            args: args.iter().map(|a| substitute(a, frame)).collect(),
-            signals: signals.clone(),
-        },
-        Expr::If(c, x, y) => Expr::If(s(c), s(x), s(y)),
-        Expr::Index { array, index, ty } => Expr::Index {
-            array: s(array),
-            index: s(index),
-            ty: ty.clone(),
-        },
-        Expr::Image(ty, x) => Expr::Image(ty.clone(), s(x)),
+    let replaced = match e {
+        Expr::Var(v) => return frame.get(v.index()).cloned().unwrap_or_else(|| e.clone()),
+        _ => e.try_map_children(|c| Ok::<_, std::convert::Infallible>(substitute(c, frame))),
+    };
+    match replaced {
+        Ok(e) => e,
+        Err(never) => match never {},
     }
 }
 
