@@ -39,7 +39,7 @@ pub(super) struct NotInlinable {
 
 /// `e` with every `FnCall` replaced by what its function computes.
 pub(super) fn inline(design: &Design, e: &Expr, depth: usize) -> Result<Expr, NotInlinable> {
-    Expander::new(design, None).expr(e, depth)
+    Expander::new(design, Vec::new()).expr(e, depth)
 }
 
 /// What the body of a simultaneous procedural statement, lowered as `body` (a procedure
@@ -51,10 +51,7 @@ pub(super) fn procedural_values(
     frame: &[Expr],
     outputs: &[VarId],
 ) -> Result<Vec<Expr>, NotInlinable> {
-    outputs
-        .iter()
-        .map(|&v| Expander::new(design, Some(v)).run(body, 0, frame.to_vec(), PROCEDURAL))
-        .collect()
+    Expander::new(design, outputs.to_vec()).run(body, 0, frame.to_vec(), PROCEDURAL)
 }
 
 /// The call depth of a procedural's own body (functions it calls run deeper).
@@ -79,18 +76,18 @@ struct Expander<'d> {
     /// so a table lookup does not expand paths that no operand can take (where an index runs
     /// off the table).
     facts: Vec<Comparison>,
-    /// For a procedural: the variable whose value at the end of the body is the result.
-    result: Option<VarId>,
+    /// For a procedural: the variables whose values at the end of the body are its results.
+    outputs: Vec<VarId>,
 }
 
 impl<'d> Expander<'d> {
-    fn new(design: &'d Design, result: Option<VarId>) -> Expander<'d> {
+    fn new(design: &'d Design, outputs: Vec<VarId>) -> Expander<'d> {
         Expander {
             design,
             steps: 0,
             open: 0,
             facts: Vec::new(),
-            result,
+            outputs,
         }
     }
 }
@@ -208,7 +205,9 @@ impl Expander<'_> {
             return Err(refuse(f, "its body could not be elaborated"));
         };
         frame.extend(locals.iter().map(|v| Expr::Const(v.init.clone())));
-        self.run(f, 0, frame, depth + 1)
+        // A function's run has its one result.
+        let mut result = self.run(f, 0, frame, depth + 1)?;
+        result.pop().ok_or_else(|| refuse(f, "it has no result"))
     }
 
     /// `e` in `frame`, its calls inlined, folded where static.
@@ -234,7 +233,7 @@ impl Expander<'_> {
         frame: Vec<Expr>,
         depth: usize,
         fact: Option<Comparison>,
-    ) -> Result<Expr, NotInlinable> {
+    ) -> Result<Vec<Expr>, NotInlinable> {
         self.open += 1;
         let known = fact.is_some();
         self.facts.extend(fact);
@@ -246,14 +245,15 @@ impl Expander<'_> {
         result
     }
 
-    /// The result of `f` from instruction `pc` with its variables at `frame`.
+    /// The results of `f` from instruction `pc` with its variables at `frame`: a function's
+    /// value, or a procedural's outputs.
     fn run(
         &mut self,
         f: &Subprogram,
         mut pc: usize,
         mut frame: Vec<Expr>,
         depth: usize,
-    ) -> Result<Expr, NotInlinable> {
+    ) -> Result<Vec<Expr>, NotInlinable> {
         loop {
             self.steps += 1;
             if self.steps > MAX_STEPS || self.open > MAX_OPEN_BRANCHES {
@@ -296,7 +296,10 @@ impl Expander<'_> {
                                     Ok((then, self.branch(f, *target, frame, depth, negated)?))
                                 });
                                 let (then, other) = other?;
-                                return Ok(Expr::If(Box::new(c), Box::new(then), Box::new(other)));
+                                let join = |(a, b)| {
+                                    Expr::If(Box::new(c.clone()), Box::new(a), Box::new(b))
+                                };
+                                return Ok(then.into_iter().zip(other).map(join).collect());
                             }
                         }
                     }
@@ -315,12 +318,13 @@ impl Expander<'_> {
                     }
                     pc += 1;
                 }
-                Instr::Return(Some(r)) => return self.value(f, r, &frame, depth),
-                Instr::Return(None) if depth == PROCEDURAL => {
-                    if let Some(v) = self.result {
-                        return Ok(frame[v.index()].clone());
-                    }
-                    return Err(refuse(f, "it has no result"));
+                Instr::Return(Some(r)) => return Ok(vec![self.value(f, r, &frame, depth)?]),
+                Instr::Return(None) if depth == PROCEDURAL && !self.outputs.is_empty() => {
+                    return Ok(self
+                        .outputs
+                        .iter()
+                        .map(|v| frame[v.index()].clone())
+                        .collect());
                 }
                 _ => {
                     return Err(refuse(
