@@ -191,13 +191,7 @@ pub fn simulate_keeping(
         a.select_quantities(&wanted_quantities(design, &recorder));
     }
     let sim = Simulation::start(design, options, analog, on_report).map_err(early)?;
-    sim.run(recorder, on_report).map_err(|failed| {
-        let (error, waveforms) = *failed;
-        Box::new(Failed {
-            error,
-            partial: Some(waveforms),
-        })
-    })
+    sim.run(recorder, on_report)
 }
 
 /// The quiescent point after initialisation (processes run to their first wait, breaks

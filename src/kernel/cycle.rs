@@ -10,7 +10,6 @@
 
 use crate::design::{Design, Expr, QuantityId, SignalId, Value};
 use crate::solver::{Advance, OpOptions, Transient, TransientOptions};
-use crate::waveform::Waveforms;
 
 use super::analog_model::AnalogModel;
 use super::error::SimError;
@@ -19,7 +18,7 @@ use super::events::{AnalogView, EventKernel};
 use super::progress::Throttle;
 use super::record::Recorder;
 use super::solve_error::solve_error;
-use super::{Outcome, Report, SimOptions, SimResult, SimStats};
+use super::{Failed, Outcome, Report, SimOptions, SimResult, SimStats};
 
 /// Absolute tolerance of unknowns without a tolerance group (when `--abstol` is not given).
 pub(crate) const DEFAULT_ABSTOL: f64 = 1e-9;
@@ -280,9 +279,12 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         mut self,
         mut recorder: Recorder,
         on_report: &mut dyn FnMut(&Report),
-    ) -> Result<SimResult, Box<(SimError, Waveforms)>> {
-        if let Err(e) = self.run_recording(&mut recorder, on_report) {
-            return Err(Box::new((e, recorder.waveforms)));
+    ) -> Result<SimResult, Box<Failed>> {
+        if let Err(error) = self.run_recording(&mut recorder, on_report) {
+            return Err(Box::new(Failed {
+                error,
+                partial: Some(recorder.waveforms),
+            }));
         }
         let stats = self.stats();
         Ok(SimResult {

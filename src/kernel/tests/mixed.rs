@@ -76,7 +76,10 @@ fn real(x: f64) -> Expr {
 fn run_with<A: AnalogModel>(d: &Design, options: &SimOptions, model: A) -> SimResult {
     let recorder = Recorder::new(d, &options.probes).expect("probes exist");
     Simulation::start(d, options, Some(model), &mut |_| {})
-        .and_then(|sim| sim.run(recorder, &mut |_| {}).map_err(|failed| failed.0))
+        .and_then(|sim| {
+            sim.run(recorder, &mut |_| {})
+                .map_err(|failed| failed.error)
+        })
         .expect("simulation runs")
 }
 
@@ -451,8 +454,11 @@ fn a_solver_failure_names_the_unknown_and_the_time() {
         ..SimOptions::default()
     };
     let recorder = Recorder::new(&d, &[]).expect("probes");
-    let result = Simulation::start(&d, &options, Some(ExprDae::new(&d)), &mut |_| {})
-        .and_then(|sim| sim.run(recorder, &mut |_| {}).map_err(|failed| failed.0));
+    let result =
+        Simulation::start(&d, &options, Some(ExprDae::new(&d)), &mut |_| {}).and_then(|sim| {
+            sim.run(recorder, &mut |_| {})
+                .map_err(|failed| failed.error)
+        });
     match result {
         Err(crate::kernel::SimError::Solve { time, unknowns, .. }) => {
             assert!((0.9..=1.0).contains(&time), "failed at {time}");
