@@ -27,6 +27,10 @@ pub struct DesignUnit {
     pub context: Vec<ContextItem>,
     pub unit: LibraryUnit,
     pub span: Span,
+    /// Every `a.b` of simple identifiers in the unit's text, in order: the library units it
+    /// names by selected name (`work.pkg.item` without a `use` clause) are among them, and
+    /// analysis must see those units first (LRM 11.4).
+    pub dotted: Vec<(Ident, Ident)>,
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -195,9 +195,6 @@ struct Elab<'a> {
     /// The multiplications and divisions analysis resolved to the mixed universal operators
     /// (`universal_integer * universal_real`, LRM 7.5.5): their integer operand is converted.
     mixed_universal: FxHashSet<Span>,
-    /// Names found by the visibility rules of a scope, not by their analysed declaration (a
-    /// name analysis left unresolved, or one whose declaration elaboration could not build).
-    name_lookups: usize,
 }
 
 /// What elaboration takes from analysis's resolution of names, in one pass over the
@@ -213,11 +210,12 @@ fn resolutions(analysis: &Analysis) -> (FxHashMap<Span, Span>, FxHashSet<Span>) 
     let mut mixed = FxHashSet::default();
     for &(span, d) in analysis.units.iter().flat_map(|u| &u.references) {
         let decl = analysis.decl(d);
-        if !decl.name.starts_with('"') {
-            if span != decl.span {
-                names.insert(span, decl.span);
-            }
-        } else if let DeclKind::Subprogram(sig) = &decl.kind
+        if span != decl.span {
+            // Operators too: an application's span to the operator function it calls (a
+            // predefined operator's "declaration" is its type's, where no function is).
+            names.insert(span, decl.span);
+        }
+        if let DeclKind::Subprogram(sig) = &decl.kind
             && matches!(decl.name.as_str(), "\"*\"" | "\"/\"")
             && sig.params.iter().any(|p| p.ty == UNIVERSAL_INTEGER)
             && sig.params.iter().any(|p| p.ty == UNIVERSAL_REAL)
@@ -241,7 +239,6 @@ impl<'a> Elab<'a> {
             resolved,
             mixed_universal,
             package_decls: FxHashMap::default(),
-            name_lookups: 0,
             design: Design::default(),
             errors: Vec::new(),
             packages: FxHashMap::default(),
@@ -291,6 +288,19 @@ impl<'a> Elab<'a> {
             text.push_str(word);
         }
         text
+    }
+
+    /// A type of std.standard by name, for the types the language itself gives a construct
+    /// (a string literal is a `string`, a report's severity a `severity_level`): the
+    /// standard's own, whatever a model declares with the same name.
+    fn standard_type(&self, name: &str) -> Option<types::Ty> {
+        let std = self
+            .packages
+            .get(&("std".to_string(), "standard".to_string()))?;
+        match std.items.get(name)?.first()? {
+            Item::Type(sub) => Some(sub.ty.clone()),
+            _ => None,
+        }
     }
 
     /// A new scope with the implicit context (`library std, work; use std.standard.all`) and

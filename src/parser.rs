@@ -11,7 +11,7 @@ mod tests;
 
 use lalrpop_util::{ErrorRecovery, ParseError, lalrpop_mod};
 
-use crate::ast::DesignFile;
+use crate::ast::{DesignFile, Ident};
 use crate::diagnostics::SyntaxError;
 use crate::lexer::{self, Tok};
 use crate::source::{FileId, Span};
@@ -32,6 +32,7 @@ pub fn parse(file: FileId, text: &str) -> (DesignFile, Vec<SyntaxError>) {
     {
         return (DesignFile::default(), diagnostics);
     }
+    let dotted = dotted_pairs(file, &lexed.tokens);
     let mut recovered: support::Errors<'_> = Vec::new();
     let result = grammar::DesignFileParser::new().parse(
         file,
@@ -40,7 +41,10 @@ pub fn parse(file: FileId, text: &str) -> (DesignFile, Vec<SyntaxError>) {
     );
     diagnostics.extend(recovered.into_iter().map(|r| convert(file, text, r)));
     let ast = match result {
-        Ok(ast) => ast,
+        Ok(mut ast) => {
+            assign_dotted(&mut ast, dotted);
+            ast
+        }
         // A file that ends inside a unit after an error was recovered is that error's
         // cascade (recovery skipped the unit's `end`): reporting it again would only be noise.
         Err(ParseError::UnrecognizedEof { .. }) if !diagnostics.is_empty() => DesignFile::default(),
@@ -58,6 +62,36 @@ pub fn parse(file: FileId, text: &str) -> (DesignFile, Vec<SyntaxError>) {
     };
     diagnostics.sort_by_key(|d| d.span().start);
     (ast, diagnostics)
+}
+
+/// Every `a.b` of two plain identifiers, in text order.
+fn dotted_pairs(file: FileId, tokens: &[lexer::Spanned<'_>]) -> Vec<(Ident, Ident)> {
+    let ident = |&(l, ref t, r): &lexer::Spanned<'_>| match t {
+        Tok::Ident(s) => Some(Ident {
+            name: s.to_ascii_lowercase(),
+            span: Span::new(file, l, r),
+        }),
+        _ => None,
+    };
+    tokens
+        .windows(3)
+        .filter(|w| matches!(w[1].1, Tok::Dot))
+        .filter_map(|w| Some((ident(&w[0])?, ident(&w[2])?)))
+        .collect()
+}
+
+/// Gives each unit the pairs inside its span (both in text order).
+fn assign_dotted(ast: &mut DesignFile, dotted: Vec<(Ident, Ident)>) {
+    let mut pairs = dotted.into_iter().peekable();
+    for unit in &mut ast.units {
+        while pairs
+            .next_if(|(a, _)| a.span.start < unit.span.start)
+            .is_some()
+        {}
+        while let Some(pair) = pairs.next_if(|(a, _)| a.span.end <= unit.span.end) {
+            unit.dotted.push(pair);
+        }
+    }
 }
 
 fn convert(file: FileId, text: &str, r: ErrorRecovery<usize, Tok<'_>, SyntaxError>) -> SyntaxError {

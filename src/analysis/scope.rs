@@ -123,4 +123,13 @@ impl Region {
     pub fn add(&mut self, name: &str, id: DeclId) {
         self.names.entry(name.to_string()).or_default().push(id);
     }
+
+    /// Adds `id` behind the declarations of `name` already here, so that those win (the
+    /// last declaration of a region wins a non-overloadable name).
+    pub fn add_behind(&mut self, name: &str, id: DeclId) {
+        self.names
+            .entry(name.to_string())
+            .or_default()
+            .insert(0, id);
+    }
 }

@@ -150,6 +150,41 @@ fn file_order_does_not_change_the_result() {
     assert_eq!(forward, backward);
 }
 
+/// A package named only by a selected name (`work.p.k`, no `use` clause) is analysed before
+/// the unit that names it, whatever the file order (LRM 11.4).
+#[test]
+fn a_unit_named_by_a_selected_name_is_analysed_first() {
+    let pkg =
+        "package p is\n  type small is range 0 to 3;\n  constant k : real := 2.0;\nend package p;";
+    let user = "entity u is end entity u;\narchitecture a of u is\n  signal s : work.p.small := 1;\n  constant c : real := work.p.k * 2.0;\nbegin\nend architecture a;";
+    for order in [[user, pkg], [pkg, user]] {
+        assert_eq!(messages(&order), Vec::<String>::new());
+        let (sources, files) = load(&order);
+        let a = analyse(&sources, &files);
+        let user_file = files[files.len() - 2 + usize::from(order[0] == pkg)].0;
+        for name in ["small", ".k "] {
+            let at = user.find(name).expect("the use") as u32 + u32::from(name == ".k ");
+            let d = a.declaration_at(user_file, at).expect("resolves");
+            assert_eq!(a.decl(d).name, name.trim_matches(['.', ' ']));
+        }
+    }
+}
+
+/// An entity's own name does not hide what its context imports: `severity failure` in an
+/// entity named `failure` is std.standard's literal.
+#[test]
+fn a_units_own_name_yields_to_imported_names() {
+    let unit = "entity failure is end entity failure;\narchitecture a of failure is\nbegin\n  process begin\n    assert false report \"x\" severity failure;\n    wait;\n  end process;\nend architecture a;";
+    assert_eq!(messages(&[unit]), Vec::<String>::new());
+    let (sources, files) = load(&[unit]);
+    let a = analyse(&sources, &files);
+    let at = unit.rfind("failure").expect("the severity") as u32;
+    let d = a
+        .declaration_at(files.last().expect("the file").0, at)
+        .expect("resolves");
+    assert!(matches!(a.decl(d).kind, DeclKind::EnumLiteral(_)));
+}
+
 #[test]
 fn a_cycle_of_uses_is_one_diagnostic() {
     let e = errors(&[

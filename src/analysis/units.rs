@@ -330,7 +330,35 @@ impl<'a> Analyzer<'a> {
                 deps.push(d);
             }
         }
-        deps.retain(|&(d, _)| d != u);
+        // Units named by selected names anywhere in the unit (`work.pkg.item` with no
+        // `use` clause): `work`, and the libraries the context clauses name.
+        let libraries: Vec<&str> = contexts
+            .iter()
+            .flat_map(|c| c.iter())
+            .flat_map(|item| match item {
+                ContextItem::Library(names, _) => names.as_slice(),
+                ContextItem::Use(..) => &[],
+            })
+            .map(|id| canonical_library(&id.name))
+            .chain(["std"])
+            .collect();
+        for (lib, unit) in &du.dotted {
+            let lib = match canonical_library(&lib.name) {
+                "work" => library.as_str(),
+                other if libraries.contains(&other) => other,
+                _ => continue,
+            };
+            if let Some(d) = self.primary(lib, &unit.name, u) {
+                deps.push((d, unit.span));
+            }
+        }
+        // Each unit once, by the first span that names it.
+        let mut seen = Vec::with_capacity(deps.len());
+        deps.retain(|&(d, _)| {
+            let new = d != u && !seen.contains(&d);
+            seen.push(d);
+            new
+        });
         deps
     }
 
@@ -389,8 +417,10 @@ impl<'a> Analyzer<'a> {
         if let Some(p) = primary {
             let decl = self.unit_decl.get(&p).copied();
             if let Some(d) = decl {
+                // The primary unit's own name, behind what the context clauses import: an
+                // entity named `failure` does not hide std.standard's `failure`.
                 let name = self.out.units[p].name.clone();
-                self.out.regions[uses.0 as usize].add(&name, d);
+                self.out.regions[uses.0 as usize].add_behind(&name, d);
             }
             self.scope.push(self.out.units[p].region);
         }
@@ -398,8 +428,10 @@ impl<'a> Analyzer<'a> {
         self.record_scope(du.span);
         match &du.unit {
             LibraryUnit::Entity(e) => {
+                // A unit's name belongs to its library, not to its own region: visible in
+                // it, behind what the context clauses import.
                 let d = self.declare_unit(u, &e.name, DeclKind::Entity(own));
-                self.out.regions[own.0 as usize].add(&e.name.name, d);
+                self.out.regions[uses.0 as usize].add_behind(&e.name.name, d);
                 self.interfaces(&e.generics, super::declare::InterfaceRole::Generic);
                 self.interfaces(&e.ports, super::declare::InterfaceRole::Port);
                 self.decls(&e.decls);
@@ -417,7 +449,7 @@ impl<'a> Analyzer<'a> {
             }
             LibraryUnit::Package(p) => {
                 let d = self.declare_unit(u, &p.name, DeclKind::Package(own));
-                self.out.regions[own.0 as usize].add(&p.name.name, d);
+                self.out.regions[uses.0 as usize].add_behind(&p.name.name, d);
                 let standard = (library, p.name.name.as_str()) == ("std", "standard");
                 if standard {
                     self.universal_arithmetic();

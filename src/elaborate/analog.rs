@@ -188,9 +188,8 @@ impl<'a> Elab<'a> {
     ) -> R<(Option<String>, Option<f64>)> {
         let tol = match tolerance {
             Some(t) => {
-                let string = match sc.lookup("string") {
-                    Some([Item::Type(s), ..]) => s.ty.clone(),
-                    _ => return Err(super::Reported),
+                let Some(string) = self.standard_type("string") else {
+                    return Err(super::Reported);
                 };
                 match self.static_value(sc, t, &string, "a tolerance group")? {
                     Value::String(s) => Some(s),

@@ -258,14 +258,7 @@ impl<'a> Elab<'a> {
         let Some(bounds) = bounds else {
             return Ok(scalar);
         };
-        let Some([Item::Type(vector)]) = sc.lookup("real_vector") else {
-            return Err(self.error(ElabError::unsupported(
-                span,
-                "the across or through subtype of an array nature where `real_vector` is not visible",
-                "use `std.standard.real_vector` directly",
-            )));
-        };
-        let Ty::Array(arr) = &vector.ty else {
+        let Some(Ty::Array(arr)) = self.standard_type("real_vector") else {
             return Err(super::Reported);
         };
         let ty = Ty::Array(Rc::new(ArrayTy {

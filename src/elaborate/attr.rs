@@ -145,10 +145,7 @@ impl<'a> Elab<'a> {
                     return Err(self.error(ElabError::invalid(span, "`'image` takes one argument: `real'image(x)`", None)));
                 };
                 let x = self.expr_of(sc, x, &ty)?;
-                let string = match sc.lookup("string") {
-                    Some([Item::Type(s), ..]) => s.ty.clone(),
-                    _ => Ty::Integer,
-                };
+                let string = self.standard_type("string").unwrap_or(Ty::Integer);
                 Ok(Typed { e: Expr::Image(ty.to_design(), Box::new(x.e)), ty: string })
             }
             "high" | "low" | "left" | "right" | "length" | "ascending" => self.bound_attribute(sc, prefix, name, span),

@@ -252,11 +252,9 @@ impl<'a> Elab<'a> {
                 let EntityNames::List(names) = entities else {
                     return Ok(());
                 };
-                let string = sc.lookup("string").and_then(|i| match i.first() {
-                    Some(Item::Type(s)) => Some(s.ty.clone()),
-                    _ => None,
-                });
-                let Some(string) = string else { return Ok(()) };
+                let Some(string) = self.standard_type("string") else {
+                    return Ok(());
+                };
                 let Value::String(symbol) =
                     self.static_value(sc, value, &string, "an attribute value")?
                 else {
@@ -533,9 +531,8 @@ impl<'a> Elab<'a> {
             }
         }
         if let Some(t) = &si.tolerance {
-            let string = match sc.lookup("string") {
-                Some([Item::Type(s), ..]) => s.ty.clone(),
-                _ => return Err(super::Reported),
+            let Some(string) = self.standard_type("string") else {
+                return Err(super::Reported);
             };
             if let Value::String(group) = self.static_value(sc, t, &string, "a tolerance group")? {
                 sub.tolerance = Some(group.into());

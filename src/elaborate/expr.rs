@@ -2,7 +2,6 @@
 //! conversion between integer and real), overload resolution by argument and expected types,
 //! and folding of every static sub-expression.
 
-use std::borrow::Cow;
 use std::rc::Rc;
 
 use crate::ast::{self, Actual, ExprKind, Literal};
@@ -115,81 +114,104 @@ impl<'a> Elab<'a> {
         (!matches!(item, Item::Poison(_))).then(|| item.clone())
     }
 
-    /// Every item a (simple or selected) name denotes.
+    /// Elaborates the package whose declarations include `decl`, if there is one and it was
+    /// not elaborated yet; true when it was.
+    fn elaborate_package_declaring(&mut self, decl: Span) -> bool {
+        let Some((lib, name)) = self.lib.packages.iter().find_map(|((lib, name), p)| {
+            let s = p.unit.span;
+            (s.file == decl.file && s.start <= decl.start && decl.end <= s.end)
+                .then(|| (lib.clone(), name.clone()))
+        }) else {
+            return false;
+        };
+        !self.packages.contains_key(&(lib.clone(), name.clone()))
+            && self.package(&lib, &name, None).is_ok()
+    }
+
+    /// The item a (simple or selected) name denotes: the one built for the declaration
+    /// analysis resolved the name to. Elaboration does no name lookup of its own: a name
+    /// analysis left unresolved is an error (analysis reported it, or it names a construct
+    /// vams does not support, which is said here).
     pub(super) fn lookup(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<Vec<Item<'a>>> {
-        if let ExprKind::Name(id) | ExprKind::Selected(_, id) = &e.kind
-            && let Some(item) = self.resolved_item(sc, id)
-        {
+        let (ExprKind::Name(id) | ExprKind::Selected(_, id)) = &e.kind else {
+            return Err(self.error(ElabError::invalid(e.span, "expected a name", None)));
+        };
+        if let Some(item) = self.resolved_item(sc, id) {
             return Ok(vec![item]);
         }
-        self.name_lookups += 1;
-        let items = match &e.kind {
-            // Borrowed: only the usable items are copied out, once.
-            ExprKind::Name(id) => match sc.lookup(&id.name) {
-                Some(items) => Cow::Borrowed(items),
-                None => {
-                    let help = sc.suggest(&id.name).map(|s| format!("did you mean `{s}`?"));
-                    return Err(self.error(ElabError::Undeclared {
-                        span: id.span,
-                        name: id.name.clone(),
-                        help: help.or_else(|| {
-                            Some("declare it, or make it visible with a `use` clause".into())
-                        }),
-                    }));
-                }
-            },
+        if let Some(&decl) = self.resolved.get(&id.span) {
+            // Declared in a package no `use` clause made elaboration build yet
+            // (`work.pkg.item`): build it, then take the item.
+            if self.elaborate_package_declaring(decl)
+                && let Some(item) = self.resolved_item(sc, id)
+            {
+                return Ok(vec![item]);
+            }
+            return Err(self.unbuilt(sc, e, decl));
+        }
+        match &e.kind {
             ExprKind::Selected(prefix, suffix) => {
                 let outer = self.lookup(sc, prefix)?;
                 match outer.first() {
                     Some(Item::Library(lib)) => {
                         let lib = lib.clone();
                         let pkg = self.package(&lib, &suffix.name, Some(suffix.span))?;
-                        Cow::Owned(vec![Item::Package(pkg)])
+                        Ok(vec![Item::Package(pkg)])
                     }
-                    Some(Item::Package(pkg)) => match pkg.items.get(&suffix.name) {
-                        Some(items) => Cow::Owned(items.clone()),
-                        None => {
-                            return Err(self.error(ElabError::Undeclared {
-                                span: suffix.span,
-                                name: format!("{}.{}", pkg.name, suffix.name),
-                                help: Some(format!(
-                                    "package `{}` declares no `{}`",
-                                    pkg.name, suffix.name
-                                )),
-                            }));
-                        }
-                    },
+                    Some(Item::Package(pkg)) => Err(self.error(ElabError::Undeclared {
+                        span: suffix.span,
+                        name: format!("{}.{}", pkg.name, suffix.name),
+                        help: Some(format!(
+                            "package `{}` declares no `{}`",
+                            pkg.name, suffix.name
+                        )),
+                    })),
                     Some(other) => {
                         let class = other.class();
-                        return Err(self.error(ElabError::unsupported(
+                        Err(self.error(ElabError::unsupported(
                             e.span,
                             format!("selecting `.{}` from {class}", suffix.name),
                             "records are not supported yet; selected names reach package items (`lib.pkg.item`)",
-                        )));
+                        )))
                     }
-                    None => return Err(super::Reported),
+                    None => Err(super::Reported),
                 }
             }
             _ => {
-                return Err(self.error(ElabError::invalid(e.span, "expected a name", None)));
+                // Visibility is consulted only to word the error.
+                let help = if sc.lookup(&id.name).is_some() {
+                    "several declarations of this name are visible and nothing here decides between them; qualify the name or the expression (`pkg.name`, `t'(...)`)".to_string()
+                } else if let Some(s) = sc.suggest(&id.name) {
+                    format!("did you mean `{s}`?")
+                } else {
+                    "declare it, or make it visible with a `use` clause".to_string()
+                };
+                Err(self.error(ElabError::Undeclared {
+                    span: id.span,
+                    name: id.name.clone(),
+                    help: Some(help),
+                }))
             }
-        };
-        let usable: Vec<Item<'a>> = items
-            .iter()
-            .filter(|i| !matches!(i, Item::Poison(_)))
-            .cloned()
-            .collect();
-        if usable.is_empty() {
-            return match items.first() {
-                Some(Item::Poison(Some(reason))) => Err(self.error(ElabError::unsupported(
-                    e.span,
-                    format!("`{}` ({reason})", self.sources.snippet(e.span)),
-                    "vams's standard packages declare it, but its declaration uses a construct vams cannot elaborate yet",
-                ))),
-                _ => Err(super::Reported),
-            };
         }
-        Ok(usable)
+    }
+
+    /// The error for a name analysis resolved to `decl` that has no usable item: a standard
+    /// declaration vams cannot elaborate, or a declaration whose own elaboration failed
+    /// (reported there).
+    fn unbuilt(&mut self, sc: &Scope<'a>, e: &ast::Expr, decl: Span) -> super::Reported {
+        match sc.declared(decl).or_else(|| self.package_decls.get(&decl)) {
+            Some(Item::Poison(Some(reason))) => self.error(ElabError::unsupported(
+                e.span,
+                format!("`{}` ({reason})", self.sources.snippet(e.span)),
+                "vams's standard packages declare it, but its declaration uses a construct vams cannot elaborate yet",
+            )),
+            _ if !self.errors.is_empty() => super::Reported,
+            _ => self.error(ElabError::unsupported(
+                e.span,
+                format!("`{}`", self.sources.snippet(e.span)),
+                "what this name denotes is declared with a construct vams cannot elaborate yet",
+            )),
+        }
     }
 
     /// Lowers `e`; `want` is a hint for overload resolution only (use [`Elab::expr_of`] to
@@ -197,21 +219,7 @@ impl<'a> Elab<'a> {
     pub(super) fn expr(&mut self, sc: &Scope<'a>, e: &ast::Expr, want: Option<&Ty>) -> R<Typed> {
         match &e.kind {
             ExprKind::Literal(lit) => self.literal(sc, lit, e.span, want),
-            ExprKind::Name(id) => match sc.lookup(&id.name) {
-                // The usual case, read in place: [`Elab::lookup`] would copy the same items.
-                _ if let Some(item) = self.resolved_item(sc, id) => {
-                    self.object(sc, &[item], e, want)
-                }
-                Some(items) if !items.iter().any(|i| matches!(i, Item::Poison(_))) => {
-                    self.name_lookups += 1;
-                    self.object(sc, items, e, want)
-                }
-                _ => {
-                    let items = self.lookup(sc, e)?;
-                    self.object(sc, &items, e, want)
-                }
-            },
-            ExprKind::Selected(..) => {
+            ExprKind::Name(_) | ExprKind::Selected(..) => {
                 let items = self.lookup(sc, e)?;
                 self.object(sc, &items, e, want)
             }
@@ -224,7 +232,7 @@ impl<'a> Elab<'a> {
             ExprKind::Unary(op, a) => {
                 let a = self.expr(sc, a, want)?;
                 if *op == ast::UnaryOp::Not && !(a.ty == Ty::Boolean || a.ty.is_enum_named("bit")) {
-                    if let Some(r) = self.user_operator(sc, "not", vec![a.clone()], e.span) {
+                    if let Some(r) = self.user_operator(sc, vec![a.clone()], e.span) {
                         return r;
                     }
                 }
@@ -248,7 +256,7 @@ impl<'a> Elab<'a> {
                                 _ => None,
                             })
                             .collect();
-                        self.call(sc, subs, args, e.span, designator_span(prefix), want)
+                        self.call(sc, subs, args, e.span, designator_span(prefix))
                     }
                     Some(Item::Type(sub)) => {
                         let target = sub.ty.clone();
@@ -347,13 +355,8 @@ impl<'a> Elab<'a> {
             Literal::Integer(i) => Typed::new(Expr::Const(Value::Integer(*i)), Ty::Integer),
             Literal::Real(x) => Typed::new(Expr::Const(Value::Real(*x)), Ty::Real),
             Literal::Physical(n, unit) => {
-                let resolved = self.resolved_item(sc, unit);
-                let factor = match resolved
-                    .as_ref()
-                    .map(std::slice::from_ref)
-                    .or_else(|| sc.lookup(&unit.name))
-                {
-                    Some([Item::TimeUnit(f), ..]) => *f,
+                let factor = match self.resolved_item(sc, unit) {
+                    Some(Item::TimeUnit(f)) => f,
                     _ => {
                         return Err(self.error(ElabError::Undeclared {
                             span: unit.span,
@@ -373,22 +376,27 @@ impl<'a> Elab<'a> {
             }
             Literal::Char(c) => {
                 let name = format!("'{c}'");
-                let items = match sc.lookup_overloads(&name) {
-                    Some(items) => items,
-                    None => {
-                        return Err(self.error(ElabError::Undeclared {
-                            span,
-                            name,
-                            help: Some(
-                                "no visible enumeration type has this character literal".into(),
-                            ),
-                        }));
-                    }
+                // The literal analysis chose from the context.
+                if let Some(decl) = self.resolved.get(&span)
+                    && let Some(item @ Item::EnumLiteral { .. }) =
+                        sc.declared(*decl).or_else(|| self.package_decls.get(decl))
+                {
+                    let item = item.clone();
+                    return self.enum_literal(&[item], want, span);
+                }
+                let help = if sc.lookup_overloads(&name).is_some() {
+                    "several enumeration types have this literal and nothing here decides between them; qualify it (`bit'('1')`)"
+                } else {
+                    "no visible enumeration type has this character literal"
                 };
-                return self.enum_literal(&items, want, span);
+                return Err(self.error(ElabError::Undeclared {
+                    span,
+                    name,
+                    help: Some(help.into()),
+                }));
             }
             Literal::String(s) | Literal::BitString(s) => {
-                self.string_literal(sc, s, span, want, matches!(lit, Literal::BitString(_)))?
+                self.string_literal(s, span, want, matches!(lit, Literal::BitString(_)))?
             }
             Literal::Null => {
                 return Err(self.error(ElabError::unsupported(
@@ -400,28 +408,18 @@ impl<'a> Elab<'a> {
         })
     }
 
-    fn string_literal(
-        &mut self,
-        sc: &Scope<'a>,
-        s: &str,
-        span: Span,
-        want: Option<&Ty>,
-        bits: bool,
-    ) -> R<Typed> {
+    fn string_literal(&mut self, s: &str, span: Span, want: Option<&Ty>, bits: bool) -> R<Typed> {
         let target = match want {
             Some(Ty::Array(a)) if a.name != "string" => Some(a.clone()),
             Some(_) => None,
-            None if bits => match sc.lookup("bit_vector") {
-                Some([Item::Type(sub), ..]) => match &sub.ty {
-                    Ty::Array(a) => Some(a.clone()),
-                    _ => None,
-                },
+            None if bits => match self.standard_type("bit_vector") {
+                Some(Ty::Array(a)) => Some(a),
                 _ => None,
             },
             None => None,
         };
         let Some(arr) = target else {
-            let ty = string_type(sc, s.chars().count());
+            let ty = string_type(self.standard_type("string"), s.chars().count());
             return Ok(Typed::new(Expr::Const(Value::String(s.to_string())), ty));
         };
         let Ty::Enum(elem) = &arr.element else {
@@ -500,7 +498,7 @@ impl<'a> Elab<'a> {
                         _ => None,
                     })
                     .collect();
-                return self.call(sc, subs, &[], e.span, designator_span(e), want);
+                return self.call(sc, subs, &[], e.span, designator_span(e));
             }
             other => {
                 return Err(self.error(ElabError::WrongClass {
@@ -603,9 +601,7 @@ impl<'a> Elab<'a> {
         let ty = match result_type(bop, &lt.ty, &rt.ty) {
             Some(t) => t,
             None => {
-                if let Some(r) =
-                    self.user_operator(sc, op_text(bop), vec![lt.clone(), rt.clone()], span)
-                {
+                if let Some(r) = self.user_operator(sc, vec![lt.clone(), rt.clone()], span) {
                     return r;
                 }
                 let help = if lt.ty.is_numeric() && rt.ty.is_numeric() {
@@ -636,10 +632,9 @@ impl<'a> Elab<'a> {
         args: &[ast::Assoc],
         span: Span,
         name_span: Span,
-        want: Option<&Ty>,
     ) -> R<Typed> {
         let name = subs.first().map(|s| s.name.clone()).unwrap_or_default();
-        let (sub, slots) = self.resolve_call(sc, subs, args, true, want, span, name_span)?;
+        let (sub, slots) = self.resolve_call(subs, args, true, span, name_span)?;
         let ret = sub.ret.clone().unwrap_or(Ty::Real);
         if sub.native.is_none() {
             let e = self.user_function_call(sc, &sub, &slots, span)?;
@@ -950,12 +945,10 @@ pub(super) fn constrain(arr: &ArrayTy, n: usize) -> Ty {
 }
 
 /// The type of a string literal of `n` characters.
-fn string_type(sc: &Scope<'_>, n: usize) -> Ty {
-    match sc.lookup("string") {
-        Some([Item::Type(sub), ..]) => match &sub.ty {
-            Ty::Array(a) => constrain(a, n),
-            other => other.clone(),
-        },
+fn string_type(string: Option<Ty>, n: usize) -> Ty {
+    match string {
+        Some(Ty::Array(a)) => constrain(&a, n),
+        Some(other) => other,
         _ => Ty::Array(Rc::new(ArrayTy {
             name: "string".into(),
             element: Ty::Integer,

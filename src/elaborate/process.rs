@@ -379,9 +379,8 @@ impl<'a> Elab<'a> {
         let Some(e) = e else {
             return Ok(Expr::Const(Value::Enum(default)));
         };
-        let ty = match sc.lookup("severity_level") {
-            Some([Item::Type(s), ..]) => s.ty.clone(),
-            _ => return Err(Reported),
+        let Some(ty) = self.standard_type("severity_level") else {
+            return Err(Reported);
         };
         Ok(self.expr_of(sc, e, &ty)?.e)
     }
@@ -894,8 +893,7 @@ impl<'a> Elab<'a> {
                     }
                     _ => (&[][..], super::expr::designator_span(call)),
                 };
-                let (sub, slots) =
-                    self.resolve_call(sc, subs, args, false, None, call.span, name_span)?;
+                let (sub, slots) = self.resolve_call(subs, args, false, call.span, name_span)?;
                 self.user_procedure_call(sc, &sub, &slots, call.span)
             }
             Some(Some(_)) => Err(self.error(ElabError::unsupported(

@@ -126,36 +126,18 @@ impl<'a> Elab<'a> {
             None => None,
         };
         if let Some((decls, stmts)) = body {
-            // The declaration this body completes: the one analysis bound it to, else the
-            // visible one of the same signature.
-            let bound = match &spec.designator {
-                Designator::Ident(id) => self
-                    .resolved
-                    .get(&id.span)
-                    .and_then(|d| sc.declared(*d))
-                    .and_then(|i| match i {
-                        Item::Subprogram(s) if s.body.borrow().is_none() && s.native.is_none() => {
-                            Some(s.clone())
-                        }
-                        _ => None,
-                    }),
-                Designator::Operator(..) => None,
-            };
-            let earlier = bound.or_else(|| {
-                sc.lookup(&name).and_then(|items| {
-                    items.iter().find_map(|i| match i {
-                        Item::Subprogram(s)
-                            if s.body.borrow().is_none()
-                                && s.native.is_none()
-                                && same_signature(s, &params, ret.as_ref()) =>
-                        {
-                            Some(s.clone())
-                        }
-                        _ => None,
-                    })
-                })
-            });
-            if let Some(s) = earlier {
+            // The declaration this body completes: the one analysis bound it to.
+            let bound = self
+                .resolved
+                .get(&designator_span(spec))
+                .and_then(|d| sc.declared(*d))
+                .and_then(|i| match i {
+                    Item::Subprogram(s) if s.body.borrow().is_none() && s.native.is_none() => {
+                        Some(s.clone())
+                    }
+                    _ => None,
+                });
+            if let Some(s) = bound {
                 *s.body.borrow_mut() = Some(Rc::new(Body {
                     decls,
                     stmts,
@@ -180,10 +162,7 @@ impl<'a> Elab<'a> {
             body: RefCell::new(None),
             instances: RefCell::new(Vec::new()),
         });
-        match &spec.designator {
-            Designator::Ident(id) => sc.declare_at(&name, id.span, Item::Subprogram(sub.clone())),
-            Designator::Operator(..) => sc.declare(&name, Item::Subprogram(sub.clone())),
-        };
+        sc.declare_at(&name, designator_span(spec), Item::Subprogram(sub.clone()));
         if let Some((decls, stmts)) = body {
             // Declared first, so that the body sees itself (recursion).
             *sub.body.borrow_mut() = Some(Rc::new(Body {
@@ -198,15 +177,12 @@ impl<'a> Elab<'a> {
 
     /// The one subprogram of `subs` that `args` call: by arity and formal names, then the one
     /// analysis chose for the name at `name_span` (it resolves overloads from the operands'
-    /// types and the context), then by the expected result type, then by the argument types.
-    #[allow(clippy::too_many_arguments)]
+    /// types and the context; elaboration has no overload rules of its own).
     pub(super) fn resolve_call<'e>(
         &mut self,
-        sc: &Scope<'a>,
         subs: Vec<Rc<Subprogram<'a>>>,
         args: &'e [ast::Assoc],
         function: bool,
-        want: Option<&Ty>,
         span: Span,
         name_span: Span,
     ) -> R<(Rc<Subprogram<'a>>, Slots<'e>)> {
@@ -224,56 +200,20 @@ impl<'a> Elab<'a> {
                 Some("check the number of arguments and the formal names (procedures are called as statements, functions in expressions)".into()),
             )));
         }
-        if cands.len() > 1
-            && let Some(decl) = self.resolved.get(&name_span)
-        {
-            let mut chosen = cands.iter().filter(|(s, _)| {
-                s.span.file == decl.file && s.span.start <= decl.start && decl.end <= s.span.end
-            });
-            if let (Some(c), None) = (chosen.next(), chosen.next()) {
-                return Ok(c.clone());
-            }
-        }
         if cands.len() > 1 {
-            if let Some(w) = want {
-                let matching: Vec<_> = cands
-                    .iter()
-                    .filter(|(s, _)| s.ret.as_ref().is_some_and(|r| r.same(w)))
-                    .cloned()
-                    .collect();
-                if !matching.is_empty() {
-                    cands = matching;
-                }
-            }
-        }
-        if cands.len() > 1 {
-            // Lower each actual once without a hint and keep the overloads its type fits.
-            let mut types: Vec<(usize, Ty)> = Vec::new();
-            for (k, a) in args.iter().enumerate() {
-                if let Actual::Expr(e) = &a.actual {
-                    types.push((k, self.expr(sc, e, None)?.ty));
-                }
-            }
-            let fits = |(s, slots): &(Rc<Subprogram<'a>>, Slots<'e>)| {
-                slots.iter().zip(&s.params).all(|(slot, p)| match slot {
-                    None => true,
-                    Some(e) => args
-                        .iter()
-                        .position(|a| matches!(&a.actual, Actual::Expr(x) if std::ptr::eq(x, *e)))
-                        .and_then(|k| types.iter().find(|(i, _)| *i == k))
-                        .is_some_and(|(_, t)| t.same(&p.ty)),
+            // Analysis chose the overload from the operands' types and the context.
+            let decl = self.resolved.get(&name_span).copied();
+            cands.retain(|(s, _)| {
+                decl.is_some_and(|d| {
+                    s.span.file == d.file && s.span.start <= d.start && d.end <= s.span.end
                 })
-            };
-            match cands.iter().find(|c| fits(c)).cloned() {
-                Some(c) => cands = vec![c],
-                None => {
-                    let tys: Vec<String> = types.iter().map(|(_, t)| t.to_string()).collect();
-                    return Err(self.error(ElabError::invalid(
-                        span,
-                        format!("no overload of `{name}` takes ({})", tys.join(", ")),
-                        Some("give arguments of the parameter types of one declaration; VHDL never converts between integer and real implicitly".into()),
-                    )));
-                }
+            });
+            if cands.len() != 1 {
+                return Err(self.error(ElabError::invalid(
+                    span,
+                    format!("no single overload of `{name}` fits this call"),
+                    Some("qualify the arguments (`real'(x)`) or the name (`pkg.f`) so that one declaration fits".into()),
+                )));
             }
         }
         Ok(cands.remove(0))
@@ -539,30 +479,30 @@ impl<'a> Elab<'a> {
         Ok(id)
     }
 
-    /// A user-defined operator (`"and"` on `std_ulogic`) for operands of types `tys`, if one
-    /// is visible.
+    /// The user-defined operator (`"and"` on `std_ulogic`) analysis chose for the application
+    /// at `span`, applied to `operands`; `None` when analysis chose a predefined one.
     pub(super) fn user_operator(
         &mut self,
         sc: &Scope<'a>,
-        op: &str,
         operands: Vec<Typed>,
         span: Span,
     ) -> Option<R<Typed>> {
-        let items = sc.lookup(&format!("\"{op}\""))?;
-        let sub = items.iter().find_map(|i| match i {
+        // The operator function analysis chose for this application; none when it is a
+        // predefined operator (whose "declaration" is its type's).
+        let decl = self.resolved.get(&span)?;
+        let sub = match sc
+            .declared(*decl)
+            .or_else(|| self.package_decls.get(decl))?
+        {
             Item::Subprogram(s)
                 if s.ret.is_some()
                     && s.params.len() == operands.len()
-                    && s.params.iter().all(|p| !p.is_signal)
-                    && s.params
-                        .iter()
-                        .zip(&operands)
-                        .all(|(p, t)| p.ty.same(&t.ty)) =>
+                    && s.params.iter().all(|p| !p.is_signal) =>
             {
-                Some(s.clone())
+                s.clone()
             }
-            _ => None,
-        })?;
+            _ => return None,
+        };
         let ret = sub.ret.clone()?;
         let bounds: Vec<_> = (sub.params.iter().zip(&operands))
             .map(|(p, t)| actual_bounds(&p.ty, &t.ty, &t.e))
@@ -594,12 +534,11 @@ fn actual_bounds(formal: &Ty, actual: &Ty, value: &Expr) -> Option<Bounds> {
     }
 }
 
-fn same_signature(s: &Subprogram<'_>, params: &[Param<'_>], ret: Option<&Ty>) -> bool {
-    s.params.len() == params.len()
-        && s.params.iter().zip(params).all(|(a, b)| a.ty.same(&b.ty))
-        && match (&s.ret, ret) {
-            (Some(a), Some(b)) => a.same(b),
-            (None, None) => true,
-            _ => false,
-        }
+/// The span of a subprogram's designator (its name or operator symbol), where analysis
+/// declares it.
+fn designator_span(spec: &SubprogramSpec) -> Span {
+    match &spec.designator {
+        Designator::Ident(id) => id.span,
+        Designator::Operator(_, span) => *span,
+    }
 }

@@ -8,7 +8,7 @@ use crate::design::{Builtin, UnaryOp, Value};
 use crate::source::Span;
 
 use super::error::ElabError;
-use super::scope::{Item, Scope};
+use super::scope::Scope;
 use super::types::Ty;
 use super::{Elab, R};
 
@@ -96,10 +96,7 @@ impl<'a> Elab<'a> {
         e: &ast::Expr,
         what: &str,
     ) -> R<Vec<f64>> {
-        let want = match sc.lookup("real_vector") {
-            Some([Item::Type(s), ..]) => Some(s.ty.clone()),
-            _ => None,
-        };
+        let want = self.standard_type("real_vector");
         let t = self.expr(sc, e, want.as_ref())?;
         let bad = |this: &mut Self, message: String| {
             this.error(ElabError::invalid(

@@ -97,3 +97,40 @@ fn an_architecture_belongs_to_the_entity_declared_before_it() {
     let (sources, files) = parse_all(&[("b.vhd", second), ("a.vhd", first), ("c.vhd", top)]);
     assert!(elaborate(&sources, &files, &options).is_ok());
 }
+
+/// Names resolve to the declarations analysis chose: an item of a package no `use` clause
+/// names (`work.p.k`, the package in a later file) elaborates, and a model's own `string`
+/// type does not change what a string literal is.
+#[test]
+fn names_elaborate_from_their_analysed_declarations() {
+    let top = "entity top is end;\narchitecture a of top is\n\
+               type string is range 0 to 9;\n\
+               signal s : work.p.small := work.p.first;\n\
+               signal r : real := work.p.k * 2.0;\n\
+               begin\n\
+               process begin report \"text\"; wait; end process;\n\
+               end;\n";
+    let pkg = "package p is\n  type small is range 0 to 3;\n  constant first : small := 2;\n  \
+               constant k : real := 1.5;\nend package p;\n";
+    let (sources, files) = parse_all(&[("top.vhd", top), ("p.vhd", pkg)]);
+    let options = ElabOptions {
+        top: "top".into(),
+        generics: Vec::new(),
+    };
+    let design = match elaborate(&sources, &files, &options) {
+        Ok(d) => d,
+        Err(errors) => {
+            let text: Vec<String> = errors.iter().map(|e| render_plain(e, &sources)).collect();
+            panic!("elaboration failed:\n{}", text.join("\n"));
+        }
+    };
+    let init = |name: &str| {
+        design
+            .signals
+            .iter()
+            .find(|s| s.name.ends_with(name))
+            .map(|s| s.init.clone())
+    };
+    assert_eq!(init("s"), Some(crate::design::Value::Integer(2)));
+    assert_eq!(init("r"), Some(crate::design::Value::Real(3.0)));
+}

@@ -268,22 +268,3 @@ fn elaboration_is_fast() {
         start.elapsed()
     );
 }
-
-/// Every name of the headlight models and the stdlib they use is found by the declaration
-/// analysis resolved it to, none by elaboration's own visibility rules.
-#[test]
-fn names_elaborate_from_their_analysed_declarations() {
-    let m = models();
-    let user: Vec<(&str, &str)> = m.iter().map(|(a, b)| (a.as_str(), b.as_str())).collect();
-    let (sources, files) = parse_all(&user);
-    let analysis = crate::analysis::analyse(&sources, &files);
-    for top in ["tb_tracking", "tb_overvoltage"] {
-        let mut elab = crate::elaborate::Elab::new(&analysis, &sources, &files);
-        elab.top(&ElabOptions {
-            top: top.into(),
-            generics: Vec::new(),
-        });
-        assert!(elab.errors.is_empty(), "{top}: {:?}", elab.errors);
-        assert_eq!(elab.name_lookups, 0, "{top}");
-    }
-}
