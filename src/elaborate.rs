@@ -303,6 +303,17 @@ impl<'a> Elab<'a> {
         }
     }
 
+    /// A unit of std.standard's `time` by name, in femtoseconds.
+    fn standard_time_unit(&self, name: &str) -> Option<f64> {
+        let std = self
+            .packages
+            .get(&("std".to_string(), "standard".to_string()))?;
+        match std.items.get(name)?.first()? {
+            Item::TimeUnit(f) => Some(*f),
+            _ => None,
+        }
+    }
+
     /// A new scope with the implicit context (`library std, work; use std.standard.all`) and
     /// the unit's own context clause. The use region is built once per distinct clause text and
     /// library (every copy of a model says `use ieee.electrical_systems.all;`), unless building

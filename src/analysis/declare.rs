@@ -132,8 +132,23 @@ impl Analyzer<'_> {
                 self.declare(&name.name, name.span, DeclKind::Attribute(ty));
             }
             AstDecl::AttributeSpec {
-                attribute, value, ..
+                attribute,
+                entities,
+                value,
+                ..
             } => {
+                // The named entities are declared in this declarative part (LRM 5.1); a name
+                // not found here (a label, a unit) is left unresolved, not reported.
+                if let crate::ast::EntityNames::List(names) = entities {
+                    let region = *self.scope.last().expect("a unit always has a region");
+                    for n in names {
+                        if let ExprKind::Name(id) = &n.kind
+                            && let Some([d]) = self.lookup_in(region, &id.name).as_deref()
+                        {
+                            self.reference(id.span, *d);
+                        }
+                    }
+                }
                 let ty = match self.lookup(&attribute.name).as_deref() {
                     Some([d]) => match self.out.decl(*d).kind {
                         DeclKind::Attribute(t) => {

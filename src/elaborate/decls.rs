@@ -264,7 +264,8 @@ impl<'a> Elab<'a> {
                     let ast::ExprKind::Name(id) = &n.kind else {
                         continue;
                     };
-                    if let Some([Item::Type(sub)]) = sc.lookup(&id.name) {
+                    let named = self.resolved.get(&id.span).and_then(|d| sc.declared(*d));
+                    if let Some(Item::Type(sub)) = named {
                         let mut s = (**sub).clone();
                         s.unit = Some(symbol.as_str().into());
                         sc.replace(&id.name, vec![Item::Type(Rc::new(s))]);

@@ -3,13 +3,17 @@
 
 use crate::design::Value;
 
-use super::scope::{Item, Scope};
 use super::types::Ty;
 
 /// The value `text` denotes for type `ty`, or `None` when it is not a literal of that type.
 /// An integer literal is accepted for a real generic (`-g r=5` means 5.0): the command line is
 /// not VHDL source, and refusing it would only annoy.
-pub(super) fn parse_literal(text: &str, ty: &Ty, sc: &Scope<'_>) -> Option<Value> {
+/// `time_unit` gives a unit name's value in femtoseconds (std.standard's units of `time`).
+pub(super) fn parse_literal(
+    text: &str,
+    ty: &Ty,
+    time_unit: impl Fn(&str) -> Option<f64>,
+) -> Option<Value> {
     let t = text.trim();
     match ty {
         Ty::Real => number(t).map(Value::Real),
@@ -26,10 +30,7 @@ pub(super) fn parse_literal(text: &str, ty: &Ty, sc: &Scope<'_>) -> Option<Value
                 })?;
             let (num, unit) = t.split_at(split);
             let n = number(num.trim())?;
-            match sc.lookup(&unit.trim().to_ascii_lowercase()) {
-                Some([Item::TimeUnit(f), ..]) => Some(Value::Time(n * f / 1e15)),
-                _ => None,
-            }
+            time_unit(&unit.trim().to_ascii_lowercase()).map(|f| Value::Time(n * f / 1e15))
         }
         Ty::Boolean => match t.to_ascii_lowercase().as_str() {
             "true" => Some(Value::Boolean(true)),
@@ -76,32 +77,31 @@ mod tests {
 
     #[test]
     fn literals_of_each_type() {
-        let mut sc = Scope::new();
-        sc.declare("ms", Item::TimeUnit(1e12));
-        assert_eq!(parse_literal("4.5", &Ty::Real, &sc), Some(Value::Real(4.5)));
+        let sc = |u: &str| (u == "ms").then_some(1e12);
+        assert_eq!(parse_literal("4.5", &Ty::Real, sc), Some(Value::Real(4.5)));
         assert_eq!(
-            parse_literal("1e-3", &Ty::Real, &sc),
+            parse_literal("1e-3", &Ty::Real, sc),
             Some(Value::Real(1e-3))
         );
-        assert_eq!(parse_literal("5", &Ty::Real, &sc), Some(Value::Real(5.0)));
+        assert_eq!(parse_literal("5", &Ty::Real, sc), Some(Value::Real(5.0)));
         assert_eq!(
-            parse_literal("1_000", &Ty::Integer, &sc),
+            parse_literal("1_000", &Ty::Integer, sc),
             Some(Value::Integer(1000))
         );
         assert_eq!(
-            parse_literal("10 ms", &Ty::Time, &sc),
+            parse_literal("10 ms", &Ty::Time, sc),
             Some(Value::Time(0.01))
         );
         assert_eq!(
-            parse_literal("2.5ms", &Ty::Time, &sc),
+            parse_literal("2.5ms", &Ty::Time, sc),
             Some(Value::Time(2.5e-3))
         );
         assert_eq!(
-            parse_literal("TRUE", &Ty::Boolean, &sc),
+            parse_literal("TRUE", &Ty::Boolean, sc),
             Some(Value::Boolean(true))
         );
-        assert_eq!(parse_literal("abc", &Ty::Real, &sc), None);
-        assert_eq!(parse_literal("inf", &Ty::Real, &sc), None);
-        assert_eq!(parse_literal("10 parsec", &Ty::Time, &sc), None);
+        assert_eq!(parse_literal("abc", &Ty::Real, sc), None);
+        assert_eq!(parse_literal("inf", &Ty::Real, sc), None);
+        assert_eq!(parse_literal("10 parsec", &Ty::Time, sc), None);
     }
 }

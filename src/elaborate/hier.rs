@@ -349,7 +349,7 @@ impl<'a> Elab<'a> {
             Actuals::Map { .. } => None,
         };
         let value = if let Some(text) = override_text {
-            match parse_literal(&text, &sub.ty, sc) {
+            match parse_literal(&text, &sub.ty, |u| self.standard_time_unit(u)) {
                 Some(v) => v,
                 None => {
                     return Err(self.error(ElabError::BadGenericValue {
