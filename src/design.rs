@@ -303,6 +303,24 @@ pub enum Value {
     Array(Vec<Value>),
 }
 
+/// The value of an array aggregate from its elements in index order: a [`Value::String`]
+/// for a character array (`string`), else a [`Value::Array`].
+pub fn aggregate_value(elems: Vec<Value>, string: bool) -> Value {
+    if string {
+        Value::String(
+            elems
+                .iter()
+                .filter_map(|v| match v {
+                    Value::Enum(c) => char::from_u32(*c),
+                    _ => None,
+                })
+                .collect(),
+        )
+    } else {
+        Value::Array(elems)
+    }
+}
+
 /// `T'pos` and `T'val` ([`Builtin::Pos`], [`Builtin::EnumVal`], [`Builtin::TimeVal`]), the
 /// same at elaboration (folding) and at run time; `Err` with the reason when the result is
 /// outside its type, as VHDL requires.
@@ -389,6 +407,13 @@ pub enum Expr {
     },
     /// `T'image(x)` (processes only).
     Image(Type, Box<Expr>),
+    /// An array built from element values computed at run time, in index order (processes
+    /// only; an aggregate of static elements is a constant). `string`: a character array,
+    /// whose value is a [`Value::String`].
+    Aggregate {
+        elems: Vec<Expr>,
+        string: bool,
+    },
     /// A signal attribute (processes only).
     SignalAttr(SignalId, SignalAttr),
     /// A call of a user-defined function (processes only; equations get pure straight-line
@@ -643,6 +668,7 @@ impl Expr {
             Expr::Var(_)
             | Expr::Index { .. }
             | Expr::Image(..)
+            | Expr::Aggregate { .. }
             | Expr::SignalAttr(..)
             | Expr::FnCall { .. } => false,
             Expr::Unary(_, a) => a.is_analog(),
@@ -668,7 +694,9 @@ impl Expr {
                 a.visit(f);
                 b.visit(f);
             }
-            Expr::Call(_, args) | Expr::FnCall { args, .. } => args.iter().for_each(|a| a.visit(f)),
+            Expr::Call(_, args)
+            | Expr::FnCall { args, .. }
+            | Expr::Aggregate { elems: args, .. } => args.iter().for_each(|a| a.visit(f)),
             Expr::If(c, a, b) => {
                 c.visit(f);
                 a.visit(f);
@@ -711,6 +739,10 @@ impl Expr {
                 ty: ty.clone(),
             },
             Expr::Image(ty, x) => Expr::Image(ty.clone(), Box::new(f(x)?)),
+            Expr::Aggregate { elems, string } => Expr::Aggregate {
+                elems: elems.iter().map(f).collect::<Result<_, _>>()?,
+                string: *string,
+            },
         })
     }
 

@@ -56,6 +56,7 @@ pub fn lower(e: &Expr, slot_of: &dyn Fn(usize) -> usize) -> Result<Sym, NotAnalo
         Expr::Var(_) => return Err(NotAnalog("a process variable")),
         Expr::Index { .. } => return Err(NotAnalog("array indexing")),
         Expr::Image(..) => return Err(NotAnalog("the 'image attribute")),
+        Expr::Aggregate { .. } => return Err(NotAnalog("an aggregate of run-time values")),
         Expr::SignalAttr(..) => return Err(NotAnalog("a signal attribute")),
         Expr::FnCall { .. } => return Err(NotAnalog("a call of a user-defined function")),
     })

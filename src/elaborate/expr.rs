@@ -22,7 +22,7 @@ pub struct Typed {
 }
 
 impl Typed {
-    fn new(e: Expr, ty: Ty) -> Typed {
+    pub(super) fn new(e: Expr, ty: Ty) -> Typed {
         Typed { e, ty }
     }
 
@@ -245,6 +245,12 @@ impl<'a> Elab<'a> {
             ExprKind::Apply(prefix, args) => {
                 if let ExprKind::Attribute(p, attr) = &prefix.kind {
                     return self.attribute(sc, p, attr, args, e.span, want);
+                }
+                if let ExprKind::Apply(..) = prefix.kind {
+                    // An element of an element (`table(i)(k)`, an array of arrays), or of
+                    // what a call returns (`f(x)(k)`).
+                    let array = self.expr(sc, prefix, None)?;
+                    return self.index(sc, array, args, e.span);
                 }
                 let items = self.lookup(sc, prefix)?;
                 match items.first() {
@@ -782,18 +788,12 @@ impl<'a> Elab<'a> {
         };
         let arr = arr.clone();
         let elem = arr.element.clone();
+        // Element values may be computed at run time; the choices are static.
         let mut positional = Vec::new();
         let mut others = None;
-        let mut named: Vec<(i64, Value)> = Vec::new();
+        let mut named: Vec<(i64, Expr)> = Vec::new();
         for el in elems {
-            let t = self.expr_of(sc, &el.value, &elem)?;
-            let Expr::Const(v) = t.e else {
-                return Err(self.error(ElabError::unsupported(
-                    el.value.span,
-                    "an aggregate with non-static elements",
-                    "aggregates must be built from constants and generics",
-                )));
-            };
+            let v = self.expr_of(sc, &el.value, &elem)?.e;
             if el.choices.is_empty() {
                 positional.push(v);
                 continue;
@@ -829,7 +829,7 @@ impl<'a> Elab<'a> {
             }
         };
         let n = bounds_len(left, right, asc);
-        let mut values: Vec<Option<Value>> = vec![None; n];
+        let mut values: Vec<Option<Expr>> = vec![None; n];
         for (k, v) in positional.into_iter().enumerate() {
             if k >= n {
                 return Err(self.error(ElabError::invalid(
@@ -870,19 +870,19 @@ impl<'a> Elab<'a> {
             bounds: Some((left, right, asc)),
             index_low: arr.index_low,
         }));
-        let value = if ty.is_string() {
-            Value::String(
-                out.iter()
-                    .filter_map(|v| match v {
-                        Value::Enum(c) => char::from_u32(*c),
-                        _ => None,
-                    })
-                    .collect(),
-            )
-        } else {
-            Value::Array(out)
+        let string = ty.is_string();
+        let e = match out
+            .iter()
+            .map(|e| match e {
+                Expr::Const(v) => Some(v.clone()),
+                _ => None,
+            })
+            .collect::<Option<Vec<Value>>>()
+        {
+            Some(values) => Expr::Const(crate::design::aggregate_value(values, string)),
+            None => Expr::Aggregate { elems: out, string },
         };
-        Ok(Typed::new(Expr::Const(value), ty))
+        Ok(Typed::new(e, ty))
     }
 }
 

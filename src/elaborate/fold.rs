@@ -1,7 +1,7 @@
 //! Constant folding: evaluates an [`Expr`] that reads no signal, quantity, variable or time to
 //! its [`Value`]. Elaboration folds every constant, generic and static sub-expression.
 
-use crate::design::{BinaryOp, Builtin, Expr, Type, UnaryOp, Value};
+use crate::design::{BinaryOp, Builtin, Expr, Type, UnaryOp, Value, aggregate_value};
 
 /// Why an expression did not fold.
 #[derive(Debug, PartialEq)]
@@ -30,6 +30,10 @@ pub fn eval(e: &Expr) -> Result<Value, NoFold> {
         | Expr::FnCall { .. }
         // Images are left to the kernel so that every image has the same format.
         | Expr::Image(..) => Err(NoFold::Dynamic),
+        Expr::Aggregate { elems, string } => {
+            let vals = elems.iter().map(eval).collect::<Result<Vec<_>, _>>()?;
+            Ok(aggregate_value(vals, *string))
+        }
         Expr::Unary(op, a) => unary(*op, eval(a)?),
         Expr::Binary(op, a, b) => {
             // Evaluate both sides so a dynamic operand wins over a static error.

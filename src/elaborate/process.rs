@@ -468,11 +468,36 @@ impl<'a> Elab<'a> {
                 delay,
                 waveform,
             } => {
-                if let Some(i) = self.assign(sc, target, delay, waveform)? {
+                for i in self.assign(sc, target, delay, waveform)? {
                     p.emit(i);
                 }
             }
             SeqKind::VariableAssign { target, value } => {
+                if let ast::ExprKind::Aggregate(elems) = &target.kind {
+                    // `(hi, lo) := v;`: the value goes to a temporary first, so that a target
+                    // read by the value (`(a, b) := swapped(a, b)`) is read before any changes.
+                    let mut vars = Vec::new();
+                    for t in self.aggregate_targets(elems, target.span)? {
+                        vars.push(self.target_variable(sc, t)?);
+                    }
+                    let v = self.expr(sc, value, None)?;
+                    let ty = v.ty.clone();
+                    let tmp = p.new_var("(aggregate target)", &ty, ty.default_value());
+                    let parts = self.split_array(
+                        super::expr::Typed::new(Expr::Var(tmp), ty),
+                        vars.len(),
+                        &vars,
+                        value.span,
+                    )?;
+                    p.emit(Instr::SetVar {
+                        var: tmp,
+                        value: v.e,
+                    });
+                    for ((var, _), part) in vars.into_iter().zip(parts) {
+                        p.emit(Instr::SetVar { var, value: part });
+                    }
+                    return Ok(());
+                }
                 let (name_expr, index) = match &target.kind {
                     ast::ExprKind::Apply(prefix, args) => match args.as_slice() {
                         [
@@ -492,33 +517,7 @@ impl<'a> Elab<'a> {
                     },
                     _ => (target, None),
                 };
-                let items = self.lookup(sc, name_expr)?;
-                let (id, ty, readonly) = match &items[0] {
-                    Item::Variable { id, ty, readonly } => (*id, ty.clone(), *readonly),
-                    other => {
-                        let help = match other {
-                            Item::Signal { .. } => "signals are assigned with `<=`",
-                            Item::Quantity(_) => {
-                                "quantities are defined by simultaneous statements (`q == expr;`) or set by `break q => value;`"
-                            }
-                            _ => "only variables are assigned with `:=`",
-                        };
-                        return Err(self.error(ElabError::WrongClass {
-                            span: name_expr.span,
-                            name: self.sources.snippet(name_expr.span).into(),
-                            found: other.class().into(),
-                            expected: "a variable".into(),
-                            help: Some(help.into()),
-                        }));
-                    }
-                };
-                if readonly {
-                    return Err(self.error(ElabError::invalid(
-                        target.span,
-                        "a loop parameter cannot be assigned",
-                        Some("copy it into a variable".into()),
-                    )));
-                }
+                let (id, ty) = self.target_variable(sc, name_expr)?;
                 match index {
                     None => {
                         let v = self.expr_of(sc, value, &ty)?;
@@ -804,52 +803,28 @@ impl<'a> Elab<'a> {
     }
 
     /// A signal assignment instruction (`None` for `unaffected`).
+    /// A signal assignment: one `Assign` for a signal target, one per element for an
+    /// aggregate of signals (`(c_out, s) <= v;`: each takes its element of the value, which is
+    /// evaluated once per target; nothing between them can change it). None for a `null`
+    /// waveform's statement of an unguarded signal.
     fn assign(
         &mut self,
         sc: &Scope<'a>,
         target: &ast::Expr,
         delay: &AstDelay,
         waveform: &Waveform,
-    ) -> R<Option<Instr>> {
-        let items = self.lookup(sc, target)?;
-        let (sig, ty) = match &items[0] {
-            Item::Signal { id, ty } => (*id, ty.clone()),
-            other => {
-                let help = match other {
-                    Item::Quantity(_) => {
-                        "quantities are defined by simultaneous statements (`q == expr;`) or set by `break q => value;`"
-                    }
-                    Item::Variable { .. } => "variables are assigned with `:=`",
-                    _ => "only signals are assigned with `<=`",
-                };
-                return Err(self.error(ElabError::WrongClass {
-                    span: target.span,
-                    name: self.sources.snippet(target.span).into(),
-                    found: other.class().into(),
-                    expected: "a signal".into(),
-                    help: Some(help.into()),
-                }));
-            }
+    ) -> R<Vec<Instr>> {
+        let targets = match &target.kind {
+            ast::ExprKind::Aggregate(elems) => self.aggregate_targets(elems, target.span)?,
+            _ => vec![target],
         };
-        let Waveform::Elements(elems) = waveform else {
-            return Ok(None);
-        };
-        let mut wave = Vec::new();
-        for el in elems {
-            let Some(v) = &el.value else {
-                return Err(self.error(ElabError::unsupported(
-                    el.span,
-                    "`null` waveform elements",
-                    "guarded signals are not supported",
-                )));
-            };
-            let v = self.expr_of(sc, v, &ty)?;
-            let d = match &el.after {
-                Some(a) => self.expr_of(sc, a, &Ty::Time)?.e,
-                None => Expr::Const(Value::Time(0.0)),
-            };
-            wave.push((v.e, d));
+        let mut sigs = Vec::with_capacity(targets.len());
+        for t in &targets {
+            sigs.push(self.target_signal(sc, t)?);
         }
+        let Waveform::Elements(elems) = waveform else {
+            return Ok(Vec::new());
+        };
         let mechanism = match delay {
             AstDelay::Default => DelayMechanism::Inertial { reject: None },
             AstDelay::Transport => DelayMechanism::Transport,
@@ -860,11 +835,165 @@ impl<'a> Elab<'a> {
                 },
             },
         };
-        Ok(Some(Instr::Assign {
-            target: sig,
-            waveform: wave,
-            mechanism,
-        }))
+        let aggregate = matches!(target.kind, ast::ExprKind::Aggregate(_));
+        // Each waveform element's value (the whole array for an aggregate target) and delay.
+        let mut wave = Vec::new();
+        for el in elems {
+            let Some(v) = &el.value else {
+                return Err(self.error(ElabError::unsupported(
+                    el.span,
+                    "`null` waveform elements",
+                    "guarded signals are not supported",
+                )));
+            };
+            let v = if aggregate {
+                let v = self.expr(sc, v, None)?;
+                self.split_array(v, targets.len(), &sigs, el.span)?
+            } else {
+                vec![self.expr_of(sc, v, &sigs[0].1)?.e]
+            };
+            let d = match &el.after {
+                Some(a) => self.expr_of(sc, a, &Ty::Time)?.e,
+                None => Expr::Const(Value::Time(0.0)),
+            };
+            wave.push((v, d));
+        }
+        Ok(sigs
+            .iter()
+            .enumerate()
+            .map(|(k, (sig, _))| Instr::Assign {
+                target: *sig,
+                waveform: wave
+                    .iter()
+                    .map(|(v, d)| (v[k].clone(), d.clone()))
+                    .collect(),
+                mechanism: mechanism.clone(),
+            })
+            .collect())
+    }
+
+    /// The variable a (simple) target names, with its type.
+    fn target_variable(&mut self, sc: &Scope<'a>, target: &ast::Expr) -> R<(VarId, Ty)> {
+        let items = self.lookup(sc, target)?;
+        match &items[0] {
+            Item::Variable { readonly: true, .. } => Err(self.error(ElabError::invalid(
+                target.span,
+                "a loop parameter cannot be assigned",
+                Some("copy it into a variable".into()),
+            ))),
+            Item::Variable { id, ty, .. } => Ok((*id, ty.clone())),
+            other => {
+                let help = match other {
+                    Item::Signal { .. } => "signals are assigned with `<=`",
+                    Item::Quantity(_) => {
+                        "quantities are defined by simultaneous statements (`q == expr;`) or set by `break q => value;`"
+                    }
+                    _ => "only variables are assigned with `:=`",
+                };
+                Err(self.error(ElabError::WrongClass {
+                    span: target.span,
+                    name: self.sources.snippet(target.span).into(),
+                    found: other.class().into(),
+                    expected: "a variable".into(),
+                    help: Some(help.into()),
+                }))
+            }
+        }
+    }
+
+    /// The names of an aggregate target, in order (positional associations only).
+    fn aggregate_targets<'e>(
+        &mut self,
+        elems: &'e [ast::ElementAssoc],
+        span: Span,
+    ) -> R<Vec<&'e ast::Expr>> {
+        if elems.iter().any(|e| !e.choices.is_empty()) {
+            return Err(self.error(ElabError::unsupported(
+                span,
+                "an aggregate target with named associations",
+                "list the targets by position: `(a, b, c) <= v;`",
+            )));
+        }
+        Ok(elems.iter().map(|e| &e.value).collect())
+    }
+
+    /// The signal a (simple) target names, with its type.
+    fn target_signal(&mut self, sc: &Scope<'a>, target: &ast::Expr) -> R<(SignalId, Ty)> {
+        let items = self.lookup(sc, target)?;
+        match &items[0] {
+            Item::Signal { id, ty } => Ok((*id, ty.clone())),
+            other => {
+                let help = match other {
+                    Item::Quantity(_) => {
+                        "quantities are defined by simultaneous statements (`q == expr;`) or set by `break q => value;`"
+                    }
+                    Item::Variable { .. } => "variables are assigned with `:=`",
+                    _ => "only signals are assigned with `<=`",
+                };
+                Err(self.error(ElabError::WrongClass {
+                    span: target.span,
+                    name: self.sources.snippet(target.span).into(),
+                    found: other.class().into(),
+                    expected: "a signal".into(),
+                    help: Some(help.into()),
+                }))
+            }
+        }
+    }
+
+    /// The elements of array value `v`, left to right, for `n` targets of the given types:
+    /// the array's length must be `n`, its element type theirs.
+    fn split_array<T>(
+        &mut self,
+        v: super::expr::Typed,
+        n: usize,
+        targets: &[(T, Ty)],
+        span: Span,
+    ) -> R<Vec<Expr>> {
+        let bounds = match &v.ty {
+            Ty::Array(arr) => arr.bounds.map(|b| (b, arr.element.clone())),
+            _ => None,
+        };
+        let Some(((left, right, asc), element)) = bounds else {
+            return Err(self.error(ElabError::TypeMismatch {
+                span,
+                expected: "an array of known length (one element per target)".into(),
+                found: v.ty.to_string(),
+                help: Some("qualify the value with a constrained array subtype".into()),
+            }));
+        };
+        let len = if asc {
+            right - left + 1
+        } else {
+            left - right + 1
+        };
+        if len != n as i64 {
+            return Err(self.error(ElabError::invalid(
+                span,
+                format!("the value has {len} element(s) for {n} target(s)"),
+                None,
+            )));
+        }
+        if let Some((_, ty)) = targets.iter().find(|(_, ty)| !ty.same(&element)) {
+            return Err(self.error(ElabError::TypeMismatch {
+                span,
+                expected: ty.to_string(),
+                found: format!("an array of {element}"),
+                help: None,
+            }));
+        }
+        let ty = v.ty.to_design();
+        Ok((0..n as i64)
+            .map(|k| Expr::Index {
+                array: Box::new(v.e.clone()),
+                index: Box::new(Expr::Const(Value::Integer(if asc {
+                    left + k
+                } else {
+                    left - k
+                }))),
+                ty: ty.clone(),
+            })
+            .collect())
     }
 
     fn procedure_call(&mut self, sc: &Scope<'a>, call: &ast::Expr) -> R<Instr> {
@@ -993,7 +1122,7 @@ impl<'a> Elab<'a> {
                         }
                         None => None,
                     };
-                    if let Some(i) = self.assign(sc, target, delay, wave)? {
+                    for i in self.assign(sc, target, delay, wave)? {
                         p.emit(i);
                     }
                     if let Some(skip) = skip {
@@ -1019,7 +1148,7 @@ impl<'a> Elab<'a> {
                     let cond = self.choices_condition(sc, &sel.e, &sel.ty, choices)?;
                     let cond = self.folded(cond, Ty::Boolean, stmt.span)?.e;
                     let skip = p.emit(Instr::JumpIfNot { cond, target: 0 });
-                    if let Some(i) = self.assign(sc, target, delay, wave)? {
+                    for i in self.assign(sc, target, delay, wave)? {
                         p.emit(i);
                     }
                     ends.push(p.emit(Instr::Jump(0)));

@@ -57,6 +57,13 @@ pub(crate) fn eval(e: &Expr, env: &Env) -> Result<Value, EvalError> {
             element(array, i, ty)?
         }
         Expr::Image(ty, x) => Value::String(image(ty, &eval(x, env)?)),
+        Expr::Aggregate { elems, string } => {
+            let vals = elems
+                .iter()
+                .map(|e| eval(e, env))
+                .collect::<Result<Vec<_>, _>>()?;
+            crate::design::aggregate_value(vals, *string)
+        }
         Expr::FnCall { sub, args, .. } => super::call::call_function(*sub, args, env)?,
         Expr::SignalAttr(s, attr) => {
             let st = &env.signals[s.index()];
