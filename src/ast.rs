@@ -246,6 +246,9 @@ pub enum DeclKind {
         name: Ident,
         subtype: Option<SubtypeIndication>,
         target: Expr,
+        /// `[t1, t2 return r]`: which overload a subprogram or enumeration literal alias
+        /// denotes (LRM 2.3.2).
+        signature: Option<Signature>,
     },
     Attribute {
         name: Ident,
@@ -295,6 +298,14 @@ pub struct Binding {
 }
 
 /// `a, b`, `all` or `others` in attribute, limit and configuration specifications.
+/// A signature `[t1, t2 return r]`: parameter and result type marks.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Signature {
+    pub params: Vec<Expr>,
+    pub result: Option<Expr>,
+    pub span: Span,
+}
+
 #[derive(Clone, Debug, PartialEq)]
 pub enum EntityNames {
     List(Vec<Expr>),

@@ -5,8 +5,9 @@ use crate::ast::{
     Decl, DeclKind as AstDecl, DiscreteRange, EnumLiteral, IndexDef, InterfaceDecl, NatureDef,
     ObjectClass, QuantityDecl, Range, SubprogramSpec, SubtypeIndication, TypeDef,
 };
-use crate::ast::{Designator, Expr, ExprKind};
+use crate::ast::{Designator, Expr, ExprKind, Ident};
 
+use super::AnalysisError;
 use super::scope::{DeclId, DeclKind, Nature, NatureId, Param, Purity, Signature, Staticness};
 use super::types::{TypeId, TypeKind, UNKNOWN};
 use super::units::Analyzer;
@@ -114,8 +115,15 @@ impl Analyzer<'_> {
             AstDecl::Quantity(q) => self.quantity(q),
             AstDecl::Alias {
                 name,
+                target,
+                signature: Some(signature),
+                ..
+            } => self.overload_alias(name, target, signature),
+            AstDecl::Alias {
+                name,
                 subtype,
                 target,
+                signature: None,
             } => {
                 let ty = match subtype {
                     Some(s) => {
@@ -362,6 +370,74 @@ impl Analyzer<'_> {
     }
 
     /// The type an alias without a subtype gets from its target.
+    /// An alias of a subprogram or enumeration literal: the overload of the target whose
+    /// parameter and result types the signature gives. The alias is declared as what it
+    /// denotes (overloadable, with the target's profile), and the target name refers to the
+    /// overload chosen, so that elaboration takes that one.
+    fn overload_alias(&mut self, name: &Ident, target: &Expr, signature: &crate::ast::Signature) {
+        let params: Vec<TypeId> = signature.params.iter().map(|t| self.type_mark(t)).collect();
+        let result = signature.result.as_ref().map(|t| self.type_mark(t));
+        let Some(cands) = self.resolve_name(target) else {
+            // Reported; its uses are not errors of their own.
+            self.declare(&name.name, name.span, DeclKind::Opaque);
+            return;
+        };
+        let fits = |kind: &DeclKind| match kind {
+            DeclKind::Subprogram(sig) => {
+                sig.result == result
+                    && sig.params.len() == params.len()
+                    && sig.params.iter().zip(&params).all(|(p, &t)| p.ty == t)
+            }
+            DeclKind::EnumLiteral(t) => params.is_empty() && result == Some(*t),
+            _ => false,
+        };
+        let chosen: Vec<DeclId> = cands
+            .into_iter()
+            .filter(|&d| fits(&self.out.decl(d).kind))
+            .collect();
+        let target_id = match &target.kind {
+            ExprKind::Selected(_, s) | ExprKind::Name(s) => Some(s),
+            _ => None,
+        };
+        match chosen.as_slice() {
+            [d] => {
+                if let Some(id) = target_id {
+                    self.reference(id.span, *d);
+                }
+                let kind = self.out.decl(*d).kind.clone();
+                self.declare(&name.name, name.span, kind);
+            }
+            _ if params
+                .iter()
+                .chain(&result)
+                .all(|&t| self.types().is_known(t)) =>
+            {
+                let describe = |ts: &[TypeId]| {
+                    ts.iter()
+                        .map(|&t| self.types().describe(t))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                };
+                let operands = match result {
+                    Some(r) => format!("[{} return {}]", describe(&params), describe(&[r])),
+                    None => format!("[{}]", describe(&params)),
+                };
+                self.error(AnalysisError::NoOverload {
+                    span: signature.span,
+                    name: target_id.map_or_else(String::new, |id| id.name.clone()),
+                    operands,
+                    help: Some(
+                        "no declaration of this name has exactly the signature's parameter and result types".into(),
+                    ),
+                });
+                self.declare(&name.name, name.span, DeclKind::Opaque);
+            }
+            _ => {
+                self.declare(&name.name, name.span, DeclKind::Opaque);
+            }
+        }
+    }
+
     fn alias_target(&mut self, target: &Expr) -> TypeId {
         if let ExprKind::Name(_) | ExprKind::Selected(..) = &target.kind {
             if let Some(ds) = self.resolve_name(target) {

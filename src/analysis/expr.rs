@@ -140,7 +140,15 @@ impl Analyzer<'_> {
                 }
                 None
             }
-            Named::Value => None,
+            Named::Value => {
+                // A field of a record object (`regs.pc`): the object is still named.
+                if let ExprKind::Selected(p, _) = &e.kind
+                    && let ExprKind::Name(_) | ExprKind::Selected(..) = p.kind
+                {
+                    self.resolve_name(p);
+                }
+                None
+            }
         }
     }
 

@@ -185,6 +185,32 @@ fn a_units_own_name_yields_to_imported_names() {
     assert!(matches!(a.decl(d).kind, DeclKind::EnumLiteral(_)));
 }
 
+/// An alias with a signature denotes the overload of that profile; a signature no overload
+/// has is reported at the signature.
+#[test]
+fn an_alias_signature_chooses_one_overload() {
+    let pkg = "package p is\n  function f(x : integer) return integer;\n  function f(x : real) return real;\nend package p;";
+    let ok = "entity u is end entity u;\narchitecture a of u is\n  alias g is work.p.f [real return real];\n  constant c : real := g(1.0);\nbegin\nend architecture a;";
+    assert_eq!(messages(&[pkg, ok]), Vec::<String>::new());
+    let (sources, files) = load(&[pkg, ok]);
+    let a = analyse(&sources, &files);
+    let at = ok.find(".f ").expect("the target") as u32 + 1;
+    let d = a
+        .declaration_at(files.last().expect("the file").0, at)
+        .expect("resolves");
+    assert!(
+        matches!(&a.decl(d).kind, DeclKind::Subprogram(s) if s.result.is_some_and(|r| a.types.name(r) == "real")),
+        "{:?}",
+        a.decl(d)
+    );
+    let bad = ok.replace("[real return real]", "[boolean return real]");
+    let m = messages(&[pkg, &bad]);
+    assert!(
+        m.len() == 1 && m[0].contains("no `f` takes [`boolean` return `real`]"),
+        "{m:?}"
+    );
+}
+
 #[test]
 fn a_cycle_of_uses_is_one_diagnostic() {
     let e = errors(&[

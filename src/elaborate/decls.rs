@@ -226,8 +226,25 @@ impl<'a> Elab<'a> {
             }
             DeclKind::Terminal { names, nature } => self.terminal_decl(sc, names, nature),
             DeclKind::Quantity(q) => self.quantity_decl(sc, q, d.span),
-            DeclKind::Alias { name, target, .. } => {
+            DeclKind::Alias {
+                name,
+                target,
+                signature,
+                ..
+            } => {
                 let items = self.lookup(sc, target)?;
+                let operator = matches!(&target.kind,
+                    ast::ExprKind::Name(id) | ast::ExprKind::Selected(_, id) if id.name.starts_with('"'));
+                if signature.is_some()
+                    && operator
+                    && !matches!(items.first(), Some(Item::Subprogram(_)))
+                {
+                    return Err(self.error(ElabError::unsupported(
+                        name.span,
+                        "an alias of a predefined operator",
+                        "write the operator itself, or a function that applies it",
+                    )));
+                }
                 for item in items {
                     if !sc.declare_at(&name.name, name.span, item) {
                         return Err(self.error(ElabError::Redeclared {
