@@ -10,6 +10,7 @@ pub mod compile;
 pub mod dae;
 pub mod error;
 pub mod extract;
+pub mod interrupt;
 pub mod load;
 pub mod op;
 pub mod params;
@@ -22,6 +23,8 @@ pub mod time;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
+
+use error::CliError;
 
 /// vams: a compiler and simulator for a practical subset of VHDL-AMS (IEEE 1076.1).
 #[derive(Debug, Parser)]
@@ -67,7 +70,11 @@ pub fn run() -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         Err(report) => {
             eprint!("{}", render::render(report.as_ref()));
-            ExitCode::from(1)
+            match report.downcast_ref::<CliError>() {
+                // The shell's convention for a program stopped by SIGINT.
+                Some(CliError::Interrupted { .. }) => ExitCode::from(130),
+                _ => ExitCode::from(1),
+            }
         }
     }
 }

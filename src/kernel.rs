@@ -18,6 +18,7 @@ use crate::waveform::Waveforms;
 
 mod analog_model;
 mod call;
+mod cancel;
 mod cycle;
 mod error;
 mod eval;
@@ -33,6 +34,7 @@ mod solve_error;
 #[cfg(test)]
 mod tests;
 
+pub use cancel::Cancel;
 pub use error::SimError;
 pub use progress::ProgressHook;
 
@@ -56,6 +58,8 @@ pub struct SimOptions {
     /// Solve for every unknown of the model instead of eliminating those an equation gives
     /// explicitly (slower; for comparisons and for debugging a model).
     pub keep_unknowns: bool,
+    /// Stops the run with [`SimError::Interrupted`] when cancelled (Ctrl-C in `vams run`).
+    pub cancel: Option<Cancel>,
 }
 
 impl Default for SimOptions {
@@ -68,6 +72,7 @@ impl Default for SimOptions {
             probes: Vec::new(),
             progress: None,
             keep_unknowns: false,
+            cancel: None,
         }
     }
 }

@@ -1,6 +1,5 @@
-//! `vams run`, `op` and `dae` end to end. Usage errors and everything decided before
-//! elaboration are checked now; the runs themselves need the engine (elaboration, analog
-//! system, kernel) and are ignored until it is merged.
+//! `vams run`, `op` and `dae` end to end: usage errors, runs and their outputs, and what a
+//! failed or interrupted run keeps.
 
 use std::path::Path;
 
@@ -524,4 +523,54 @@ fn an_array_too_large_to_hold_is_a_diagnostic_not_an_abort() {
             "not supported yet: an array of 2000000001 elements",
         ))
         .stderr(contains("huge.vhd:3:14"));
+}
+
+/// Ctrl-C stops a run at its next step: the waveforms computed so far are written, and the
+/// exit code is the shell's for SIGINT.
+#[cfg(unix)]
+#[test]
+fn ctrl_c_stops_the_run_and_keeps_its_waveforms() {
+    use std::time::{Duration, Instant};
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("endless.csv");
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_vams"))
+        .args([
+            "run",
+            "tests/run/endless.vhd",
+            "--stop",
+            "1e9 sec",
+            "--max-step",
+            "0.05 sec",
+        ])
+        .arg("-o")
+        .arg(&csv)
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    // Long enough to be simulating (elaboration takes milliseconds) in a debug build too.
+    std::thread::sleep(Duration::from_secs(2));
+    let killed = std::process::Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(killed.success());
+    let started = Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break status;
+        }
+        assert!(
+            started.elapsed() < Duration::from_secs(60),
+            "the run did not stop"
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    let mut stderr = String::new();
+    std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut stderr).unwrap();
+    assert_eq!(status.code(), Some(130), "{stderr}");
+    assert!(stderr.contains("interrupted at t ="), "{stderr}");
+    assert!(stderr.contains("wrote the waveforms up to"), "{stderr}");
+    let text = std::fs::read_to_string(&csv).unwrap();
+    assert_eq!(text.lines().next(), Some("time,x"));
+    assert!(text.lines().count() > 10, "{} lines", text.lines().count());
 }

@@ -64,6 +64,11 @@ pub enum CliError {
     )]
     Simulation { top: String },
 
+    /// Ctrl-C during `vams run`: the run stopped, its waveforms so far were written.
+    #[error("`{top}` was interrupted")]
+    #[diagnostic(code(vams::cli::interrupted))]
+    Interrupted { top: String },
+
     /// Neither `--stop` nor a stop comment.
     #[error("no stop time for `{top}`")]
     #[diagnostic(

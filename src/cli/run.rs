@@ -7,7 +7,7 @@ use std::time::Instant;
 use clap::Args;
 use miette::Report;
 
-use crate::kernel::{Failed, Outcome, SimOptions, SimResult, SimStats, simulate_keeping};
+use crate::kernel::{Failed, Outcome, SimError, SimOptions, SimResult, SimStats, simulate_keeping};
 use crate::output::atomic::{commit, temp_path, write_atomically};
 use crate::output::csv::write_csv;
 use crate::output::vcd::write_vcd;
@@ -173,6 +173,7 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
         probes: probe_list(&args.probe, &panels),
         progress: bar.as_ref().map(ProgressBar::hook),
         keep_unknowns: args.keep_unknowns,
+        cancel: Some(super::interrupt::cancel_on_ctrl_c()),
     };
     let mut print = |r: &crate::kernel::Report| {
         if let Some(bar) = &bar {
@@ -206,8 +207,10 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
                     );
                 }
             }
-            return Err(CliError::Simulation {
-                top: design.top.clone(),
+            let top = design.top.clone();
+            return Err(match error {
+                SimError::Interrupted { .. } => CliError::Interrupted { top },
+                _ => CliError::Simulation { top },
             }
             .into());
         }

@@ -50,6 +50,7 @@ pub(crate) struct Simulation<'d, A> {
     breaks: Vec<(QuantityId, f64)>,
     outcome: Option<Outcome>,
     progress: Throttle,
+    cancel: Option<super::Cancel>,
 }
 
 impl<'d, A: AnalogModel> Simulation<'d, A> {
@@ -86,6 +87,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             breaks: Vec::new(),
             outcome,
             progress: Throttle::new(options.progress.clone()),
+            cancel: options.cancel.clone(),
         };
         if let Some(sys) = analog {
             this.analog = Some(this.quiescent(sys, options)?);
@@ -328,6 +330,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                 false => target,
             };
             self.progress.tick(t);
+            self.check_cancelled(t)?;
         }
         // Digital-only runs end with the last event: close the record at the end time.
         if recorder.last_time().is_some_and(|last| last < t) {
@@ -351,6 +354,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                     let crossed = self.sync_above(t1);
                     recorder.record(t1, &self.values, &self.kernel.signals.states);
                     self.progress.tick(t1);
+                    self.check_cancelled(t1)?;
                     if crossed {
                         return Ok(t1);
                     }
@@ -376,6 +380,14 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                     return Ok(tr);
                 }
             }
+        }
+    }
+
+    /// Stops the run when the caller cancelled it (the points recorded so far stay).
+    fn check_cancelled(&self, t: f64) -> Result<(), SimError> {
+        match &self.cancel {
+            Some(c) if c.is_cancelled() => Err(SimError::Interrupted { time: t }),
+            _ => Ok(()),
         }
     }
 

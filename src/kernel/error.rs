@@ -46,6 +46,14 @@ pub enum SimError {
         help: String,
     },
 
+    /// The user stopped the run (Ctrl-C); what it computed up to `time` is kept.
+    #[error("interrupted at t = {time} s")]
+    #[diagnostic(
+        code(vams::sim::interrupted),
+        help("the run was stopped on request; the waveforms up to this time are kept")
+    )]
+    Interrupted { time: f64 },
+
     /// `process begin x := x + 1; end process;` never reaches a wait.
     #[error("process `{process}` ran {limit} instructions at t = {time} s without waiting")]
     #[diagnostic(
@@ -164,7 +172,9 @@ impl Located for SimError {
                 .first()
                 .map(Located::primary_span)
                 .unwrap_or_default(),
-            SimError::UnknownProbe { .. } | SimError::BadOption { .. } => Span::default(),
+            SimError::UnknownProbe { .. }
+            | SimError::BadOption { .. }
+            | SimError::Interrupted { .. } => Span::default(),
         }
     }
 }
