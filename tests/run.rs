@@ -140,7 +140,9 @@ fn csv_column(text: &str, name: &str) -> Vec<(f64, f64)> {
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
     assert_eq!(header[0], "time");
     let col = header.iter().position(|h| *h == name).unwrap();
+    // A partial run's last line is a `# partial: ...` comment.
     lines
+        .filter(|l| !l.starts_with('#'))
         .map(|l| {
             let cells: Vec<f64> = l.split(',').map(|c| c.parse().unwrap()).collect();
             (cells[0], cells[col])
@@ -232,8 +234,13 @@ fn reports_print_as_they_happen_and_a_failure_fails_the_run() {
         .stderr(contains("failure.vhd:16:"))
         .stderr(contains("3 ms: failure: giving up"))
         .stderr(contains("vams::cli::run_failed"));
-    // The waveforms up to the failure are still written.
-    assert!(std::fs::read_to_string(&csv).unwrap().starts_with("time"));
+    // The waveforms up to the failure are still written, and say that they end there.
+    let text = std::fs::read_to_string(&csv).unwrap();
+    assert!(text.starts_with("time"), "{text}");
+    assert_eq!(
+        text.lines().last(),
+        Some("# partial: stopped by an assertion of severity failure at t = 3 ms")
+    );
     // Errors alone do not fail `run`.
     vams()
         .args(["run", "tests/run/failure.vhd", "--stop", "2.5 ms"])
@@ -573,4 +580,21 @@ fn ctrl_c_stops_the_run_and_keeps_its_waveforms() {
     let text = std::fs::read_to_string(&csv).unwrap();
     assert_eq!(text.lines().next(), Some("time,x"));
     assert!(text.lines().count() > 10, "{} lines", text.lines().count());
+    let last = text.lines().last().unwrap();
+    assert!(last.starts_with("# partial: interrupted at t = "), "{last}");
+}
+
+/// An output that cannot be written is reported before the run, not after it.
+#[test]
+fn an_unwritable_output_fails_before_the_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("missing/dir/out.csv");
+    vams()
+        .args(["run", "tests/run/endless.vhd", "--stop", "1e9 sec"])
+        .arg("-o")
+        .arg(&csv)
+        .timeout(std::time::Duration::from_secs(30))
+        .assert()
+        .code(1)
+        .stderr(contains("cannot write"));
 }

@@ -1,12 +1,12 @@
-//! Ctrl-C: the first asks the run to stop (it ends at its next step and keeps its waveforms,
-//! which the command writes); a second ends the process at once, for a run that does not
-//! reach a step.
+//! Ctrl-C, and SIGTERM or SIGHUP (what Slurm's `scancel` and time limits send): the first
+//! asks the run to stop (it ends at its next step and keeps its waveforms, which the command
+//! writes); a second ends the process at once, for a run that does not reach a step.
 
 use std::sync::OnceLock;
 
 use crate::kernel::Cancel;
 
-/// The flag that Ctrl-C sets, installed once per process.
+/// The flag that Ctrl-C (or SIGTERM, SIGHUP) sets, installed once per process.
 pub fn cancel_on_ctrl_c() -> Cancel {
     static FLAG: OnceLock<Cancel> = OnceLock::new();
     FLAG.get_or_init(|| {

@@ -1,6 +1,7 @@
 //! `vams run`: elaborate, simulate to the stop time, print reports as they happen, write the
 //! waveform files and the plot, and close with a summary line.
 
+use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -181,6 +182,7 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
         }
         eprintln!("{}", format_report(r, &loaded.sources));
     };
+    check_writable(args)?;
     let result = simulate_keeping(design, &options, &mut print);
     if let Some(bar) = &bar {
         bar.clear();
@@ -197,7 +199,21 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
             eprint!("{}", render_sim_error(&error, &loaded.sources));
             // What the run computed before the error is kept: the waveforms up to it.
             if let Some(w) = partial.filter(|w| !w.times.is_empty()) {
-                let written = write_outputs(args, &w, &design.top, stop, &panels, &file_panels)?;
+                let last = w.times.last().copied().unwrap_or(0.0);
+                let why = match error {
+                    SimError::Interrupted { .. } => "interrupted",
+                    _ => "stopped by an error",
+                };
+                let ending = format!("{why} at t = {}", format_time(last));
+                let written = write_outputs(
+                    args,
+                    &w,
+                    &design.top,
+                    stop,
+                    &panels,
+                    &file_panels,
+                    Some(&ending),
+                )?;
                 if !written.is_empty() {
                     let last = w.times.last().copied().unwrap_or(0.0);
                     eprintln!(
@@ -215,6 +231,13 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
             .into());
         }
     };
+    let ending = match result.outcome {
+        Outcome::Failed { time } => Some(format!(
+            "stopped by an assertion of severity failure at t = {}",
+            format_time(time)
+        )),
+        Outcome::Finished | Outcome::Stopped { .. } => None,
+    };
     let written = write_outputs(
         args,
         &result.waveforms,
@@ -222,6 +245,7 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
         stop,
         &panels,
         &file_panels,
+        ending.as_deref(),
     )?;
     eprintln!(
         "{}",
@@ -255,6 +279,17 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
     Ok(())
 }
 
+/// Fails before the run when an output cannot be written (a missing directory, no
+/// permission): by creating and removing the temporary file its atomic write will use.
+fn check_writable(args: &RunArgs) -> Result<(), CliError> {
+    for path in args.outputs.iter().chain(&args.plot) {
+        let temp = temp_path(path);
+        std::fs::File::create(&temp).map_err(|e| write_error(path, e))?;
+        let _ = std::fs::remove_file(&temp);
+    }
+    Ok(())
+}
+
 fn write_error(path: &Path, e: impl ToString) -> CliError {
     CliError::Write {
         path: path.display().to_string(),
@@ -278,6 +313,9 @@ fn file_groups(waveforms: &Waveforms, file_panels: &[Vec<String>]) -> Vec<Vec<us
 }
 
 /// Writes every `--out` file and the plot; returns the paths written.
+/// Writes every requested output. `partial` says why a run ended early ("interrupted at t =
+/// 2.5 s"): each file then says so (a last `# partial: ...` line in CSV, a `$comment` in VCD,
+/// the plot's title), so that a script can tell it from a complete run.
 fn write_outputs(
     args: &RunArgs,
     waveforms: &Waveforms,
@@ -285,17 +323,23 @@ fn write_outputs(
     stop: f64,
     panels: &[Vec<String>],
     file_panels: &[Vec<String>],
+    partial: Option<&str>,
 ) -> Result<Vec<String>, Report> {
     let mut written = Vec::new();
+    let note = partial.map(|p| format!("partial: {p}"));
     for path in &args.outputs {
         let is_vcd = path
             .extension()
             .is_some_and(|e| e.eq_ignore_ascii_case("vcd"));
         write_atomically(path, |w| {
             if is_vcd {
-                write_vcd(w, waveforms, top)
+                write_vcd(w, waveforms, top, note.as_deref())
             } else {
-                write_csv(w, waveforms)
+                write_csv(w, waveforms)?;
+                match &note {
+                    Some(n) => writeln!(w, "# {n}"),
+                    None => Ok(()),
+                }
             }
         })
         .map_err(|e| write_error(path, e))?;
@@ -318,7 +362,10 @@ fn write_outputs(
         } else {
             default_groups(waveforms)
         };
-        let title = format!("{top} (stop {})", format_time(stop));
+        let title = match partial {
+            Some(p) => format!("{top} ({p})"),
+            None => format!("{top} (stop {})", format_time(stop)),
+        };
         let temp = temp_path(path);
         plot_waveforms(&temp, &title, waveforms, &groups).inspect_err(|_| {
             let _ = std::fs::remove_file(&temp);
@@ -424,7 +471,7 @@ mod tests {
         );
         let wf = crate::output::csv::tests::synthetic();
         let a = args(vec![csv.clone(), vcd.clone()], Some(svg.clone()));
-        let written = write_outputs(&a, &wf, "tb", 1.0, &[], &[]).unwrap();
+        let written = write_outputs(&a, &wf, "tb", 1.0, &[], &[], None).unwrap();
         assert_eq!(written.len(), 3);
         assert!(
             std::fs::read_to_string(&csv)
@@ -452,7 +499,7 @@ mod tests {
         std::fs::write(&svg, "old").unwrap();
         let wf = crate::output::csv::tests::synthetic();
         let a = args(vec![], Some(svg.clone()));
-        let err = write_outputs(&a, &wf, "tb", 1.0, &[vec!["vot".into()]], &[]).unwrap_err();
+        let err = write_outputs(&a, &wf, "tb", 1.0, &[vec!["vot".into()]], &[], None).unwrap_err();
         let text = format!("{err:?}");
         assert!(
             text.contains("vot") && text.contains("vout, dut.u_ic.ov"),
@@ -460,7 +507,7 @@ mod tests {
         );
         assert_eq!(std::fs::read_to_string(&svg).unwrap(), "old");
         let missing_dir = args(vec![dir.path().join("no/dir/w.csv")], None);
-        let err = write_outputs(&missing_dir, &wf, "tb", 1.0, &[], &[]).unwrap_err();
+        let err = write_outputs(&missing_dir, &wf, "tb", 1.0, &[], &[], None).unwrap_err();
         assert!(format!("{err:?}").contains("cannot write"));
     }
 

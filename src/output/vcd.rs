@@ -93,8 +93,18 @@ fn encode(kind: Presentation, v: f64) -> (String, bool) {
 }
 
 /// Writes `waveforms` as VCD, with `top` as the outermost scope.
-pub fn write_vcd(out: &mut impl Write, waveforms: &Waveforms, top: &str) -> io::Result<()> {
+/// `comment` (a partial run's "partial: interrupted at t = ...") goes in a `$comment` of the
+/// header, where a script or a viewer finds it first.
+pub fn write_vcd(
+    out: &mut impl Write,
+    waveforms: &Waveforms,
+    top: &str,
+    comment: Option<&str>,
+) -> io::Result<()> {
     writeln!(out, "$version vams {} $end", env!("CARGO_PKG_VERSION"))?;
+    if let Some(c) = comment {
+        writeln!(out, "$comment {c} $end")?;
+    }
     writeln!(out, "$timescale 1 ns $end")?;
     let mut root = Scope {
         name: top.to_string(),

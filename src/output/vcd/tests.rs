@@ -92,7 +92,7 @@ fn parse(text: &str) -> Dump {
 fn written() -> (Waveforms, Dump) {
     let wf = synthetic();
     let mut out = Vec::new();
-    write_vcd(&mut out, &wf, "tb_servo").unwrap();
+    write_vcd(&mut out, &wf, "tb_servo", None).unwrap();
     let text = String::from_utf8(out).unwrap();
     (wf, parse(&text))
 }
