@@ -530,6 +530,9 @@ pub enum Instr {
     /// (0 = next delta cycle), in increasing order.
     Assign {
         target: SignalId,
+        /// `target(index) <= ...`: one element of an array signal (index in the signal's
+        /// type's bounds); each element then has its own driver (LRM 12.6.1).
+        index: Option<Expr>,
         waveform: Vec<(Expr, Expr)>,
         mechanism: DelayMechanism,
     },
@@ -590,10 +593,14 @@ impl Instr {
                 f(value);
             }
             Instr::Assign {
+                index,
                 waveform,
                 mechanism,
                 ..
             } => {
+                if let Some(i) = index {
+                    f(i);
+                }
                 for (v, d) in waveform {
                     f(v);
                     f(d);

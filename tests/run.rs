@@ -598,3 +598,25 @@ fn an_unwritable_output_fails_before_the_run() {
         .code(1)
         .stderr(contains("cannot write"));
 }
+
+/// Two processes may drive different elements of an unresolved array, not the same one: the
+/// error names the element and the processes.
+#[test]
+fn two_drivers_of_one_unresolved_element_are_an_error_naming_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("md.vhd");
+    std::fs::write(
+        &file,
+        "entity md is end entity md;\narchitecture a of md is\n  signal v : bit_vector(3 downto 0);\n\
+         begin\n  p1 : process begin v(1) <= '1'; v(3) <= '1'; wait; end process;\n\
+         p2 : process begin v(1) <= '0'; v(2) <= '1'; wait; end process;\nend architecture a;\n",
+    )
+    .unwrap();
+    vams()
+        .args(["run"])
+        .arg(&file)
+        .args(["--stop", "1 ns"])
+        .assert()
+        .code(1)
+        .stderr(contains("signal `v(1)` has 2 drivers (p1, p2)"));
+}

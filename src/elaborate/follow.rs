@@ -128,6 +128,7 @@ fn follow_code(
     let (tgt, endt, cur, d) = (VarId(0), VarId(1), VarId(2), VarId(3));
     let v = Expr::Var;
     let assign = |target: SignalId, value: Expr| Instr::Assign {
+        index: None,
         target,
         waveform: vec![(value, Expr::Const(Value::Time(0.0)))],
         mechanism: DelayMechanism::Transport,

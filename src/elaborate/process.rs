@@ -102,10 +102,17 @@ fn signals_read(code: &[Instr]) -> Vec<SignalId> {
                 add(index);
                 add(value);
             }
-            Instr::Assign { waveform, .. } => waveform.iter().for_each(|(v, d)| {
-                add(v);
-                add(d);
-            }),
+            Instr::Assign {
+                index, waveform, ..
+            } => {
+                if let Some(i) = index {
+                    add(i);
+                }
+                for (v, d) in waveform {
+                    add(v);
+                    add(d);
+                }
+            }
             Instr::JumpIfNot { cond, .. } => add(cond),
             Instr::Assert {
                 cond,
@@ -483,10 +490,10 @@ impl<'a> Elab<'a> {
                     let v = self.expr(sc, value, None)?;
                     let ty = v.ty.clone();
                     let tmp = p.new_var("(aggregate target)", &ty, ty.default_value());
+                    let types: Vec<Ty> = vars.iter().map(|v| v.1.clone()).collect();
                     let parts = self.split_array(
                         super::expr::Typed::new(Expr::Var(tmp), ty),
-                        vars.len(),
-                        &vars,
+                        &types,
                         value.span,
                     )?;
                     p.emit(Instr::SetVar {
@@ -848,7 +855,8 @@ impl<'a> Elab<'a> {
             };
             let v = if aggregate {
                 let v = self.expr(sc, v, None)?;
-                self.split_array(v, targets.len(), &sigs, el.span)?
+                let types: Vec<Ty> = sigs.iter().map(|s| s.1.clone()).collect();
+                self.split_array(v, &types, el.span)?
             } else {
                 vec![self.expr_of(sc, v, &sigs[0].1)?.e]
             };
@@ -861,8 +869,9 @@ impl<'a> Elab<'a> {
         Ok(sigs
             .iter()
             .enumerate()
-            .map(|(k, (sig, _))| Instr::Assign {
+            .map(|(k, (sig, _, index))| Instr::Assign {
                 target: *sig,
+                index: index.clone(),
                 waveform: wave
                     .iter()
                     .map(|(v, d)| (v[k].clone(), d.clone()))
@@ -917,11 +926,33 @@ impl<'a> Elab<'a> {
         Ok(elems.iter().map(|e| &e.value).collect())
     }
 
-    /// The signal a (simple) target names, with its type.
-    fn target_signal(&mut self, sc: &Scope<'a>, target: &ast::Expr) -> R<(SignalId, Ty)> {
+    /// The signal a target names, with the type assigned: a whole signal, or one element
+    /// of an array signal (`dout(i)`, with the index expression).
+    fn target_signal(
+        &mut self,
+        sc: &Scope<'a>,
+        target: &ast::Expr,
+    ) -> R<(SignalId, Ty, Option<Expr>)> {
+        if let ast::ExprKind::Apply(prefix, args) = &target.kind
+            && let [
+                ast::Assoc {
+                    actual: Actual::Expr(i),
+                    formal: None,
+                    ..
+                },
+            ] = args.as_slice()
+            && let Some(Item::Signal {
+                id,
+                ty: Ty::Array(arr),
+            }) = self.lookup(sc, prefix)?.first()
+        {
+            let (id, element) = (*id, arr.element.clone());
+            let i = self.expr_of(sc, i, &Ty::Integer)?;
+            return Ok((id, element, Some(i.e)));
+        }
         let items = self.lookup(sc, target)?;
         match &items[0] {
-            Item::Signal { id, ty } => Ok((*id, ty.clone())),
+            Item::Signal { id, ty } => Ok((*id, ty.clone(), None)),
             other => {
                 let help = match other {
                     Item::Quantity(_) => {
@@ -941,15 +972,10 @@ impl<'a> Elab<'a> {
         }
     }
 
-    /// The elements of array value `v`, left to right, for `n` targets of the given types:
-    /// the array's length must be `n`, its element type theirs.
-    fn split_array<T>(
-        &mut self,
-        v: super::expr::Typed,
-        n: usize,
-        targets: &[(T, Ty)],
-        span: Span,
-    ) -> R<Vec<Expr>> {
+    /// The elements of array value `v`, left to right, for targets of the given types: the
+    /// array's length must be their number, its element type theirs.
+    fn split_array(&mut self, v: super::expr::Typed, targets: &[Ty], span: Span) -> R<Vec<Expr>> {
+        let n = targets.len();
         let bounds = match &v.ty {
             Ty::Array(arr) => arr.bounds.map(|b| (b, arr.element.clone())),
             _ => None,
@@ -974,7 +1000,7 @@ impl<'a> Elab<'a> {
                 None,
             )));
         }
-        if let Some((_, ty)) = targets.iter().find(|(_, ty)| !ty.same(&element)) {
+        if let Some(ty) = targets.iter().find(|ty| !ty.same(&element)) {
             return Err(self.error(ElabError::TypeMismatch {
                 span,
                 expected: ty.to_string(),

@@ -46,6 +46,7 @@ impl<'a> Elab<'a> {
         let name = format!("{}'zoh", self.qname(q));
         let out = self.implicit_signal(name.clone(), 0.0, span);
         let code = vec![Instr::Assign {
+            index: None,
             target: out,
             waveform: vec![(Expr::Quantity(q), Expr::Const(Value::Time(0.0)))],
             mechanism: DelayMechanism::Transport,
@@ -203,6 +204,7 @@ fn ztf_code(
         }
     }
     code.push(Instr::Assign {
+        index: None,
         target: out,
         waveform: vec![(v(y), Expr::Const(Value::Time(0.0)))],
         mechanism: DelayMechanism::Transport,

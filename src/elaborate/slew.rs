@@ -126,6 +126,7 @@ fn mode_code(
 ) -> Vec<Instr> {
     let (switched, next) = (VarId(0), VarId(1));
     let assign = |target: SignalId, value: Expr| Instr::Assign {
+        index: None,
         target,
         waveform: vec![(value, Expr::Const(Value::Time(0.0)))],
         mechanism: DelayMechanism::Transport,

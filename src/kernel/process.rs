@@ -222,6 +222,7 @@ pub(crate) fn run(
             }
             Instr::Assign {
                 target,
+                index: element_index,
                 waveform,
                 mechanism,
             } => {
@@ -255,14 +256,61 @@ pub(crate) fn run(
                         Delay::Inertial(cx.waveform.first().map_or(0.0, |e| e.1 - cx.now))
                     }
                 };
-                let Some(d) = cx.signals.driver(index, *target) else {
+                let no_driver = || {
                     // `Signals::new` creates a driver for every assignment of every process.
-                    return Err(at(EvalError::new(
+                    at(EvalError::new(
                         "assignment to a signal without a driver",
                         "this is a kernel bug",
-                    )));
+                    ))
                 };
-                cx.signals.assign(d, cx.waveform, delay);
+                match (element_index, cx.signals.split(*target)) {
+                    (None, None) => {
+                        let d = cx
+                            .signals
+                            .driver(index, *target, None)
+                            .ok_or_else(no_driver)?;
+                        cx.signals.assign(d, cx.waveform, delay);
+                    }
+                    (Some(i), Some(n)) => {
+                        let i = integer(&eval(i, &env).map_err(at)?).map_err(at)?;
+                        let ty = signal.map_or(&crate::design::Type::Integer, |s| &s.ty);
+                        let k = offset(ty, i, n).map_err(at)?;
+                        let d = cx
+                            .signals
+                            .driver(index, *target, Some(k))
+                            .ok_or_else(no_driver)?;
+                        cx.signals.assign(d, cx.waveform, delay);
+                    }
+                    // A whole assignment to a signal driven element by element: each element
+                    // of each value goes to that element's driver.
+                    (None, Some(n)) => {
+                        let whole = std::mem::take(cx.waveform);
+                        let split: Vec<Vec<Value>> =
+                            whole.iter().map(|(v, _)| element_values(v)).collect();
+                        for k in 0..n {
+                            let d = cx
+                                .signals
+                                .driver(index, *target, Some(k))
+                                .ok_or_else(no_driver)?;
+                            let mut wave: Vec<(Value, f64)> = Vec::with_capacity(whole.len());
+                            for ((_, t), values) in whole.iter().zip(&split) {
+                                let v = values.get(k).cloned().ok_or_else(|| {
+                                    at(EvalError::new(
+                                        format!(
+                                            "a value of {} element(s) assigned to a signal of {n}",
+                                            values.len()
+                                        ),
+                                        "an array assignment needs a value of the target's length",
+                                    ))
+                                })?;
+                                wave.push((v, *t));
+                            }
+                            cx.signals.assign(d, &mut wave, delay);
+                        }
+                        *cx.waveform = whole;
+                    }
+                    (Some(_), None) => return Err(no_driver()),
+                }
             }
             Instr::Wait { until, timeout, .. } => {
                 let timeout = match timeout {
@@ -431,5 +479,14 @@ fn seconds(v: &Value) -> Result<f64, EvalError> {
             "a delay is not a time",
             "delays and timeouts must be of type time",
         )),
+    }
+}
+
+/// The elements of an array value, a string's characters as enumeration positions.
+fn element_values(v: &Value) -> Vec<Value> {
+    match v {
+        Value::Array(items) => items.clone(),
+        Value::String(s) => s.chars().map(|c| Value::Enum(c as u32)).collect(),
+        other => vec![other.clone()],
     }
 }

@@ -10,7 +10,7 @@
 
 use std::collections::{HashMap, HashSet, VecDeque};
 
-use crate::design::{Design, Instr, SignalId, Type, Value};
+use crate::design::{Design, Expr, Instr, SignalId, Type, Value};
 
 use super::error::SimError;
 
@@ -44,6 +44,10 @@ pub(crate) enum Delay {
 #[derive(Clone, Debug)]
 struct Driver {
     signal: SignalId,
+    /// The element it drives, for a signal some process assigns element by element (every
+    /// driver of such a signal drives one element: LRM 12.6.1's driver per scalar
+    /// subelement); `None` for a whole signal.
+    element: Option<usize>,
     current: Value,
     waveform: VecDeque<Transaction>,
 }
@@ -54,8 +58,12 @@ pub(crate) struct Signals {
     drivers: Vec<Driver>,
     /// Driver indices of each signal.
     by_signal: Vec<Vec<usize>>,
-    /// Driver index of `(process, signal)`.
-    index: HashMap<(usize, SignalId), usize>,
+    /// Driver index of `(process, signal, element)`.
+    index: HashMap<(usize, SignalId, Option<usize>), usize>,
+    /// Signals driven element by element, with their number of elements.
+    split: Vec<Option<usize>>,
+    /// A character array signal (its value is a `Value::String`).
+    string: Vec<bool>,
     /// Signals resolved with the std_logic table.
     resolved: Vec<bool>,
     /// `'above` values to apply in the next update phase.
@@ -67,16 +75,34 @@ pub(crate) struct Signals {
     changed_list: Vec<SignalId>,
 }
 
+/// What an assignment drives: the longest static prefix of its target (LRM 6.1, 12.6.1).
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Driven {
+    /// The whole signal, or an element whose index is known only at run time.
+    Whole,
+    Dynamic,
+    /// The element of this static index.
+    Static(i64),
+}
+
 /// The signals `code` assigns, directly or in the procedures it calls (a procedure drives
-/// its signal parameters through the calling process's drivers, LRM 14.7.2).
-fn assigned_signals(design: &Design, code: &[Instr]) -> Vec<SignalId> {
+/// its signal parameters through the calling process's drivers, LRM 14.7.2), each with
+/// what the assignment drives.
+fn assigned_signals(design: &Design, code: &[Instr]) -> Vec<(SignalId, Driven)> {
     let mut out = Vec::new();
     let mut seen = HashSet::new();
     let mut todo = vec![code];
     while let Some(code) = todo.pop() {
         for instr in code {
             match instr {
-                Instr::Assign { target, .. } => out.push(*target),
+                Instr::Assign { target, index, .. } => out.push((
+                    *target,
+                    match index {
+                        None => Driven::Whole,
+                        Some(Expr::Const(Value::Integer(i))) => Driven::Static(*i),
+                        Some(_) => Driven::Dynamic,
+                    },
+                )),
                 Instr::Call { sub, .. } => {
                     if let Some(s) = design.subprograms.get(sub.index()) {
                         if seen.insert(*sub) {
@@ -109,14 +135,44 @@ impl Signals {
         let mut drivers = Vec::new();
         let mut by_signal = vec![Vec::new(); design.signals.len()];
         let mut index = HashMap::new();
-        for (p, process) in design.processes.iter().enumerate() {
-            for target in assigned_signals(design, &process.code) {
-                {
-                    index.entry((p, target)).or_insert_with(|| {
+        let assigned: Vec<Vec<(SignalId, Driven)>> = design
+            .processes
+            .iter()
+            .map(|p| assigned_signals(design, &p.code))
+            .collect();
+        let mut split: Vec<Option<usize>> = vec![None; design.signals.len()];
+        for &(target, _) in assigned
+            .iter()
+            .flatten()
+            .filter(|(_, d)| *d != Driven::Whole)
+        {
+            split[target.index()] = Some(elements(&design.signals[target.index()].init).len());
+        }
+        for (p, targets) in assigned.iter().enumerate() {
+            for &(target, driven) in targets {
+                let signal = &design.signals[target.index()];
+                let init = &signal.init;
+                let slots: Vec<Option<usize>> = match (split[target.index()], driven) {
+                    (None, _) => vec![None],
+                    // A static index drives its element only (processes of a generate may
+                    // each drive one element of an unresolved array).
+                    (Some(n), Driven::Static(i)) => match super::eval::offset(&signal.ty, i, n) {
+                        Ok(k) => vec![Some(k)],
+                        Err(_) => (0..n).map(Some).collect(),
+                    },
+                    (Some(n), _) => (0..n).map(Some).collect(),
+                };
+                for element in slots {
+                    index.entry((p, target, element)).or_insert_with(|| {
                         by_signal[target.index()].push(drivers.len());
+                        let current = match element {
+                            Some(k) => elements(init)[k].clone(),
+                            None => init.clone(),
+                        };
                         drivers.push(Driver {
                             signal: target,
-                            current: design.signals[target.index()].init.clone(),
+                            element,
+                            current,
                             waveform: VecDeque::new(),
                         });
                         drivers.len() - 1
@@ -129,29 +185,63 @@ impl Signals {
             .iter()
             .map(|s| is_std_ulogic(&s.ty))
             .collect();
+        // An unresolved signal (or element) has at most one driver: processes may drive
+        // different elements of one array.
         for (s, ds) in by_signal.iter().enumerate() {
-            if ds.len() > 1 && !resolved[s] {
-                let mut processes: Vec<&str> = index
-                    .iter()
-                    .filter(|((_, sig), _)| sig.index() == s)
-                    .map(|((p, _), _)| design.processes[*p].name.as_str())
-                    .collect();
-                processes.sort_unstable();
-                let signal = &design.signals[s];
-                return Err(SimError::MultipleDrivers {
-                    signal: signal.name.clone(),
-                    count: ds.len(),
-                    processes: processes.join(", "),
-                    span: signal.span,
-                });
+            if resolved[s] {
+                continue;
             }
+            let element = |d: &usize| drivers[*d].element;
+            let Some(shared) = ds
+                .iter()
+                .find(|d| ds.iter().filter(|e| element(e) == element(d)).count() > 1)
+                .map(element)
+            else {
+                continue;
+            };
+            let mut processes: Vec<&str> = index
+                .keys()
+                .filter(|(_, sig, e)| sig.index() == s && *e == shared)
+                .map(|(p, _, _)| design.processes[*p].name.as_str())
+                .collect();
+            processes.sort_unstable();
+            let signal = &design.signals[s];
+            let name = match (shared, &signal.ty) {
+                (
+                    Some(k),
+                    Type::Array {
+                        left, ascending, ..
+                    },
+                ) => {
+                    let i = if *ascending {
+                        left + k as i64
+                    } else {
+                        left - k as i64
+                    };
+                    format!("{}({i})", signal.name)
+                }
+                _ => signal.name.clone(),
+            };
+            return Err(SimError::MultipleDrivers {
+                signal: name,
+                count: processes.len(),
+                processes: processes.join(", "),
+                span: signal.span,
+            });
         }
+        let string = design
+            .signals
+            .iter()
+            .map(|s| matches!(s.init, Value::String(_)))
+            .collect();
         let n = states.len();
         Ok(Signals {
             states,
             drivers,
             by_signal,
             index,
+            split,
+            string,
             resolved,
             forced: Vec::new(),
             events: Vec::new(),
@@ -160,9 +250,21 @@ impl Signals {
         })
     }
 
-    /// The driver of `signal` in process `process` (every assignment has one).
-    pub fn driver(&self, process: usize, signal: SignalId) -> Option<usize> {
-        self.index.get(&(process, signal)).copied()
+    /// The driver of `signal` in process `process` (every assignment has one), or of its
+    /// `element` (an offset from the left) when the signal is driven element by element.
+    pub fn driver(
+        &self,
+        process: usize,
+        signal: SignalId,
+        element: Option<usize>,
+    ) -> Option<usize> {
+        self.index.get(&(process, signal, element)).copied()
+    }
+
+    /// The number of elements of a signal driven element by element; `None` for a signal
+    /// driven whole.
+    pub fn split(&self, signal: SignalId) -> Option<usize> {
+        self.split[signal.index()]
     }
 
     /// Schedules `value` on signal `s` in the next update phase (an `'above` crossing).
@@ -271,6 +373,25 @@ impl Signals {
 
     fn effective(&self, s: usize) -> Value {
         let ds = &self.by_signal[s];
+        if let Some(n) = self.split[s] {
+            let mut columns: Vec<Vec<&Value>> = vec![Vec::new(); n];
+            for &d in ds {
+                let driver = &self.drivers[d];
+                if let Some(k) = driver.element.filter(|&k| k < n) {
+                    columns[k].push(&driver.current);
+                }
+            }
+            let values = columns
+                .iter()
+                .zip(elements(&self.states[s].value))
+                .map(|(column, old)| match column.as_slice() {
+                    [] => old,
+                    [one] => (*one).clone(),
+                    many => resolve(many),
+                })
+                .collect();
+            return crate::design::aggregate_value(values, self.string[s]);
+        }
         if ds.len() == 1 || !self.resolved[s] {
             return self.drivers[ds[0]].current.clone();
         }
@@ -285,6 +406,16 @@ impl Signals {
             self.changed[s.index()] = false;
             out.push(s);
         }
+    }
+}
+
+/// The elements of an array value (a string's characters as enumeration positions); a
+/// scalar is its own one element.
+fn elements(v: &Value) -> Vec<Value> {
+    match v {
+        Value::Array(items) => items.clone(),
+        Value::String(s) => s.chars().map(|c| Value::Enum(c as u32)).collect(),
+        other => vec![other.clone()],
     }
 }
 

@@ -88,6 +88,7 @@ pub fn not(a: Expr) -> Expr {
 /// `target <= value after delay` (inertial, the delay as the rejection limit).
 pub fn assign(target: SignalId, value: Expr, delay: f64) -> Instr {
     Instr::Assign {
+        index: None,
         target,
         waveform: vec![(value, time(delay))],
         mechanism: DelayMechanism::Inertial { reject: None },
@@ -96,6 +97,7 @@ pub fn assign(target: SignalId, value: Expr, delay: f64) -> Instr {
 
 pub fn transport(target: SignalId, value: Expr, delay: f64) -> Instr {
     Instr::Assign {
+        index: None,
         target,
         waveform: vec![(value, time(delay))],
         mechanism: DelayMechanism::Transport,

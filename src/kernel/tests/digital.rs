@@ -175,6 +175,7 @@ fn pulse_design() -> Design {
         vec![],
         vec![
             Instr::Assign {
+                index: None,
                 target: reject1,
                 waveform: vec![(sig(a), time(5.0 * NS))],
                 mechanism: DelayMechanism::Inertial {
