@@ -228,11 +228,19 @@ impl<'a> Elab<'a> {
             DeclKind::Quantity(q) => self.quantity_decl(sc, q, d.span),
             DeclKind::Alias {
                 name,
+                subtype,
                 target,
                 signature,
-                ..
             } => {
-                let items = self.lookup(sc, target)?;
+                let mut items = self.lookup(sc, target)?;
+                if let Some(si) = subtype {
+                    // `alias lv : std_logic_vector(1 to l'length) is l;`: the same object
+                    // seen with the alias's bounds (values are positional).
+                    let sub = self.subtype_indication(sc, si)?;
+                    for item in &mut items {
+                        self.retype_alias(item, &sub.ty, si.span)?;
+                    }
+                }
                 let operator = matches!(&target.kind,
                     ast::ExprKind::Name(id) | ast::ExprKind::Selected(_, id) if id.name.starts_with('"'));
                 if signature.is_some()
@@ -471,6 +479,42 @@ impl<'a> Elab<'a> {
     }
 
     /// `type_mark [range ...] [tolerance "..."]`, including index constraints `t(1 to 3)`.
+    /// Gives an aliased array object the alias's array subtype, after checking that the two
+    /// have the same element type and, where both are known, the same length.
+    fn retype_alias(
+        &mut self,
+        item: &mut Item<'a>,
+        alias: &Ty,
+        span: crate::source::Span,
+    ) -> R<()> {
+        let (Item::Variable { ty, .. } | Item::Signal { ty, .. } | Item::Constant { ty, .. }) =
+            item
+        else {
+            return Ok(());
+        };
+        let (Ty::Array(new), Ty::Array(old)) = (alias, &*ty) else {
+            return Ok(());
+        };
+        let (expected, found) = (ty.to_string(), alias.to_string());
+        let len = |b: Option<(i64, i64, bool)>| {
+            b.map(|(l, r, asc)| if asc { r - l + 1 } else { l - r + 1 }.max(0))
+        };
+        if !new.element.same(&old.element)
+            || matches!((len(new.bounds), len(old.bounds)), (Some(a), Some(b)) if a != b)
+        {
+            return Err(self.error(ElabError::TypeMismatch {
+                span,
+                expected,
+                found,
+                help: Some(
+                    "an alias's array subtype needs the object's element type and length".into(),
+                ),
+            }));
+        }
+        *ty = alias.clone();
+        Ok(())
+    }
+
     pub(super) fn subtype_indication(
         &mut self,
         sc: &Scope<'a>,

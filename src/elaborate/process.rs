@@ -543,9 +543,32 @@ impl<'a> Elab<'a> {
                         };
                         let i = self.expr_of(sc, i, &Ty::Integer)?;
                         let v = self.expr_of(sc, value, &arr.element)?;
+                        // Through an alias with other bounds, the index is the alias's: the
+                        // variable's own is at the same position.
+                        let index = match (arr.bounds, p.vars.get(id.index()).map(|v| &v.ty)) {
+                            (
+                                Some((al, _, aasc)),
+                                Some(crate::design::Type::Array {
+                                    left, ascending, ..
+                                }),
+                            ) if (al, aasc) != (*left, *ascending) => {
+                                let int = |k: i64| Expr::Const(Value::Integer(k));
+                                let bin = |op, a, b| Expr::Binary(op, Box::new(a), Box::new(b));
+                                use crate::design::BinaryOp::{Add, Sub};
+                                let pos = match aasc {
+                                    true => bin(Sub, i.e, int(al)),
+                                    false => bin(Sub, int(al), i.e),
+                                };
+                                match ascending {
+                                    true => bin(Add, int(*left), pos),
+                                    false => bin(Sub, int(*left), pos),
+                                }
+                            }
+                            _ => i.e,
+                        };
                         p.emit(Instr::SetVarElement {
                             var: id,
-                            index: i.e,
+                            index,
                             value: v.e,
                         });
                     }

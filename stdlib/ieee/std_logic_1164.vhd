@@ -1,10 +1,10 @@
 -- IEEE.STD_LOGIC_1164 for vams: the nine-valued logic of IEEE Std 1164, declaration and body.
 --
--- The body is ordinary VHDL that the vams simulator executes: every operation is
--- a look-up in a constant table indexed by STD_ULOGIC, and the vector operations
--- loop over their operands. The scalar operators and conversions state their
--- tables as rules (if/elsif on the operand values), because vams cannot index
--- arrays by an enumeration type yet; the tables stay as their specification.
+-- The body is ordinary VHDL that the vams simulator executes. The scalar operators
+-- and conversions state IEEE's tables as rules (if/elsif on the operand values),
+-- because vams cannot index arrays by an enumeration type yet; the tables stay as
+-- their specification. The vector operators loop over their operands and apply the
+-- scalar operators element by element.
 
 package std_logic_1164 is
 
@@ -314,7 +314,7 @@ package body std_logic_1164 is
       report "STD_LOGIC_1164.""and"": arguments are not of the same length"
       severity failure;
     for i in result'range loop
-      result(i) := and_table(lv(i), rv(i));
+      result(i) := lv(i) and rv(i);
     end loop;
     return result;
   end function "and";
@@ -328,7 +328,7 @@ package body std_logic_1164 is
       report "STD_LOGIC_1164.""nand"": arguments are not of the same length"
       severity failure;
     for i in result'range loop
-      result(i) := not_table(and_table(lv(i), rv(i)));
+      result(i) := not (lv(i) and rv(i));
     end loop;
     return result;
   end function "nand";
@@ -342,7 +342,7 @@ package body std_logic_1164 is
       report "STD_LOGIC_1164.""or"": arguments are not of the same length"
       severity failure;
     for i in result'range loop
-      result(i) := or_table(lv(i), rv(i));
+      result(i) := lv(i) or rv(i);
     end loop;
     return result;
   end function "or";
@@ -356,7 +356,7 @@ package body std_logic_1164 is
       report "STD_LOGIC_1164.""nor"": arguments are not of the same length"
       severity failure;
     for i in result'range loop
-      result(i) := not_table(or_table(lv(i), rv(i)));
+      result(i) := not (lv(i) or rv(i));
     end loop;
     return result;
   end function "nor";
@@ -370,7 +370,7 @@ package body std_logic_1164 is
       report "STD_LOGIC_1164.""xor"": arguments are not of the same length"
       severity failure;
     for i in result'range loop
-      result(i) := xor_table(lv(i), rv(i));
+      result(i) := lv(i) xor rv(i);
     end loop;
     return result;
   end function "xor";
@@ -384,7 +384,7 @@ package body std_logic_1164 is
       report "STD_LOGIC_1164.""xnor"": arguments are not of the same length"
       severity failure;
     for i in result'range loop
-      result(i) := not_table(xor_table(lv(i), rv(i)));
+      result(i) := not (lv(i) xor rv(i));
     end loop;
     return result;
   end function "xnor";
@@ -394,7 +394,7 @@ package body std_logic_1164 is
     variable result : std_logic_vector(1 to l'length);
   begin
     for i in result'range loop
-      result(i) := not_table(lv(i));
+      result(i) := not lv(i);
     end loop;
     return result;
   end function "not";
@@ -408,7 +408,7 @@ package body std_logic_1164 is
       report "STD_LOGIC_1164.""and"": arguments are not of the same length"
       severity failure;
     for i in result'range loop
-      result(i) := and_table(lv(i), rv(i));
+      result(i) := lv(i) and rv(i);
     end loop;
     return result;
   end function "and";
@@ -422,7 +422,7 @@ package body std_logic_1164 is
       report "STD_LOGIC_1164.""nand"": arguments are not of the same length"
       severity failure;
     for i in result'range loop
-      result(i) := not_table(and_table(lv(i), rv(i)));
+      result(i) := not (lv(i) and rv(i));
     end loop;
     return result;
   end function "nand";
@@ -436,7 +436,7 @@ package body std_logic_1164 is
       report "STD_LOGIC_1164.""or"": arguments are not of the same length"
       severity failure;
     for i in result'range loop
-      result(i) := or_table(lv(i), rv(i));
+      result(i) := lv(i) or rv(i);
     end loop;
     return result;
   end function "or";
@@ -450,7 +450,7 @@ package body std_logic_1164 is
       report "STD_LOGIC_1164.""nor"": arguments are not of the same length"
       severity failure;
     for i in result'range loop
-      result(i) := not_table(or_table(lv(i), rv(i)));
+      result(i) := not (lv(i) or rv(i));
     end loop;
     return result;
   end function "nor";
@@ -464,7 +464,7 @@ package body std_logic_1164 is
       report "STD_LOGIC_1164.""xor"": arguments are not of the same length"
       severity failure;
     for i in result'range loop
-      result(i) := xor_table(lv(i), rv(i));
+      result(i) := lv(i) xor rv(i);
     end loop;
     return result;
   end function "xor";
@@ -478,7 +478,7 @@ package body std_logic_1164 is
       report "STD_LOGIC_1164.""xnor"": arguments are not of the same length"
       severity failure;
     for i in result'range loop
-      result(i) := not_table(xor_table(lv(i), rv(i)));
+      result(i) := not (lv(i) xor rv(i));
     end loop;
     return result;
   end function "xnor";
@@ -488,7 +488,7 @@ package body std_logic_1164 is
     variable result : std_ulogic_vector(1 to l'length);
   begin
     for i in result'range loop
-      result(i) := not_table(lv(i));
+      result(i) := not lv(i);
     end loop;
     return result;
   end function "not";
