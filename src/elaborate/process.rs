@@ -85,7 +85,8 @@ impl Proc {
     }
 }
 
-/// Every signal the instructions read, without repetitions, in order of appearance.
+/// Every signal the instructions read, without repetitions, in order of appearance: the
+/// implicit sensitivity of a process statement (a wait's own condition is not part of it).
 fn signals_read(code: &[Instr]) -> Vec<SignalId> {
     let mut out = Vec::new();
     let mut add = |e: &Expr| {
@@ -97,40 +98,9 @@ fn signals_read(code: &[Instr]) -> Vec<SignalId> {
     };
     for i in code {
         match i {
-            Instr::SetVar { value, .. } => add(value),
-            Instr::SetVarElement { index, value, .. } => {
-                add(index);
-                add(value);
-            }
-            Instr::Assign {
-                index, waveform, ..
-            } => {
-                if let Some(i) = index {
-                    add(i);
-                }
-                for (v, d) in waveform {
-                    add(v);
-                    add(d);
-                }
-            }
-            Instr::JumpIfNot { cond, .. } => add(cond),
-            Instr::Assert {
-                cond,
-                report,
-                severity,
-                ..
-            } => {
-                cond.iter().chain(report).for_each(&mut add);
-                add(severity);
-            }
-            Instr::Break { reinit, when, .. } => {
-                reinit.iter().for_each(|r| add(&r.value));
-                when.iter().for_each(&mut add);
-            }
-            Instr::Call {
-                sub, args, signals, ..
-            } => {
-                args.iter().for_each(&mut add);
+            Instr::Wait { .. } => {}
+            Instr::Call { sub, signals, .. } => {
+                i.visit_exprs(&mut add);
                 // The signal actuals, as one expression that reads them all.
                 add(&Expr::FnCall {
                     sub: *sub,
@@ -138,8 +108,7 @@ fn signals_read(code: &[Instr]) -> Vec<SignalId> {
                     signals: signals.clone(),
                 });
             }
-            Instr::Return(value) => value.iter().for_each(&mut add),
-            Instr::Wait { .. } | Instr::Jump(_) | Instr::Stop | Instr::Halt => {}
+            _ => i.visit_exprs(&mut add),
         }
     }
     out
@@ -914,23 +883,28 @@ impl<'a> Elab<'a> {
                 Some("copy it into a variable".into()),
             ))),
             Item::Variable { id, ty, .. } => Ok((*id, ty.clone())),
-            other => {
-                let help = match other {
-                    Item::Signal { .. } => "signals are assigned with `<=`",
-                    Item::Quantity(_) => {
-                        "quantities are defined by simultaneous statements (`q == expr;`) or set by `break q => value;`"
-                    }
-                    _ => "only variables are assigned with `:=`",
-                };
-                Err(self.error(ElabError::WrongClass {
-                    span: target.span,
-                    name: self.sources.snippet(target.span).into(),
-                    found: other.class().into(),
-                    expected: "a variable".into(),
-                    help: Some(help.into()),
-                }))
-            }
+            other => Err(self.wrong_target(other, target, "a variable")),
         }
+    }
+
+    /// The error for assigning `item` with the other assignment (or not at all).
+    fn wrong_target(&mut self, item: &Item<'a>, target: &ast::Expr, expected: &str) -> Reported {
+        let help = match item {
+            Item::Quantity(_) => {
+                "quantities are defined by simultaneous statements (`q == expr;`) or set by `break q => value;`"
+            }
+            Item::Signal { .. } => "signals are assigned with `<=`",
+            Item::Variable { .. } => "variables are assigned with `:=`",
+            _ if expected == "a signal" => "only signals are assigned with `<=`",
+            _ => "only variables are assigned with `:=`",
+        };
+        self.error(ElabError::WrongClass {
+            span: target.span,
+            name: self.sources.snippet(target.span).into(),
+            found: item.class().into(),
+            expected: expected.into(),
+            help: Some(help.into()),
+        })
     }
 
     /// The names of an aggregate target, in order (positional associations only).
@@ -976,22 +950,7 @@ impl<'a> Elab<'a> {
         let items = self.lookup(sc, target)?;
         match &items[0] {
             Item::Signal { id, ty } => Ok((*id, ty.clone(), None)),
-            other => {
-                let help = match other {
-                    Item::Quantity(_) => {
-                        "quantities are defined by simultaneous statements (`q == expr;`) or set by `break q => value;`"
-                    }
-                    Item::Variable { .. } => "variables are assigned with `:=`",
-                    _ => "only signals are assigned with `<=`",
-                };
-                Err(self.error(ElabError::WrongClass {
-                    span: target.span,
-                    name: self.sources.snippet(target.span).into(),
-                    found: other.class().into(),
-                    expected: "a signal".into(),
-                    help: Some(help.into()),
-                }))
-            }
+            other => Err(self.wrong_target(other, target, "a signal")),
         }
     }
 
