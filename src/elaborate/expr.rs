@@ -553,9 +553,6 @@ impl<'a> Elab<'a> {
             }));
         }
         let ty = a.ty.clone();
-        if uop == UnaryOp::Not && ty.is_enum_named("bit") {
-            return self.folded(bit_logic(BinaryOp::Nand, a.e.clone(), a.e), ty, span);
-        }
         self.folded(Expr::Unary(uop, Box::new(a.e)), ty, span)
     }
 
@@ -631,9 +628,6 @@ impl<'a> Elab<'a> {
                 }));
             }
         };
-        if lt.ty.is_enum_named("bit") && is_logical(bop) {
-            return self.folded(bit_logic(bop, lt.e, rt.e), ty, span);
-        }
         self.folded(Expr::Binary(bop, Box::new(lt.e), Box::new(rt.e)), ty, span)
     }
 
@@ -990,29 +984,4 @@ fn is_logical(op: BinaryOp) -> bool {
             | BinaryOp::Xor
             | BinaryOp::Xnor
     )
-}
-
-/// A logical operator on two `bit` values, computed on their positions ('0' is 0, '1' is 1):
-/// `and` is `p q`, `or` is `p + q - p q`, `xor` is `p + q - 2 p q`, the negated ones one
-/// minus those; `not b` is `b nand b`. The result goes back through `bit'val`.
-fn bit_logic(op: BinaryOp, l: Expr, r: Expr) -> Expr {
-    use crate::design::Builtin;
-    let int = |i: i64| Expr::Const(Value::Integer(i));
-    let bin = |op: BinaryOp, a: Expr, b: Expr| Expr::Binary(op, Box::new(a), Box::new(b));
-    let (p, q) = (
-        Expr::Call(Builtin::Pos, vec![l]),
-        Expr::Call(Builtin::Pos, vec![r]),
-    );
-    let pq = bin(BinaryOp::Mul, p.clone(), q.clone());
-    let sum = bin(BinaryOp::Add, p, q);
-    let positive = match op {
-        BinaryOp::And | BinaryOp::Nand => pq,
-        BinaryOp::Or | BinaryOp::Nor => bin(BinaryOp::Sub, sum, pq),
-        _ => bin(BinaryOp::Sub, sum, bin(BinaryOp::Mul, int(2), pq)),
-    };
-    let position = match op {
-        BinaryOp::Nand | BinaryOp::Nor | BinaryOp::Xnor => bin(BinaryOp::Sub, int(1), positive),
-        _ => positive,
-    };
-    Expr::Call(Builtin::EnumVal, vec![position, int(2), int(0)])
 }

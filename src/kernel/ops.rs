@@ -69,6 +69,8 @@ pub(crate) fn unary(op: UnaryOp, v: Value) -> Result<Value, EvalError> {
         (UnaryOp::Abs, Time(x)) => Time(x.abs()),
         (UnaryOp::Abs, Integer(i)) => checked("abs", i.checked_abs())?,
         (UnaryOp::Not, Boolean(b)) => Boolean(!b),
+        // `bit` (elaboration applies `not` to no other enumeration type): '0' is 0, '1' is 1.
+        (UnaryOp::Not, Enum(p)) => Enum(1 - p.min(1)),
         (UnaryOp::Not, Array(items)) => Array(
             items
                 .into_iter()
@@ -243,15 +245,18 @@ pub(crate) fn compare(a: &Value, b: &Value) -> Option<Ordering> {
 
 fn logic(op: BinaryOp, a: Value, b: Value) -> Result<Value, EvalError> {
     use BinaryOp::*;
+    let apply = |x: bool, y: bool| match op {
+        And => x && y,
+        Or => x || y,
+        Nand => !(x && y),
+        Nor => !(x || y),
+        Xor => x != y,
+        _ => x == y,
+    };
     match (a, b) {
-        (Value::Boolean(x), Value::Boolean(y)) => Ok(Value::Boolean(match op {
-            And => x && y,
-            Or => x || y,
-            Nand => !(x && y),
-            Nor => !(x || y),
-            Xor => x != y,
-            _ => x == y,
-        })),
+        (Value::Boolean(x), Value::Boolean(y)) => Ok(Value::Boolean(apply(x, y))),
+        // `bit` (the only enumeration type elaboration applies these to): '0' is 0, '1' is 1.
+        (Value::Enum(x), Value::Enum(y)) => Ok(Value::Enum(u32::from(apply(x != 0, y != 0)))),
         (Value::Array(x), Value::Array(y)) if x.len() == y.len() => Ok(Value::Array(
             x.into_iter()
                 .zip(y)
