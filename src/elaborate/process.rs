@@ -13,7 +13,7 @@ use crate::source::Span;
 
 use super::error::ElabError;
 use super::scope::{Item, Native, Scope};
-use super::types::Ty;
+use super::types::{ArrayTy, Ty};
 use super::{Elab, R, Reported};
 
 /// A process (or subprogram body) being lowered.
@@ -112,6 +112,55 @@ fn signals_read(code: &[Instr]) -> Vec<SignalId> {
         }
     }
     out
+}
+
+/// The index, in the object's own type `own`, of the element at index `i` of the view
+/// `view` (an alias with other bounds: the same position); `i` itself when the bounds agree.
+fn own_index(i: Expr, view: &ArrayTy, own: Option<&crate::design::Type>) -> Expr {
+    let (
+        Some((vl, _, vasc)),
+        Some(&crate::design::Type::Array {
+            left, ascending, ..
+        }),
+    ) = (view.bounds, own)
+    else {
+        return i;
+    };
+    if (vl, vasc) == (left, ascending) {
+        return i;
+    }
+    // A static index stays static (it decides which element a process drives); one that
+    // overflows is left to the kernel's checked arithmetic.
+    if let Expr::Const(Value::Integer(k)) = i {
+        let pos = if vasc {
+            k.checked_sub(vl)
+        } else {
+            vl.checked_sub(k)
+        };
+        let own = pos.and_then(|p| {
+            if ascending {
+                left.checked_add(p)
+            } else {
+                left.checked_sub(p)
+            }
+        });
+        if let Some(own) = own {
+            return Expr::Const(Value::Integer(own));
+        }
+    }
+    use crate::design::BinaryOp::{Add, Sub};
+    let int = |k: i64| Expr::Const(Value::Integer(k));
+    let bin = |op, a, b| Expr::Binary(op, Box::new(a), Box::new(b));
+    let pos = if vasc {
+        bin(Sub, i, int(vl))
+    } else {
+        bin(Sub, int(vl), i)
+    };
+    if ascending {
+        bin(Add, int(left), pos)
+    } else {
+        bin(Sub, int(left), pos)
+    }
 }
 
 impl<'a> Elab<'a> {
@@ -512,29 +561,8 @@ impl<'a> Elab<'a> {
                         };
                         let i = self.expr_of(sc, i, &Ty::Integer)?;
                         let v = self.expr_of(sc, value, &arr.element)?;
-                        // Through an alias with other bounds, the index is the alias's: the
-                        // variable's own is at the same position.
-                        let index = match (arr.bounds, p.vars.get(id.index()).map(|v| &v.ty)) {
-                            (
-                                Some((al, _, aasc)),
-                                Some(crate::design::Type::Array {
-                                    left, ascending, ..
-                                }),
-                            ) if (al, aasc) != (*left, *ascending) => {
-                                let int = |k: i64| Expr::Const(Value::Integer(k));
-                                let bin = |op, a, b| Expr::Binary(op, Box::new(a), Box::new(b));
-                                use crate::design::BinaryOp::{Add, Sub};
-                                let pos = match aasc {
-                                    true => bin(Sub, i.e, int(al)),
-                                    false => bin(Sub, int(al), i.e),
-                                };
-                                match ascending {
-                                    true => bin(Add, int(*left), pos),
-                                    false => bin(Sub, int(*left), pos),
-                                }
-                            }
-                            _ => i.e,
-                        };
+                        let own = p.vars.get(id.index()).map(|v| &v.ty);
+                        let index = own_index(i.e, arr, own);
                         p.emit(Instr::SetVarElement {
                             var: id,
                             index,
@@ -801,7 +829,6 @@ impl<'a> Elab<'a> {
         Ok(())
     }
 
-    /// A signal assignment instruction (`None` for `unaffected`).
     /// A signal assignment: one `Assign` for a signal target, one per element for an
     /// aggregate of signals (`(c_out, s) <= v;`: each takes its element of the value, which is
     /// evaluated once per target; nothing between them can change it). None for a `null`
@@ -835,6 +862,7 @@ impl<'a> Elab<'a> {
             },
         };
         let aggregate = matches!(target.kind, ast::ExprKind::Aggregate(_));
+        let types: Vec<Ty> = sigs.iter().map(|s| s.1.clone()).collect();
         // Each waveform element's value (the whole array for an aggregate target) and delay.
         let mut wave = Vec::new();
         for el in elems {
@@ -847,7 +875,6 @@ impl<'a> Elab<'a> {
             };
             let v = if aggregate {
                 let v = self.expr(sc, v, None)?;
-                let types: Vec<Ty> = sigs.iter().map(|s| s.1.clone()).collect();
                 self.split_array(v, &types, el.span)?
             } else {
                 vec![self.expr_of(sc, v, &sigs[0].1)?.e]
@@ -943,9 +970,10 @@ impl<'a> Elab<'a> {
                 ty: Ty::Array(arr),
             }) = self.lookup(sc, prefix)?.first()
         {
-            let (id, element) = (*id, arr.element.clone());
+            let (id, arr) = (*id, arr.clone());
             let i = self.expr_of(sc, i, &Ty::Integer)?;
-            return Ok((id, element, Some(i.e)));
+            let own = self.design.signals.get(id.index()).map(|s| &s.ty);
+            return Ok((id, arr.element.clone(), Some(own_index(i.e, &arr, own))));
         }
         let items = self.lookup(sc, target)?;
         match &items[0] {
@@ -970,12 +998,8 @@ impl<'a> Elab<'a> {
                 help: Some("qualify the value with a constrained array subtype".into()),
             }));
         };
-        let len = if asc {
-            right - left + 1
-        } else {
-            left - right + 1
-        };
-        if len != n as i64 {
+        let len = super::types::bounds_len(left, right, asc);
+        if len != n {
             return Err(self.error(ElabError::invalid(
                 span,
                 format!("the value has {len} element(s) for {n} target(s)"),

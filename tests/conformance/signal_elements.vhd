@@ -4,7 +4,8 @@
 -- its own driver, so a generate's processes may each drive one element of an unresolved
 -- bit_vector, a loop may assign elements by a computed index, pending transactions on one
 -- element survive assignments to another, and two drivers of one std_logic element are
--- resolved element by element.
+-- resolved element by element. An alias with other bounds writes the element at the same
+-- position.
 
 LIBRARY ieee;  USE ieee.std_logic_1164.ALL;
 
@@ -16,6 +17,8 @@ ARCHITECTURE test OF tb_signal_elements IS
   SIGNAL ready : bit_vector(0 TO 3);
   SIGNAL data_bus : std_logic_vector(1 DOWNTO 0) := "ZZ";
   SIGNAL counts : integer_vector(0 TO 2) := (OTHERS => 0);
+  SIGNAL flags : bit_vector(3 DOWNTO 0);
+  ALIAS flag_list : bit_vector(1 TO 4) IS flags;
 BEGIN
   stages : FOR k IN 0 TO 3 GENERATE
     ready(k) <= '1' AFTER (k + 1) * 1 ns;
@@ -44,11 +47,13 @@ BEGIN
       END IF;
     END LOOP;
     counts(1) <= 5;
+    flag_list(1) <= '1';
     WAIT FOR 5 ns;
     ASSERT dout = "01010101" REPORT "element assignments" SEVERITY failure;
     ASSERT ready = "1111" REPORT "generated element drivers" SEVERITY failure;
     ASSERT data_bus(0) = 'X' AND data_bus(1) = 'H' REPORT "resolution" SEVERITY failure;
     ASSERT counts(1) = 5 AND counts(0) = 0 REPORT "integer element" SEVERITY failure;
+    ASSERT flags = "1000" REPORT "element written through an alias" SEVERITY failure;
     dout(3) <= '1' AFTER 10 ns;
     dout(5) <= '1' AFTER 20 ns;
     WAIT FOR 15 ns;
