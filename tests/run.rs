@@ -10,6 +10,15 @@ fn vams() -> Command {
     Command::cargo_bin("vams").expect("the vams binary is built for integration tests")
 }
 
+/// Writes `text` as the file `name` in a fresh temporary directory (kept alive by the
+/// returned handle, which also holds any outputs a test writes beside it).
+fn model_file(name: &str, text: &str) -> (tempfile::TempDir, std::path::PathBuf) {
+    let dir = tempfile::tempdir().expect("temporary directory");
+    let path = dir.path().join(name);
+    std::fs::write(&path, text).expect("written");
+    (dir, path)
+}
+
 #[test]
 fn a_bad_time_is_a_usage_error_naming_the_accepted_forms() {
     for bad in ["6 parsecs", "-1s", "0", "soon"] {
@@ -361,15 +370,12 @@ fn a_configuration_declaration_is_a_top() {
 /// `T'val` outside the type is a run-time error, not a value past the last literal.
 #[test]
 fn val_outside_an_enumeration_is_a_run_time_error() {
-    let dir = tempfile::tempdir().expect("temporary directory");
-    let model = dir.path().join("val.vhd");
-    std::fs::write(
-        &model,
+    let (_dir, model) = model_file(
+        "val.vhd",
         "entity tb_val is end;\narchitecture t of tb_val is\n  type state is (idle, run, stop);\nbegin\n  \
          p : process\n    variable k : integer := 7;\n    variable st : state;\n  begin\n    \
          st := state'val(k);\n    wait;\n  end process;\nend;\n",
-    )
-    .expect("written");
+    );
     vams()
         .arg("run")
         .arg(&model)
@@ -384,14 +390,11 @@ fn val_outside_an_enumeration_is_a_run_time_error() {
 /// (t = 0.5), as with `--stop 1s`, instead of jumping to t = 3.6e15 s.
 #[test]
 fn a_far_stop_time_does_not_scale_the_first_step() {
-    let dir = tempfile::tempdir().expect("temporary directory");
-    let model = dir.path().join("sing.vhd");
-    std::fs::write(
-        &model,
+    let (dir, model) = model_file(
+        "sing.vhd",
         "entity sing is end;\narchitecture a of sing is\n  quantity x : real;\nbegin\n  \
          break x => 1.0;\n  x'dot == -1.0 / x;\nend;\n",
-    )
-    .expect("written");
+    );
     let out = dir.path().join("x.csv");
     let run = vams()
         .arg("run")
@@ -435,13 +438,10 @@ fn integers_outside_their_range_stop_the_run() {
             "variable `n` assigned -1, outside its range 0 to 2147483647",
         ));
     // An initial value outside the range is found before the run.
-    let dir = tempfile::tempdir().unwrap();
-    let file = dir.path().join("init.vhd");
-    std::fs::write(
-        &file,
+    let (_dir, file) = model_file(
+        "init.vhd",
         "entity t is end;\narchitecture a of t is\n  signal s : integer range 0 to 3 := 5;\nbegin\nend;\n",
-    )
-    .unwrap();
+    );
     vams()
         .arg("check")
         .arg(&file)
@@ -513,14 +513,11 @@ fn math_real_outside_its_domain_and_real_division_by_zero_are_errors() {
 
 #[test]
 fn an_array_too_large_to_hold_is_a_diagnostic_not_an_abort() {
-    let dir = tempfile::tempdir().unwrap();
-    let file = dir.path().join("huge.vhd");
-    std::fs::write(
-        &file,
+    let (_dir, file) = model_file(
+        "huge.vhd",
         "entity huge is end;\narchitecture a of huge is\n  \
          signal s : bit_vector(0 to 2000000000);\nbegin\nend;\n",
-    )
-    .unwrap();
+    );
     vams()
         .arg("check")
         .arg(&file)
@@ -603,15 +600,12 @@ fn an_unwritable_output_fails_before_the_run() {
 /// error names the element and the processes.
 #[test]
 fn two_drivers_of_one_unresolved_element_are_an_error_naming_it() {
-    let dir = tempfile::tempdir().unwrap();
-    let file = dir.path().join("md.vhd");
-    std::fs::write(
-        &file,
+    let (_dir, file) = model_file(
+        "md.vhd",
         "entity md is end entity md;\narchitecture a of md is\n  signal v : bit_vector(3 downto 0);\n\
          begin\n  p1 : process begin v(1) <= '1'; v(3) <= '1'; wait; end process;\n\
          p2 : process begin v(1) <= '0'; v(2) <= '1'; wait; end process;\nend architecture a;\n",
-    )
-    .unwrap();
+    );
     vams()
         .args(["run"])
         .arg(&file)

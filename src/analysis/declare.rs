@@ -391,6 +391,8 @@ impl Analyzer<'_> {
             DeclKind::EnumLiteral(t) => params.is_empty() && result == Some(*t),
             _ => false,
         };
+        // `resolve_name` referred the target to its declaration when it had only one.
+        let overloaded = cands.len() > 1;
         let chosen: Vec<DeclId> = cands
             .into_iter()
             .filter(|&d| fits(&self.out.decl(d).kind))
@@ -401,7 +403,7 @@ impl Analyzer<'_> {
         };
         match chosen.as_slice() {
             [d] => {
-                if let Some(id) = target_id {
+                if let Some(id) = target_id.filter(|_| overloaded) {
                     self.reference(id.span, *d);
                 }
                 let kind = self.out.decl(*d).kind.clone();

@@ -496,11 +496,8 @@ impl<'a> Elab<'a> {
             return Ok(());
         };
         let (expected, found) = (ty.to_string(), alias.to_string());
-        let len = |b: Option<(i64, i64, bool)>| {
-            b.map(|(l, r, asc)| if asc { r - l + 1 } else { l - r + 1 }.max(0))
-        };
         if !new.element.same(&old.element)
-            || matches!((len(new.bounds), len(old.bounds)), (Some(a), Some(b)) if a != b)
+            || matches!((new.len(), old.len()), (Some(a), Some(b)) if a != b)
         {
             return Err(self.error(ElabError::TypeMismatch {
                 span,

@@ -9,7 +9,7 @@ use crate::source::Span;
 use super::call::{MAX_CALL_DEPTH, frame, too_deep};
 use super::error::SimError;
 use super::eval::{Env, EvalError, eval, integer, offset, truth};
-use super::signals::{Delay, Signals};
+use super::signals::{Delay, Signals, elements};
 use super::{Report, Severity};
 
 /// Instructions one activation may execute before it counts as a loop without a wait.
@@ -284,9 +284,9 @@ pub(crate) fn run(
                     // A whole assignment to a signal driven element by element: each element
                     // of each value goes to that element's driver.
                     (None, Some(n)) => {
-                        let whole = std::mem::take(cx.waveform);
+                        let whole = &*cx.waveform;
                         let split: Vec<Vec<Value>> =
-                            whole.iter().map(|(v, _)| element_values(v)).collect();
+                            whole.iter().map(|(v, _)| elements(v)).collect();
                         for k in 0..n {
                             let d = cx
                                 .signals
@@ -307,7 +307,6 @@ pub(crate) fn run(
                             }
                             cx.signals.assign(d, &mut wave, delay);
                         }
-                        *cx.waveform = whole;
                     }
                     (Some(_), None) => return Err(no_driver()),
                 }
@@ -479,14 +478,5 @@ fn seconds(v: &Value) -> Result<f64, EvalError> {
             "a delay is not a time",
             "delays and timeouts must be of type time",
         )),
-    }
-}
-
-/// The elements of an array value, a string's characters as enumeration positions.
-fn element_values(v: &Value) -> Vec<Value> {
-    match v {
-        Value::Array(items) => items.clone(),
-        Value::String(s) => s.chars().map(|c| Value::Enum(c as u32)).collect(),
-        other => vec![other.clone()],
     }
 }

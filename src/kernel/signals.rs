@@ -62,8 +62,6 @@ pub(crate) struct Signals {
     index: HashMap<(usize, SignalId, Option<usize>), usize>,
     /// Signals driven element by element, with their number of elements.
     split: Vec<Option<usize>>,
-    /// A character array signal (its value is a `Value::String`).
-    string: Vec<bool>,
     /// Signals resolved with the std_logic table.
     resolved: Vec<bool>,
     /// `'above` values to apply in the next update phase.
@@ -78,8 +76,9 @@ pub(crate) struct Signals {
 /// What an assignment drives: the longest static prefix of its target (LRM 6.1, 12.6.1).
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Driven {
-    /// The whole signal, or an element whose index is known only at run time.
+    /// The whole signal.
     Whole,
+    /// An element whose index is known only at run time: every element.
     Dynamic,
     /// The element of this static index.
     Static(i64),
@@ -151,7 +150,6 @@ impl Signals {
         for (p, targets) in assigned.iter().enumerate() {
             for &(target, driven) in targets {
                 let signal = &design.signals[target.index()];
-                let init = &signal.init;
                 let slots: Vec<Option<usize>> = match (split[target.index()], driven) {
                     (None, _) => vec![None],
                     // A static index drives its element only (processes of a generate may
@@ -162,13 +160,14 @@ impl Signals {
                     },
                     (Some(n), _) => (0..n).map(Some).collect(),
                 };
+                let initial = match split[target.index()] {
+                    Some(_) => elements(&signal.init),
+                    None => vec![signal.init.clone()],
+                };
                 for element in slots {
                     index.entry((p, target, element)).or_insert_with(|| {
                         by_signal[target.index()].push(drivers.len());
-                        let current = match element {
-                            Some(k) => elements(init)[k].clone(),
-                            None => init.clone(),
-                        };
+                        let current = initial[element.unwrap_or(0)].clone();
                         drivers.push(Driver {
                             signal: target,
                             element,
@@ -229,11 +228,6 @@ impl Signals {
                 span: signal.span,
             });
         }
-        let string = design
-            .signals
-            .iter()
-            .map(|s| matches!(s.init, Value::String(_)))
-            .collect();
         let n = states.len();
         Ok(Signals {
             states,
@@ -241,7 +235,6 @@ impl Signals {
             by_signal,
             index,
             split,
-            string,
             resolved,
             forced: Vec::new(),
             events: Vec::new(),
@@ -381,16 +374,17 @@ impl Signals {
                     columns[k].push(&driver.current);
                 }
             }
+            let value = &self.states[s].value;
             let values = columns
                 .iter()
-                .zip(elements(&self.states[s].value))
+                .zip(elements(value))
                 .map(|(column, old)| match column.as_slice() {
                     [] => old,
                     [one] => (*one).clone(),
                     many => resolve(many),
                 })
                 .collect();
-            return crate::design::aggregate_value(values, self.string[s]);
+            return crate::design::aggregate_value(values, matches!(value, Value::String(_)));
         }
         if ds.len() == 1 || !self.resolved[s] {
             return self.drivers[ds[0]].current.clone();
@@ -411,7 +405,7 @@ impl Signals {
 
 /// The elements of an array value (a string's characters as enumeration positions); a
 /// scalar is its own one element.
-fn elements(v: &Value) -> Vec<Value> {
+pub(super) fn elements(v: &Value) -> Vec<Value> {
     match v {
         Value::Array(items) => items.clone(),
         Value::String(s) => s.chars().map(|c| Value::Enum(c as u32)).collect(),
