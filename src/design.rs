@@ -240,6 +240,16 @@ pub enum SignalKind {
     /// A signal of a process that elaboration generates (the state of `S'ramp`, `S'slew`,
     /// `Q'zoh`, `Q'ztf`): driven like a declared one, but not a probe of its own.
     Implicit,
+    /// A name for elements of another signal, `parent`, starting at position `first` (from
+    /// the left): one element (`len: None`, a port associated with `bus(3)`) or a slice of
+    /// `len` elements (`bus(7 downto 4)`). It has no drivers of its own: assigning it drives
+    /// those elements of `parent`, and the kernel derives its value, events and attributes
+    /// from theirs. `parent` is never itself a view (views of views are composed).
+    View {
+        parent: SignalId,
+        first: usize,
+        len: Option<usize>,
+    },
 }
 
 /// A process (explicit, or the equivalent process of a concurrent statement: signal
@@ -254,6 +264,10 @@ pub struct Process {
     /// elaboration generates).
     pub spans: Vec<Span>,
     pub span: Span,
+    /// Initial driving values other than the signal's initial value: the defaults of the
+    /// `out` and `inout` ports through which the process drives these signals (LRM 12.6.1:
+    /// a driver starts at the default value of the port it drives, whatever the actual).
+    pub driver_inits: Vec<(SignalId, Value)>,
 }
 
 #[derive(Clone, Debug)]
@@ -364,6 +378,28 @@ pub fn scalar_attribute(f: Builtin, args: &[Value]) -> Result<Value, String> {
 }
 
 impl Value {
+    /// The elements of an array value (a string's characters as enumeration positions); a
+    /// scalar is its own one element.
+    pub fn elements(&self) -> Vec<Value> {
+        match self {
+            Value::Array(items) => items.clone(),
+            Value::String(s) => s.chars().map(|c| Value::Enum(c as u32)).collect(),
+            other => vec![other.clone()],
+        }
+    }
+
+    /// What a view of `len` elements (one element: `None`) from position `first` shows of
+    /// this array value ([`SignalKind::View`]); `None` when they are not all inside it.
+    pub fn view(&self, first: usize, len: Option<usize>) -> Option<Value> {
+        let elements = self.elements();
+        match len {
+            None => elements.get(first).cloned(),
+            Some(n) => elements
+                .get(first..first + n)
+                .map(|e| aggregate_value(e.to_vec(), matches!(self, Value::String(_)))),
+        }
+    }
+
     /// The value as a number for the analog side and for waveforms: booleans and enums as
     /// 0/1 (their position), time in seconds; `None` for strings and arrays.
     pub fn as_f64(&self) -> Option<f64> {

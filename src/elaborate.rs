@@ -20,7 +20,7 @@ use std::rc::Rc;
 
 use crate::analysis::{Analysis, analyse};
 use crate::ast::{ContextItem, DesignFile, ExprKind};
-use crate::design::{Design, Expr, QuantityId, SignalId};
+use crate::design::{Design, Expr, QuantityId, SignalId, Value};
 use crate::source::{FileId, SourceMap, Span};
 
 mod analog;
@@ -48,6 +48,7 @@ mod synth;
 #[cfg(test)]
 mod tests;
 mod types;
+mod views;
 
 pub use candidates::TopCandidate;
 pub use error::ElabError;
@@ -170,6 +171,14 @@ struct Elab<'a> {
     natures: Vec<NatureInfo>,
     /// Implicit `Q'above(level)` signals, one per distinct pair.
     above: Vec<(QuantityId, Expr, SignalId)>,
+    /// Views of signal elements and slices ([`SignalKind::View`]), one per distinct
+    /// `(parent, first, len)`.
+    views: FxHashMap<(SignalId, usize, Option<usize>), SignalId>,
+    /// The defaults of `out` and `inout` ports associated with an actual signal, with the
+    /// instance path they apply in: the initial driving value of the processes under it
+    /// that drive the signal. Only the entries of the instances enclosing the current one
+    /// are kept.
+    port_defaults: Vec<(String, SignalId, Value)>,
     /// Auxiliary quantities of `Q'dot'dot` and `Q'integ`, by the quantity they derive from.
     dot_aux: FxHashMap<QuantityId, QuantityId>,
     integ_aux: FxHashMap<QuantityId, QuantityId>,
@@ -245,6 +254,8 @@ impl<'a> Elab<'a> {
             packages_in_progress: FxHashSet::default(),
             natures: Vec::new(),
             above: Vec::new(),
+            views: FxHashMap::default(),
+            port_defaults: Vec::new(),
             dot_aux: FxHashMap::default(),
             integ_aux: FxHashMap::default(),
             path: String::new(),

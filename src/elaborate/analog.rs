@@ -478,6 +478,7 @@ impl<'a> Elab<'a> {
                 Instr::Halt,
             ],
             span,
+            driver_inits: Vec::new(),
         });
         self.integ_aux.insert(q, aux);
         aux

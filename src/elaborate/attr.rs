@@ -127,7 +127,7 @@ impl<'a> Elab<'a> {
                 Ok(Typed { e, ty: Ty::Real })
             }
             "event" | "active" | "last_value" | "last_event" => {
-                let p = self.expr(sc, prefix, None)?;
+                let p = self.signal_expr(sc, prefix)?;
                 let Expr::Signal(s) = p.e else {
                     return Err(self.wrong_class(prefix, &p, "a signal", name));
                 };

@@ -134,12 +134,8 @@ impl<'a> Elab<'a> {
     /// vams does not support, which is said here).
     pub(super) fn lookup(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<Vec<Item<'a>>> {
         let (ExprKind::Name(id) | ExprKind::Selected(_, id)) = &e.kind else {
-            if let ExprKind::Apply(..) = e.kind {
-                return Err(self.error(ElabError::unsupported(
-                    e.span,
-                    "an element or a slice where a whole object is named",
-                    "vams associates, aliases and drives whole signals here: name the whole object",
-                )));
+            if let ExprKind::Apply(prefix, args) = &e.kind {
+                return Ok(vec![self.element_item(sc, e, prefix, args)?]);
             }
             return Err(self.error(ElabError::invalid(e.span, "expected a name", None)));
         };

@@ -113,6 +113,7 @@ impl<'a> Elab<'a> {
             vars,
             code,
             span,
+            driver_inits: Vec::new(),
         });
         Ok(value)
     }

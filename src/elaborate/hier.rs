@@ -544,10 +544,20 @@ impl<'a> Elab<'a> {
                                         )),
                                     }));
                                 }
-                                Item::Signal {
-                                    id: *id,
-                                    ty: sub.ty.clone(),
+                                // An unconstrained port takes its bounds from the actual.
+                                let ty = match &sub.ty {
+                                    Ty::Array(a) if a.bounds.is_none() => ty.clone(),
+                                    _ => sub.ty.clone(),
+                                };
+                                if let (
+                                    Some(d),
+                                    Some(ast::Mode::Out | ast::Mode::Inout | ast::Mode::Buffer),
+                                ) = (&decl.default, decl.mode)
+                                {
+                                    let v = self.static_value(sc, d, &ty, "a port's default")?;
+                                    self.port_defaults.push((self.path.clone(), *id, v));
                                 }
+                                Item::Signal { id: *id, ty }
                             }
                             other => {
                                 return Err(port_class_error(self, e, other.class(), "signal"));

@@ -177,12 +177,22 @@ impl<'a> Elab<'a> {
         vars.shrink_to_fit();
         code.shrink_to_fit();
         spans.shrink_to_fit();
+        // Innermost port first: a port's default applies to the processes inside it.
+        let path = self.path.as_str();
+        self.port_defaults.retain(|(p, ..)| encloses(p, path));
+        let mut driver_inits: Vec<(SignalId, Value)> = Vec::new();
+        for (_, s, v) in self.port_defaults.iter().rev() {
+            if !driver_inits.iter().any(|(d, _)| d == s) {
+                driver_inits.push((*s, v.clone()));
+            }
+        }
         self.design.processes.push(Process {
             name,
             vars,
             code,
             spans,
             span,
+            driver_inits,
         });
     }
 
@@ -212,6 +222,8 @@ impl<'a> Elab<'a> {
         let mut p = Proc::default();
         sc.push();
         let ok = self.process_decls(sc, &mut p, decls).is_ok();
+        // The body loops back past the initial values the declarations assign.
+        let body = p.here();
         let mut on = Vec::new();
         if let Some(Sensitivity::List(names)) = sensitivity {
             for n in names {
@@ -241,7 +253,7 @@ impl<'a> Elab<'a> {
                 timeout: None,
             });
         }
-        p.emit(Instr::Jump(0));
+        p.emit(Instr::Jump(body));
         if ok {
             self.push_process(stmt.label.as_ref(), stmt.span, p);
         }
@@ -264,21 +276,23 @@ impl<'a> Elab<'a> {
             {
                 let r = (|| {
                     let sub = self.subtype_indication(sc, subtype)?;
-                    // In a subprogram an initial value may depend on the parameters: it is
-                    // assigned when the call starts.
+                    // An initial value that is not static (a subprogram's parameter, a
+                    // signal or quantity a process snapshots) is assigned when the call or
+                    // the process starts (LRM 12.3.1.4).
                     let (init, dynamic) = match value {
-                        Some(v) if p.subprogram.is_some() => {
-                            match self.expr_of(sc, v, &sub.ty)?.e {
-                                Expr::Const(c) => (c, None),
-                                e => (sub.ty.default_value(), Some(e)),
+                        Some(v) => match self.expr_of(sc, v, &sub.ty)?.e {
+                            Expr::Const(c) => {
+                                self.check_initial(&sub, &c, v.span)?;
+                                (c, None)
                             }
-                        }
-                        Some(v) => {
-                            let init =
-                                self.static_value(sc, v, &sub.ty, "a variable's initial value")?;
-                            self.check_initial(&sub, &init, v.span)?;
-                            (init, None)
-                        }
+                            e if let Some(c) =
+                                super::inline::static_call_value(&self.design, &e) =>
+                            {
+                                self.check_initial(&sub, &c, v.span)?;
+                                (c, None)
+                            }
+                            e => (super::decls::default_value(&sub), Some(e)),
+                        },
                         None => (super::decls::default_value(&sub), None),
                     };
                     let ty = super::decls::fit_array(&sub.ty, &init);
@@ -375,7 +389,7 @@ impl<'a> Elab<'a> {
     }
 
     fn signal_name(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<SignalId> {
-        let t = self.expr(sc, e, None)?;
+        let t = self.signal_expr(sc, e)?;
         match t.e {
             Expr::Signal(s) => Ok(s),
             _ => Err(self.error(ElabError::WrongClass {

@@ -145,6 +145,7 @@ impl<'a> Elab<'a> {
             vars,
             code,
             span,
+            driver_inits: Vec::new(),
         });
     }
 }

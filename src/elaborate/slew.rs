@@ -94,6 +94,7 @@ impl<'a> Elab<'a> {
             ],
             code: mode_code([m, y0, t0], y, up, down),
             span,
+            driver_inits: Vec::new(),
         });
         Ok(Expr::Quantity(y))
     }

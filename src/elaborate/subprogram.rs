@@ -245,7 +245,16 @@ impl<'a> Elab<'a> {
         actual: Option<&ast::Expr>,
         span: Span,
     ) -> R<SignalId> {
-        let t = self.argument(sc, p, actual, span)?;
+        let t = match actual {
+            // An element or slice of a signal: its view (type checked by analysis).
+            Some(
+                e @ ast::Expr {
+                    kind: ast::ExprKind::Apply(..),
+                    ..
+                },
+            ) => self.signal_expr(sc, e)?,
+            _ => self.argument(sc, p, actual, span)?,
+        };
         match t.e {
             Expr::Signal(s) => Ok(s),
             _ => Err(self.error(ElabError::invalid(

@@ -9,7 +9,7 @@ use crate::source::Span;
 use super::call::{MAX_CALL_DEPTH, frame, too_deep};
 use super::error::SimError;
 use super::eval::{Env, EvalError, eval, integer, offset, truth};
-use super::signals::{Delay, Signals, elements};
+use super::signals::{Delay, Signals};
 use super::{Report, Severity};
 
 /// Instructions one activation may execute before it counts as a loop without a wait.
@@ -286,7 +286,7 @@ pub(crate) fn run(
                     (None, Some(n)) => {
                         let whole = &*cx.waveform;
                         let split: Vec<Vec<Value>> =
-                            whole.iter().map(|(v, _)| elements(v)).collect();
+                            whole.iter().map(|(v, _)| v.elements()).collect();
                         for k in 0..n {
                             let d = cx
                                 .signals

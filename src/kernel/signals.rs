@@ -10,7 +10,7 @@
 
 use std::collections::{HashMap, HashSet, VecDeque};
 
-use crate::design::{Design, Expr, Instr, SignalId, Type, Value};
+use crate::design::{Design, Expr, Instr, SignalId, SignalKind, Type, Value};
 
 use super::error::SimError;
 
@@ -64,6 +64,11 @@ pub(crate) struct Signals {
     split: Vec<Option<usize>>,
     /// Signals resolved with the std_logic table.
     resolved: Vec<bool>,
+    /// What each view signal shows of its parent: `(parent, first, len)`
+    /// ([`SignalKind::View`]); `None` for other signals.
+    view_of: Vec<Option<(SignalId, usize, Option<usize>)>>,
+    /// The view signals, in increasing order.
+    views: Vec<SignalId>,
     /// `'above` values to apply in the next update phase.
     forced: Vec<(SignalId, Value)>,
     /// Signals with an event in the last update phase.
@@ -82,6 +87,21 @@ enum Driven {
     Dynamic,
     /// The element of this static index.
     Static(i64),
+    /// The element at this position from the left (through a view).
+    Position(usize),
+}
+
+/// The parent elements (positions from the left) that an assignment of `driven` to the view
+/// `(first, len)` of type `ty` drives: `None` when the index is not known statically.
+fn view_slots(ty: &Type, first: usize, len: Option<usize>, driven: Driven) -> Vec<usize> {
+    match (len, driven) {
+        (None, _) => vec![first],
+        (Some(n), Driven::Static(i)) => match super::eval::offset(ty, i, n) {
+            Ok(k) => vec![first + k],
+            Err(_) => (first..first + n).collect(),
+        },
+        (Some(n), _) => (first..first + n).collect(),
+    }
 }
 
 /// The signals `code` assigns, directly or in the procedures it calls (a procedure drives
@@ -134,21 +154,61 @@ impl Signals {
         let mut drivers = Vec::new();
         let mut by_signal = vec![Vec::new(); design.signals.len()];
         let mut index = HashMap::new();
-        let assigned: Vec<Vec<(SignalId, Driven)>> = design
+        let view_of: Vec<Option<(SignalId, usize, Option<usize>)>> = design
+            .signals
+            .iter()
+            .map(|s| match s.kind {
+                SignalKind::View { parent, first, len } => Some((parent, first, len)),
+                _ => None,
+            })
+            .collect();
+        // An assignment to a view drives its elements of the parent (statically known ones).
+        // Each target comes with its driver's initial value: the default of the port the
+        // process drives it through, else the signal's own (an element's for a position).
+        let assigned: Vec<Vec<(SignalId, Driven, Value)>> = design
             .processes
             .iter()
-            .map(|p| assigned_signals(design, &p.code))
+            .map(|p| {
+                let mut out = Vec::new();
+                for (target, driven) in assigned_signals(design, &p.code) {
+                    let port_default = p
+                        .driver_inits
+                        .iter()
+                        .find(|(s, _)| *s == target)
+                        .map(|(_, v)| v);
+                    let signal = &design.signals[target.index()];
+                    let init = port_default.unwrap_or(&signal.init);
+                    match view_of[target.index()] {
+                        Some((parent, first, len)) => {
+                            let own = init.elements();
+                            let parent_init = design.signals[parent.index()].init.elements();
+                            for k in view_slots(&signal.ty, first, len, driven) {
+                                let v = match len {
+                                    None => init.clone(),
+                                    Some(_) => own.get(k - first).cloned().unwrap_or_else(|| {
+                                        parent_init.get(k).cloned().unwrap_or(Value::Integer(0))
+                                    }),
+                                };
+                                out.push((parent, Driven::Position(k), v));
+                            }
+                        }
+                        None => out.push((target, driven, init.clone())),
+                    }
+                }
+                out
+            })
             .collect();
         let mut split: Vec<Option<usize>> = vec![None; design.signals.len()];
-        for &(target, _) in assigned
+        for (target, ..) in assigned
             .iter()
             .flatten()
-            .filter(|(_, d)| *d != Driven::Whole)
+            .filter(|(_, d, _)| *d != Driven::Whole)
         {
-            split[target.index()] = Some(elements(&design.signals[target.index()].init).len());
+            split[target.index()] = Some(design.signals[target.index()].init.elements().len());
         }
         for (p, targets) in assigned.iter().enumerate() {
-            for &(target, driven) in targets {
+            for (target, driven, init) in targets {
+                let (target, driven) = (*target, *driven);
                 let signal = &design.signals[target.index()];
                 let slots: Vec<Option<usize>> = match (split[target.index()], driven) {
                     (None, _) => vec![None],
@@ -158,16 +218,22 @@ impl Signals {
                         Ok(k) => vec![Some(k)],
                         Err(_) => (0..n).map(Some).collect(),
                     },
+                    (Some(_), Driven::Position(k)) => vec![Some(k)],
                     (Some(n), _) => (0..n).map(Some).collect(),
                 };
-                let initial = match split[target.index()] {
-                    Some(_) => elements(&signal.init),
-                    None => vec![signal.init.clone()],
+                let initial = match (split[target.index()], driven) {
+                    (_, Driven::Position(_)) | (None, _) => None,
+                    (Some(_), _) => Some(init.elements()),
                 };
                 for element in slots {
                     index.entry((p, target, element)).or_insert_with(|| {
                         by_signal[target.index()].push(drivers.len());
-                        let current = initial[element.unwrap_or(0)].clone();
+                        let current = match (&initial, element) {
+                            (Some(elements), Some(k)) => {
+                                elements.get(k).cloned().unwrap_or_else(|| init.clone())
+                            }
+                            _ => init.clone(),
+                        };
                         drivers.push(Driver {
                             signal: target,
                             element,
@@ -229,18 +295,48 @@ impl Signals {
             });
         }
         let n = states.len();
-        Ok(Signals {
+        let mut signals = Signals {
             states,
             drivers,
             by_signal,
             index,
             split,
             resolved,
+            views: (0..view_of.len())
+                .filter(|&s| view_of[s].is_some())
+                .map(|s| SignalId(s as u32))
+                .collect(),
+            view_of,
             forced: Vec::new(),
             events: Vec::new(),
             changed: vec![false; n],
             changed_list: Vec::new(),
-        })
+        };
+        signals.initialize();
+        Ok(signals)
+    }
+
+    /// The initial effective values (LRM 12.6.4): each driven signal's from its drivers'
+    /// initial values (which a port's default may set), then each view's from its parent.
+    fn initialize(&mut self) {
+        for s in 0..self.states.len() {
+            if self.by_signal[s].is_empty() {
+                continue;
+            }
+            let value = self.effective(s);
+            let st = &mut self.states[s];
+            st.last_value = value.clone();
+            st.value = value;
+        }
+        for &v in &self.views {
+            if let Some((parent, first, len)) = self.view_of[v.index()]
+                && let Some(value) = self.states[parent.index()].value.view(first, len)
+            {
+                let st = &mut self.states[v.index()];
+                st.last_value = value.clone();
+                st.value = value;
+            }
+        }
     }
 
     /// The driver of `signal` in process `process` (every assignment has one), or of its
@@ -251,13 +347,22 @@ impl Signals {
         signal: SignalId,
         element: Option<usize>,
     ) -> Option<usize> {
-        self.index.get(&(process, signal, element)).copied()
+        let key = match (self.view_of[signal.index()], element) {
+            (Some((parent, first, None)), _) => (process, parent, Some(first)),
+            (Some((parent, first, Some(_))), Some(k)) => (process, parent, Some(first + k)),
+            _ => (process, signal, element),
+        };
+        self.index.get(&key).copied()
     }
 
     /// The number of elements of a signal driven element by element; `None` for a signal
     /// driven whole.
     pub fn split(&self, signal: SignalId) -> Option<usize> {
-        self.split[signal.index()]
+        match self.view_of[signal.index()] {
+            // A slice view is driven element by element; an element view as a whole.
+            Some((_, _, len)) => len,
+            None => self.split[signal.index()],
+        }
     }
 
     /// Schedules `value` on signal `s` in the next update phase (an `'above` crossing).
@@ -348,6 +453,22 @@ impl Signals {
         }
         self.forced = forced;
         self.forced.clear();
+        // Views follow their parents (never views themselves) after these are updated.
+        for i in 0..self.views.len() {
+            let v = self.views[i];
+            let Some((parent, first, len)) = self.view_of[v.index()] else {
+                continue;
+            };
+            let p = &self.states[parent.index()];
+            if !p.active {
+                continue;
+            }
+            // Elaboration placed the view within its parent's bounds.
+            if let Some(value) = p.value.view(first, len) {
+                self.states[v.index()].active = true;
+                self.set(v, value, now);
+            }
+        }
     }
 
     fn set(&mut self, s: SignalId, value: Value, now: f64) {
@@ -377,7 +498,7 @@ impl Signals {
             let value = &self.states[s].value;
             let values = columns
                 .iter()
-                .zip(elements(value))
+                .zip(value.elements())
                 .map(|(column, old)| match column.as_slice() {
                     [] => old,
                     [one] => (*one).clone(),
@@ -400,16 +521,6 @@ impl Signals {
             self.changed[s.index()] = false;
             out.push(s);
         }
-    }
-}
-
-/// The elements of an array value (a string's characters as enumeration positions); a
-/// scalar is its own one element.
-pub(super) fn elements(v: &Value) -> Vec<Value> {
-    match v {
-        Value::Array(items) => items.clone(),
-        Value::String(s) => s.chars().map(|c| Value::Enum(c as u32)).collect(),
-        other => vec![other.clone()],
     }
 }
 

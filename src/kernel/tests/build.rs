@@ -50,6 +50,7 @@ pub fn process(d: &mut Design, name: &str, vars: Vec<(&str, Type, Value)>, code:
             .collect(),
         code,
         span: Span::default(),
+        driver_inits: Vec::new(),
     });
 }
 

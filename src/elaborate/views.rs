@@ -1,0 +1,199 @@
+//! An element or a slice of an object named where a whole object is expected: a port actual
+//! (`in1 => parity(1)`, `d => bus(7 downto 4)`), a signal alias, a signal parameter
+//! (`rising_edge(clocks(0))`), a sensitivity list, an attribute prefix (`bus(3)'event`). The
+//! index or range must be static (LRM 1.1.1.2: a port actual is a globally static name).
+//!
+//! An element of a terminal or quantity array is that element's scalar object. An element or
+//! slice of a signal becomes a view signal ([`SignalKind::View`]): a signal of its own for
+//! events, attributes and sensitivity, whose value the kernel derives from the parent's
+//! elements and whose assignments drive them. One view per distinct element or slice.
+
+use std::rc::Rc;
+
+use crate::ast::{self, Actual, ExprKind};
+use crate::design::{Expr, Signal, SignalId, SignalKind};
+use crate::source::Span;
+
+use super::error::ElabError;
+use super::expr::Typed;
+use super::scope::{Item, Scope};
+use super::types::{ArrayTy, Ty, bounds_len};
+use super::{Elab, R};
+
+impl<'a> Elab<'a> {
+    /// What `prefix(args)` denotes as an object: an element of a terminal or quantity array,
+    /// or a view of a signal's element or slice.
+    pub(super) fn element_item(
+        &mut self,
+        sc: &Scope<'a>,
+        e: &ast::Expr,
+        prefix: &ast::Expr,
+        args: &[ast::Assoc],
+    ) -> R<Item<'a>> {
+        let items = self.lookup(sc, prefix)?;
+        match &items[0] {
+            Item::TerminalArray { nature, .. } => {
+                let nature = *nature;
+                let (id, _) = self.indexed_terminal(sc, prefix, args, e.span)?;
+                Ok(Item::Terminal { id, nature })
+            }
+            Item::QuantityArray(elements) => {
+                let elements = elements.clone();
+                Ok(Item::Quantity(self.indexed_quantity(
+                    sc, &elements, args, e.span,
+                )?))
+            }
+            Item::Signal {
+                id,
+                ty: Ty::Array(a),
+            } if a.bounds.is_some() => {
+                let (id, a) = (*id, a.clone());
+                self.signal_view(sc, e, id, &a, args)
+            }
+            _ => Err(self.error(ElabError::unsupported(
+                e.span,
+                "an element or a slice where a whole object is named",
+                "vams associates, aliases and drives whole signals, and elements or slices of signal, quantity and terminal arrays, here",
+            ))),
+        }
+    }
+
+    /// `e` where a signal is expected (an attribute's prefix, a sensitivity list, a signal
+    /// parameter's actual): a view for a static element or slice of an array signal, else
+    /// `e` as an expression.
+    pub(super) fn signal_expr(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<Typed> {
+        if let ExprKind::Apply(prefix, args) = &e.kind
+            && let ExprKind::Name(id) | ExprKind::Selected(_, id) = &prefix.kind
+            && let Some(Item::Signal {
+                ty: Ty::Array(_), ..
+            }) = self.resolved_item(sc, id)
+            && let Item::Signal { id, ty } = self.element_item(sc, e, prefix, args)?
+        {
+            return Ok(Typed::new(Expr::Signal(id), ty));
+        }
+        self.expr(sc, e, None)
+    }
+
+    /// The view of `parent(args)`, `parent` an array signal of type `a`: an element for a
+    /// static index, a slice for a static range.
+    fn signal_view(
+        &mut self,
+        sc: &Scope<'a>,
+        e: &ast::Expr,
+        parent: SignalId,
+        a: &Rc<ArrayTy>,
+        args: &[ast::Assoc],
+    ) -> R<Item<'a>> {
+        // Guarded by the caller.
+        let (left, right, asc) = a.bounds.expect("a constrained array");
+        let position = |i: i64| -> Option<usize> {
+            let (lo, hi) = if asc { (left, right) } else { (right, left) };
+            (lo..=hi)
+                .contains(&i)
+                .then(|| (if asc { i - left } else { left - i }) as usize)
+        };
+        let range_text = || format!("{left} {} {right}", if asc { "to" } else { "downto" });
+        let name = self.sources.snippet(e.span).to_string();
+        let [arg] = args else {
+            return Err(self.error(ElabError::unsupported(
+                e.span,
+                "multi-dimensional indexing",
+                "index one element: `s(k)`",
+            )));
+        };
+        let index = self.sources.snippet(arg.span).to_string();
+        let (first, len, ty, span) = match &arg.actual {
+            Actual::Expr(ie) => {
+                let what = format!("the index of `{name}` (it names a signal element here)");
+                let i = self.static_int(sc, ie, &what)?;
+                let Some(k) = position(i) else {
+                    return Err(self.error(ElabError::IndexRange {
+                        span: ie.span,
+                        name: name.clone(),
+                        index: i,
+                        range: range_text(),
+                    }));
+                };
+                (k, None, a.element.clone(), ie.span)
+            }
+            Actual::Range(r) => {
+                let (l, rr, dir) = self.range_bounds(sc, r)?;
+                let n = bounds_len(l, rr, dir);
+                let (Some(k), Some(_)) = (position(l), position(rr)) else {
+                    return Err(self.error(ElabError::invalid(
+                        arg.span,
+                        format!(
+                            "the slice is outside the bounds {} of `{}`",
+                            range_text(),
+                            name
+                        ),
+                        None,
+                    )));
+                };
+                if dir != asc || n == 0 {
+                    return Err(self.error(ElabError::invalid(
+                        arg.span,
+                        format!("this slice of `{name}` is null or runs against its direction"),
+                        Some(format!(
+                            "the signal's index runs `{}`: slice it the same way",
+                            if asc { "to" } else { "downto" }
+                        )),
+                    )));
+                }
+                let slice = ArrayTy {
+                    name: a.name.clone(),
+                    element: a.element.clone(),
+                    bounds: Some((l, rr, dir)),
+                    index_low: a.index_low,
+                };
+                (k, Some(n), Ty::Array(Rc::new(slice)), arg.span)
+            }
+            Actual::Open(s) => {
+                return Err(self.error(ElabError::invalid(*s, "expected an index", None)));
+            }
+        };
+        Ok(Item::Signal {
+            id: self.view(parent, (first, len), &ty, &index, span),
+            ty,
+        })
+    }
+
+    /// The view signal of `len` elements (one element: `None`) of `parent` from position
+    /// `first`, of type `ty`, named `parent(index)`; a view of a view is a view of the
+    /// latter's parent.
+    fn view(
+        &mut self,
+        parent: SignalId,
+        (first, len): (usize, Option<usize>),
+        ty: &Ty,
+        index: &str,
+        span: Span,
+    ) -> SignalId {
+        let (parent, first) = match self.design.signals[parent.index()].kind {
+            SignalKind::View {
+                parent: root,
+                first: offset,
+                ..
+            } => (root, offset + first),
+            _ => (parent, first),
+        };
+        if let Some(&id) = self.views.get(&(parent, first, len)) {
+            return id;
+        }
+        let p = &self.design.signals[parent.index()];
+        // The caller checked the position against the parent's bounds.
+        let init = p.init.view(first, len).unwrap_or_else(|| p.init.clone());
+        let name = format!("{}({index})", p.name);
+        let id = SignalId(self.design.signals.len() as u32);
+        self.design.signals.push(Signal {
+            name,
+            ty: ty.to_design(),
+            init,
+            kind: SignalKind::View { parent, first, len },
+            span,
+            range: None,
+        });
+        self.views.insert((parent, first, len), id);
+        id
+    }
+}
