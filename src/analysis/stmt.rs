@@ -395,6 +395,10 @@ impl Analyzer<'_> {
     /// A component or entity instance: formals are looked up in its interface, actuals
     /// checked against their formal's type.
     fn instance(&mut self, unit: &InstantiatedUnit, generics: &[Assoc], ports: &[Assoc]) {
+        // An entity declared in several files (a folder of variants) is not one interface to
+        // check the formals against, but the variant the name resolved to still gives the
+        // actuals their types.
+        let mut variants = false;
         let (region, name): (Option<RegionId>, String) = match unit {
             InstantiatedUnit::Component(n) | InstantiatedUnit::Entity { name: n, .. } => {
                 let found = self.resolve_name(n);
@@ -405,9 +409,10 @@ impl Analyzer<'_> {
                 let region = match found.as_deref() {
                     Some([d]) => match self.out.decl(*d).kind {
                         DeclKind::Component(r) => Some(r),
-                        // An entity declared in several files (a folder of variants) is not
-                        // one interface to check against.
-                        DeclKind::Entity(r) if !self.declared_twice(d) => Some(r),
+                        DeclKind::Entity(r) => {
+                            variants = self.declared_twice(d);
+                            Some(r)
+                        }
                         _ => None,
                     },
                     _ => None,
@@ -434,6 +439,7 @@ impl Analyzer<'_> {
                             }
                         }
                         Some(_) => None,
+                        None if variants => None,
                         None => {
                             self.error(AnalysisError::UnknownFormal {
                                 span: id.span,
