@@ -233,9 +233,19 @@ pub enum DeclKind {
         name: Ident,
         def: NatureDef,
     },
+    /// `subnature s is n [tolerance "a" across "t" through];` (the across tolerance group in
+    /// `nature.tolerance`).
     Subnature {
         name: Ident,
         nature: SubtypeIndication,
+        through_tolerance: Option<Expr>,
+    },
+    /// A group template (`template: None`) or a group declaration, whose template name
+    /// carries the constituents as arguments (`pair (a, b)`, LRM 4.6, 4.7). Groups only
+    /// carry user attributes: the simulator has no use for them.
+    Group {
+        name: Ident,
+        template: Option<Expr>,
     },
     Terminal {
         names: Vec<Ident>,
@@ -701,12 +711,61 @@ pub enum BinaryOp {
     Pow,
 }
 
+impl BinaryOp {
+    /// The operator an operator symbol names (`"+"` -> `Add`), case-insensitively.
+    pub fn from_symbol(symbol: &str) -> Option<BinaryOp> {
+        use BinaryOp::*;
+        Some(match symbol.to_ascii_lowercase().as_str() {
+            "and" => And,
+            "or" => Or,
+            "nand" => Nand,
+            "nor" => Nor,
+            "xor" => Xor,
+            "xnor" => Xnor,
+            "=" => Eq,
+            "/=" => Ne,
+            "<" => Lt,
+            "<=" => Le,
+            ">" => Gt,
+            ">=" => Ge,
+            "sll" => Sll,
+            "srl" => Srl,
+            "sla" => Sla,
+            "sra" => Sra,
+            "rol" => Rol,
+            "ror" => Ror,
+            "+" => Add,
+            "-" => Sub,
+            "&" => Concat,
+            "*" => Mul,
+            "/" => Div,
+            "mod" => Mod,
+            "rem" => Rem,
+            "**" => Pow,
+            _ => return None,
+        })
+    }
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum UnaryOp {
     Plus,
     Minus,
     Abs,
     Not,
+}
+
+impl UnaryOp {
+    /// The unary operator an operator symbol names (`"-"` -> `Minus`).
+    pub fn from_symbol(symbol: &str) -> Option<UnaryOp> {
+        Some(match symbol.to_ascii_lowercase().as_str() {
+            "+" => UnaryOp::Plus,
+            "-" => UnaryOp::Minus,
+            "abs" => UnaryOp::Abs,
+            "not" => UnaryOp::Not,
+            _ => return None,
+        })
+    }
 }
 
 #[derive(Clone, Debug, PartialEq)]

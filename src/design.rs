@@ -503,6 +503,22 @@ pub enum BinaryOp {
     Xnor,
     /// `&` on strings and arrays.
     Concat,
+    /// The shift and rotate operators on one-dimensional arrays of `bit` or `boolean`
+    /// (LRM 7.2.3), by an integer count (a negative count shifts the other way).
+    Sll,
+    Srl,
+    Sla,
+    Sra,
+    Rol,
+    Ror,
+}
+
+impl BinaryOp {
+    /// True for `sll`, `srl`, `sla`, `sra`, `rol`, `ror`.
+    pub fn is_shift(self) -> bool {
+        use BinaryOp::*;
+        matches!(self, Sll | Srl | Sla | Sra | Rol | Ror)
+    }
 }
 
 /// Predefined functions callable from both equations and processes.
@@ -715,7 +731,9 @@ impl Expr {
             | Expr::SignalAttr(..)
             | Expr::FnCall { .. } => false,
             Expr::Unary(_, a) => a.is_analog(),
-            Expr::Binary(op, a, b) => *op != BinaryOp::Concat && a.is_analog() && b.is_analog(),
+            Expr::Binary(op, a, b) => {
+                *op != BinaryOp::Concat && !op.is_shift() && a.is_analog() && b.is_analog()
+            }
             Expr::Call(_, args) => args.iter().all(Expr::is_analog),
             Expr::If(c, a, b) => c.is_analog() && a.is_analog() && b.is_analog(),
         }

@@ -185,7 +185,9 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_signal_elements ... ok"))
         .stdout(contains("test tb_vector_operators ... ok"))
         .stdout(contains("test tb_element_port_actuals ... ok"))
-        .stdout(contains("33 passed, 0 failed"));
+        .stdout(contains("test tb_shift_operators ... ok"))
+        .stdout(contains("test tb_groups_and_attribute_signatures ... ok"))
+        .stdout(contains("35 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

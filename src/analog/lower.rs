@@ -48,6 +48,12 @@ pub fn lower(e: &Expr, slot_of: &dyn Fn(usize) -> usize) -> Result<Sym, NotAnalo
                 BinaryOp::Xor => Bin::Xor,
                 BinaryOp::Xnor => Bin::Xnor,
                 BinaryOp::Concat => return Err(NotAnalog("the concatenation operator `&`")),
+                BinaryOp::Sll
+                | BinaryOp::Srl
+                | BinaryOp::Sla
+                | BinaryOp::Sra
+                | BinaryOp::Rol
+                | BinaryOp::Ror => return Err(NotAnalog("a shift or rotate operator")),
             };
             Sym::bin(op, go(a)?, go(b)?)
         }

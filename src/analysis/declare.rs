@@ -95,8 +95,16 @@ impl Analyzer<'_> {
                 };
                 self.declare(&name.name, name.span, DeclKind::Nature(nature));
             }
-            AstDecl::Subnature { name, nature } => {
+            AstDecl::Subnature {
+                name,
+                nature,
+                through_tolerance,
+            } => {
                 let n = self.nature_mark(&nature.type_mark);
+                let string = self.std.string;
+                for group in nature.tolerance.iter().chain(through_tolerance) {
+                    self.expr(group, string);
+                }
                 let kind = match n {
                     Some(n) => DeclKind::Nature(n),
                     None => DeclKind::Opaque,
@@ -226,6 +234,18 @@ impl Analyzer<'_> {
                 if let Some(crate::ast::InstantiatedUnit::Entity { name, .. }) = &binding.unit {
                     self.resolve_name(name);
                 }
+            }
+            AstDecl::Group { name, template } => {
+                // A group's constituents are names of this region (LRM 4.7), left unresolved
+                // like an attribute specification's; its template is checked.
+                let template = template.as_ref().map(|t| match &t.kind {
+                    ExprKind::Apply(prefix, _) => &**prefix,
+                    _ => t,
+                });
+                if let Some(t) = template {
+                    self.resolve_name(t);
+                }
+                self.declare(&name.name, name.span, DeclKind::Opaque);
             }
             AstDecl::Use(names) => {
                 let region = *self.scope.last().expect("a unit always has a region");

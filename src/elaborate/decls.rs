@@ -37,6 +37,7 @@ fn declared_names(d: &Decl) -> Vec<&str> {
         | DeclKind::Subnature { name, .. }
         | DeclKind::Alias { name, .. }
         | DeclKind::Attribute { name, .. }
+        | DeclKind::Group { name, .. }
         | DeclKind::Component { name, .. } => vec![name.name.as_str()],
         DeclKind::Quantity(q) => match q {
             ast::QuantityDecl::Free { names, .. } | ast::QuantityDecl::Source { names, .. } => {
@@ -217,7 +218,9 @@ impl<'a> Elab<'a> {
                 self.declare(sc, name, Item::Type(Rc::new(sub)))
             }
             DeclKind::Nature { name, def } => self.nature_decl(sc, name, def, d.span),
-            DeclKind::Subnature { name, nature } => {
+            // A subnature's tolerance groups name its quantities' groups; the solver uses
+            // one tolerance for all quantities.
+            DeclKind::Subnature { name, nature, .. } => {
                 let item = match self.nature_indication(sc, nature)? {
                     NatureMark::Scalar(n) => Item::Nature(n),
                     NatureMark::Array(a) => Item::ArrayNature(a),
@@ -264,6 +267,8 @@ impl<'a> Elab<'a> {
                 Ok(())
             }
             DeclKind::Attribute { name, .. } => self.declare(sc, name, Item::Attribute),
+            // Groups only carry user attributes, which the simulator does not read.
+            DeclKind::Group { .. } => Ok(()),
             DeclKind::AttributeSpec {
                 attribute,
                 entities,

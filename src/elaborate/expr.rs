@@ -37,9 +37,9 @@ impl Typed {
 const INT_REAL_HELP: &str = "VHDL never converts between integer and real implicitly: write a real literal \
 (`2.0`, not `2`) or convert with `real(i)` / `integer(x)`";
 
-fn map_binop(op: ast::BinaryOp) -> Option<BinaryOp> {
+fn map_binop(op: ast::BinaryOp) -> BinaryOp {
     use ast::BinaryOp as A;
-    Some(match op {
+    match op {
         A::And => BinaryOp::And,
         A::Or => BinaryOp::Or,
         A::Nand => BinaryOp::Nand,
@@ -60,8 +60,13 @@ fn map_binop(op: ast::BinaryOp) -> Option<BinaryOp> {
         A::Mod => BinaryOp::Mod,
         A::Rem => BinaryOp::Rem,
         A::Pow => BinaryOp::Pow,
-        A::Sll | A::Srl | A::Sla | A::Sra | A::Rol | A::Ror => return None,
-    })
+        A::Sll => BinaryOp::Sll,
+        A::Srl => BinaryOp::Srl,
+        A::Sla => BinaryOp::Sla,
+        A::Sra => BinaryOp::Sra,
+        A::Rol => BinaryOp::Rol,
+        A::Ror => BinaryOp::Ror,
+    }
 }
 
 fn op_text(op: BinaryOp) -> &'static str {
@@ -86,6 +91,12 @@ fn op_text(op: BinaryOp) -> &'static str {
         BinaryOp::Xor => "xor",
         BinaryOp::Xnor => "xnor",
         BinaryOp::Concat => "&",
+        BinaryOp::Sll => "sll",
+        BinaryOp::Srl => "srl",
+        BinaryOp::Sla => "sla",
+        BinaryOp::Sra => "sra",
+        BinaryOp::Rol => "rol",
+        BinaryOp::Ror => "ror",
     }
 }
 
@@ -255,6 +266,9 @@ impl<'a> Elab<'a> {
                     let array = self.expr(sc, prefix, None)?;
                     return self.index(sc, array, args, e.span);
                 }
+                if let Some(op) = self.predefined_operator_call(sc, prefix, args, e.span) {
+                    return self.expr(sc, &op, want);
+                }
                 let items = self.lookup(sc, prefix)?;
                 match items.first() {
                     Some(Item::Subprogram(_)) => {
@@ -287,6 +301,41 @@ impl<'a> Elab<'a> {
                 "access types are not supported",
             ))),
         }
+    }
+
+    /// `"+"(a, b)` or `"-"(a)` where the operator symbol names a predefined operator (not a
+    /// user function): the operation itself, as if written `a + b`.
+    fn predefined_operator_call(
+        &self,
+        sc: &Scope<'a>,
+        prefix: &ast::Expr,
+        args: &[ast::Assoc],
+        span: Span,
+    ) -> Option<ast::Expr> {
+        let ExprKind::Name(id) = &prefix.kind else {
+            return None;
+        };
+        let symbol = id.name.strip_prefix('"')?.strip_suffix('"')?;
+        if matches!(self.resolved_item(sc, id), Some(Item::Subprogram(_))) {
+            return None;
+        }
+        let operand = |a: &ast::Assoc| match a {
+            ast::Assoc {
+                actual: ast::Actual::Expr(x),
+                ..
+            } => Some(Box::new(x.clone())),
+            _ => None,
+        };
+        let kind = match args {
+            [a] => ExprKind::Unary(ast::UnaryOp::from_symbol(symbol)?, operand(a)?),
+            [a, b] => ExprKind::Binary(
+                ast::BinaryOp::from_symbol(symbol)?,
+                operand(a)?,
+                operand(b)?,
+            ),
+            _ => return None,
+        };
+        Some(ast::Expr { kind, span })
     }
 
     /// Lowers `e` and checks that its type is `ty`.
@@ -530,7 +579,7 @@ impl<'a> Elab<'a> {
             ast::UnaryOp::Abs => (UnaryOp::Abs, a.ty.is_numeric() || a.ty == Ty::Time),
             ast::UnaryOp::Not => (
                 UnaryOp::Not,
-                a.ty == Ty::Boolean || a.ty.is_enum_named("bit"),
+                is_logical_scalar(&a.ty) || logical_array(&a.ty),
             ),
         };
         if !ok {
@@ -561,13 +610,7 @@ impl<'a> Elab<'a> {
         span: Span,
         want: Option<&Ty>,
     ) -> R<Typed> {
-        let Some(bop) = map_binop(op) else {
-            return Err(self.error(ElabError::unsupported(
-                span,
-                "shift and rotate operators",
-                "use arithmetic instead",
-            )));
-        };
+        let bop = map_binop(op);
         let arith = matches!(
             bop,
             BinaryOp::Add
@@ -587,6 +630,7 @@ impl<'a> Elab<'a> {
             let lt = self.expr(sc, l, hint);
             let rhint = match (&lt, bop) {
                 (Ok(t), BinaryOp::Pow) if t.ty == Ty::Real => Some(Ty::Integer),
+                (Ok(_), op) if op.is_shift() => Some(Ty::Integer),
                 (Ok(t), BinaryOp::Mul | BinaryOp::Div) if t.ty == Ty::Time => None,
                 (Ok(t), _) => Some(t.ty.clone()),
                 _ => None,
@@ -910,7 +954,10 @@ fn result_type(op: BinaryOp, l: &Ty, r: &Ty) -> Option<Ty> {
         Eq | Ne => l.same(r).then_some(Ty::Boolean),
         Lt | Le | Gt | Ge => (l.same(r) && (l.is_scalar() || l.is_string())).then_some(Ty::Boolean),
         And | Or | Nand | Nor | Xor | Xnor => {
-            (l.same(r) && (*l == Ty::Boolean || l.is_enum_named("bit"))).then(|| l.clone())
+            (l.same(r) && (is_logical_scalar(l) || logical_array(l))).then(|| l.clone())
+        }
+        Sll | Srl | Sla | Sra | Rol | Ror => {
+            (logical_array(l) && *r == Ty::Integer).then(|| l.clone())
         }
         Concat => match (l, r) {
             (Ty::Array(a), Ty::Array(b)) if a.name == b.name => Some(Ty::Array(unconstrained(a))),
@@ -920,6 +967,17 @@ fn result_type(op: BinaryOp, l: &Ty, r: &Ty) -> Option<Ty> {
             _ => None,
         },
     }
+}
+
+/// `boolean` or `bit`: the types the predefined logical operators apply to (LRM 7.2.1).
+fn is_logical_scalar(t: &Ty) -> bool {
+    *t == Ty::Boolean || t.is_enum_named("bit")
+}
+
+/// A one-dimensional array of `bit` or `boolean` (`bit_vector`): logical operators apply
+/// element by element, and the shift and rotate operators apply (LRM 7.2.1, 7.2.3).
+fn logical_array(t: &Ty) -> bool {
+    matches!(t, Ty::Array(a) if is_logical_scalar(&a.element))
 }
 
 fn unconstrained(a: &ArrayTy) -> Rc<ArrayTy> {
