@@ -300,8 +300,13 @@ pub enum DeclKind {
 /// The binding indication of a configuration specification.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Binding {
-    /// `entity ...` or `configuration ...`; `None` for `use open`.
+    /// `entity ...` or `configuration ...`; `None` for `use open` or an incremental binding.
     pub unit: Option<InstantiatedUnit>,
+    /// No entity aspect written: an incremental binding in a component configuration
+    /// (`for u1 : comp generic map (...); end for;`, LRM 5.2.1.1), which keeps the entity of
+    /// the primary binding (a configuration specification, or the default binding) and adds
+    /// its maps.
+    pub incremental: bool,
     pub generic_map: Vec<Assoc>,
     pub port_map: Vec<Assoc>,
     pub span: Span,

@@ -350,7 +350,7 @@ fn an_analysis_error_in_a_unit_the_top_does_not_reach_fails_the_run() {
 
 /// `--top` names a configuration declaration: its entity is elaborated with the bindings it
 /// gives (r1 ideal, the others doubled: the divider's midpoint at 2/3 V instead of the 1/2 V
-/// of the default binding).
+/// of the default binding); an incremental binding keeps the default entity and adds its map.
 #[test]
 fn a_configuration_declaration_is_a_top() {
     vams()
@@ -359,6 +359,12 @@ fn a_configuration_declaration_is_a_top() {
         .assert()
         .success()
         .stdout(contains("vmid    0.6666666666666"));
+    vams()
+        .args(["op", "tests/conformance/configuration_declaration.vhd"])
+        .args(["--top", "cfg_incremental"])
+        .assert()
+        .success()
+        .stdout(contains("vmid    0.75 V"));
     vams()
         .args(["op", "tests/conformance/configuration_declaration.vhd"])
         .args(["--top", "tb_configuration_declaration"])

@@ -187,7 +187,8 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_element_port_actuals ... ok"))
         .stdout(contains("test tb_shift_operators ... ok"))
         .stdout(contains("test tb_groups_and_attribute_signatures ... ok"))
-        .stdout(contains("35 passed, 0 failed"));
+        .stdout(contains("test tb_configuration_instance ... ok"))
+        .stdout(contains("36 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

@@ -795,10 +795,26 @@ impl<'a> Elab<'a> {
                 };
                 // Default binding (LRM 7.3.3): the entity of the same name in work.
                 let default = ("work".to_string(), simple.clone(), None, name.span);
-                match self.binding_of(sc, s, &simple) {
+                match self.binding_of(sc, s, &simple, false) {
                     // A configuration specification or component configuration binds it.
                     Some(b) => {
+                        // An incremental binding keeps the primary binding's entity (a
+                        // configuration specification's, or the default) and, for a map it
+                        // does not give, the primary binding's map.
+                        let primary = match b.binding {
+                            Some(binding) if binding.incremental => self
+                                .binding_of(sc, s, &simple, true)
+                                .and_then(|p| p.binding),
+                            _ => None,
+                        };
                         let mut target = match b.binding {
+                            Some(binding) if binding.incremental => match primary {
+                                Some(p) => match self.bound_entity(sc, p)? {
+                                    Some(target) => target,
+                                    None => return Ok(()),
+                                },
+                                None => default,
+                            },
                             Some(binding) => match self.bound_entity(sc, binding)? {
                                 Some(target) => target,
                                 // `use open`: the instance stays unbound.
@@ -815,17 +831,20 @@ impl<'a> Elab<'a> {
                             },
                         ) = (b.binding, &decl.kind)
                         {
-                            if !binding.generic_map.is_empty() {
-                                entity_generics = Some(compose(
-                                    &flatten(cg),
-                                    generics,
-                                    &binding.generic_map,
-                                    true,
-                                ));
+                            let generic_map = match primary {
+                                Some(p) if binding.generic_map.is_empty() => &p.generic_map,
+                                _ => &binding.generic_map,
+                            };
+                            let port_map = match primary {
+                                Some(p) if binding.port_map.is_empty() => &p.port_map,
+                                _ => &binding.port_map,
+                            };
+                            if !generic_map.is_empty() {
+                                entity_generics =
+                                    Some(compose(&flatten(cg), generics, generic_map, true));
                             }
-                            if !binding.port_map.is_empty() {
-                                entity_ports =
-                                    Some(compose(&flatten(cp), ports, &binding.port_map, false));
+                            if !port_map.is_empty() {
+                                entity_ports = Some(compose(&flatten(cp), ports, port_map, false));
                             }
                         }
                         if let Some(block) = b.block {
@@ -843,12 +862,35 @@ impl<'a> Elab<'a> {
                     None => default,
                 }
             }
+            // `u : configuration work.cfg port map (...)`: the configuration's entity, with
+            // the architecture and the bindings it gives.
             InstantiatedUnit::Configuration(n) => {
-                return Err(self.error(ElabError::unsupported(
-                    n.span,
-                    "configuration instantiation",
-                    "instantiate the entity: `entity work.e(arch)`",
-                )));
+                let (lib, cfg_name, _, span) = self.entity_aspect(sc, n, None)?;
+                let Some(cfg) = self
+                    .lib
+                    .configurations
+                    .get(&(lib.clone(), cfg_name.clone()))
+                else {
+                    return Err(self.error(ElabError::invalid(
+                        n.span,
+                        format!("no configuration `{cfg_name}` in library `{lib}`"),
+                        Some("give vams the file that declares it".into()),
+                    )));
+                };
+                let c = cfg.unit;
+                let Some(entity) = c.entity.name_ident() else {
+                    return Err(self.error(ElabError::invalid(
+                        c.entity.span,
+                        "expected an entity name",
+                        None,
+                    )));
+                };
+                let arch = match &c.block.spec.kind {
+                    ast::ExprKind::Name(id) => Some(id),
+                    _ => None,
+                };
+                config = Some(&c.block);
+                (cfg.library.clone(), entity.name.clone(), arch, span)
             }
         };
         let target = (lib, name, arch_name, name_span);
@@ -861,8 +903,15 @@ impl<'a> Elab<'a> {
 
     /// The configuration specification of the innermost declarative region that binds
     /// instance `s` of component `component`: one naming its label, else one for `all` or
-    /// `others` of that component (LRM 5.2).
-    fn binding_of(&self, sc: &Scope<'a>, s: &ConcStmt, component: &str) -> Option<BindingRef<'a>> {
+    /// `others` of that component (LRM 5.2); with `primary`, only one with an entity aspect
+    /// (what an incremental binding adds to).
+    fn binding_of(
+        &self,
+        sc: &Scope<'a>,
+        s: &ConcStmt,
+        component: &str,
+        primary: bool,
+    ) -> Option<BindingRef<'a>> {
         let here = sc.regions.last()?;
         let keys = [
             s.label
@@ -871,16 +920,26 @@ impl<'a> Elab<'a> {
             Some(binding_key(BindingKey::All, component)),
             Some(binding_key(BindingKey::Others, component)),
         ];
+        let incremental = |b: &BindingRef<'a>| b.binding.is_some_and(|x| x.incremental);
+        // An incremental component configuration (declared after the architecture's
+        // configuration specifications) is the one in force; the first other one is the
+        // primary binding.
+        let mut first = None;
         for key in keys.iter().flatten() {
             for item in here.items.get(key).into_iter().flatten() {
                 if let Item::Binding(b) = item
                     && b.component.name_ident().map(|id| id.name.as_str()) == Some(component)
                 {
-                    return Some(*b);
+                    if !primary && incremental(b) {
+                        return Some(*b);
+                    }
+                    if first.is_none() && !incremental(b) && !(primary && b.binding.is_none()) {
+                        first = Some(*b);
+                    }
                 }
             }
         }
-        None
+        first
     }
 
     /// The entity and architecture a binding indication names; `None` for `use open`.

@@ -66,3 +66,13 @@ CONFIGURATION cfg_mixed OF tb_configuration_declaration IS
     END FOR;
   END FOR;
 END CONFIGURATION cfg_mixed;
+
+-- An incremental binding (LRM 5.2.1.1): no entity aspect, only a generic map, so r2 keeps
+-- its default binding (`doubled`) with r => 3.0: 2 Ohm over 6 Ohm, the midpoint at 3/4 V.
+CONFIGURATION cfg_incremental OF tb_configuration_declaration IS
+  FOR test
+    FOR r2 : divider_leg
+      GENERIC MAP (r => 3.0);
+    END FOR;
+  END FOR;
+END CONFIGURATION cfg_incremental;
