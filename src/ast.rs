@@ -207,6 +207,9 @@ pub enum DeclKind {
         names: Vec<Ident>,
         subtype: SubtypeIndication,
         value: Option<Expr>,
+        /// `bus` or `register`: a guarded signal, whose drivers a guarded assignment
+        /// disconnects while the guard is false (LRM 4.3.1.2).
+        guarded: bool,
     },
     Variable {
         shared: bool,
@@ -239,6 +242,13 @@ pub enum DeclKind {
         name: Ident,
         nature: SubtypeIndication,
         through_tolerance: Option<Expr>,
+    },
+    /// `disconnect s1, s2 : t after 3 ns;` (LRM 5.3): the delay of the null transactions of
+    /// guarded signals' drivers.
+    Disconnect {
+        signals: EntityNames,
+        type_mark: Expr,
+        after: Expr,
     },
     /// A group template (`template: None`) or a group declaration, whose template name
     /// carries the constituents as arguments (`pair (a, b)`, LRM 4.6, 4.7). Groups only
@@ -458,12 +468,16 @@ pub enum ConcKind {
     /// `target <= [delay] wave when c else wave;` (a simple assignment has one branch, no condition)
     ConditionalAssign {
         target: Expr,
+        /// `target <= guarded ...`: assigns only while the enclosing block's `GUARD` is true
+        /// (LRM 9.5).
+        guarded: bool,
         delay: DelayMechanism,
         branches: Vec<(Waveform, Option<Expr>)>,
     },
     SelectedAssign {
         selector: Expr,
         target: Expr,
+        guarded: bool,
         delay: DelayMechanism,
         alternatives: Vec<(Waveform, Vec<Choice>)>,
     },

@@ -179,6 +179,11 @@ struct Elab<'a> {
     /// that drive the signal. Only the entries of the instances enclosing the current one
     /// are kept.
     port_defaults: Vec<(String, SignalId, Value)>,
+    /// Signals declared `bus` or `register` (guarded signals).
+    guarded_signals: FxHashSet<SignalId>,
+    /// The `GUARD` signals of the guarded blocks being elaborated, innermost last: the guard
+    /// of a guarded assignment.
+    guards: Vec<SignalId>,
     /// Auxiliary quantities of `Q'dot'dot` and `Q'integ`, by the quantity they derive from.
     dot_aux: FxHashMap<QuantityId, QuantityId>,
     integ_aux: FxHashMap<QuantityId, QuantityId>,
@@ -256,6 +261,8 @@ impl<'a> Elab<'a> {
             above: Vec::new(),
             views: FxHashMap::default(),
             port_defaults: Vec::new(),
+            guarded_signals: FxHashSet::default(),
+            guards: Vec::new(),
             dot_aux: FxHashMap::default(),
             integ_aux: FxHashMap::default(),
             path: String::new(),

@@ -38,6 +38,7 @@ impl Analyzer<'_> {
                 names,
                 subtype,
                 value,
+                ..
             } => self.objects(ObjectClass::Signal, names, subtype, value.as_ref()),
             AstDecl::Variable {
                 names,
@@ -234,6 +235,20 @@ impl Analyzer<'_> {
                 if let Some(crate::ast::InstantiatedUnit::Entity { name, .. }) = &binding.unit {
                     self.resolve_name(name);
                 }
+            }
+            AstDecl::Disconnect {
+                signals,
+                type_mark,
+                after,
+            } => {
+                if let crate::ast::EntityNames::List(names) = signals {
+                    for n in names {
+                        self.resolve_name(n);
+                    }
+                }
+                self.type_mark(type_mark);
+                let time = self.std.time;
+                self.expr(after, time);
             }
             AstDecl::Group { name, template } => {
                 // A group's constituents are names of this region (LRM 4.7), left unresolved

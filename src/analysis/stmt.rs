@@ -254,9 +254,13 @@ impl Analyzer<'_> {
             }
             ConcKind::ConditionalAssign {
                 target,
+                guarded,
                 delay,
                 branches,
             } => {
+                if *guarded {
+                    self.guard_signal(target.span);
+                }
                 let t = self.target(target);
                 self.delay(delay);
                 for (w, c) in branches {
@@ -269,9 +273,13 @@ impl Analyzer<'_> {
             ConcKind::SelectedAssign {
                 selector,
                 target,
+                guarded,
                 delay,
                 alternatives,
             } => {
+                if *guarded {
+                    self.guard_signal(target.span);
+                }
                 let sel = self.expr_any(selector);
                 let t = self.target(target);
                 self.delay(delay);
@@ -339,6 +347,20 @@ impl Analyzer<'_> {
                     }
                 }
                 self.in_region(s.span, |a| {
+                    // A guarded block declares the implicit signal GUARD (LRM 9.1), at the
+                    // guard expression.
+                    if let Some(g) = guard {
+                        let boolean = a.std.boolean;
+                        a.declare(
+                            "guard",
+                            g.span,
+                            DeclKind::Object {
+                                class: ObjectClass::Signal,
+                                ty: boolean,
+                                value: Staticness::None,
+                            },
+                        );
+                    }
                     a.interfaces(&header.generics, super::declare::InterfaceRole::Generic);
                     a.interfaces(&header.ports, super::declare::InterfaceRole::Port);
                     a.decls(decls);
@@ -394,6 +416,24 @@ impl Analyzer<'_> {
 
     /// A component or entity instance: formals are looked up in its interface, actuals
     /// checked against their formal's type.
+    /// A guarded assignment needs a signal `GUARD` in sight: a guarded block's, or one
+    /// declared (LRM 9.5).
+    fn guard_signal(&mut self, at: Span) {
+        match self.lookup("guard").as_deref() {
+            Some([d]) if matches!(self.out.decl(*d).kind, DeclKind::Object { .. }) => {
+                self.reference(at, *d);
+            }
+            _ => self.error(AnalysisError::Undeclared {
+                span: at,
+                name: "guard".into(),
+                help: Some(
+                    "a guarded assignment sits in a guarded block, `b : block (en = '1') is ... end block;`, or sees a boolean signal `guard`"
+                        .into(),
+                ),
+            }),
+        }
+    }
+
     fn instance(&mut self, unit: &InstantiatedUnit, generics: &[Assoc], ports: &[Assoc]) {
         // An entity declared in several files (a folder of variants) is not one interface to
         // check the formals against, but the variant the name resolved to still gives the

@@ -174,6 +174,7 @@ impl<'a> Elab<'a> {
                 names,
                 subtype,
                 value,
+                guarded,
             } => {
                 let sub = self.subtype_indication(sc, subtype)?;
                 let init = match value {
@@ -187,6 +188,9 @@ impl<'a> Elab<'a> {
                 };
                 for n in names {
                     let id = self.new_signal(&n.name, &sub, init.clone(), n.span);
+                    if *guarded {
+                        self.guarded_signals.insert(id);
+                    }
                     self.declare(
                         sc,
                         n,
@@ -269,6 +273,9 @@ impl<'a> Elab<'a> {
             DeclKind::Attribute { name, .. } => self.declare(sc, name, Item::Attribute),
             // Groups only carry user attributes, which the simulator does not read.
             DeclKind::Group { .. } => Ok(()),
+            // Disconnection delays concern guarded signals' drivers, whose disconnection a
+            // guarded assignment refuses (`Elab::guarded_signals`).
+            DeclKind::Disconnect { .. } => Ok(()),
             DeclKind::AttributeSpec {
                 attribute,
                 entities,

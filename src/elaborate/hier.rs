@@ -664,19 +664,32 @@ impl<'a> Elab<'a> {
                     decls,
                     stmts,
                 } => {
-                    if let Some(g) = guard {
-                        self.error(ElabError::unsupported(
-                            g.span,
-                            "guarded blocks",
-                            "use a process with an if statement",
-                        ));
-                        continue;
-                    }
+                    // A guarded block's GUARD is declared in a region of its own around the
+                    // block's, under the guard expression's span, which analysis resolves
+                    // the name to.
+                    sc.push();
+                    let guarded = match guard {
+                        Some(g) => match self.guard_signal(sc, s, g) {
+                            Ok(id) => {
+                                self.guards.push(id);
+                                true
+                            }
+                            Err(_) => {
+                                sc.pop();
+                                continue;
+                            }
+                        },
+                        None => false,
+                    };
                     if header.generics.is_empty() && header.ports.is_empty() {
                         self.nested_region(sc, s, decls, stmts, depth);
                     } else {
                         let _ = self.block_with_header(sc, s, header, (decls, stmts), depth);
                     }
+                    if guarded {
+                        self.guards.pop();
+                    }
+                    sc.pop();
                 }
                 ConcKind::Simultaneous(kind) => self.simultaneous(sc, s, kind),
             }

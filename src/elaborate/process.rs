@@ -1151,13 +1151,103 @@ impl<'a> Elab<'a> {
         self.push_process(stmt.label.as_ref(), stmt.span, p);
     }
 
+    /// The implicit signal `GUARD` of the guarded block `block` (LRM 9.1), declared in `sc`
+    /// and kept equal to `guard` by an equivalent process.
+    pub(super) fn guard_signal(
+        &mut self,
+        sc: &mut Scope<'a>,
+        block: &ConcStmt,
+        guard: &ast::Expr,
+    ) -> R<SignalId> {
+        let cond = self.cond(sc, guard)?;
+        let init = match &cond {
+            Expr::Const(v) => v.clone(),
+            _ => Value::Boolean(false),
+        };
+        let boolean = super::types::Sub::of(Ty::Boolean, "boolean");
+        let label = block.label.as_ref().map_or("block", |l| l.name.as_str());
+        let id = self.new_signal(&format!("{label}.guard"), &boolean, init, guard.span);
+        sc.declare_at(
+            "guard",
+            guard.span,
+            Item::Signal {
+                id,
+                ty: Ty::Boolean,
+            },
+        );
+        let mut p = Proc {
+            at: guard.span,
+            ..Default::default()
+        };
+        p.emit(Instr::Assign {
+            target: id,
+            index: None,
+            waveform: vec![(cond, Expr::Const(Value::Time(0.0)))],
+            mechanism: DelayMechanism::Inertial { reject: None },
+        });
+        let on = signals_read(&p.code);
+        if on.is_empty() {
+            p.emit(Instr::Halt);
+        } else {
+            p.emit(Instr::Wait {
+                on,
+                until: None,
+                timeout: None,
+            });
+            p.emit(Instr::Jump(0));
+        }
+        self.push_process(None, guard.span, p);
+        Ok(id)
+    }
+
+    /// `Instr`s that run `assign` only while the innermost guard is true (`target <= guarded
+    /// ...`, LRM 9.5.1), wrapped around the body the caller emits next.
+    fn guarded_assignment(&mut self, sc: &Scope<'a>, target: &ast::Expr) -> R<Expr> {
+        let Some(&guard) = self.guards.last() else {
+            return Err(self.error(ElabError::unsupported(
+                target.span,
+                "a guarded assignment outside a guarded block",
+                "put it in a block with a guard expression: `b : block (en = '1') is begin ... end block;`",
+            )));
+        };
+        if let Ok(items) = self.lookup(sc, target)
+            && let Some(Item::Signal { id, .. }) = items.first()
+            && self.guarded_signals.contains(id)
+        {
+            return Err(self.error(ElabError::unsupported(
+                target.span,
+                "a guarded assignment to a guarded signal (`bus` or `register`), which disconnects its driver while the guard is false",
+                "declare the signal without `bus` or `register`; the assignment then holds its value while the guard is false",
+            )));
+        }
+        Ok(Expr::Signal(guard))
+    }
+
     pub(super) fn concurrent_assign(&mut self, sc: &Scope<'a>, stmt: &ConcStmt) -> R<()> {
         let mut p = Proc::default();
+        // `target <= guarded ...`: the whole statement is skipped while GUARD is false.
+        let guard = match &stmt.kind {
+            ast::ConcKind::ConditionalAssign {
+                target,
+                guarded: true,
+                ..
+            }
+            | ast::ConcKind::SelectedAssign {
+                target,
+                guarded: true,
+                ..
+            } => {
+                let g = self.guarded_assignment(sc, target)?;
+                Some(p.emit(Instr::JumpIfNot { cond: g, target: 0 }))
+            }
+            _ => None,
+        };
         match &stmt.kind {
             ast::ConcKind::ConditionalAssign {
                 target,
                 delay,
                 branches,
+                ..
             } => {
                 let mut ends = Vec::new();
                 for (wave, cond) in branches {
@@ -1187,6 +1277,7 @@ impl<'a> Elab<'a> {
                 target,
                 delay,
                 alternatives,
+                ..
             } => {
                 let sel = self.expr(sc, selector, None)?;
                 let mut ends = Vec::new();
@@ -1204,6 +1295,10 @@ impl<'a> Elab<'a> {
                 let end = p.here();
                 for j in ends {
                     p.patch(j, end);
+                }
+                if let Some(skip) = guard {
+                    let end = p.here();
+                    p.patch(skip, end);
                 }
                 // The selector is read even when no choice matches.
                 let mut on = signals_read(&p.code);
@@ -1250,6 +1345,10 @@ impl<'a> Elab<'a> {
                 return Ok(());
             }
             _ => return Ok(()),
+        }
+        if let Some(skip) = guard {
+            let end = p.here();
+            p.patch(skip, end);
         }
         self.equivalent(stmt, p, None);
         Ok(())
