@@ -561,6 +561,68 @@ pub enum Builtin {
     EnumVal,
     /// `time'val(i)`: `i` femtoseconds.
     TimeVal,
+    /// A slice `a(l to r)` (processes only): arguments the array, the position of its first
+    /// element from the left, and the number of elements.
+    Slice,
+    /// The array `a` with the elements from a position replaced by those of `v` (a slice
+    /// assignment `a(l to r) := v`): arguments `a`, the position, the slice's length, `v`.
+    Splice,
+}
+
+impl Builtin {
+    /// `'pos`, `'val` and the array operations: not real functions, evaluated by
+    /// [`value_builtin`] at elaboration and at run time.
+    pub fn on_values(self) -> bool {
+        matches!(
+            self,
+            Builtin::Pos | Builtin::EnumVal | Builtin::TimeVal | Builtin::Slice | Builtin::Splice
+        )
+    }
+}
+
+/// The builtins of [`Builtin::on_values`], the same at elaboration (folding) and at run time;
+/// `Err` with the reason for a result outside its type or a slice outside its array.
+pub fn value_builtin(f: Builtin, args: &[Value]) -> Result<Value, String> {
+    match (f, args) {
+        (Builtin::Slice, [a, Value::Integer(first), Value::Integer(len)]) => {
+            let elements = a.elements();
+            let (first, len) = (*first, *len);
+            if len <= 0 {
+                return Ok(aggregate_value(Vec::new(), matches!(a, Value::String(_))));
+            }
+            if first < 0 || first + len > elements.len() as i64 {
+                return Err(format!(
+                    "the slice of {len} element(s) from position {first} is outside the array's {} element(s)",
+                    elements.len()
+                ));
+            }
+            Ok(a.view(first as usize, Some(len as usize))
+                .unwrap_or_else(|| a.clone()))
+        }
+        (Builtin::Splice, [a, Value::Integer(first), Value::Integer(len), v]) => {
+            let mut elements = a.elements();
+            let part = v.elements();
+            if part.len() as i64 != (*len).max(0) {
+                return Err(format!(
+                    "a value of {} element(s) assigned to a slice of {}",
+                    part.len(),
+                    (*len).max(0)
+                ));
+            }
+            let first = *first;
+            if first < 0 || first + part.len() as i64 > elements.len() as i64 {
+                return Err(format!(
+                    "a slice of {} element(s) from position {first} is outside the array's {} element(s)",
+                    part.len(),
+                    elements.len()
+                ));
+            }
+            let first = first as usize;
+            elements.splice(first..first + part.len(), part);
+            Ok(aggregate_value(elements, matches!(a, Value::String(_))))
+        }
+        _ => scalar_attribute(f, args),
+    }
 }
 
 /// One instruction of a lowered process. Execution starts at index 0 and runs until `Wait` or

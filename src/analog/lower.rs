@@ -110,5 +110,6 @@ fn lower_call(
         Builtin::Pos | Builtin::EnumVal | Builtin::TimeVal => {
             Err(NotAnalog("the 'pos and 'val attributes"))
         }
+        Builtin::Slice | Builtin::Splice => Err(NotAnalog("a slice")),
     }
 }

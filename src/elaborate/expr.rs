@@ -785,6 +785,19 @@ impl<'a> Elab<'a> {
                 Some("only arrays are indexed and only functions are called".into()),
             )));
         };
+        if let [
+            ast::Assoc {
+                actual: Actual::Range(r),
+                formal: None,
+                ..
+            },
+        ] = args
+        {
+            let arr = arr.clone();
+            let (first, len, ty) = self.slice(sc, &arr, r, span)?;
+            let e = Expr::Call(Builtin::Slice, vec![array.e, first, len]);
+            return self.folded(e, ty, span);
+        }
         let [
             ast::Assoc {
                 actual: Actual::Expr(ie),
@@ -795,7 +808,7 @@ impl<'a> Elab<'a> {
         else {
             return Err(self.error(ElabError::unsupported(
                 span,
-                "slices and multi-dimensional indexing",
+                "multi-dimensional indexing",
                 "index one element: `a(i)`",
             )));
         };
@@ -811,6 +824,63 @@ impl<'a> Elab<'a> {
             elem,
             span,
         )
+    }
+
+    /// The slice `r` of an array of type `arr`: the position of its first element from the
+    /// left, its length (run-time expressions when `r` is not static) and its type (with
+    /// the slice's bounds when they are static). The slice runs in the array's direction.
+    pub(super) fn slice(
+        &mut self,
+        sc: &Scope<'a>,
+        arr: &Rc<ArrayTy>,
+        r: &ast::Range,
+        span: Span,
+    ) -> R<(Expr, Expr, Ty)> {
+        let Some((left, _, asc)) = arr.bounds else {
+            return Err(self.error(ElabError::unsupported(
+                span,
+                "a slice of an array whose bounds are known only at run time",
+                "give the array a constrained subtype",
+            )));
+        };
+        let (l, rr, dir) = self.range_exprs(sc, r)?;
+        if dir != asc {
+            return Err(self.error(ElabError::invalid(
+                span,
+                "this slice runs against its array's direction",
+                Some(format!(
+                    "the array's index runs `{}`: slice it the same way",
+                    if asc { "to" } else { "downto" }
+                )),
+            )));
+        }
+        use crate::design::BinaryOp::{Add, Sub};
+        let int = |k: i64| Expr::Const(Value::Integer(k));
+        let bin = |op, a: Expr, b: Expr| Expr::Binary(op, Box::new(a), Box::new(b));
+        let (first, len) = if asc {
+            (
+                bin(Sub, l.e.clone(), int(left)),
+                bin(Add, bin(Sub, rr.e.clone(), l.e.clone()), int(1)),
+            )
+        } else {
+            (
+                bin(Sub, int(left), l.e.clone()),
+                bin(Add, bin(Sub, l.e.clone(), rr.e.clone()), int(1)),
+            )
+        };
+        let first = self.folded(first, Ty::Integer, span)?.e;
+        let len = self.folded(len, Ty::Integer, span)?.e;
+        let bounds = match (&l.e, &rr.e) {
+            (Expr::Const(Value::Integer(a)), Expr::Const(Value::Integer(b))) => Some((*a, *b, asc)),
+            _ => None,
+        };
+        let ty = Ty::Array(Rc::new(ArrayTy {
+            name: arr.name.clone(),
+            element: arr.element.clone(),
+            bounds,
+            index_low: arr.index_low,
+        }));
+        Ok((first, len, ty))
     }
 
     fn aggregate(

@@ -245,8 +245,8 @@ fn binary(op: BinaryOp, a: Value, b: Value) -> Result<Value, NoFold> {
 }
 
 fn call(f: Builtin, args: &[Value]) -> Result<Value, NoFold> {
-    if matches!(f, Builtin::Pos | Builtin::EnumVal | Builtin::TimeVal) {
-        return crate::design::scalar_attribute(f, args).map_err(NoFold::Error);
+    if f.on_values() {
+        return crate::design::value_builtin(f, args).map_err(NoFold::Error);
     }
     if f == Builtin::ToReal {
         return match args {
@@ -305,7 +305,9 @@ fn call(f: Builtin, args: &[Value]) -> Result<Value, NoFold> {
         | Builtin::ToInteger
         | Builtin::Pos
         | Builtin::EnumVal
-        | Builtin::TimeVal => {
+        | Builtin::TimeVal
+        | Builtin::Slice
+        | Builtin::Splice => {
             unreachable!("handled above")
         }
     };

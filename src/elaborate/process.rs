@@ -537,6 +537,35 @@ impl<'a> Elab<'a> {
                     }
                     return Ok(());
                 }
+                // `a(l to r) := v`: the variable with those elements replaced.
+                if let ast::ExprKind::Apply(prefix, args) = &target.kind
+                    && let [
+                        ast::Assoc {
+                            actual: Actual::Range(r),
+                            formal: None,
+                            ..
+                        },
+                    ] = args.as_slice()
+                {
+                    let (id, ty) = self.target_variable(sc, prefix)?;
+                    let Ty::Array(arr) = &ty else {
+                        return Err(self.error(ElabError::invalid(
+                            target.span,
+                            "only array variables can be sliced",
+                            None,
+                        )));
+                    };
+                    let (first, len, slice_ty) = self.slice(sc, arr, r, target.span)?;
+                    let v = self.expr_of(sc, value, &slice_ty)?;
+                    p.emit(Instr::SetVar {
+                        var: id,
+                        value: Expr::Call(
+                            crate::design::Builtin::Splice,
+                            vec![Expr::Var(id), first, len, v.e],
+                        ),
+                    });
+                    return Ok(());
+                }
                 let (name_expr, index) = match &target.kind {
                     ast::ExprKind::Apply(prefix, args) => match args.as_slice() {
                         [

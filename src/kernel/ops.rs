@@ -371,13 +371,13 @@ fn latin1(position: u32) -> char {
 /// The math_real functions and the numeric type conversions.
 pub(crate) fn builtin(f: Builtin, args: &[Value]) -> Result<Value, EvalError> {
     use Builtin::*;
-    if matches!(f, Pos | EnumVal | TimeVal) {
-        return crate::design::scalar_attribute(f, args).map_err(|m| {
-            EvalError::new(
-                m,
-                "keep the argument within the type's range (T'low to T'high)",
-            )
-        });
+    if f.on_values() {
+        let help = if matches!(f, Slice | Splice) {
+            "keep a slice within its array's bounds"
+        } else {
+            "keep the argument within the type's range (T'low to T'high)"
+        };
+        return crate::design::value_builtin(f, args).map_err(|m| EvalError::new(m, help));
     }
     let arity = match f {
         Atan2 | Realmax | Realmin => 2,
@@ -486,7 +486,7 @@ pub(crate) fn real_builtin(f: Builtin, x: f64, y: f64) -> f64 {
         ToReal => x,
         ToInteger => x.round(),
         // Not real-valued: `builtin` handles them before it reaches here; NaN otherwise.
-        Pos | EnumVal | TimeVal => f64::NAN,
+        Pos | EnumVal | TimeVal | Slice | Splice => f64::NAN,
     }
 }
 
