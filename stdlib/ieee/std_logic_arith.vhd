@@ -1,9 +1,11 @@
 -- ieee.std_logic_arith: the de-facto arithmetic package of much published VHDL and
 -- VHDL-AMS (mixed-signal models of converters use it), written for vams from its documented
--- interface: the types `unsigned` and `signed` (arrays of std_logic) and the declarations of
--- their arithmetic, comparisons, shifts and conversions. Declarations only: a model that
--- uses the package analyses, and a call of one of these functions is reported where it is
--- elaborated until the simulator implements them.
+-- interface: the types `unsigned` and `signed` (arrays of std_logic), their arithmetic,
+-- comparisons, shifts and conversions. Declaration and body (plain VHDL, executed like user
+-- code). Semantics as documented for the Synopsys package: two's complement, results
+-- indexed (length-1 downto 0), an operand holding a metavalue ('U', 'X', 'Z', 'W', '-')
+-- makes an arithmetic result all 'X' (without the original's warning), a comparison with
+-- one is false ("/=" true) and conv_integer of one is 0.
 
 library ieee;
 use ieee.std_logic_1164.all;
@@ -148,3 +150,1691 @@ package std_logic_arith is
   function ext (arg : std_logic_vector; size : integer) return std_logic_vector;
   function sxt (arg : std_logic_vector; size : integer) return std_logic_vector;
 end package std_logic_arith;
+
+-- The body, in the plain VHDL that the vams interpreter runs: operands are first copied into
+-- local std_logic_vector variables indexed (n-1 downto 0), bit 0 the least significant, with
+-- 'L'/'H' read as '0'/'1' and a vector holding any metavalue ('U', 'X', 'Z', 'W', '-')
+-- replaced by all 'X'; the private helpers below then work on those. Written within what
+-- vams elaborates: array types are converted element by element (u2v, v2u, ...), an array
+-- passed to a function is always a named object (vams takes a call's bounds from its actuals
+-- at elaboration, and a function's result has none), a helper's result length comes from an
+-- array argument (`like`) rather than a size number, and a result whose length is a size
+-- parameter (conv_unsigned(x, size), ext, sxt) is built by recursion with "&".
+
+package body std_logic_arith is
+
+  -- n elements 'X', n the length of like.
+  function xs (like : std_logic_vector) return std_logic_vector is
+    variable result : std_logic_vector(like'length - 1 downto 0);
+  begin
+    for i in result'range loop
+      result(i) := 'X';
+    end loop;
+    return result;
+  end function xs;
+
+  -- True when a (a normalised operand) is unknown, that is all 'X'.
+  function unknown (a : std_logic_vector) return boolean is
+  begin
+    for i in a'range loop
+      if a(i) = 'X' then
+        return true;
+      end if;
+    end loop;
+    return false;
+  end function unknown;
+
+  -- a as a number: (a'length-1 downto 0) of '0'/'1', or all 'X' if a holds a metavalue.
+  function clean (a : std_logic_vector) return std_logic_vector is
+    alias av : std_logic_vector(a'length - 1 downto 0) is a;
+    variable result : std_logic_vector(a'length - 1 downto 0);
+  begin
+    for i in result'range loop
+      if av(i) = '0' or av(i) = 'L' then
+        result(i) := '0';
+      elsif av(i) = '1' or av(i) = 'H' then
+        result(i) := '1';
+      else
+        return xs(a);
+      end if;
+    end loop;
+    return result;
+  end function clean;
+
+  -- a (normalised) zero-extended (fill '0') or sign-extended (fill its top bit) to the length
+  -- of like, or its low bits; all 'X' stays all 'X'.
+  function extend (a : std_logic_vector; signed_fill : boolean; like : std_logic_vector)
+    return std_logic_vector is
+    alias av : std_logic_vector(a'length - 1 downto 0) is a;
+    variable result : std_logic_vector(like'length - 1 downto 0);
+    variable fill : std_logic := '0';
+  begin
+    if unknown(a) then
+      return xs(like);
+    end if;
+    if signed_fill and a'length > 0 then
+      fill := av(a'length - 1);
+    end if;
+    for i in result'range loop
+      if i < a'length then
+        result(i) := av(i);
+      else
+        result(i) := fill;
+      end if;
+    end loop;
+    return result;
+  end function extend;
+
+  -- Element-by-element copies between the three array types, indexed (length-1 downto 0).
+  function u2v (a : unsigned) return std_logic_vector is
+    alias av : unsigned(a'length - 1 downto 0) is a;
+    variable result : std_logic_vector(a'length - 1 downto 0);
+  begin
+    for i in result'range loop
+      result(i) := av(i);
+    end loop;
+    return result;
+  end function u2v;
+
+  function s2v (a : signed) return std_logic_vector is
+    alias av : signed(a'length - 1 downto 0) is a;
+    variable result : std_logic_vector(a'length - 1 downto 0);
+  begin
+    for i in result'range loop
+      result(i) := av(i);
+    end loop;
+    return result;
+  end function s2v;
+
+  function v2u (a : std_logic_vector) return unsigned is
+    alias av : std_logic_vector(a'length - 1 downto 0) is a;
+    variable result : unsigned(a'length - 1 downto 0);
+  begin
+    for i in result'range loop
+      result(i) := av(i);
+    end loop;
+    return result;
+  end function v2u;
+
+  function v2s (a : std_logic_vector) return signed is
+    alias av : std_logic_vector(a'length - 1 downto 0) is a;
+    variable result : signed(a'length - 1 downto 0);
+  begin
+    for i in result'range loop
+      result(i) := av(i);
+    end loop;
+    return result;
+  end function v2s;
+
+  -- The operands as numbers of like'length bits: an unsigned one zero-extended, a signed one
+  -- sign-extended, an integer modulo 2**like'length, a std_ulogic as 0 or 1.
+  function u_in (x : unsigned; like : std_logic_vector) return std_logic_vector is
+    variable a : std_logic_vector(x'length - 1 downto 0);
+  begin
+    a := u2v(x);
+    a := clean(a);
+    return extend(a, false, like);
+  end function u_in;
+
+  function s_in (x : signed; like : std_logic_vector) return std_logic_vector is
+    variable a : std_logic_vector(x'length - 1 downto 0);
+  begin
+    a := s2v(x);
+    a := clean(a);
+    return extend(a, true, like);
+  end function s_in;
+
+  function l_in (x : std_ulogic; like : std_logic_vector) return std_logic_vector is
+    variable a : std_logic_vector(0 downto 0);
+  begin
+    a(0) := x;
+    a := clean(a);
+    return extend(a, false, like);
+  end function l_in;
+
+  function i_in (x : integer; like : std_logic_vector) return std_logic_vector is
+    variable result : std_logic_vector(like'length - 1 downto 0);
+    variable v : integer := x;
+  begin
+    for i in 0 to like'length - 1 loop
+      if v mod 2 = 1 then
+        result(i) := '1';
+        v := (v - 1) / 2;
+      else
+        result(i) := '0';
+        v := v / 2;
+      end if;
+    end loop;
+    return result;
+  end function i_in;
+
+  -- a + b + carry in a'length bits (a and b normalised, of equal lengths).
+  function add (a, b : std_logic_vector; carry : natural) return std_logic_vector is
+    alias av : std_logic_vector(a'length - 1 downto 0) is a;
+    alias bv : std_logic_vector(b'length - 1 downto 0) is b;
+    variable result : std_logic_vector(a'length - 1 downto 0);
+    variable c : natural := carry;
+    variable s : natural;
+  begin
+    if unknown(a) or unknown(b) then
+      return xs(a);
+    end if;
+    for i in 0 to a'length - 1 loop
+      s := c;
+      if av(i) = '1' then
+        s := s + 1;
+      end if;
+      if bv(i) = '1' then
+        s := s + 1;
+      end if;
+      if s mod 2 = 1 then
+        result(i) := '1';
+      else
+        result(i) := '0';
+      end if;
+      c := s / 2;
+    end loop;
+    return result;
+  end function add;
+
+  function sum (a, b : std_logic_vector) return std_logic_vector is
+  begin
+    return add(a, b, 0);
+  end function sum;
+
+  -- a - b: a + not b + 1.
+  function diff (a, b : std_logic_vector) return std_logic_vector is
+    alias bv : std_logic_vector(b'length - 1 downto 0) is b;
+    variable nb : std_logic_vector(b'length - 1 downto 0);
+  begin
+    for i in nb'range loop
+      if bv(i) = '0' then
+        nb(i) := '1';
+      elsif bv(i) = '1' then
+        nb(i) := '0';
+      else
+        nb(i) := 'X';
+      end if;
+    end loop;
+    return add(a, nb, 1);
+  end function diff;
+
+  -- The low a'length bits of a * b (normalised, of equal lengths, read as unsigned).
+  function mul (a, b : std_logic_vector) return std_logic_vector is
+    alias av : std_logic_vector(a'length - 1 downto 0) is a;
+    alias bv : std_logic_vector(b'length - 1 downto 0) is b;
+    variable acc : std_logic_vector(a'length - 1 downto 0);
+    variable c, s : natural;
+  begin
+    if unknown(a) or unknown(b) then
+      return xs(a);
+    end if;
+    for i in acc'range loop
+      acc(i) := '0';
+    end loop;
+    for j in 0 to b'length - 1 loop
+      if bv(j) = '1' then
+        c := 0;
+        for i in j to a'length - 1 loop
+          s := c;
+          if acc(i) = '1' then
+            s := s + 1;
+          end if;
+          if av(i - j) = '1' then
+            s := s + 1;
+          end if;
+          if s mod 2 = 1 then
+            acc(i) := '1';
+          else
+            acc(i) := '0';
+          end if;
+          c := s / 2;
+        end loop;
+      end if;
+    end loop;
+    return acc;
+  end function mul;
+
+  -- The two's complement negation of a (normalised).
+  function neg (a : std_logic_vector) return std_logic_vector is
+    variable zero : std_logic_vector(a'length - 1 downto 0);
+  begin
+    zero := i_in(0, zero);
+    return diff(zero, a);
+  end function neg;
+
+  -- The magnitude of a normalised two's complement number, in as many bits (the most
+  -- negative value stays itself, as in hardware).
+  function absv (a : std_logic_vector) return std_logic_vector is
+    alias av : std_logic_vector(a'length - 1 downto 0) is a;
+  begin
+    if a'length > 0 then
+      if av(a'length - 1) = '1' then
+        return neg(a);
+      end if;
+    end if;
+    return a;
+  end function absv;
+
+  -- Compares two normalised two's complement numbers of equal lengths: -1, 0 or 1 for
+  -- a < b, a = b, a > b, and 2 when either is unknown.
+  function cmp (a, b : std_logic_vector) return integer is
+    alias av : std_logic_vector(a'length - 1 downto 0) is a;
+    alias bv : std_logic_vector(b'length - 1 downto 0) is b;
+    constant n : natural := a'length;
+  begin
+    if unknown(a) or unknown(b) then
+      return 2;
+    end if;
+    if n = 0 then
+      return 0;
+    end if;
+    if av(n - 1) /= bv(n - 1) then
+      if av(n - 1) = '1' then
+        return -1;
+      end if;
+      return 1;
+    end if;
+    for i in n - 2 downto 0 loop
+      if av(i) /= bv(i) then
+        if av(i) = '1' then
+          return 1;
+        end if;
+        return -1;
+      end if;
+    end loop;
+    return 0;
+  end function cmp;
+
+  -- The value of a normalised unsigned number, at most `most`; -1 when it is unknown.
+  function count_of (a : std_logic_vector; most : natural) return integer is
+    variable v : natural := 0;
+  begin
+    if unknown(a) then
+      return -1;
+    end if;
+    for i in a'range loop
+      v := v * 2;
+      if a(i) = '1' then
+        v := v + 1;
+      end if;
+      if v > most then
+        return most;
+      end if;
+    end loop;
+    return v;
+  end function count_of;
+
+  -- The value of a normalised unsigned number (0 when unknown).
+  function uint (a : std_logic_vector) return integer is
+    variable v : integer := 0;
+  begin
+    if unknown(a) then
+      return 0;
+    end if;
+    for i in a'range loop
+      v := v * 2;
+      if a(i) = '1' then
+        v := v + 1;
+      end if;
+    end loop;
+    return v;
+  end function uint;
+
+  -- The value of a normalised two's complement number (0 when unknown).
+  function sint (a : std_logic_vector) return integer is
+    alias av : std_logic_vector(a'length - 1 downto 0) is a;
+    variable v : integer := 0;
+  begin
+    if unknown(a) or a'length = 0 then
+      return 0;
+    end if;
+    if av(a'length - 1) = '0' then
+      return uint(a);
+    end if;
+    -- Negative: -(value of the inverted bits) - 1, which stays within integer's range.
+    for i in av'range loop
+      v := v * 2;
+      if av(i) = '0' then
+        v := v + 1;
+      end if;
+    end loop;
+    return -v - 1;
+  end function sint;
+
+  -- a (normalised) extended with fill or cut to size elements, as each result type: built by
+  -- recursion, element size-1 first, since size is not known at elaboration.
+  function vbuild (a : std_logic_vector; fill : std_logic; size : natural)
+    return std_logic_vector is
+    alias av : std_logic_vector(a'length - 1 downto 0) is a;
+    constant none : std_logic_vector(-1 downto 0) := (others => '0');
+    variable e : std_logic := fill;
+  begin
+    if size = 0 then
+      return none;
+    end if;
+    if size <= a'length then
+      e := av(size - 1);
+    end if;
+    return e & vbuild(a, fill, size - 1);
+  end function vbuild;
+
+  function ubuild (a : std_logic_vector; fill : std_logic; size : natural) return unsigned is
+    alias av : std_logic_vector(a'length - 1 downto 0) is a;
+    constant none : unsigned(-1 downto 0) := (others => '0');
+    variable e : std_logic := fill;
+  begin
+    if size = 0 then
+      return none;
+    end if;
+    if size <= a'length then
+      e := av(size - 1);
+    end if;
+    return e & ubuild(a, fill, size - 1);
+  end function ubuild;
+
+  function sbuild (a : std_logic_vector; fill : std_logic; size : natural) return signed is
+    alias av : std_logic_vector(a'length - 1 downto 0) is a;
+    constant none : signed(-1 downto 0) := (others => '0');
+    variable e : std_logic := fill;
+  begin
+    if size = 0 then
+      return none;
+    end if;
+    if size <= a'length then
+      e := av(size - 1);
+    end if;
+    return e & sbuild(a, fill, size - 1);
+  end function sbuild;
+
+  -- The fill of a normalised operand extended as unsigned ('0') or signed (its top bit);
+  -- 'X' when it is unknown.
+  function fill_of (a : std_logic_vector; signed_fill : boolean) return std_logic is
+    alias av : std_logic_vector(a'length - 1 downto 0) is a;
+  begin
+    if unknown(a) then
+      return 'X';
+    elsif signed_fill and a'length > 0 then
+      return av(a'length - 1);
+    end if;
+    return '0';
+  end function fill_of;
+
+  ---------------------------------------------------------------------------
+  -- Arithmetic: "+" and "-" give the longer operand's length (an unsigned operand beside
+  -- a signed one counts one bit more, its sign); with an integer or a std_ulogic, the
+  -- vector's length; "*" the sum of the lengths. An integer operand is taken modulo
+  -- 2**length, so a negative one works as its two's complement.
+  ---------------------------------------------------------------------------
+
+  function "+" (l : unsigned; r : unsigned) return unsigned is
+    constant n : natural := (l'length + r'length + abs(l'length - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := u_in(r, b);
+    a := sum(a, b);
+    return v2u(a);
+  end function "+";
+
+  function "+" (l : unsigned; r : unsigned) return std_logic_vector is
+    constant n : natural := (l'length + r'length + abs(l'length - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := u_in(r, b);
+    a := sum(a, b);
+    return a;
+  end function "+";
+
+  function "+" (l : signed; r : signed) return signed is
+    constant n : natural := (l'length + r'length + abs(l'length - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := s_in(r, b);
+    a := sum(a, b);
+    return v2s(a);
+  end function "+";
+
+  function "+" (l : signed; r : signed) return std_logic_vector is
+    constant n : natural := (l'length + r'length + abs(l'length - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := s_in(r, b);
+    a := sum(a, b);
+    return a;
+  end function "+";
+
+  function "+" (l : unsigned; r : signed) return signed is
+    constant n : natural := (l'length + 1 + r'length + abs(l'length + 1 - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := s_in(r, b);
+    a := sum(a, b);
+    return v2s(a);
+  end function "+";
+
+  function "+" (l : unsigned; r : signed) return std_logic_vector is
+    constant n : natural := (l'length + 1 + r'length + abs(l'length + 1 - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := s_in(r, b);
+    a := sum(a, b);
+    return a;
+  end function "+";
+
+  function "+" (l : signed; r : unsigned) return signed is
+    constant n : natural := (l'length + r'length + 1 + abs(l'length - (r'length + 1))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := u_in(r, b);
+    a := sum(a, b);
+    return v2s(a);
+  end function "+";
+
+  function "+" (l : signed; r : unsigned) return std_logic_vector is
+    constant n : natural := (l'length + r'length + 1 + abs(l'length - (r'length + 1))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := u_in(r, b);
+    a := sum(a, b);
+    return a;
+  end function "+";
+
+  function "+" (l : unsigned; r : integer) return unsigned is
+    constant n : natural := l'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := i_in(r, b);
+    a := sum(a, b);
+    return v2u(a);
+  end function "+";
+
+  function "+" (l : unsigned; r : integer) return std_logic_vector is
+    constant n : natural := l'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := i_in(r, b);
+    a := sum(a, b);
+    return a;
+  end function "+";
+
+  function "+" (l : integer; r : unsigned) return unsigned is
+    constant n : natural := r'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := i_in(l, a);
+    b := u_in(r, b);
+    a := sum(a, b);
+    return v2u(a);
+  end function "+";
+
+  function "+" (l : integer; r : unsigned) return std_logic_vector is
+    constant n : natural := r'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := i_in(l, a);
+    b := u_in(r, b);
+    a := sum(a, b);
+    return a;
+  end function "+";
+
+  function "+" (l : signed; r : integer) return signed is
+    constant n : natural := l'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := i_in(r, b);
+    a := sum(a, b);
+    return v2s(a);
+  end function "+";
+
+  function "+" (l : signed; r : integer) return std_logic_vector is
+    constant n : natural := l'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := i_in(r, b);
+    a := sum(a, b);
+    return a;
+  end function "+";
+
+  function "+" (l : integer; r : signed) return signed is
+    constant n : natural := r'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := i_in(l, a);
+    b := s_in(r, b);
+    a := sum(a, b);
+    return v2s(a);
+  end function "+";
+
+  function "+" (l : integer; r : signed) return std_logic_vector is
+    constant n : natural := r'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := i_in(l, a);
+    b := s_in(r, b);
+    a := sum(a, b);
+    return a;
+  end function "+";
+
+  function "+" (l : unsigned; r : std_ulogic) return unsigned is
+    constant n : natural := l'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := l_in(r, b);
+    a := sum(a, b);
+    return v2u(a);
+  end function "+";
+
+  function "+" (l : unsigned; r : std_ulogic) return std_logic_vector is
+    constant n : natural := l'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := l_in(r, b);
+    a := sum(a, b);
+    return a;
+  end function "+";
+
+  function "+" (l : std_ulogic; r : unsigned) return unsigned is
+    constant n : natural := r'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := l_in(l, a);
+    b := u_in(r, b);
+    a := sum(a, b);
+    return v2u(a);
+  end function "+";
+
+  function "+" (l : std_ulogic; r : unsigned) return std_logic_vector is
+    constant n : natural := r'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := l_in(l, a);
+    b := u_in(r, b);
+    a := sum(a, b);
+    return a;
+  end function "+";
+
+  function "+" (l : signed; r : std_ulogic) return signed is
+    constant n : natural := l'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := l_in(r, b);
+    a := sum(a, b);
+    return v2s(a);
+  end function "+";
+
+  function "+" (l : signed; r : std_ulogic) return std_logic_vector is
+    constant n : natural := l'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := l_in(r, b);
+    a := sum(a, b);
+    return a;
+  end function "+";
+
+  function "+" (l : std_ulogic; r : signed) return signed is
+    constant n : natural := r'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := l_in(l, a);
+    b := s_in(r, b);
+    a := sum(a, b);
+    return v2s(a);
+  end function "+";
+
+  function "+" (l : std_ulogic; r : signed) return std_logic_vector is
+    constant n : natural := r'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := l_in(l, a);
+    b := s_in(r, b);
+    a := sum(a, b);
+    return a;
+  end function "+";
+
+  function "-" (l : unsigned; r : unsigned) return unsigned is
+    constant n : natural := (l'length + r'length + abs(l'length - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := u_in(r, b);
+    a := diff(a, b);
+    return v2u(a);
+  end function "-";
+
+  function "-" (l : unsigned; r : unsigned) return std_logic_vector is
+    constant n : natural := (l'length + r'length + abs(l'length - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := u_in(r, b);
+    a := diff(a, b);
+    return a;
+  end function "-";
+
+  function "-" (l : signed; r : signed) return signed is
+    constant n : natural := (l'length + r'length + abs(l'length - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := s_in(r, b);
+    a := diff(a, b);
+    return v2s(a);
+  end function "-";
+
+  function "-" (l : signed; r : signed) return std_logic_vector is
+    constant n : natural := (l'length + r'length + abs(l'length - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := s_in(r, b);
+    a := diff(a, b);
+    return a;
+  end function "-";
+
+  function "-" (l : unsigned; r : signed) return signed is
+    constant n : natural := (l'length + 1 + r'length + abs(l'length + 1 - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := s_in(r, b);
+    a := diff(a, b);
+    return v2s(a);
+  end function "-";
+
+  function "-" (l : unsigned; r : signed) return std_logic_vector is
+    constant n : natural := (l'length + 1 + r'length + abs(l'length + 1 - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := s_in(r, b);
+    a := diff(a, b);
+    return a;
+  end function "-";
+
+  function "-" (l : signed; r : unsigned) return signed is
+    constant n : natural := (l'length + r'length + 1 + abs(l'length - (r'length + 1))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := u_in(r, b);
+    a := diff(a, b);
+    return v2s(a);
+  end function "-";
+
+  function "-" (l : signed; r : unsigned) return std_logic_vector is
+    constant n : natural := (l'length + r'length + 1 + abs(l'length - (r'length + 1))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := u_in(r, b);
+    a := diff(a, b);
+    return a;
+  end function "-";
+
+  function "-" (l : unsigned; r : integer) return unsigned is
+    constant n : natural := l'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := i_in(r, b);
+    a := diff(a, b);
+    return v2u(a);
+  end function "-";
+
+  function "-" (l : unsigned; r : integer) return std_logic_vector is
+    constant n : natural := l'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := i_in(r, b);
+    a := diff(a, b);
+    return a;
+  end function "-";
+
+  function "-" (l : integer; r : unsigned) return unsigned is
+    constant n : natural := r'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := i_in(l, a);
+    b := u_in(r, b);
+    a := diff(a, b);
+    return v2u(a);
+  end function "-";
+
+  function "-" (l : integer; r : unsigned) return std_logic_vector is
+    constant n : natural := r'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := i_in(l, a);
+    b := u_in(r, b);
+    a := diff(a, b);
+    return a;
+  end function "-";
+
+  function "-" (l : signed; r : integer) return signed is
+    constant n : natural := l'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := i_in(r, b);
+    a := diff(a, b);
+    return v2s(a);
+  end function "-";
+
+  function "-" (l : signed; r : integer) return std_logic_vector is
+    constant n : natural := l'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := i_in(r, b);
+    a := diff(a, b);
+    return a;
+  end function "-";
+
+  function "-" (l : integer; r : signed) return signed is
+    constant n : natural := r'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := i_in(l, a);
+    b := s_in(r, b);
+    a := diff(a, b);
+    return v2s(a);
+  end function "-";
+
+  function "-" (l : integer; r : signed) return std_logic_vector is
+    constant n : natural := r'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := i_in(l, a);
+    b := s_in(r, b);
+    a := diff(a, b);
+    return a;
+  end function "-";
+
+  function "-" (l : unsigned; r : std_ulogic) return unsigned is
+    constant n : natural := l'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := l_in(r, b);
+    a := diff(a, b);
+    return v2u(a);
+  end function "-";
+
+  function "-" (l : unsigned; r : std_ulogic) return std_logic_vector is
+    constant n : natural := l'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := l_in(r, b);
+    a := diff(a, b);
+    return a;
+  end function "-";
+
+  function "-" (l : std_ulogic; r : unsigned) return unsigned is
+    constant n : natural := r'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := l_in(l, a);
+    b := u_in(r, b);
+    a := diff(a, b);
+    return v2u(a);
+  end function "-";
+
+  function "-" (l : std_ulogic; r : unsigned) return std_logic_vector is
+    constant n : natural := r'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := l_in(l, a);
+    b := u_in(r, b);
+    a := diff(a, b);
+    return a;
+  end function "-";
+
+  function "-" (l : signed; r : std_ulogic) return signed is
+    constant n : natural := l'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := l_in(r, b);
+    a := diff(a, b);
+    return v2s(a);
+  end function "-";
+
+  function "-" (l : signed; r : std_ulogic) return std_logic_vector is
+    constant n : natural := l'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := l_in(r, b);
+    a := diff(a, b);
+    return a;
+  end function "-";
+
+  function "-" (l : std_ulogic; r : signed) return signed is
+    constant n : natural := r'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := l_in(l, a);
+    b := s_in(r, b);
+    a := diff(a, b);
+    return v2s(a);
+  end function "-";
+
+  function "-" (l : std_ulogic; r : signed) return std_logic_vector is
+    constant n : natural := r'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := l_in(l, a);
+    b := s_in(r, b);
+    a := diff(a, b);
+    return a;
+  end function "-";
+
+  function "+" (l : unsigned) return unsigned is
+    variable a : std_logic_vector(l'length - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    return v2u(a);
+  end function "+";
+
+  function "+" (l : signed) return signed is
+    variable a : std_logic_vector(l'length - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    return v2s(a);
+  end function "+";
+
+  function "-" (l : signed) return signed is
+    variable a : std_logic_vector(l'length - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    a := neg(a);
+    return v2s(a);
+  end function "-";
+
+  function "abs" (l : signed) return signed is
+    variable a : std_logic_vector(l'length - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    a := absv(a);
+    return v2s(a);
+  end function "abs";
+
+  function "+" (l : signed) return std_logic_vector is
+    variable a : std_logic_vector(l'length - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    return a;
+  end function "+";
+
+  function "-" (l : signed) return std_logic_vector is
+    variable a : std_logic_vector(l'length - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    a := neg(a);
+    return a;
+  end function "-";
+
+  function "abs" (l : signed) return std_logic_vector is
+    variable a : std_logic_vector(l'length - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    a := absv(a);
+    return a;
+  end function "abs";
+
+  function "+" (l : unsigned) return std_logic_vector is
+    variable a : std_logic_vector(l'length - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    return a;
+  end function "+";
+
+  function "*" (l : unsigned; r : unsigned) return unsigned is
+    constant n : natural := l'length + r'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := u_in(r, b);
+    a := mul(a, b);
+    return v2u(a);
+  end function "*";
+
+  function "*" (l : unsigned; r : unsigned) return std_logic_vector is
+    constant n : natural := l'length + r'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := u_in(r, b);
+    a := mul(a, b);
+    return a;
+  end function "*";
+
+  function "*" (l : signed; r : signed) return signed is
+    constant n : natural := l'length + r'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := s_in(r, b);
+    a := mul(a, b);
+    return v2s(a);
+  end function "*";
+
+  function "*" (l : signed; r : signed) return std_logic_vector is
+    constant n : natural := l'length + r'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := s_in(r, b);
+    a := mul(a, b);
+    return a;
+  end function "*";
+
+  function "*" (l : unsigned; r : signed) return signed is
+    constant n : natural := l'length + 1 + r'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := s_in(r, b);
+    a := mul(a, b);
+    return v2s(a);
+  end function "*";
+
+  function "*" (l : unsigned; r : signed) return std_logic_vector is
+    constant n : natural := l'length + 1 + r'length;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := s_in(r, b);
+    a := mul(a, b);
+    return a;
+  end function "*";
+
+  function "*" (l : signed; r : unsigned) return signed is
+    constant n : natural := l'length + r'length + 1;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := u_in(r, b);
+    a := mul(a, b);
+    return v2s(a);
+  end function "*";
+
+  function "*" (l : signed; r : unsigned) return std_logic_vector is
+    constant n : natural := l'length + r'length + 1;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := u_in(r, b);
+    a := mul(a, b);
+    return a;
+  end function "*";
+
+  function "<" (l : unsigned; r : unsigned) return boolean is
+    constant n : natural := (l'length + 1 + r'length + 1 + abs(l'length + 1 - (r'length + 1))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := u_in(r, b);
+    return cmp(a, b) = -1;
+  end function "<";
+
+  function "<" (l : signed; r : signed) return boolean is
+    constant n : natural := (l'length + r'length + abs(l'length - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := s_in(r, b);
+    return cmp(a, b) = -1;
+  end function "<";
+
+  function "<" (l : unsigned; r : signed) return boolean is
+    constant n : natural := (l'length + 1 + r'length + abs(l'length + 1 - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := s_in(r, b);
+    return cmp(a, b) = -1;
+  end function "<";
+
+  function "<" (l : signed; r : unsigned) return boolean is
+    constant n : natural := (l'length + r'length + 1 + abs(l'length - (r'length + 1))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := u_in(r, b);
+    return cmp(a, b) = -1;
+  end function "<";
+
+  function "<" (l : unsigned; r : integer) return boolean is
+    constant n : natural := (l'length + 1 + 32 + abs(l'length + 1 - (32))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := i_in(r, b);
+    return cmp(a, b) = -1;
+  end function "<";
+
+  function "<" (l : integer; r : unsigned) return boolean is
+    constant n : natural := (32 + r'length + 1 + abs(32 - (r'length + 1))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := i_in(l, a);
+    b := u_in(r, b);
+    return cmp(a, b) = -1;
+  end function "<";
+
+  function "<" (l : signed; r : integer) return boolean is
+    constant n : natural := (l'length + 32 + abs(l'length - (32))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := i_in(r, b);
+    return cmp(a, b) = -1;
+  end function "<";
+
+  function "<" (l : integer; r : signed) return boolean is
+    constant n : natural := (32 + r'length + abs(32 - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := i_in(l, a);
+    b := s_in(r, b);
+    return cmp(a, b) = -1;
+  end function "<";
+
+  function "<=" (l : unsigned; r : unsigned) return boolean is
+    constant n : natural := (l'length + 1 + r'length + 1 + abs(l'length + 1 - (r'length + 1))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := u_in(r, b);
+    return cmp(a, b) <= 0;
+  end function "<=";
+
+  function "<=" (l : signed; r : signed) return boolean is
+    constant n : natural := (l'length + r'length + abs(l'length - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := s_in(r, b);
+    return cmp(a, b) <= 0;
+  end function "<=";
+
+  function "<=" (l : unsigned; r : signed) return boolean is
+    constant n : natural := (l'length + 1 + r'length + abs(l'length + 1 - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := s_in(r, b);
+    return cmp(a, b) <= 0;
+  end function "<=";
+
+  function "<=" (l : signed; r : unsigned) return boolean is
+    constant n : natural := (l'length + r'length + 1 + abs(l'length - (r'length + 1))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := u_in(r, b);
+    return cmp(a, b) <= 0;
+  end function "<=";
+
+  function "<=" (l : unsigned; r : integer) return boolean is
+    constant n : natural := (l'length + 1 + 32 + abs(l'length + 1 - (32))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := i_in(r, b);
+    return cmp(a, b) <= 0;
+  end function "<=";
+
+  function "<=" (l : integer; r : unsigned) return boolean is
+    constant n : natural := (32 + r'length + 1 + abs(32 - (r'length + 1))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := i_in(l, a);
+    b := u_in(r, b);
+    return cmp(a, b) <= 0;
+  end function "<=";
+
+  function "<=" (l : signed; r : integer) return boolean is
+    constant n : natural := (l'length + 32 + abs(l'length - (32))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := i_in(r, b);
+    return cmp(a, b) <= 0;
+  end function "<=";
+
+  function "<=" (l : integer; r : signed) return boolean is
+    constant n : natural := (32 + r'length + abs(32 - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := i_in(l, a);
+    b := s_in(r, b);
+    return cmp(a, b) <= 0;
+  end function "<=";
+
+  function ">" (l : unsigned; r : unsigned) return boolean is
+    constant n : natural := (l'length + 1 + r'length + 1 + abs(l'length + 1 - (r'length + 1))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := u_in(r, b);
+    return cmp(a, b) = 1;
+  end function ">";
+
+  function ">" (l : signed; r : signed) return boolean is
+    constant n : natural := (l'length + r'length + abs(l'length - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := s_in(r, b);
+    return cmp(a, b) = 1;
+  end function ">";
+
+  function ">" (l : unsigned; r : signed) return boolean is
+    constant n : natural := (l'length + 1 + r'length + abs(l'length + 1 - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := s_in(r, b);
+    return cmp(a, b) = 1;
+  end function ">";
+
+  function ">" (l : signed; r : unsigned) return boolean is
+    constant n : natural := (l'length + r'length + 1 + abs(l'length - (r'length + 1))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := u_in(r, b);
+    return cmp(a, b) = 1;
+  end function ">";
+
+  function ">" (l : unsigned; r : integer) return boolean is
+    constant n : natural := (l'length + 1 + 32 + abs(l'length + 1 - (32))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := i_in(r, b);
+    return cmp(a, b) = 1;
+  end function ">";
+
+  function ">" (l : integer; r : unsigned) return boolean is
+    constant n : natural := (32 + r'length + 1 + abs(32 - (r'length + 1))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := i_in(l, a);
+    b := u_in(r, b);
+    return cmp(a, b) = 1;
+  end function ">";
+
+  function ">" (l : signed; r : integer) return boolean is
+    constant n : natural := (l'length + 32 + abs(l'length - (32))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := i_in(r, b);
+    return cmp(a, b) = 1;
+  end function ">";
+
+  function ">" (l : integer; r : signed) return boolean is
+    constant n : natural := (32 + r'length + abs(32 - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := i_in(l, a);
+    b := s_in(r, b);
+    return cmp(a, b) = 1;
+  end function ">";
+
+  function ">=" (l : unsigned; r : unsigned) return boolean is
+    constant n : natural := (l'length + 1 + r'length + 1 + abs(l'length + 1 - (r'length + 1))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := u_in(r, b);
+    return cmp(b, a) <= 0;
+  end function ">=";
+
+  function ">=" (l : signed; r : signed) return boolean is
+    constant n : natural := (l'length + r'length + abs(l'length - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := s_in(r, b);
+    return cmp(b, a) <= 0;
+  end function ">=";
+
+  function ">=" (l : unsigned; r : signed) return boolean is
+    constant n : natural := (l'length + 1 + r'length + abs(l'length + 1 - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := s_in(r, b);
+    return cmp(b, a) <= 0;
+  end function ">=";
+
+  function ">=" (l : signed; r : unsigned) return boolean is
+    constant n : natural := (l'length + r'length + 1 + abs(l'length - (r'length + 1))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := u_in(r, b);
+    return cmp(b, a) <= 0;
+  end function ">=";
+
+  function ">=" (l : unsigned; r : integer) return boolean is
+    constant n : natural := (l'length + 1 + 32 + abs(l'length + 1 - (32))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := i_in(r, b);
+    return cmp(b, a) <= 0;
+  end function ">=";
+
+  function ">=" (l : integer; r : unsigned) return boolean is
+    constant n : natural := (32 + r'length + 1 + abs(32 - (r'length + 1))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := i_in(l, a);
+    b := u_in(r, b);
+    return cmp(b, a) <= 0;
+  end function ">=";
+
+  function ">=" (l : signed; r : integer) return boolean is
+    constant n : natural := (l'length + 32 + abs(l'length - (32))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := i_in(r, b);
+    return cmp(b, a) <= 0;
+  end function ">=";
+
+  function ">=" (l : integer; r : signed) return boolean is
+    constant n : natural := (32 + r'length + abs(32 - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := i_in(l, a);
+    b := s_in(r, b);
+    return cmp(b, a) <= 0;
+  end function ">=";
+
+  function "=" (l : unsigned; r : unsigned) return boolean is
+    constant n : natural := (l'length + 1 + r'length + 1 + abs(l'length + 1 - (r'length + 1))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := u_in(r, b);
+    return cmp(a, b) = 0;
+  end function "=";
+
+  function "=" (l : signed; r : signed) return boolean is
+    constant n : natural := (l'length + r'length + abs(l'length - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := s_in(r, b);
+    return cmp(a, b) = 0;
+  end function "=";
+
+  function "=" (l : unsigned; r : signed) return boolean is
+    constant n : natural := (l'length + 1 + r'length + abs(l'length + 1 - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := s_in(r, b);
+    return cmp(a, b) = 0;
+  end function "=";
+
+  function "=" (l : signed; r : unsigned) return boolean is
+    constant n : natural := (l'length + r'length + 1 + abs(l'length - (r'length + 1))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := u_in(r, b);
+    return cmp(a, b) = 0;
+  end function "=";
+
+  function "=" (l : unsigned; r : integer) return boolean is
+    constant n : natural := (l'length + 1 + 32 + abs(l'length + 1 - (32))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := i_in(r, b);
+    return cmp(a, b) = 0;
+  end function "=";
+
+  function "=" (l : integer; r : unsigned) return boolean is
+    constant n : natural := (32 + r'length + 1 + abs(32 - (r'length + 1))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := i_in(l, a);
+    b := u_in(r, b);
+    return cmp(a, b) = 0;
+  end function "=";
+
+  function "=" (l : signed; r : integer) return boolean is
+    constant n : natural := (l'length + 32 + abs(l'length - (32))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := i_in(r, b);
+    return cmp(a, b) = 0;
+  end function "=";
+
+  function "=" (l : integer; r : signed) return boolean is
+    constant n : natural := (32 + r'length + abs(32 - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := i_in(l, a);
+    b := s_in(r, b);
+    return cmp(a, b) = 0;
+  end function "=";
+
+  function "/=" (l : unsigned; r : unsigned) return boolean is
+    constant n : natural := (l'length + 1 + r'length + 1 + abs(l'length + 1 - (r'length + 1))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := u_in(r, b);
+    return cmp(a, b) /= 0;
+  end function "/=";
+
+  function "/=" (l : signed; r : signed) return boolean is
+    constant n : natural := (l'length + r'length + abs(l'length - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := s_in(r, b);
+    return cmp(a, b) /= 0;
+  end function "/=";
+
+  function "/=" (l : unsigned; r : signed) return boolean is
+    constant n : natural := (l'length + 1 + r'length + abs(l'length + 1 - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := s_in(r, b);
+    return cmp(a, b) /= 0;
+  end function "/=";
+
+  function "/=" (l : signed; r : unsigned) return boolean is
+    constant n : natural := (l'length + r'length + 1 + abs(l'length - (r'length + 1))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := u_in(r, b);
+    return cmp(a, b) /= 0;
+  end function "/=";
+
+  function "/=" (l : unsigned; r : integer) return boolean is
+    constant n : natural := (l'length + 1 + 32 + abs(l'length + 1 - (32))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := u_in(l, a);
+    b := i_in(r, b);
+    return cmp(a, b) /= 0;
+  end function "/=";
+
+  function "/=" (l : integer; r : unsigned) return boolean is
+    constant n : natural := (32 + r'length + 1 + abs(32 - (r'length + 1))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := i_in(l, a);
+    b := u_in(r, b);
+    return cmp(a, b) /= 0;
+  end function "/=";
+
+  function "/=" (l : signed; r : integer) return boolean is
+    constant n : natural := (l'length + 32 + abs(l'length - (32))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := s_in(l, a);
+    b := i_in(r, b);
+    return cmp(a, b) /= 0;
+  end function "/=";
+
+  function "/=" (l : integer; r : signed) return boolean is
+    constant n : natural := (32 + r'length + abs(32 - (r'length))) / 2;
+    variable a, b : std_logic_vector(n - 1 downto 0);
+  begin
+    a := i_in(l, a);
+    b := s_in(r, b);
+    return cmp(a, b) /= 0;
+  end function "/=";
+
+  ---------------------------------------------------------------------------
+  -- Shifts: the count is unsigned; shl fills with '0', shr with '0' (unsigned) or the sign
+  -- bit (signed). The shifted elements are copied as they are; an unknown count gives 'X's.
+  ---------------------------------------------------------------------------
+
+  function shl (arg : unsigned; count : unsigned) return unsigned is
+    alias av : unsigned(arg'length - 1 downto 0) is arg;
+    variable result : unsigned(arg'length - 1 downto 0);
+    variable cv : std_logic_vector(count'length - 1 downto 0);
+    variable c : integer;
+  begin
+    cv := u_in(count, cv);
+    c := count_of(cv, arg'length);
+    for i in result'range loop
+      if c < 0 then
+        result(i) := 'X';
+      elsif i >= c then
+        result(i) := av(i - c);
+      else
+        result(i) := '0';
+      end if;
+    end loop;
+    return result;
+  end function shl;
+
+  function shl (arg : signed; count : unsigned) return signed is
+    alias av : signed(arg'length - 1 downto 0) is arg;
+    variable result : signed(arg'length - 1 downto 0);
+    variable cv : std_logic_vector(count'length - 1 downto 0);
+    variable c : integer;
+  begin
+    cv := u_in(count, cv);
+    c := count_of(cv, arg'length);
+    for i in result'range loop
+      if c < 0 then
+        result(i) := 'X';
+      elsif i >= c then
+        result(i) := av(i - c);
+      else
+        result(i) := '0';
+      end if;
+    end loop;
+    return result;
+  end function shl;
+
+  function shr (arg : unsigned; count : unsigned) return unsigned is
+    alias av : unsigned(arg'length - 1 downto 0) is arg;
+    variable result : unsigned(arg'length - 1 downto 0);
+    variable cv : std_logic_vector(count'length - 1 downto 0);
+    variable c : integer;
+  begin
+    cv := u_in(count, cv);
+    c := count_of(cv, arg'length);
+    for i in result'range loop
+      if c < 0 then
+        result(i) := 'X';
+      elsif i + c < arg'length then
+        result(i) := av(i + c);
+      else
+        result(i) := '0';
+      end if;
+    end loop;
+    return result;
+  end function shr;
+
+  function shr (arg : signed; count : unsigned) return signed is
+    alias av : signed(arg'length - 1 downto 0) is arg;
+    variable result : signed(arg'length - 1 downto 0);
+    variable cv : std_logic_vector(count'length - 1 downto 0);
+    variable c : integer;
+  begin
+    cv := u_in(count, cv);
+    c := count_of(cv, arg'length);
+    for i in result'range loop
+      if c < 0 then
+        result(i) := 'X';
+      elsif i + c < arg'length then
+        result(i) := av(i + c);
+      else
+        result(i) := av(arg'length - 1);
+      end if;
+    end loop;
+    return result;
+  end function shr;
+
+  ---------------------------------------------------------------------------
+  -- Conversions. conv_integer of an operand holding a metavalue is 0; the vector
+  -- conversions give 'X's for it. Vectors are zero-extended (unsigned, std_ulogic) or
+  -- sign-extended (signed, integer) to size, or keep their low size bits. Results whose
+  -- length is size are built element by element (see vbuild).
+  ---------------------------------------------------------------------------
+
+  function conv_integer (arg : integer) return integer is
+  begin
+    return arg;
+  end function conv_integer;
+
+  function conv_integer (arg : unsigned) return integer is
+    variable a : std_logic_vector(arg'length - 1 downto 0);
+  begin
+    a := u_in(arg, a);
+    return uint(a);
+  end function conv_integer;
+
+  function conv_integer (arg : signed) return integer is
+    variable a : std_logic_vector(arg'length - 1 downto 0);
+  begin
+    a := s_in(arg, a);
+    return sint(a);
+  end function conv_integer;
+
+  function conv_integer (arg : std_ulogic) return integer is
+    variable a : std_logic_vector(0 downto 0);
+  begin
+    a := l_in(arg, a);
+    return uint(a);
+  end function conv_integer;
+
+  function conv_unsigned (arg : integer; size : integer) return unsigned is
+    variable a : std_logic_vector(31 downto 0);
+  begin
+    a := i_in(arg, a);
+    return ubuild(a, a(31), size);
+  end function conv_unsigned;
+
+  function conv_unsigned (arg : unsigned; size : integer) return unsigned is
+    variable a : std_logic_vector(arg'length - 1 downto 0);
+  begin
+    a := u_in(arg, a);
+    return ubuild(a, fill_of(a, false), size);
+  end function conv_unsigned;
+
+  function conv_unsigned (arg : signed; size : integer) return unsigned is
+    variable a : std_logic_vector(arg'length - 1 downto 0);
+  begin
+    a := s_in(arg, a);
+    return ubuild(a, fill_of(a, true), size);
+  end function conv_unsigned;
+
+  function conv_unsigned (arg : std_ulogic; size : integer) return unsigned is
+    variable a : std_logic_vector(0 downto 0);
+  begin
+    a := l_in(arg, a);
+    return ubuild(a, fill_of(a, false), size);
+  end function conv_unsigned;
+
+  function conv_signed (arg : integer; size : integer) return signed is
+    variable a : std_logic_vector(31 downto 0);
+  begin
+    a := i_in(arg, a);
+    return sbuild(a, a(31), size);
+  end function conv_signed;
+
+  function conv_signed (arg : unsigned; size : integer) return signed is
+    variable a : std_logic_vector(arg'length - 1 downto 0);
+  begin
+    a := u_in(arg, a);
+    return sbuild(a, fill_of(a, false), size);
+  end function conv_signed;
+
+  function conv_signed (arg : signed; size : integer) return signed is
+    variable a : std_logic_vector(arg'length - 1 downto 0);
+  begin
+    a := s_in(arg, a);
+    return sbuild(a, fill_of(a, true), size);
+  end function conv_signed;
+
+  function conv_signed (arg : std_ulogic; size : integer) return signed is
+    variable a : std_logic_vector(0 downto 0);
+  begin
+    a := l_in(arg, a);
+    return sbuild(a, fill_of(a, false), size);
+  end function conv_signed;
+
+  function conv_std_logic_vector (arg : integer; size : integer) return std_logic_vector is
+    variable a : std_logic_vector(31 downto 0);
+  begin
+    a := i_in(arg, a);
+    return vbuild(a, a(31), size);
+  end function conv_std_logic_vector;
+
+  function conv_std_logic_vector (arg : unsigned; size : integer) return std_logic_vector is
+    variable a : std_logic_vector(arg'length - 1 downto 0);
+  begin
+    a := u_in(arg, a);
+    return vbuild(a, fill_of(a, false), size);
+  end function conv_std_logic_vector;
+
+  function conv_std_logic_vector (arg : signed; size : integer) return std_logic_vector is
+    variable a : std_logic_vector(arg'length - 1 downto 0);
+  begin
+    a := s_in(arg, a);
+    return vbuild(a, fill_of(a, true), size);
+  end function conv_std_logic_vector;
+
+  function conv_std_logic_vector (arg : std_ulogic; size : integer) return std_logic_vector is
+    variable a : std_logic_vector(0 downto 0);
+  begin
+    a := l_in(arg, a);
+    return vbuild(a, fill_of(a, false), size);
+  end function conv_std_logic_vector;
+
+  -- ext and sxt copy the elements as they are (no metavalue check): zero or sign
+  -- extension to size, or the low size elements when size is shorter.
+  function ext (arg : std_logic_vector; size : integer) return std_logic_vector is
+  begin
+    return vbuild(arg, '0', size);
+  end function ext;
+
+  function sxt (arg : std_logic_vector; size : integer) return std_logic_vector is
+    alias av : std_logic_vector(arg'length - 1 downto 0) is arg;
+  begin
+    if arg'length = 0 then
+      return vbuild(arg, '0', size);
+    end if;
+    return vbuild(arg, av(arg'length - 1), size);
+  end function sxt;
+
+end package body std_logic_arith;
