@@ -189,9 +189,10 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_groups_and_attribute_signatures ... ok"))
         .stdout(contains("test tb_configuration_instance ... ok"))
         .stdout(contains("test tb_guarded_blocks ... ok"))
+        .stdout(contains("test tb_slices ... ok"))
         .stdout(contains("test tb_numeric_std_arith ... ok"))
         .stdout(contains("test tb_std_logic_arith_packages ... ok"))
-        .stdout(contains("39 passed, 0 failed"));
+        .stdout(contains("40 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it
