@@ -564,6 +564,10 @@ pub enum Builtin {
     /// A slice `a(l to r)` (processes only): arguments the array, the position of its first
     /// element from the left, and the number of elements.
     Slice,
+    /// `T'value(s)` (processes only): arguments the string and what `T` is: the literals of
+    /// an enumeration type (an array of strings, characters written `'c'`), or the string
+    /// `"integer"`, `"real"`, `"time"` or `"boolean"`.
+    ValueOf,
     /// The array `a` with the elements from a position replaced by those of `v` (a slice
     /// assignment `a(l to r) := v`): arguments `a`, the position, the slice's length, `v`.
     Splice,
@@ -575,7 +579,12 @@ impl Builtin {
     pub fn on_values(self) -> bool {
         matches!(
             self,
-            Builtin::Pos | Builtin::EnumVal | Builtin::TimeVal | Builtin::Slice | Builtin::Splice
+            Builtin::Pos
+                | Builtin::EnumVal
+                | Builtin::TimeVal
+                | Builtin::Slice
+                | Builtin::Splice
+                | Builtin::ValueOf
         )
     }
 }
@@ -621,7 +630,72 @@ pub fn value_builtin(f: Builtin, args: &[Value]) -> Result<Value, String> {
             elements.splice(first..first + part.len(), part);
             Ok(aggregate_value(elements, matches!(a, Value::String(_))))
         }
+        (Builtin::ValueOf, [text, kind]) => value_of(text, kind),
         _ => scalar_attribute(f, args),
+    }
+}
+
+/// `T'value(text)` (LRM 14.1): the literal `text` (leading and trailing blanks ignored,
+/// identifiers in any case) as a value of the type `kind` describes ([`Builtin::ValueOf`]).
+fn value_of(text: &Value, kind: &Value) -> Result<Value, String> {
+    let Value::String(text) = text else {
+        return Err("'value takes a string".into());
+    };
+    let t = text.trim();
+    let bad = |what: &str| format!("\"{t}\" is not {what}");
+    match kind {
+        Value::Array(literals) => {
+            let found = literals.iter().position(|l| match l {
+                Value::String(l) if l.starts_with('\'') => l == t,
+                Value::String(l) => l.eq_ignore_ascii_case(t),
+                _ => false,
+            });
+            found
+                .map(|p| Value::Enum(p as u32))
+                .ok_or_else(|| bad("a literal of the type"))
+        }
+        Value::String(k) => match k.as_str() {
+            "integer" => t
+                .replace('_', "")
+                .parse::<i64>()
+                .map(Value::Integer)
+                .map_err(|_| bad("an integer literal")),
+            "real" => t
+                .replace('_', "")
+                .parse::<f64>()
+                .ok()
+                .filter(|x| x.is_finite())
+                .map(Value::Real)
+                .ok_or_else(|| bad("a real literal")),
+            "boolean" => match t.to_ascii_lowercase().as_str() {
+                "true" => Ok(Value::Boolean(true)),
+                "false" => Ok(Value::Boolean(false)),
+                _ => Err(bad("true or false")),
+            },
+            "time" => {
+                let (number, unit) = t
+                    .split_once(char::is_whitespace)
+                    .ok_or_else(|| bad("a time literal (`10 ns`)"))?;
+                let n: f64 = number
+                    .replace('_', "")
+                    .parse()
+                    .map_err(|_| bad("a time literal (`10 ns`)"))?;
+                let scale = match unit.trim().to_ascii_lowercase().as_str() {
+                    "fs" => 1e-15,
+                    "ps" => 1e-12,
+                    "ns" => 1e-9,
+                    "us" => 1e-6,
+                    "ms" => 1e-3,
+                    "sec" => 1.0,
+                    "min" => 60.0,
+                    "hr" => 3600.0,
+                    _ => return Err(bad("a time literal with a unit of `time`")),
+                };
+                Ok(Value::Time(n * scale))
+            }
+            _ => Err(format!("'value of type {k}")),
+        },
+        _ => Err("'value of this type".into()),
     }
 }
 

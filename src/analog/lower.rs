@@ -111,5 +111,6 @@ fn lower_call(
             Err(NotAnalog("the 'pos and 'val attributes"))
         }
         Builtin::Slice | Builtin::Splice => Err(NotAnalog("a slice")),
+        Builtin::ValueOf => Err(NotAnalog("the 'value attribute")),
     }
 }

@@ -149,6 +149,25 @@ impl<'a> Elab<'a> {
                 Ok(Typed { e: Expr::Image(ty.to_design(), Box::new(x.e)), ty: string })
             }
             "high" | "low" | "left" | "right" | "length" | "ascending" => self.bound_attribute(sc, prefix, name, span),
+            "value" => {
+                let ty = self.type_mark(sc, prefix)?.ty.clone();
+                let kind = match &ty {
+                    Ty::Enum(e) => Value::Array(e.literals.iter().map(|l| Value::String(l.clone())).collect()),
+                    Ty::Integer => Value::String("integer".into()),
+                    Ty::Real => Value::String("real".into()),
+                    Ty::Time => Value::String("time".into()),
+                    Ty::Boolean => Value::String("boolean".into()),
+                    Ty::Array(_) => {
+                        return Err(self.error(ElabError::invalid(span, format!("`'value` applies to scalar types, not `{ty}`"), None)));
+                    }
+                };
+                let Some(x) = arg(0) else {
+                    return Err(self.error(ElabError::invalid(span, "`'value` takes one argument: `t'value(\"...\")`", None)));
+                };
+                let string = self.standard_type("string").unwrap_or(Ty::Integer);
+                let x = self.expr_of(sc, x, &string)?;
+                self.folded(Expr::Call(Builtin::ValueOf, vec![x.e, Expr::Const(kind)]), ty, span)
+            }
             "pos" | "val" | "succ" | "pred" | "leftof" | "rightof" => {
                 let Some(x) = arg(0) else {
                     return Err(self.error(ElabError::invalid(
@@ -170,7 +189,7 @@ impl<'a> Elab<'a> {
             _ => Err(self.error(ElabError::unsupported(
                 attr.span,
                 format!("the attribute `'{name}`"),
-                "supported: 'dot 'integ 'above 'delayed 'ltf 'zoh 'ztf 'ramp 'slew 'event 'active 'last_value 'last_event 'image 'high 'low 'left 'right 'length 'range 'pos 'val 'succ 'pred 'leftof 'rightof",
+                "supported: 'dot 'integ 'above 'delayed 'ltf 'zoh 'ztf 'ramp 'slew 'event 'active 'last_value 'last_event 'image 'value 'high 'low 'left 'right 'length 'range 'pos 'val 'succ 'pred 'leftof 'rightof",
             ))),
         }
     }

@@ -307,7 +307,8 @@ fn call(f: Builtin, args: &[Value]) -> Result<Value, NoFold> {
         | Builtin::EnumVal
         | Builtin::TimeVal
         | Builtin::Slice
-        | Builtin::Splice => {
+        | Builtin::Splice
+        | Builtin::ValueOf => {
             unreachable!("handled above")
         }
     };

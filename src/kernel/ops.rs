@@ -374,6 +374,8 @@ pub(crate) fn builtin(f: Builtin, args: &[Value]) -> Result<Value, EvalError> {
     if f.on_values() {
         let help = if matches!(f, Slice | Splice) {
             "keep a slice within its array's bounds"
+        } else if f == ValueOf {
+            "'value reads one literal of the type, as 'image writes it"
         } else {
             "keep the argument within the type's range (T'low to T'high)"
         };
@@ -486,7 +488,7 @@ pub(crate) fn real_builtin(f: Builtin, x: f64, y: f64) -> f64 {
         ToReal => x,
         ToInteger => x.round(),
         // Not real-valued: `builtin` handles them before it reaches here; NaN otherwise.
-        Pos | EnumVal | TimeVal | Slice | Splice => f64::NAN,
+        Pos | EnumVal | TimeVal | Slice | Splice | ValueOf => f64::NAN,
     }
 }
 

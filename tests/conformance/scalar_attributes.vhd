@@ -2,7 +2,8 @@
 --
 -- 'pos, 'val, 'succ, 'pred, 'leftof and 'rightof on enumeration, boolean, integer and time
 -- types, folded where static and computed at run time from variables, including the
--- textbook time-to-real idiom `real(time'pos(now)) * 1.0e-15`.
+-- textbook time-to-real idiom `real(time'pos(now)) * 1.0e-15`; 'value reads a literal back
+-- from a string (any case, blanks around it ignored), the inverse of 'image.
 
 ENTITY tb_scalar_attributes IS
 END ENTITY tb_scalar_attributes;
@@ -34,4 +35,20 @@ BEGIN
     ASSERT s = stopped REPORT "succ twice" SEVERITY ERROR;
     WAIT;
   END PROCESS check;
+
+  read_back : PROCESS
+    TYPE logic_level IS (unknown, low, undriven, high);
+    SUBTYPE set_index_range IS integer RANGE 21 DOWNTO 11;
+    VARIABLE text : string(1 TO 5) := " High";
+  BEGIN
+    ASSERT logic_level'value("Low") = low REPORT "'value of a literal" SEVERITY ERROR;
+    ASSERT logic_level'value(text) = high REPORT "'value of a variable" SEVERITY ERROR;
+    ASSERT set_index_range'value("20") = 20 REPORT "integer'value" SEVERITY ERROR;
+    ASSERT real'value(" 2.5e3 ") = 2500.0 REPORT "real'value" SEVERITY ERROR;
+    ASSERT time'value("10 ns") = 10 ns REPORT "time'value" SEVERITY ERROR;
+    ASSERT boolean'value("TRUE") REPORT "boolean'value" SEVERITY ERROR;
+    ASSERT character'value("'x'") = 'x' REPORT "character'value" SEVERITY ERROR;
+    ASSERT state'value(state'image(stopped)) = stopped REPORT "'image and 'value" SEVERITY ERROR;
+    WAIT;
+  END PROCESS read_back;
 END ARCHITECTURE test;
