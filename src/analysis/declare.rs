@@ -822,12 +822,29 @@ impl Analyzer<'_> {
             Designator::Operator(op, span) => (format!("\"{op}\""), *span),
         };
         let region = *self.scope.last().expect("a unit always has a region");
+        // A declaration completed by this body; an implicit operator of the same profile is
+        // not one: the explicit declaration hides it (LRM 10.3, numeric_std's `"<"` on
+        // `unsigned`).
         let existing: Option<DeclId> = self.lookup_in(region, &name).and_then(|ds| {
             ds.into_iter().find(|&d| match &self.out.decl(d).kind {
-                DeclKind::Subprogram(s) => same_profile(s, &sig),
+                DeclKind::Subprogram(s) => s.purity != Purity::Predefined && same_profile(s, &sig),
                 _ => false,
             })
         });
+        if existing.is_none() {
+            let implicit: Vec<DeclId> = (self.lookup_in(region, &name).unwrap_or_default())
+                .into_iter()
+                .filter(|&d| {
+                    matches!(&self.out.decl(d).kind,
+                        DeclKind::Subprogram(s) if s.purity == Purity::Predefined && same_profile(s, &sig))
+                })
+                .collect();
+            if !implicit.is_empty()
+                && let Some(ds) = self.out.regions[region.0 as usize].names.get_mut(&name)
+            {
+                ds.retain(|d| !implicit.contains(d));
+            }
+        }
         match existing {
             Some(d) => self.reference(span, d),
             None => {

@@ -245,10 +245,10 @@ impl<'a> Elab<'a> {
             ExprKind::Aggregate(elems) => self.aggregate(sc, elems, e.span, want),
             ExprKind::Unary(op, a) => {
                 let a = self.expr(sc, a, want)?;
-                if *op == ast::UnaryOp::Not && !(a.ty == Ty::Boolean || a.ty.is_enum_named("bit")) {
-                    if let Some(r) = self.user_operator(sc, vec![a.clone()], e.span) {
-                        return r;
-                    }
+                // The operator function analysis chose (`-a` of numeric_std's signed, `not`
+                // of std_logic), else the predefined one.
+                if let Some(r) = self.user_operator(sc, vec![a.clone()], e.span) {
+                    return r;
                 }
                 self.unary(*op, a, e.span)
             }
@@ -648,12 +648,14 @@ impl<'a> Elab<'a> {
         } else {
             (lt, rt)
         };
+        // The operator function analysis chose (an explicit `"="` of numeric_std hides the
+        // predefined one, LRM 10.3); the predefined operator otherwise.
+        if let Some(r) = self.user_operator(sc, vec![lt.clone(), rt.clone()], span) {
+            return r;
+        }
         let ty = match result_type(bop, &lt.ty, &rt.ty) {
             Some(t) => t,
             None => {
-                if let Some(r) = self.user_operator(sc, vec![lt.clone(), rt.clone()], span) {
-                    return r;
-                }
                 let help = if lt.ty.is_numeric() && rt.ty.is_numeric() {
                     INT_REAL_HELP.to_string()
                 } else {
@@ -685,7 +687,8 @@ impl<'a> Elab<'a> {
         let ret = sub.ret.clone().unwrap_or(Ty::Real);
         if sub.native.is_none() {
             let e = self.user_function_call(sc, &sub, &slots, span)?;
-            return Ok(Typed::new(e, ret));
+            let ty = self.call_result(&sub, &e).unwrap_or(ret);
+            return Ok(Typed::new(e, ty));
         }
         let mut args = Vec::new();
         for (p, slot) in sub.params.iter().zip(&slots) {
@@ -1022,7 +1025,12 @@ fn result_type(op: BinaryOp, l: &Ty, r: &Ty) -> Option<Ty> {
             _ => None,
         },
         Eq | Ne => l.same(r).then_some(Ty::Boolean),
-        Lt | Le | Gt | Ge => (l.same(r) && (l.is_scalar() || l.is_string())).then_some(Ty::Boolean),
+        // Arrays of a discrete type compare lexicographically (LRM 7.2.2).
+        Lt | Le | Gt | Ge => (l.same(r)
+            && (l.is_scalar()
+                || l.is_string()
+                || matches!(l, Ty::Array(a) if matches!(a.element, Ty::Enum(_) | Ty::Integer | Ty::Boolean))))
+        .then_some(Ty::Boolean),
         And | Or | Nand | Nor | Xor | Xnor => {
             (l.same(r) && (is_logical_scalar(l) || logical_array(l))).then(|| l.clone())
         }

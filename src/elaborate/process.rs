@@ -34,6 +34,10 @@ pub(super) struct Proc {
 pub(super) struct SubContext {
     /// The function's result type; `None` for a procedure.
     pub(super) ret: Option<Ty>,
+    /// The static bounds of each value a `return` returns (`None` for one without): when
+    /// they agree, the call's result has them (`to_signed(x, 8)` is 8 elements long where an
+    /// unconstrained parameter receives it).
+    pub(super) returned: Vec<Option<super::scope::Bounds>>,
 }
 
 struct LoopFrame {
@@ -704,7 +708,17 @@ impl<'a> Elab<'a> {
                     )));
                 };
                 let value = match (&ctx.ret, value) {
-                    (Some(ty), Some(v)) => Some(self.expr_of(sc, v, &ty.clone())?.e),
+                    (Some(ty), Some(v)) => {
+                        let t = self.expr_of(sc, v, &ty.clone())?;
+                        let bounds = match &t.ty {
+                            Ty::Array(a) => a.bounds,
+                            _ => None,
+                        };
+                        if let Some(ctx) = &mut p.subprogram {
+                            ctx.returned.push(bounds);
+                        }
+                        Some(t.e)
+                    }
                     (None, None) => None,
                     (Some(_), None) => {
                         return Err(self.error(ElabError::invalid(

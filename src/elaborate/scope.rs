@@ -139,6 +139,9 @@ pub struct Instance {
     pub signals: Vec<SignalId>,
     pub bounds: Vec<Option<Bounds>>,
     pub id: SubprogramId,
+    /// The static bounds of the function's result, when every `return` of this instance
+    /// returns a value with the same ones.
+    pub result: Option<Bounds>,
 }
 
 /// A function or procedure declaration.

@@ -139,7 +139,10 @@ impl<'a> Elab<'a> {
         let mut inner = sc.clone();
         inner.push();
         let mut p = Proc::default();
-        p.subprogram = Some(SubContext { ret: None });
+        p.subprogram = Some(SubContext {
+            ret: None,
+            returned: Vec::new(),
+        });
         let mut outputs: Vec<(QuantityId, VarId)> = Vec::new();
         for id in targets {
             let (Some(decl), Some(Item::Quantity(q))) = (

@@ -292,6 +292,30 @@ impl<'a> Elab<'a> {
         self.function_expr(sub, args, signals, &bounds, span)
     }
 
+    /// The result type of `call`, a call of `sub`: its declared type, constrained to the
+    /// bounds every `return` of the called instance gives.
+    pub(super) fn call_result(&self, sub: &Subprogram<'a>, call: &Expr) -> Option<Ty> {
+        let ret = sub.ret.clone()?;
+        let (Ty::Array(a), Expr::FnCall { sub: id, .. }) = (&ret, call) else {
+            return Some(ret);
+        };
+        if a.bounds.is_some() {
+            return Some(ret);
+        }
+        let result = (sub.instances.borrow().iter())
+            .find(|i| i.id == *id)
+            .and_then(|i| i.result);
+        Some(match result {
+            Some(b) => Ty::Array(Rc::new(ArrayTy {
+                name: a.name.clone(),
+                element: a.element.clone(),
+                bounds: Some(b),
+                index_low: a.index_low,
+            })),
+            None => ret,
+        })
+    }
+
     /// `FnCall` of the instance of `sub` for `signals` and the actuals' `bounds`.
     pub(super) fn function_expr(
         &mut self,
@@ -432,12 +456,14 @@ impl<'a> Elab<'a> {
             signals: signals.to_vec(),
             bounds: bounds.to_vec(),
             id,
+            result: None,
         });
         let mut sc = body.scope.clone();
         sc.push();
         let mut p = Proc::default();
         p.subprogram = Some(SubContext {
             ret: sub.ret.clone(),
+            returned: Vec::new(),
         });
         let mut params = Vec::new();
         let mut signals = signals.iter();
@@ -479,6 +505,17 @@ impl<'a> Elab<'a> {
         if !decls_ok || self.errors.len() > before {
             return Err(super::Reported);
         }
+        let returned = p
+            .subprogram
+            .as_ref()
+            .map(|c| c.returned.clone())
+            .unwrap_or_default();
+        if let Some(first) = returned.first().copied().flatten()
+            && returned.iter().all(|b| *b == Some(first))
+            && let Some(i) = sub.instances.borrow_mut().iter_mut().find(|i| i.id == id)
+        {
+            i.result = Some(first);
+        }
         let (vars, code, spans) = p.into_parts();
         let slot = &mut self.design.subprograms[id.index()];
         slot.params = params;
@@ -512,14 +549,17 @@ impl<'a> Elab<'a> {
             }
             _ => return None,
         };
-        let ret = sub.ret.clone()?;
+        sub.ret.as_ref()?;
         let bounds: Vec<_> = (sub.params.iter().zip(&operands))
             .map(|(p, t)| actual_bounds(&p.ty, &t.ty, &t.e))
             .collect();
         let args = operands.into_iter().map(|t| t.e).collect();
         Some(
             self.function_expr(&sub, args, Vec::new(), &bounds, span)
-                .map(|e| Typed { e, ty: ret }),
+                .map(|e| {
+                    let ty = self.call_result(&sub, &e).unwrap_or(Ty::Real);
+                    Typed { e, ty }
+                }),
         )
     }
 }
