@@ -64,6 +64,7 @@ pub(super) fn native(name: &str, arity: usize, is_function: bool) -> Native {
         ("finish", _) if !is_function => return Native::Finish,
         ("log2", 1) => return Native::Log2,
         ("log", 2) => return Native::LogBase,
+        ("\"**\"", 2) => return Native::Pow,
         ("exp", 1) => Exp,
         ("log", 1) => Log,
         ("log10", 1) => Log10,

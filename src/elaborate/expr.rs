@@ -722,7 +722,23 @@ impl<'a> Elab<'a> {
                     _ => return Err(super::Reported),
                 }
             }
+            // VHDL-AMS's `now return real` (seconds) beside `now return delay_length`.
+            Some(Native::Now) if ret == Ty::Real => super::synth::now_seconds(),
             Some(Native::Now) => Expr::Now,
+            // `"**"(x, y)` called by name.
+            Some(Native::Pow) => {
+                let mut it = args.into_iter();
+                match (it.next(), it.next()) {
+                    (Some(x), Some(y)) => {
+                        let x = match sub.params.first().map(|p| &p.ty) {
+                            Some(Ty::Integer) => Expr::Call(Builtin::ToReal, vec![x]),
+                            _ => x,
+                        };
+                        Expr::Binary(BinaryOp::Pow, Box::new(x), Box::new(y))
+                    }
+                    _ => return Err(super::Reported),
+                }
+            }
             Some(Native::Stop | Native::Finish) => {
                 return Err(self.error(ElabError::invalid(
                     span,

@@ -203,6 +203,8 @@ pub enum Native {
     Now,
     Stop,
     Finish,
+    /// math_real's `"**"` of a real or integer base and a real exponent.
+    Pow,
     /// A native subprogram vams does not implement.
     Missing,
 }

@@ -19,7 +19,7 @@ use super::decls::{designator, native};
 use super::error::ElabError;
 use super::expr::Typed;
 use super::process::{Proc, SubContext};
-use super::scope::{Body, Bounds, Instance, Item, Param, Scope, Subprogram};
+use super::scope::{Body, Bounds, Instance, Item, Native, Param, Scope, Subprogram};
 use super::types::{ArrayTy, Ty};
 use super::{Elab, R};
 
@@ -550,6 +550,20 @@ impl<'a> Elab<'a> {
             _ => return None,
         };
         sub.ret.as_ref()?;
+        if let Some(native) = sub.native {
+            // math_real's `x ** y` (the only native operator).
+            let Native::Pow = native else {
+                return None;
+            };
+            let real = |t: Typed| match t.ty {
+                Ty::Integer => Expr::Call(design::Builtin::ToReal, vec![t.e]),
+                _ => t.e,
+            };
+            let mut it = operands.into_iter();
+            let (x, y) = (it.next()?, it.next()?);
+            let e = Expr::Binary(design::BinaryOp::Pow, Box::new(real(x)), Box::new(real(y)));
+            return Some(self.folded(e, Ty::Real, span));
+        }
         let bounds: Vec<_> = (sub.params.iter().zip(&operands))
             .map(|(p, t)| actual_bounds(&p.ty, &t.ty, &t.e))
             .collect();
