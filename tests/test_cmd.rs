@@ -194,7 +194,8 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_std_logic_arith_packages ... ok"))
         .stdout(contains("test tb_numeric_std_operators ... ok"))
         .stdout(contains("test tb_real_now_and_power ... ok"))
-        .stdout(contains("42 passed, 0 failed"));
+        .stdout(contains("test tb_type_aliases ... ok"))
+        .stdout(contains("43 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

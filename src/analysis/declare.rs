@@ -134,6 +134,34 @@ impl Analyzer<'_> {
                 target,
                 signature: None,
             } => {
+                // An alias of a type is that type, and declares aliases of its enumeration
+                // literals right after it (LRM 4.3.3.2): `alias status is work.t.state;`
+                // makes `idle` visible.
+                if subtype.is_none()
+                    && let ExprKind::Name(_) | ExprKind::Selected(..) = &target.kind
+                    && let Some([d]) = self.resolve_name(target).as_deref()
+                    && let DeclKind::Type(t) = self.out.decl(*d).kind
+                {
+                    self.declare(&name.name, name.span, DeclKind::Type(t));
+                    let region = *self.scope.last().expect("a unit always has a region");
+                    // Its literals and predefined operators (LRM 4.3.3.2).
+                    let literals: Vec<(String, DeclId)> = (self.out.decls.iter().enumerate())
+                        .filter(|(_, decl)| match &decl.kind {
+                            DeclKind::EnumLiteral(u) => *u == t,
+                            DeclKind::Subprogram(sig) => {
+                                sig.purity == Purity::Predefined
+                                    && (sig.result == Some(t)
+                                        || sig.params.iter().any(|p| p.ty == t))
+                            }
+                            _ => false,
+                        })
+                        .map(|(i, decl)| (decl.name.clone(), DeclId(i as u32)))
+                        .collect();
+                    for (lit, id) in literals {
+                        self.out.regions[region.0 as usize].add(&lit, id);
+                    }
+                    return;
+                }
                 let ty = match subtype {
                     Some(s) => {
                         let ty = self.subtype(s);
