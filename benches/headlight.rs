@@ -40,20 +40,22 @@ fn models() -> Vec<(String, String)> {
         .collect()
 }
 
-/// The stdlib and `user` files, parsed.
+/// `user` files and the bundled packages they need (as `vams run` loads them), parsed.
 fn parse_with_stdlib(user: Vec<(String, String)>) -> (SourceMap, Vec<(FileId, DesignFile)>) {
     let mut sources = SourceMap::new();
-    let mut ids = stdlib::load(&mut sources);
-    for (name, text) in user {
-        ids.push(sources.add(name, "work", text));
-    }
-    let files = ids
+    let ids: Vec<FileId> = user
+        .into_iter()
+        .map(|(name, text)| sources.add(name, "work", text))
+        .collect();
+    let parsed: Vec<(FileId, DesignFile)> = ids
         .iter()
         .map(|&id| {
             let text = sources.file(id).text.clone();
             (id, parser::parse(id, &text).0)
         })
         .collect();
+    let (mut files, _) = stdlib::load_needed(&mut sources, &parsed);
+    files.extend(parsed);
     (sources, files)
 }
 

@@ -121,10 +121,13 @@ fn read_text(file: &Path) -> Result<String, InputError> {
         .unwrap_or_else(|e| e.into_bytes().iter().map(|&b| b as char).collect()))
 }
 
-/// Loads the stdlib and the sources under `paths`, and parses every file.
+/// Loads the sources under `paths` and the bundled standard packages they need
+/// (`std.standard`, and the packages their units name, transitively), and parses every file.
+/// Only the packages a design names are parsed and analysed: the stdlib grows (numeric_std,
+/// the arithmetic packages) without slowing down designs that do not use it.
 pub fn load(paths: &[PathBuf]) -> Result<Loaded, InputError> {
     let mut sources = SourceMap::new();
-    let mut ids = stdlib::load(&mut sources);
+    let mut ids = Vec::new();
     let mut seen: Vec<PathBuf> = Vec::new();
     for path in paths {
         for file in source_files(path)? {
@@ -140,16 +143,25 @@ pub fn load(paths: &[PathBuf]) -> Result<Loaded, InputError> {
             ids.push(sources.add(file.display().to_string(), "work", text));
         }
     }
-    let mut files = Vec::with_capacity(ids.len());
+    let mut user = Vec::with_capacity(ids.len());
     let mut syntax_errors = Vec::new();
-    for id in ids {
+    let parse = |id: FileId, sources: &SourceMap, errs: &mut Vec<(FileId, Vec<_>)>| {
         let text = sources.file(id).text.clone();
         let (ast, errors) = parser::parse(id, &text);
         if !errors.is_empty() {
-            syntax_errors.push((id, errors));
+            errs.push((id, errors));
         }
-        files.push((id, ast));
+        ast
+    };
+    for id in ids {
+        let ast = parse(id, &sources, &mut syntax_errors);
+        user.push((id, ast));
     }
+    // The bundled packages named, transitively, starting from std.standard.
+    let (mut files, stdlib_errors) = stdlib::load_needed(&mut sources, &user);
+    syntax_errors.extend(stdlib_errors);
+    // The stdlib first, in its own order, then the user's files.
+    files.extend(user);
     Ok(Loaded {
         sources,
         files,
@@ -173,18 +185,49 @@ mod tests {
         std::fs::write(dir.path().join("copy.vhd"), stdlib_text).unwrap();
         let a = dir.path().join("a.vhd");
         let loaded = load(&[dir.path().to_path_buf(), a]).unwrap();
-        let stdlib_count = stdlib::FILES.len();
-        assert_eq!(loaded.files.len(), stdlib_count + 2);
+        // The two user files and std.standard, the one bundled package they need.
+        assert_eq!(loaded.files.len(), 3);
         let names: Vec<&str> = loaded
             .sources
             .files()
-            .skip(stdlib_count)
             .map(|(_, f)| f.name.as_str())
             .collect();
         assert!(names[0].ends_with("a.vhd") && names[1].ends_with("b.VHDL"));
+        assert_eq!(names[2], "stdlib/std/standard.vhd");
         assert_eq!(loaded.syntax_errors.len(), 1);
         assert!(loaded.has_errors(loaded.syntax_errors[0].0));
         assert!(loaded.error_count() >= 1);
+    }
+
+    #[test]
+    fn only_the_bundled_packages_a_design_names_are_loaded() {
+        let dir = tempfile::tempdir().unwrap();
+        let model = dir.path().join("m.vhd");
+        std::fs::write(
+            &model,
+            "library ieee_proposed; use ieee_proposed.electrical_systems.all;\n\
+             entity m is end;\narchitecture a of m is\n\
+             constant pi2 : real := 2.0 * ieee.math_real.math_pi;\nbegin end;\n",
+        )
+        .unwrap();
+        let loaded = load(&[model]).unwrap();
+        let names: Vec<&str> = loaded
+            .sources
+            .files()
+            .map(|(_, f)| f.name.as_str())
+            .collect();
+        for needed in ["standard", "electrical_systems", "math_real"] {
+            assert!(
+                names.iter().any(|n| n.ends_with(&format!("/{needed}.vhd"))),
+                "{needed} missing from {names:?}"
+            );
+        }
+        for unused in ["numeric_std", "std_logic_arith", "textio"] {
+            assert!(!names.iter().any(|n| n.ends_with(&format!("/{unused}.vhd"))));
+        }
+        // The stdlib comes first among the parsed files (analysis and elaboration order).
+        let first = loaded.sources.file(loaded.files[0].0).name.as_str();
+        assert!(first.starts_with("stdlib/"), "{first}");
     }
 
     #[test]
