@@ -6,7 +6,7 @@
 use std::rc::Rc;
 
 use crate::ast::{self, Actual, Ident, Range};
-use crate::design::{BinaryOp, Builtin, Expr, SignalAttr, Value};
+use crate::design::{BinaryOp, Builtin, Expr, QuantityKind, SignalAttr, Value};
 use crate::source::Span;
 
 use super::error::ElabError;
@@ -15,13 +15,7 @@ use super::scope::{Item, Scope};
 use super::types::{Sub, Ty};
 use super::{Elab, R, Reported};
 
-const ANALOG_UNSUPPORTED: &[&str] = &[
-    "tolerance",
-    "contribution",
-    "reference",
-    "across",
-    "through",
-];
+const ANALOG_UNSUPPORTED: &[&str] = &["contribution", "reference", "across", "through"];
 const SIGNAL_UNSUPPORTED: &[&str] = &[
     "stable",
     "quiet",
@@ -149,6 +143,35 @@ impl<'a> Elab<'a> {
                 Ok(Typed { e: Expr::Image(ty.to_design(), Box::new(x.e)), ty: string })
             }
             "high" | "low" | "left" | "right" | "length" | "ascending" => self.bound_attribute(sc, prefix, name, span),
+            // The tolerance group of a subtype or a quantity (LRM 1076.1 14.1), "" without one.
+            "tolerance" => {
+                let items = self.lookup(sc, prefix)?;
+                let group = match &items[0] {
+                    Item::Type(sub) => sub.tolerance.clone(),
+                    Item::Quantity(q) if matches!(self.design.quantities[q.index()].kind, QuantityKind::Free) => {
+                        self.design.quantities[q.index()].tolerance.clone()
+                    }
+                    // A subnature's own groups do not reach its branch quantities yet.
+                    Item::Quantity(_) => {
+                        return Err(self.error(ElabError::unsupported(
+                            attr.span,
+                            "`'tolerance` of a branch quantity",
+                            "ask the subtype: `voltage'tolerance`",
+                        )));
+                    }
+                    other => {
+                        let class = other.class();
+                        return Err(self.error(ElabError::invalid(
+                            prefix.span,
+                            format!("`'tolerance` applies to a subtype or a quantity, not {class}"),
+                            None,
+                        )));
+                    }
+                };
+                let string = self.standard_type("string").unwrap_or(Ty::Integer);
+                let text = group.map(|g| g.to_string()).unwrap_or_default();
+                Ok(Typed { e: Expr::Const(Value::String(text)), ty: string })
+            }
             "value" => {
                 let ty = self.type_mark(sc, prefix)?.ty.clone();
                 let kind = match &ty {
@@ -189,7 +212,7 @@ impl<'a> Elab<'a> {
             _ => Err(self.error(ElabError::unsupported(
                 attr.span,
                 format!("the attribute `'{name}`"),
-                "supported: 'dot 'integ 'above 'delayed 'ltf 'zoh 'ztf 'ramp 'slew 'event 'active 'last_value 'last_event 'image 'value 'high 'low 'left 'right 'length 'range 'pos 'val 'succ 'pred 'leftof 'rightof",
+                "supported: 'dot 'integ 'above 'delayed 'ltf 'zoh 'ztf 'ramp 'slew 'event 'active 'last_value 'last_event 'image 'value 'tolerance 'high 'low 'left 'right 'length 'range 'pos 'val 'succ 'pred 'leftof 'rightof",
             ))),
         }
     }
