@@ -400,6 +400,36 @@ impl Value {
         }
     }
 
+    /// VHDL's ordering (LRM 7.2.2), the same when elaboration folds and at run time:
+    /// numbers by value (an integer beside a real as a real, from folded universal
+    /// expressions), times by femtoseconds (`time` is integral; the seconds carried in an
+    /// `f64` may have picked up rounding), enumerations by position, strings and arrays of
+    /// discrete elements lexicographically. `None` for values that do not compare.
+    pub fn order(&self, other: &Value) -> Option<std::cmp::Ordering> {
+        use Value::*;
+        let fs = |t: f64| (t * 1e15).round();
+        match (self, other) {
+            (Real(x), Real(y)) => x.partial_cmp(y),
+            (Time(x), Time(y)) => fs(*x).partial_cmp(&fs(*y)),
+            (Integer(x), Integer(y)) => Some(x.cmp(y)),
+            (Integer(x), Real(y)) => (*x as f64).partial_cmp(y),
+            (Real(x), Integer(y)) => x.partial_cmp(&(*y as f64)),
+            (Boolean(x), Boolean(y)) => Some(x.cmp(y)),
+            (Enum(x), Enum(y)) => Some(x.cmp(y)),
+            (String(x), String(y)) => Some(x.cmp(y)),
+            (Array(x), Array(y)) => {
+                for (p, q) in x.iter().zip(y) {
+                    match p.order(q)? {
+                        std::cmp::Ordering::Equal => {}
+                        o => return Some(o),
+                    }
+                }
+                Some(x.len().cmp(&y.len()))
+            }
+            _ => None,
+        }
+    }
+
     /// The value as a number for the analog side and for waveforms: booleans and enums as
     /// 0/1 (their position), time in seconds; `None` for strings and arrays.
     pub fn as_f64(&self) -> Option<f64> {

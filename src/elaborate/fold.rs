@@ -190,7 +190,7 @@ fn binary(op: BinaryOp, a: Value, b: Value) -> Result<Value, NoFold> {
             (Array(x), Array(y)) if matches!(op, BinaryOp::Eq | BinaryOp::Ne) => {
                 return Ok(Boolean((x == y) == (op == BinaryOp::Eq)));
             }
-            _ => order(&a, &b),
+            _ => a.order(&b),
         };
         return match o {
             Some(o) => cmp(op, o),
@@ -237,30 +237,6 @@ fn binary(op: BinaryOp, a: Value, b: Value) -> Result<Value, NoFold> {
         (Enum(x), Enum(y)) => Enum(u32::from(logic(op, x != 0, y != 0)?)),
         _ => return err("operand types not supported by the operator"),
     })
-}
-
-/// VHDL's ordering of two static values: scalars by value (times by femtoseconds, as at
-/// run time), strings and arrays of discrete elements lexicographically (LRM 7.2.2).
-fn order(a: &Value, b: &Value) -> Option<std::cmp::Ordering> {
-    use Value::*;
-    match (a, b) {
-        (Real(x), Real(y)) => x.partial_cmp(y),
-        (Time(x), Time(y)) => (x * 1e15).round().partial_cmp(&(y * 1e15).round()),
-        (Integer(x), Integer(y)) => Some(x.cmp(y)),
-        (Boolean(x), Boolean(y)) => Some(x.cmp(y)),
-        (Enum(x), Enum(y)) => Some(x.cmp(y)),
-        (String(x), String(y)) => Some(x.cmp(y)),
-        (Array(x), Array(y)) => {
-            for (p, q) in x.iter().zip(y) {
-                match order(p, q)? {
-                    std::cmp::Ordering::Equal => {}
-                    o => return Some(o),
-                }
-            }
-            Some(x.len().cmp(&y.len()))
-        }
-        _ => None,
-    }
 }
 
 fn call(f: Builtin, args: &[Value]) -> Result<Value, NoFold> {

@@ -1177,7 +1177,18 @@ impl<'a> Elab<'a> {
 
     /// The equivalent process of a concurrent statement: `body`, then wait on the signals it
     /// reads (or on `on` when given); a body that reads no signal runs once.
-    fn equivalent(&mut self, stmt: &ConcStmt, mut p: Proc, on: Option<Vec<SignalId>>) {
+    fn equivalent(&mut self, stmt: &ConcStmt, p: Proc, on: Option<Vec<SignalId>>) {
+        self.equivalent_process(stmt.label.as_ref(), stmt.span, p, on);
+    }
+
+    /// [`Elab::equivalent`] for a process of `span` with an optional label.
+    fn equivalent_process(
+        &mut self,
+        label: Option<&Ident>,
+        span: Span,
+        mut p: Proc,
+        on: Option<Vec<SignalId>>,
+    ) {
         let on = on
             .filter(|o| !o.is_empty())
             .unwrap_or_else(|| signals_read(&p.code));
@@ -1191,7 +1202,7 @@ impl<'a> Elab<'a> {
             });
             p.emit(Instr::Jump(0));
         }
-        self.push_process(stmt.label.as_ref(), stmt.span, p);
+        self.push_process(label, span, p);
     }
 
     /// The implicit signal `GUARD` of the guarded block `block` (LRM 9.1), declared in `sc`
@@ -1228,18 +1239,7 @@ impl<'a> Elab<'a> {
             waveform: vec![(cond, Expr::Const(Value::Time(0.0)))],
             mechanism: DelayMechanism::Inertial { reject: None },
         });
-        let on = signals_read(&p.code);
-        if on.is_empty() {
-            p.emit(Instr::Halt);
-        } else {
-            p.emit(Instr::Wait {
-                on,
-                until: None,
-                timeout: None,
-            });
-            p.emit(Instr::Jump(0));
-        }
-        self.push_process(None, guard.span, p);
+        self.equivalent_process(None, guard.span, p, None);
         Ok(id)
     }
 

@@ -265,16 +265,11 @@ fn modulo(op: BinaryOp, a: Value, b: Value) -> Result<Value, EvalError> {
     Ok(Value::Integer(m))
 }
 
-/// A time in femtoseconds, the resolution of VHDL's `time` (carried as seconds in an
-/// `f64`): times compare by it, so that `now - t0 = 21 ns` holds whatever rounding the
-/// seconds picked up on the way.
-fn femtoseconds(t: f64) -> f64 {
-    (t * 1e15).round()
-}
-
 fn equal(a: &Value, b: &Value) -> bool {
     match (a, b) {
-        (Value::Time(x), Value::Time(y)) => femtoseconds(*x) == femtoseconds(*y),
+        // By femtoseconds (`Value::order`): `now - t0 = 21 ns` holds whatever rounding the
+        // seconds picked up on the way.
+        (Value::Time(_), Value::Time(_)) => a.order(b) == Some(Ordering::Equal),
         (Value::Integer(x), Value::Real(y)) | (Value::Real(y), Value::Integer(x)) => {
             *x as f64 == *y
         }
@@ -284,27 +279,7 @@ fn equal(a: &Value, b: &Value) -> bool {
 
 /// VHDL ordering: numbers, enumeration positions, lexicographic strings and arrays.
 pub(crate) fn compare(a: &Value, b: &Value) -> Option<Ordering> {
-    use Value::*;
-    match (a, b) {
-        (Real(x), Real(y)) => x.partial_cmp(y),
-        (Time(x), Time(y)) => femtoseconds(*x).partial_cmp(&femtoseconds(*y)),
-        (Integer(x), Integer(y)) => Some(x.cmp(y)),
-        (Integer(x), Real(y)) => (*x as f64).partial_cmp(y),
-        (Real(x), Integer(y)) => x.partial_cmp(&(*y as f64)),
-        (Boolean(x), Boolean(y)) => Some(x.cmp(y)),
-        (Enum(x), Enum(y)) => Some(x.cmp(y)),
-        (String(x), String(y)) => Some(x.cmp(y)),
-        (Array(x), Array(y)) => {
-            for (p, q) in x.iter().zip(y) {
-                match compare(p, q)? {
-                    Ordering::Equal => {}
-                    o => return Some(o),
-                }
-            }
-            Some(x.len().cmp(&y.len()))
-        }
-        _ => None,
-    }
+    a.order(b)
 }
 
 fn logic(op: BinaryOp, a: Value, b: Value) -> Result<Value, EvalError> {
