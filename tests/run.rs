@@ -373,6 +373,28 @@ fn a_configuration_declaration_is_a_top() {
         .stdout(contains("vmid    0.5 V"));
 }
 
+/// A threshold crossing that flips back at every analog restart (equations switched by the
+/// `'above` that decides them, without hysteresis) stops the run with a diagnostic naming the
+/// signal, instead of looping at one time point and growing without bound.
+#[test]
+fn a_crossing_that_never_settles_is_an_error_not_a_hang() {
+    let (_dir, model) = model_file(
+        "chatter.vhd",
+        "entity tb_chatter is end;\narchitecture a of tb_chatter is\n  quantity x : real;\n\
+         begin\n  if x'above(0.5) use\n    x == 0.0;\n  else\n    x == 1.0;\n  end use;\n\
+         break on x'above(0.5);\nend;\n",
+    );
+    vams()
+        .arg("run")
+        .arg(&model)
+        .args(["--stop", "1 ms"])
+        .timeout(std::time::Duration::from_secs(60))
+        .assert()
+        .code(1)
+        .stderr(contains("did not settle at t = 0 s"))
+        .stderr(contains("`x'above(0.5)`"));
+}
+
 /// `T'val` outside the type is a run-time error, not a value past the last literal.
 #[test]
 fn val_outside_an_enumeration_is_a_run_time_error() {

@@ -304,8 +304,36 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
     ) -> Result<(), SimError> {
         let mut t = 0.0;
         recorder.record(t, &self.values, &self.kernel.signals.states);
+        // Synchronisations at the current time point: a crossing that flips back at every
+        // analog restart would otherwise loop here forever.
+        let mut settling = (t, 0usize);
         while self.outcome.is_none() {
             if self.kernel.next_time(t) <= t {
+                self.check_cancelled(t)?;
+                settling = if settling.0 == t {
+                    (t, settling.1 + 1)
+                } else {
+                    (t, 1)
+                };
+                if settling.1 > super::events::DELTA_LIMIT {
+                    let mut names: Vec<&str> = (self.changed.iter())
+                        .map(|s| self.design.signals[s.index()].name.as_str())
+                        .collect();
+                    names.sort_unstable();
+                    names.dedup();
+                    let shown: Vec<String> =
+                        names.iter().take(4).map(|n| format!("`{n}`")).collect();
+                    let more = names.len().saturating_sub(4);
+                    return Err(SimError::SettleLimit {
+                        time: t,
+                        limit: super::events::DELTA_LIMIT,
+                        signals: if more > 0 {
+                            format!("{} and {more} more", shown.join(", "))
+                        } else {
+                            shown.join(", ")
+                        },
+                    });
+                }
                 if recorder.last_time() != Some(t) {
                     recorder.record(t, &self.values, &self.kernel.signals.states);
                 }

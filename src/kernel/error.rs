@@ -46,6 +46,24 @@ pub enum SimError {
         help: String,
     },
 
+    /// A threshold crossing that flips back whenever the analog solution restarts (a limiter
+    /// in a feedback loop switching its equations at the threshold): the analog and digital
+    /// parts never settle at `time`.
+    #[error(
+        "the analog and digital parts did not settle at t = {time} s: {limit} restarts, still changing {signals}"
+    )]
+    #[diagnostic(
+        code(vams::sim::settle_limit),
+        help(
+            "each restart changes these signals again (often an `'above` whose crossing switches the equations that decide it); give the switch hysteresis or a slope on both sides"
+        )
+    )]
+    SettleLimit {
+        time: f64,
+        limit: usize,
+        signals: String,
+    },
+
     /// The user stopped the run (Ctrl-C); what it computed up to `time` is kept.
     #[error("interrupted at t = {time} s")]
     #[diagnostic(
@@ -174,7 +192,8 @@ impl Located for SimError {
                 .unwrap_or_default(),
             SimError::UnknownProbe { .. }
             | SimError::BadOption { .. }
-            | SimError::Interrupted { .. } => Span::default(),
+            | SimError::Interrupted { .. }
+            | SimError::SettleLimit { .. } => Span::default(),
         }
     }
 }
