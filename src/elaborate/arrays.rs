@@ -261,12 +261,7 @@ impl<'a> Elab<'a> {
         let Some(Ty::Array(arr)) = self.standard_type("real_vector") else {
             return Err(super::Reported);
         };
-        let ty = Ty::Array(Rc::new(ArrayTy {
-            name: arr.name.clone(),
-            element: Ty::Real,
-            bounds,
-            index_low: arr.index_low,
-        }));
+        let ty = arr.with_bounds(bounds);
         Ok(Rc::new(Sub {
             ty,
             name: format!("{}'{}", self.sources.snippet(prefix.span), attr.name).into(),

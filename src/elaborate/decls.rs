@@ -558,12 +558,7 @@ impl<'a> Elab<'a> {
                     }
                 };
                 self.array_size(l, r, asc, si.span)?;
-                let ty = Ty::Array(Rc::new(ArrayTy {
-                    name: arr.name.clone(),
-                    element: arr.element.clone(),
-                    bounds: Some((l, r, asc)),
-                    index_low: arr.index_low,
-                }));
+                let ty = arr.with_bounds(Some((l, r, asc)));
                 Rc::new(Sub {
                     ty,
                     ..(*sub).clone()

@@ -682,7 +682,6 @@ impl<'a> Elab<'a> {
         span: Span,
         name_span: Span,
     ) -> R<Typed> {
-        let name = subs.first().map(|s| s.name.clone()).unwrap_or_default();
         let (sub, slots) = self.resolve_call(subs, args, true, span, name_span)?;
         let ret = sub.ret.clone().unwrap_or(Ty::Real);
         if sub.native.is_none() {
@@ -703,7 +702,22 @@ impl<'a> Elab<'a> {
                 }
             }
         }
-        let e = match sub.native {
+        let e = self.native_call(&sub, args, span, name_span)?;
+        self.folded(e, ret, span)
+    }
+
+    /// The expression of a call of the native (bodiless stdlib) subprogram `sub` on `args`,
+    /// one per parameter.
+    pub(super) fn native_call(
+        &mut self,
+        sub: &Subprogram<'a>,
+        args: Vec<Expr>,
+        span: Span,
+        name_span: Span,
+    ) -> R<Expr> {
+        let name = &sub.name;
+        let ret = sub.ret.clone().unwrap_or(Ty::Real);
+        Ok(match sub.native {
             Some(Native::Builtin(b)) => Expr::Call(b, args),
             Some(Native::Log2) => Expr::Binary(
                 BinaryOp::Div,
@@ -753,10 +767,9 @@ impl<'a> Elab<'a> {
                     "vams implements exp, log, log2, log10, sqrt, the trigonometric and hyperbolic functions, floor, ceil, round, trunc, sign, realmax and realmin",
                 )));
             }
-            // Handled above.
+            // Not native: lowered as a user subprogram by the caller.
             None => return Err(super::Reported),
-        };
-        self.folded(e, ret, span)
+        })
     }
 
     /// `real(i)`, `integer(x)` and conversions between closely related types.
@@ -893,13 +906,7 @@ impl<'a> Elab<'a> {
             (Expr::Const(Value::Integer(a)), Expr::Const(Value::Integer(b))) => Some((*a, *b, asc)),
             _ => None,
         };
-        let ty = Ty::Array(Rc::new(ArrayTy {
-            name: arr.name.clone(),
-            element: arr.element.clone(),
-            bounds,
-            index_low: arr.index_low,
-        }));
-        Ok((first, len, ty))
+        Ok((first, len, arr.with_bounds(bounds)))
     }
 
     fn aggregate(
@@ -994,12 +1001,7 @@ impl<'a> Elab<'a> {
                 }
             }
         }
-        let ty = Ty::Array(Rc::new(ArrayTy {
-            name: arr.name.clone(),
-            element: elem,
-            bounds: Some((left, right, asc)),
-            index_low: arr.index_low,
-        }));
+        let ty = arr.with_bounds(Some((left, right, asc)));
         let string = ty.is_string();
         let e = match out
             .iter()
@@ -1054,9 +1056,9 @@ fn result_type(op: BinaryOp, l: &Ty, r: &Ty) -> Option<Ty> {
             (logical_array(l) && *r == Ty::Integer).then(|| l.clone())
         }
         Concat => match (l, r) {
-            (Ty::Array(a), Ty::Array(b)) if a.name == b.name => Some(Ty::Array(unconstrained(a))),
+            (Ty::Array(a), Ty::Array(b)) if a.name == b.name => Some(a.with_bounds(None)),
             (Ty::Array(a), e) | (e, Ty::Array(a)) if a.element.same(e) => {
-                Some(Ty::Array(unconstrained(a)))
+                Some(a.with_bounds(None))
             }
             _ => None,
         },
@@ -1074,23 +1076,9 @@ fn logical_array(t: &Ty) -> bool {
     matches!(t, Ty::Array(a) if is_logical_scalar(&a.element))
 }
 
-fn unconstrained(a: &ArrayTy) -> Rc<ArrayTy> {
-    Rc::new(ArrayTy {
-        name: a.name.clone(),
-        element: a.element.clone(),
-        bounds: None,
-        index_low: a.index_low,
-    })
-}
-
 /// `arr` constrained to `n` elements from its index subtype's low bound.
 pub(super) fn constrain(arr: &ArrayTy, n: usize) -> Ty {
-    Ty::Array(Rc::new(ArrayTy {
-        name: arr.name.clone(),
-        element: arr.element.clone(),
-        bounds: Some((arr.index_low, arr.index_low + n as i64 - 1, true)),
-        index_low: arr.index_low,
-    }))
+    arr.with_bounds(Some((arr.index_low, arr.index_low + n as i64 - 1, true)))
 }
 
 /// The type of a string literal of `n` characters.

@@ -60,15 +60,13 @@ impl<'a> Elab<'a> {
         if !self.lib.entities.contains_key(&key)
             && let Some(cfg) = self.lib.configurations.get(&key)
         {
-            let c = cfg.unit;
-            if let Some(id) = c.entity.name_ident() {
+            let (entity, arch, block) = configured(cfg);
+            if let Some(id) = entity {
                 name = id.name.clone();
                 key = (cfg.library.clone(), name.clone());
             }
-            if let ast::ExprKind::Name(id) = &c.block.spec.kind {
-                arch_name = Some(id);
-            }
-            config = Some(&c.block);
+            arch_name = arch;
+            config = Some(block);
         }
         let Some(entity) = self.lib.entities.get(&key).cloned() else {
             let cands = self.lib.tops();
@@ -820,14 +818,11 @@ impl<'a> Elab<'a> {
                                 .and_then(|p| p.binding),
                             _ => None,
                         };
-                        let mut target = match b.binding {
-                            Some(binding) if binding.incremental => match primary {
-                                Some(p) => match self.bound_entity(sc, p)? {
-                                    Some(target) => target,
-                                    None => return Ok(()),
-                                },
-                                None => default,
-                            },
+                        let entity_aspect = match b.binding {
+                            Some(binding) if binding.incremental => primary,
+                            other => other,
+                        };
+                        let mut target = match entity_aspect {
                             Some(binding) => match self.bound_entity(sc, binding)? {
                                 Some(target) => target,
                                 // `use open`: the instance stays unbound.
@@ -890,19 +885,15 @@ impl<'a> Elab<'a> {
                         Some("give vams the file that declares it".into()),
                     )));
                 };
-                let c = cfg.unit;
-                let Some(entity) = c.entity.name_ident() else {
+                let (entity, arch, block) = configured(cfg);
+                let Some(entity) = entity else {
                     return Err(self.error(ElabError::invalid(
-                        c.entity.span,
+                        cfg.unit.entity.span,
                         "expected an entity name",
                         None,
                     )));
                 };
-                let arch = match &c.block.spec.kind {
-                    ast::ExprKind::Name(id) => Some(id),
-                    _ => None,
-                };
-                config = Some(&c.block);
+                config = Some(block);
                 (cfg.library.clone(), entity.name.clone(), arch, span)
             }
         };
@@ -1075,6 +1066,23 @@ impl<'a> Elab<'a> {
         (self.path, self.instance) = saved;
         r
     }
+}
+
+/// What a configuration declaration configures: its entity's name, the architecture its
+/// block configuration names, and that block configuration.
+fn configured<'a>(
+    cfg: &Unit<'a, ast::Configuration>,
+) -> (
+    Option<&'a ast::Ident>,
+    Option<&'a ast::Ident>,
+    &'a ast::BlockConfig,
+) {
+    let c = cfg.unit;
+    let arch = match &c.block.spec.kind {
+        ast::ExprKind::Name(id) => Some(id),
+        _ => None,
+    };
+    (c.entity.name_ident(), arch, &c.block)
 }
 
 fn literal_help(ty: &Ty) -> String {

@@ -19,8 +19,8 @@ use super::decls::{designator, native};
 use super::error::ElabError;
 use super::expr::Typed;
 use super::process::{Proc, SubContext};
-use super::scope::{Body, Bounds, Instance, Item, Native, Param, Scope, Subprogram};
-use super::types::{ArrayTy, Ty};
+use super::scope::{Body, Bounds, Instance, Item, Param, Scope, Subprogram};
+use super::types::Ty;
 use super::{Elab, R};
 
 /// Arguments bound to a subprogram's parameters: one optional actual per parameter.
@@ -306,12 +306,7 @@ impl<'a> Elab<'a> {
             .find(|i| i.id == *id)
             .and_then(|i| i.result);
         Some(match result {
-            Some(b) => Ty::Array(Rc::new(ArrayTy {
-                name: a.name.clone(),
-                element: a.element.clone(),
-                bounds: Some(b),
-                index_low: a.index_low,
-            })),
+            Some(b) => a.with_bounds(Some(b)),
             None => ret,
         })
     }
@@ -481,12 +476,7 @@ impl<'a> Elab<'a> {
             } else {
                 params.push(param.mode);
                 let ty = match (&param.ty, bounds.get(i).copied().flatten()) {
-                    (Ty::Array(a), Some(b)) if a.bounds.is_none() => Ty::Array(Rc::new(ArrayTy {
-                        name: a.name.clone(),
-                        element: a.element.clone(),
-                        bounds: Some(b),
-                        index_low: a.index_low,
-                    })),
+                    (Ty::Array(a), Some(b)) if a.bounds.is_none() => a.with_bounds(Some(b)),
                     (ty, _) => ty.clone(),
                 };
                 let var = p.new_var(&param.name, &ty, ty.default_value());
@@ -505,11 +495,7 @@ impl<'a> Elab<'a> {
         if !decls_ok || self.errors.len() > before {
             return Err(super::Reported);
         }
-        let returned = p
-            .subprogram
-            .as_ref()
-            .map(|c| c.returned.clone())
-            .unwrap_or_default();
+        let returned = p.subprogram.as_ref().map_or(&[][..], |c| &c.returned);
         if let Some(first) = returned.first().copied().flatten()
             && returned.iter().all(|b| *b == Some(first))
             && let Some(i) = sub.instances.borrow_mut().iter_mut().find(|i| i.id == id)
@@ -550,19 +536,14 @@ impl<'a> Elab<'a> {
             _ => return None,
         };
         sub.ret.as_ref()?;
-        if let Some(native) = sub.native {
-            // math_real's `x ** y` (the only native operator).
-            let Native::Pow = native else {
-                return None;
-            };
-            let real = |t: Typed| match t.ty {
-                Ty::Integer => Expr::Call(design::Builtin::ToReal, vec![t.e]),
-                _ => t.e,
-            };
-            let mut it = operands.into_iter();
-            let (x, y) = (it.next()?, it.next()?);
-            let e = Expr::Binary(design::BinaryOp::Pow, Box::new(real(x)), Box::new(real(y)));
-            return Some(self.folded(e, Ty::Real, span));
+        if sub.native.is_some() {
+            // math_real's `x ** y`, the stdlib's one native operator.
+            let ret = sub.ret.clone().unwrap_or(Ty::Real);
+            let args = operands.into_iter().map(|t| t.e).collect();
+            return Some(
+                self.native_call(&sub, args, span, span)
+                    .and_then(|e| self.folded(e, ret, span)),
+            );
         }
         let bounds: Vec<_> = (sub.params.iter().zip(&operands))
             .map(|(p, t)| actual_bounds(&p.ty, &t.ty, &t.e))

@@ -43,6 +43,16 @@ impl ArrayTy {
     pub fn len(&self) -> Option<usize> {
         self.bounds.map(|(l, r, asc)| bounds_len(l, r, asc))
     }
+
+    /// This array type with `bounds` instead of its own (`None`: unconstrained).
+    pub fn with_bounds(&self, bounds: Option<(i64, i64, bool)>) -> Ty {
+        Ty::Array(Rc::new(ArrayTy {
+            name: self.name.clone(),
+            element: self.element.clone(),
+            bounds,
+            index_low: self.index_low,
+        }))
+    }
 }
 
 /// Number of positions in `left to/downto right`.

@@ -140,13 +140,7 @@ impl<'a> Elab<'a> {
                         )),
                     )));
                 }
-                let slice = ArrayTy {
-                    name: a.name.clone(),
-                    element: a.element.clone(),
-                    bounds: Some((l, rr, dir)),
-                    index_low: a.index_low,
-                };
-                (k, Some(n), Ty::Array(Rc::new(slice)), arg.span)
+                (k, Some(n), a.with_bounds(Some((l, rr, dir))), arg.span)
             }
             Actual::Open(s) => {
                 return Err(self.error(ElabError::invalid(*s, "expected an index", None)));

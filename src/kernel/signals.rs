@@ -180,14 +180,16 @@ impl Signals {
                     let init = port_default.unwrap_or(&signal.init);
                     match view_of[target.index()] {
                         Some((parent, first, len)) => {
+                            // A slice's element k - first of its (port's) initial value, which
+                            // elaboration gives the slice's length; else the parent's element.
                             let own = init.elements();
-                            let parent_init = design.signals[parent.index()].init.elements();
+                            let parent_init = &design.signals[parent.index()].init;
                             for k in view_slots(&signal.ty, first, len, driven) {
                                 let v = match len {
                                     None => init.clone(),
-                                    Some(_) => own.get(k - first).cloned().unwrap_or_else(|| {
-                                        parent_init.get(k).cloned().unwrap_or(Value::Integer(0))
-                                    }),
+                                    Some(_) => (own.get(k - first).cloned())
+                                        .or_else(|| parent_init.view(k, None))
+                                        .unwrap_or_else(|| init.clone()),
                                 };
                                 out.push((parent, Driven::Position(k), v));
                             }
