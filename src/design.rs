@@ -301,6 +301,26 @@ pub enum Type {
         right: i64,
         ascending: bool,
     },
+    /// A record: its fields in order. Its value is a [`Value::Array`] of the fields' values,
+    /// and `Expr::Index` selects a field by its position (from 0).
+    Record {
+        name: String,
+        fields: Vec<(String, Type)>,
+    },
+}
+
+impl Type {
+    /// `(left, ascending)` of the index that selects an element: an array's own bounds, a
+    /// record's field positions from 0, a `string`'s positions from 1.
+    pub fn index_origin(&self) -> (i64, bool) {
+        match self {
+            Type::Array {
+                left, ascending, ..
+            } => (*left, *ascending),
+            Type::Record { .. } => (0, true),
+            _ => (1, true),
+        }
+    }
 }
 
 /// A run-time value.

@@ -180,7 +180,7 @@ impl<'a> Elab<'a> {
                     Ty::Real => Value::String("real".into()),
                     Ty::Time => Value::String("time".into()),
                     Ty::Boolean => Value::String("boolean".into()),
-                    Ty::Array(_) => {
+                    Ty::Array(_) | Ty::Record(_) => {
                         return Err(self.error(ElabError::invalid(span, format!("`'value` applies to scalar types, not `{ty}`"), None)));
                     }
                 };
@@ -234,7 +234,7 @@ impl<'a> Elab<'a> {
             Ty::Enum(e) => Some(e.literals.len() as i64),
             Ty::Boolean => Some(2),
             Ty::Integer | Ty::Time => None,
-            Ty::Real | Ty::Array(_) => {
+            Ty::Real | Ty::Array(_) | Ty::Record(_) => {
                 return Err(self.error(ElabError::invalid(
                     span,
                     format!(

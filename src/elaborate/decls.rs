@@ -12,7 +12,7 @@ use super::arrays::NatureMark;
 use super::error::ElabError;
 use super::expr::constrain;
 use super::scope::{Item, Native, Scope};
-use super::types::{ArrayTy, EnumTy, Sub, Ty};
+use super::types::{ArrayTy, EnumTy, RecordTy, Sub, Ty};
 use super::{Elab, R};
 
 /// The name a subprogram is declared under (`sqrt`, `"and"`).
@@ -473,11 +473,32 @@ impl<'a> Elab<'a> {
                 }));
                 self.declare(sc, name, Item::Type(Rc::new(Sub::of(ty, &name.name))))
             }
-            TypeDef::Record(_) => Err(self.error(ElabError::unsupported(
-                d.span,
-                "record types",
-                "use separate objects for the fields, or an array if they share a type",
-            ))),
+            TypeDef::Record(fields) => {
+                let (mut out, mut defaults) = (Vec::new(), Vec::new());
+                for f in fields {
+                    let sub = self.subtype_indication(sc, &f.subtype)?;
+                    let ty = sub.ty.clone();
+                    if let Ty::Array(a) = &ty
+                        && a.bounds.is_none()
+                    {
+                        return Err(self.error(ElabError::invalid(
+                            f.subtype.span,
+                            "a record field needs a constrained subtype",
+                            Some(format!("give the bounds: `{}(0 to 7)`", a.name)),
+                        )));
+                    }
+                    for n in &f.names {
+                        out.push((n.name.clone(), ty.clone()));
+                        defaults.push(default_value(&sub));
+                    }
+                }
+                let ty = Ty::Record(Rc::new(RecordTy {
+                    name: name.name.clone(),
+                    fields: out,
+                    defaults,
+                }));
+                self.declare(sc, name, Item::Type(Rc::new(Sub::of(ty, &name.name))))
+            }
             TypeDef::Access(_) => Err(self.error(ElabError::unsupported(
                 d.span,
                 "access types",

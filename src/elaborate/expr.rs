@@ -10,8 +10,8 @@ use crate::source::Span;
 
 use super::error::ElabError;
 use super::fold;
-use super::scope::{Item, Native, Scope, Subprogram};
-use super::types::{ArrayTy, Ty, bounds_len};
+use super::scope::{Item, Native, Part, Scope, Subprogram};
+use super::types::{ArrayTy, RecordTy, Ty, bounds_len};
 use super::{Elab, R};
 
 /// A lowered expression and its type.
@@ -105,7 +105,8 @@ fn op_text(op: BinaryOp) -> &'static str {
 fn context_typed(e: &ast::Expr) -> bool {
     match &e.kind {
         ExprKind::Name(id) => id.name == "now",
-        ExprKind::Literal(Literal::Char(_) | Literal::String(_) | Literal::BitString(_)) => true,
+        ExprKind::Literal(Literal::Char(_) | Literal::String(_) | Literal::BitString(_))
+        | ExprKind::Aggregate(_) => true,
         ExprKind::Paren(inner) => context_typed(inner),
         _ => false,
     }
@@ -180,6 +181,42 @@ impl<'a> Elab<'a> {
                             pkg.name, suffix.name
                         )),
                     })),
+                    Some(Item::Signal {
+                        id,
+                        ty: ty @ Ty::Record(_),
+                    }) => {
+                        let (id, ty) = (*id, ty.clone());
+                        Ok(vec![self.field_view(id, &ty, suffix)?])
+                    }
+                    Some(Item::Variable {
+                        id,
+                        ty: ty @ Ty::Record(_),
+                        readonly,
+                        path,
+                    }) => {
+                        let (id, ty, readonly) = (*id, ty.clone(), *readonly);
+                        let mut path = path.to_vec();
+                        let (pos, field) = self.record_field(&ty, suffix, e.span)?;
+                        path.push(Part::Element {
+                            index: Expr::Const(Value::Integer(pos as i64)),
+                            container: ty.to_design(),
+                        });
+                        Ok(vec![Item::Variable {
+                            id,
+                            ty: field,
+                            readonly,
+                            path: path.into(),
+                        }])
+                    }
+                    Some(Item::Constant {
+                        value,
+                        ty: ty @ Ty::Record(_),
+                    }) => {
+                        let rec = Typed::new(Expr::Const(value.clone()), ty.clone());
+                        let f = self.field(rec, suffix, e.span)?;
+                        let value = f.value().cloned().ok_or(super::Reported)?;
+                        Ok(vec![Item::Constant { value, ty: f.ty }])
+                    }
                     Some(other) => {
                         let class = other.class();
                         Err(self.error(ElabError::unsupported(
@@ -233,6 +270,21 @@ impl<'a> Elab<'a> {
     pub(super) fn expr(&mut self, sc: &Scope<'a>, e: &ast::Expr, want: Option<&Ty>) -> R<Typed> {
         match &e.kind {
             ExprKind::Literal(lit) => self.literal(sc, lit, e.span, want),
+            ExprKind::Selected(prefix, suffix) if !self.resolved.contains_key(&suffix.span) => {
+                // Analysis resolves the suffix of every selected name but a record field's.
+                let rec = match &prefix.kind {
+                    ExprKind::Name(_) | ExprKind::Selected(..) => {
+                        let items = self.lookup(sc, prefix)?;
+                        if let Some(Item::Library(_) | Item::Package(_)) = items.first() {
+                            let items = self.lookup(sc, e)?;
+                            return self.object(sc, &items, e, want);
+                        }
+                        self.object(sc, &items, prefix, None)?
+                    }
+                    _ => self.expr(sc, prefix, None)?,
+                };
+                self.field(rec, suffix, e.span)
+            }
             ExprKind::Name(_) | ExprKind::Selected(..) => {
                 let items = self.lookup(sc, e)?;
                 self.object(sc, &items, e, want)
@@ -546,7 +598,10 @@ impl<'a> Elab<'a> {
             Item::Constant { value, ty } => Typed::new(Expr::Const(value), ty),
             Item::Signal { id, ty } => Typed::new(Expr::Signal(id), ty),
             Item::Quantity(id) => Typed::new(Expr::Quantity(id), Ty::Real),
-            Item::Variable { id, ty, .. } => Typed::new(Expr::Var(id), ty),
+            Item::Variable { id, ty, path, .. } => {
+                let e = path.iter().fold(Expr::Var(id), |e, part| part.of(e));
+                Typed::new(e, ty)
+            }
             Item::EnumLiteral { .. } => return self.enum_literal(items, want, e.span),
             Item::Subprogram(_) => {
                 let subs = items
@@ -916,6 +971,10 @@ impl<'a> Elab<'a> {
         span: Span,
         want: Option<&Ty>,
     ) -> R<Typed> {
+        if let Some(Ty::Record(rec)) = want {
+            let rec = rec.clone();
+            return self.record_aggregate(sc, &rec, elems, span);
+        }
         let Some(Ty::Array(arr)) = want else {
             return Err(self.error(ElabError::invalid(
                 span,
@@ -1015,6 +1074,132 @@ impl<'a> Elab<'a> {
             None => Expr::Aggregate { elems: out, string },
         };
         Ok(Typed::new(e, ty))
+    }
+}
+
+impl<'a> Elab<'a> {
+    /// A record aggregate (LRM 7.3.2.1): positional elements first, then named fields
+    /// (`hours | minutes => 0`), `others` for the rest. Each value is typed by its field, so
+    /// an `others` value is lowered once per field it gives.
+    fn record_aggregate(
+        &mut self,
+        sc: &Scope<'a>,
+        rec: &Rc<RecordTy>,
+        elems: &[ast::ElementAssoc],
+        span: Span,
+    ) -> R<Typed> {
+        let n = rec.fields.len();
+        let mut given: Vec<Option<&ast::Expr>> = vec![None; n];
+        let mut others = None;
+        for (k, el) in elems.iter().enumerate() {
+            if el.choices.is_empty() {
+                if k >= n {
+                    return Err(self.error(ElabError::invalid(
+                        el.span,
+                        format!("too many elements: record `{}` has {n} fields", rec.name),
+                        None,
+                    )));
+                }
+                given[k] = Some(&el.value);
+                continue;
+            }
+            for c in &el.choices {
+                let field = match c {
+                    ast::Choice::Others(_) => {
+                        others = Some(&el.value);
+                        continue;
+                    }
+                    ast::Choice::Expr(ast::Expr {
+                        kind: ExprKind::Name(id),
+                        ..
+                    }) => rec.field(&id.name).map(|f| f.0),
+                    _ => None,
+                };
+                let Some(pos) = field else {
+                    let names: Vec<&str> = rec.fields.iter().map(|f| f.0.as_str()).collect();
+                    return Err(self.error(ElabError::invalid(
+                        el.span,
+                        format!("record `{}` has no such field", rec.name),
+                        Some(format!("its fields are {}", names.join(", "))),
+                    )));
+                };
+                given[pos] = Some(&el.value);
+            }
+        }
+        let mut out = Vec::with_capacity(n);
+        for ((name, ty), value) in rec.fields.iter().zip(given) {
+            let Some(value) = value.or(others) else {
+                return Err(self.error(ElabError::invalid(
+                    span,
+                    format!("the aggregate gives no value for field `{name}`"),
+                    Some("add `name => value` or `others => value`".into()),
+                )));
+            };
+            out.push(self.expr_of(sc, value, ty)?.e);
+        }
+        let ty = Ty::Record(rec.clone());
+        let e = match out
+            .iter()
+            .map(|e| match e {
+                Expr::Const(v) => Some(v.clone()),
+                _ => None,
+            })
+            .collect::<Option<Vec<Value>>>()
+        {
+            Some(values) => Expr::Const(Value::Array(values)),
+            None => Expr::Aggregate {
+                elems: out,
+                string: false,
+            },
+        };
+        Ok(Typed::new(e, ty))
+    }
+
+    /// The position and type of field `suffix` of a value of type `ty` (`span`: the whole
+    /// selected name).
+    pub(super) fn record_field(
+        &mut self,
+        ty: &Ty,
+        suffix: &ast::Ident,
+        span: Span,
+    ) -> R<(usize, Ty)> {
+        let Ty::Record(r) = ty else {
+            return Err(self.error(ElabError::invalid(
+                span,
+                format!("a value of type {ty} has no field `{}`", suffix.name),
+                Some("only records have fields".into()),
+            )));
+        };
+        match r.field(&suffix.name) {
+            Some((pos, ty)) => Ok((pos, ty.clone())),
+            None => {
+                let names: Vec<&str> = r.fields.iter().map(|f| f.0.as_str()).collect();
+                Err(self.error(ElabError::Undeclared {
+                    span: suffix.span,
+                    name: suffix.name.clone(),
+                    help: Some(format!(
+                        "record `{}` has the fields {}",
+                        r.name,
+                        names.join(", ")
+                    )),
+                }))
+            }
+        }
+    }
+
+    /// `prefix.field` of a record value.
+    pub(super) fn field(&mut self, rec: Typed, suffix: &ast::Ident, span: Span) -> R<Typed> {
+        let (pos, ty) = self.record_field(&rec.ty, suffix, span)?;
+        let design = rec.ty.to_design();
+        self.folded(
+            Expr::Index {
+                array: Box::new(rec.e),
+                index: Box::new(Expr::Const(Value::Integer(pos as i64))),
+                ty: design,
+            },
+            ty,
+            span,
+        )
     }
 }
 

@@ -1,7 +1,7 @@
 //! Constant folding: evaluates an [`Expr`] that reads no signal, quantity, variable or time to
 //! its [`Value`]. Elaboration folds every constant, generic and static sub-expression.
 
-use crate::design::{BinaryOp, Builtin, Expr, Type, UnaryOp, Value, aggregate_value};
+use crate::design::{BinaryOp, Builtin, Expr, UnaryOp, Value, aggregate_value};
 
 /// Why an expression did not fold.
 #[derive(Debug, PartialEq)]
@@ -55,10 +55,7 @@ pub fn eval(e: &Expr) -> Result<Value, NoFold> {
             let Value::Integer(i) = index else {
                 return err("an index must be an integer");
             };
-            let (left, ascending) = match ty {
-                Type::Array { left, ascending, .. } => (*left, *ascending),
-                _ => (1, true),
-            };
+            let (left, ascending) = ty.index_origin();
             let offset = if ascending { i - left } else { left - i };
             let n = match &array {
                 Value::Array(v) => v.len(),
@@ -328,6 +325,7 @@ pub fn fold(e: Expr) -> Result<Expr, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::design::Type;
 
     fn bin(op: BinaryOp, a: Value, b: Value) -> Expr {
         Expr::Binary(op, Box::new(Expr::Const(a)), Box::new(Expr::Const(b)))

@@ -55,7 +55,7 @@ pub(super) fn parse_literal(
                 .unwrap_or(t);
             Some(Value::String(s.to_string()))
         }
-        Ty::Array(_) => None,
+        Ty::Array(_) | Ty::Record(_) => None,
     }
 }
 

@@ -1092,7 +1092,9 @@ fn literal_help(ty: &Ty) -> String {
         Ty::Time => "write a number and a unit: `-g NAME=\"10 ms\"`".into(),
         Ty::Boolean => "write `true` or `false`".into(),
         Ty::Enum(e) => format!("write one of {}", list_names(&e.literals)),
-        Ty::Array(_) => "array generics cannot be set from the command line".into(),
+        Ty::Array(_) | Ty::Record(_) => {
+            "composite generics cannot be set from the command line".into()
+        }
     }
 }
 

@@ -12,7 +12,7 @@ use crate::design::{
 use crate::source::Span;
 
 use super::error::ElabError;
-use super::scope::{Item, Native, Scope};
+use super::scope::{Item, Native, Part, Scope, updated};
 use super::types::{ArrayTy, Ty};
 use super::{Elab, R, Reported};
 
@@ -316,6 +316,7 @@ impl<'a> Elab<'a> {
                                 id,
                                 ty: ty.clone(),
                                 readonly: false,
+                                path: std::rc::Rc::from([]),
                             },
                         ) {
                             return Err(self.error(ElabError::Redeclared {
@@ -359,6 +360,7 @@ impl<'a> Elab<'a> {
                                     id,
                                     ty: sub.ty.clone(),
                                     readonly: true,
+                                    path: std::rc::Rc::from([]),
                                 }
                             }
                         };
@@ -541,82 +543,23 @@ impl<'a> Elab<'a> {
                     }
                     return Ok(());
                 }
-                // `a(l to r) := v`: the variable with those elements replaced.
-                if let ast::ExprKind::Apply(prefix, args) = &target.kind
-                    && let [
-                        ast::Assoc {
-                            actual: Actual::Range(r),
-                            formal: None,
-                            ..
-                        },
-                    ] = args.as_slice()
-                {
-                    let (id, ty) = self.target_variable(sc, prefix)?;
-                    let Ty::Array(arr) = &ty else {
-                        return Err(self.error(ElabError::invalid(
-                            target.span,
-                            "only array variables can be sliced",
-                            None,
-                        )));
-                    };
-                    let (first, len, slice_ty) = self.slice(sc, arr, r, target.span)?;
-                    let v = self.expr_of(sc, value, &slice_ty)?;
-                    p.emit(Instr::SetVar {
+                let (id, path, ty) = self.variable_target(sc, p, target)?;
+                let v = self.expr_of(sc, value, &ty)?;
+                p.emit(match path.as_slice() {
+                    [] => Instr::SetVar {
                         var: id,
-                        value: Expr::Call(
-                            crate::design::Builtin::Splice,
-                            vec![Expr::Var(id), first, len, v.e],
-                        ),
-                    });
-                    return Ok(());
-                }
-                let (name_expr, index) = match &target.kind {
-                    ast::ExprKind::Apply(prefix, args) => match args.as_slice() {
-                        [
-                            ast::Assoc {
-                                actual: Actual::Expr(i),
-                                formal: None,
-                                ..
-                            },
-                        ] => (&**prefix, Some(i)),
-                        _ => {
-                            return Err(self.error(ElabError::unsupported(
-                                target.span,
-                                "this assignment target",
-                                "assign a variable or one element `v(i) := x`",
-                            )));
-                        }
+                        value: v.e,
                     },
-                    _ => (target, None),
-                };
-                let (id, ty) = self.target_variable(sc, name_expr)?;
-                match index {
-                    None => {
-                        let v = self.expr_of(sc, value, &ty)?;
-                        p.emit(Instr::SetVar {
-                            var: id,
-                            value: v.e,
-                        });
-                    }
-                    Some(i) => {
-                        let Ty::Array(arr) = &ty else {
-                            return Err(self.error(ElabError::invalid(
-                                target.span,
-                                "only array variables can be indexed",
-                                None,
-                            )));
-                        };
-                        let i = self.expr_of(sc, i, &Ty::Integer)?;
-                        let v = self.expr_of(sc, value, &arr.element)?;
-                        let own = p.vars.get(id.index()).map(|v| &v.ty);
-                        let index = own_index(i.e, arr, own);
-                        p.emit(Instr::SetVarElement {
-                            var: id,
-                            index,
-                            value: v.e,
-                        });
-                    }
-                }
+                    [Part::Element { index, .. }] => Instr::SetVarElement {
+                        var: id,
+                        index: index.clone(),
+                        value: v.e,
+                    },
+                    _ => Instr::SetVar {
+                        var: id,
+                        value: updated(Expr::Var(id), &path, v.e),
+                    },
+                });
             }
             SeqKind::If {
                 branches,
@@ -844,6 +787,7 @@ impl<'a> Elab<'a> {
                         id: var,
                         ty: Ty::Integer,
                         readonly: true,
+                        path: std::rc::Rc::from([]),
                     },
                 );
                 (top, Some(test), Some((var, asc)))
@@ -957,6 +901,91 @@ impl<'a> Elab<'a> {
             .collect())
     }
 
+    /// A variable target `v`, `v(i)`, `v.f`, `v(i).f`, `v.f(i)`, ...: the variable, the
+    /// selections from it down to the target (each an index in the bounds of the composite
+    /// it selects from, a record's field by its position, with that composite's type), and
+    /// the target's type.
+    fn variable_target(
+        &mut self,
+        sc: &Scope<'a>,
+        p: &Proc,
+        target: &ast::Expr,
+    ) -> R<(VarId, Vec<Part>, Ty)> {
+        match &target.kind {
+            ast::ExprKind::Selected(prefix, suffix)
+                if !self.resolved.contains_key(&suffix.span) =>
+            {
+                let (id, mut path, ty) = self.variable_target(sc, p, prefix)?;
+                let (pos, field) = self.record_field(&ty, suffix, target.span)?;
+                path.push(Part::Element {
+                    index: Expr::Const(Value::Integer(pos as i64)),
+                    container: ty.to_design(),
+                });
+                Ok((id, path, field))
+            }
+            ast::ExprKind::Apply(prefix, args) => {
+                let [
+                    ast::Assoc {
+                        actual,
+                        formal: None,
+                        ..
+                    },
+                ] = args.as_slice()
+                else {
+                    return Err(self.error(ElabError::unsupported(
+                        target.span,
+                        "this assignment target",
+                        "assign a variable, an element `v(i) := x`, a field `v.f := x` or a slice",
+                    )));
+                };
+                let (id, mut path, ty) = self.variable_target(sc, p, prefix)?;
+                let Ty::Array(arr) = &ty else {
+                    return Err(self.error(ElabError::invalid(
+                        target.span,
+                        format!("a value of type {ty} cannot be indexed"),
+                        Some("only arrays are indexed".into()),
+                    )));
+                };
+                match actual {
+                    Actual::Expr(i) => {
+                        let i = self.expr_of(sc, i, &Ty::Integer)?;
+                        // The first selection is in the variable's own bounds (an alias may
+                        // differ).
+                        let own = p.vars.get(id.index()).map(|v| &v.ty);
+                        let own = own.filter(|_| path.is_empty());
+                        let container = own.cloned().unwrap_or_else(|| ty.to_design());
+                        let index = own_index(i.e, arr, own);
+                        path.push(Part::Element { index, container });
+                        Ok((id, path, arr.element.clone()))
+                    }
+                    Actual::Range(r) => {
+                        let (first, len, slice) = self.slice(sc, arr, r, target.span)?;
+                        path.push(Part::Slice { first, len });
+                        Ok((id, path, slice))
+                    }
+                    Actual::Open(s) => {
+                        Err(self.error(ElabError::invalid(*s, "expected an index", None)))
+                    }
+                }
+            }
+            _ => {
+                let items = self.lookup(sc, target)?;
+                match &items[0] {
+                    Item::Variable {
+                        id,
+                        ty,
+                        readonly: false,
+                        path,
+                    } if !path.is_empty() => Ok((*id, path.to_vec(), ty.clone())),
+                    _ => {
+                        let (id, ty) = self.target_variable(sc, target)?;
+                        Ok((id, Vec::new(), ty))
+                    }
+                }
+            }
+        }
+    }
+
     /// The variable a (simple) target names, with its type.
     fn target_variable(&mut self, sc: &Scope<'a>, target: &ast::Expr) -> R<(VarId, Ty)> {
         let items = self.lookup(sc, target)?;
@@ -1028,6 +1057,15 @@ impl<'a> Elab<'a> {
             }) = self.lookup(sc, prefix)?.first()
         {
             let (id, arr) = (*id, arr.clone());
+            if let Some(crate::design::SignalKind::View { len: None, .. }) =
+                self.design.signals.get(id.index()).map(|s| &s.kind)
+            {
+                return Err(self.error(ElabError::unsupported(
+                    target.span,
+                    "assigning an element of one element or field of a composite signal",
+                    "vams drives whole elements and fields of signals (`s(3) <= ...`, `s.f <= ...`): assign the whole field, or declare the part as its own signal",
+                )));
+            }
             let i = self.expr_of(sc, i, &Ty::Integer)?;
             let own = self.design.signals.get(id.index()).map(|s| &s.ty);
             return Ok((id, arr.element.clone(), Some(own_index(i.e, &arr, own))));

@@ -10,7 +10,8 @@ use std::rc::Rc;
 
 use crate::ast;
 use crate::design::{
-    Builtin, ParamMode, QuantityId, SignalId, SubprogramId, TerminalId, Value, VarId,
+    BinaryOp, Builtin, Expr, ParamMode, QuantityId, SignalId, SubprogramId, TerminalId, Type,
+    Value, VarId,
 };
 use crate::source::Span;
 
@@ -55,11 +56,14 @@ pub enum Item<'a> {
     RefTerminal {
         nature: usize,
     },
-    /// A process variable; loop parameters are read-only.
+    /// A process variable; loop parameters are read-only. `path` selects a part of it (an
+    /// alias of a field, element or slice, `alias pc is regs.program_counter;`), and `ty` is
+    /// that part's type. Empty for the whole variable.
     Variable {
         id: VarId,
         ty: Ty,
         readonly: bool,
+        path: Rc<[Part]>,
     },
     Type(Rc<Sub>),
     /// Index into the elaborator's nature table.
@@ -86,6 +90,62 @@ pub enum Item<'a> {
     /// unsupported construct): the reason, reported where it is used (`None`: the declaration's
     /// own error was reported already).
     Poison(Option<Rc<str>>),
+}
+
+/// One selection from a composite value, outermost first in a path.
+#[derive(Clone, Debug)]
+pub enum Part {
+    /// The element at `index`, in the bounds of the composite's type `container` (a
+    /// record's field by its position).
+    Element { index: Expr, container: Type },
+    /// `len` elements from position `first` (from the left).
+    Slice { first: Expr, len: Expr },
+}
+
+impl Part {
+    /// This part of `whole`.
+    pub fn of(&self, whole: Expr) -> Expr {
+        match self {
+            Part::Element { index, container } => Expr::Index {
+                array: Box::new(whole),
+                index: Box::new(index.clone()),
+                ty: container.clone(),
+            },
+            Part::Slice { first, len } => {
+                Expr::Call(Builtin::Slice, vec![whole, first.clone(), len.clone()])
+            }
+        }
+    }
+}
+
+/// `base` with the part that `path` selects replaced by `value` (`v.f(i) := x`), each
+/// level spliced into the one above.
+pub fn updated(base: Expr, path: &[Part], value: Expr) -> Expr {
+    let Some((part, rest)) = path.split_first() else {
+        return value;
+    };
+    let inner = updated(part.of(base.clone()), rest, value);
+    let (first, len, value) = match part {
+        Part::Element { index, container } => {
+            let (left, ascending) = container.index_origin();
+            let (l, i) = (
+                Box::new(Expr::Const(Value::Integer(left))),
+                Box::new(index.clone()),
+            );
+            let position = if ascending {
+                Expr::Binary(BinaryOp::Sub, i, l)
+            } else {
+                Expr::Binary(BinaryOp::Sub, l, i)
+            };
+            let one = Expr::Aggregate {
+                elems: vec![inner],
+                string: *container == Type::String,
+            };
+            (position, Expr::Const(Value::Integer(1)), one)
+        }
+        Part::Slice { first, len } => (first.clone(), len.clone(), inner),
+    };
+    Expr::Call(Builtin::Splice, vec![base, first, len, value])
 }
 
 impl<'a> Item<'a> {

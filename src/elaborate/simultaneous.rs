@@ -159,6 +159,7 @@ impl<'a> Elab<'a> {
                 id: var,
                 ty: Ty::Real,
                 readonly: false,
+                path: std::rc::Rc::from([]),
             };
             // Declared at the quantity's own declaration, so that the names analysis resolved
             // to the quantity find the variable inside the body.

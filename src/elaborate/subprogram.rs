@@ -363,10 +363,20 @@ impl<'a> Elab<'a> {
                         )));
                     };
                     let items = self.lookup(sc, actual)?;
+                    if let Some(Item::Variable { path, .. }) = items.first()
+                        && !path.is_empty()
+                    {
+                        return Err(self.error(ElabError::unsupported(
+                            actual.span,
+                            "a field or element of a variable as the actual of an `out` or `inout` parameter",
+                            "pass a whole variable and copy the part after the call",
+                        )));
+                    }
                     let Some(Item::Variable {
                         id,
                         ty,
                         readonly: false,
+                        ..
                     }) = items.first()
                     else {
                         return Err(self.error(ElabError::WrongClass {
@@ -484,6 +494,7 @@ impl<'a> Elab<'a> {
                     id: var,
                     ty,
                     readonly: param.mode == ParamMode::In,
+                    path: Rc::from([]),
                 }
             };
             sc.declare_at(&param.name, at, item);

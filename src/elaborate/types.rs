@@ -18,6 +18,29 @@ pub enum Ty {
     Boolean,
     Enum(Rc<EnumTy>),
     Array(Rc<ArrayTy>),
+    Record(Rc<RecordTy>),
+}
+
+/// A record type: its fields in declaration order. A record value is a
+/// [`Value::Array`] of the field values in that order, and a field is selected by its
+/// position, as an array element is (`Expr::Index` on a [`Type::Record`]).
+#[derive(Debug, PartialEq)]
+pub struct RecordTy {
+    pub name: String,
+    pub fields: Vec<(String, Ty)>,
+    /// Each field's default (its subtype's `'left`: 0 for `integer range 0 to 59`).
+    pub defaults: Vec<Value>,
+}
+
+impl RecordTy {
+    /// The position and type of field `name`.
+    pub fn field(&self, name: &str) -> Option<(usize, &Ty)> {
+        self.fields
+            .iter()
+            .enumerate()
+            .find(|(_, (n, _))| n == name)
+            .map(|(k, (_, t))| (k, t))
+    }
 }
 
 #[derive(Debug, PartialEq)]
@@ -71,6 +94,7 @@ impl Ty {
         match (self, other) {
             (Ty::Enum(a), Ty::Enum(b)) => a.name == b.name,
             (Ty::Array(a), Ty::Array(b)) => a.name == b.name,
+            (Ty::Record(a), Ty::Record(b)) => a.name == b.name,
             (a, b) => std::mem::discriminant(a) == std::mem::discriminant(b),
         }
     }
@@ -80,7 +104,7 @@ impl Ty {
     }
 
     pub fn is_scalar(&self) -> bool {
-        !matches!(self, Ty::Array(_))
+        !matches!(self, Ty::Array(_) | Ty::Record(_))
     }
 
     pub fn is_string(&self) -> bool {
@@ -112,6 +136,14 @@ impl Ty {
                     ascending,
                 }
             }
+            Ty::Record(r) => Type::Record {
+                name: r.name.clone(),
+                fields: r
+                    .fields
+                    .iter()
+                    .map(|(n, t)| (n.clone(), t.to_design()))
+                    .collect(),
+            },
         }
     }
 
@@ -125,6 +157,7 @@ impl Ty {
             Ty::Enum(_) => Value::Enum(0),
             Ty::Array(a) if a.name == "string" => Value::String(" ".repeat(a.len().unwrap_or(0))),
             Ty::Array(a) => Value::Array(vec![a.element.default_value(); a.len().unwrap_or(0)]),
+            Ty::Record(r) => Value::Array(r.defaults.clone()),
         }
     }
 
@@ -145,7 +178,7 @@ impl Ty {
                 Value::Enum(0),
                 Value::Enum(e.literals.len().saturating_sub(1) as u32),
             )),
-            Ty::Array(_) => None,
+            Ty::Array(_) | Ty::Record(_) => None,
         }
     }
 }
@@ -159,6 +192,7 @@ impl fmt::Display for Ty {
             Ty::Boolean => f.write_str("boolean"),
             Ty::Enum(e) => f.write_str(&e.name),
             Ty::Array(a) => f.write_str(&a.name),
+            Ty::Record(r) => f.write_str(&r.name),
         }
     }
 }

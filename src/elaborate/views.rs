@@ -16,7 +16,7 @@ use crate::source::Span;
 
 use super::error::ElabError;
 use super::expr::Typed;
-use super::scope::{Item, Scope};
+use super::scope::{Item, Part, Scope};
 use super::types::{ArrayTy, Ty, bounds_len};
 use super::{Elab, R};
 
@@ -50,6 +50,54 @@ impl<'a> Elab<'a> {
                 let (id, a) = (*id, a.clone());
                 self.signal_view(sc, e, id, &a, args)
             }
+            Item::Variable {
+                id,
+                ty: ty @ Ty::Array(a),
+                readonly,
+                path,
+            } => {
+                let (id, readonly) = (*id, *readonly);
+                let (container, element) = (ty.to_design(), a.element.clone());
+                let mut path = path.to_vec();
+                let (part, ty) = match args {
+                    [
+                        ast::Assoc {
+                            actual: Actual::Expr(ie),
+                            formal: None,
+                            ..
+                        },
+                    ] => {
+                        let what = format!("the index of `{}`", self.sources.snippet(e.span));
+                        let i = self.static_int(sc, ie, &what)?;
+                        let index = Expr::Const(crate::design::Value::Integer(i));
+                        (Part::Element { index, container }, element)
+                    }
+                    [
+                        ast::Assoc {
+                            actual: Actual::Range(r),
+                            formal: None,
+                            ..
+                        },
+                    ] => {
+                        let (first, len, ty) = self.slice(sc, a, r, e.span)?;
+                        (Part::Slice { first, len }, ty)
+                    }
+                    _ => {
+                        return Err(self.error(ElabError::unsupported(
+                            e.span,
+                            "multi-dimensional indexing",
+                            "index one element: `v(i)`",
+                        )));
+                    }
+                };
+                path.push(part);
+                Ok(Item::Variable {
+                    id,
+                    ty,
+                    readonly,
+                    path: path.into(),
+                })
+            }
             _ => Err(self.error(ElabError::unsupported(
                 e.span,
                 "an element or a slice where a whole object is named",
@@ -59,8 +107,8 @@ impl<'a> Elab<'a> {
     }
 
     /// `e` where a signal is expected (an attribute's prefix, a sensitivity list, a signal
-    /// parameter's actual): a view for a static element or slice of an array signal, else
-    /// `e` as an expression.
+    /// parameter's actual): a view for a static element or slice of an array signal or a
+    /// field of a record signal, else `e` as an expression.
     pub(super) fn signal_expr(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<Typed> {
         if let ExprKind::Apply(prefix, args) = &e.kind
             && let ExprKind::Name(id) | ExprKind::Selected(_, id) = &prefix.kind
@@ -70,6 +118,16 @@ impl<'a> Elab<'a> {
             && let Item::Signal { id, ty } = self.element_item(sc, e, prefix, args)?
         {
             return Ok(Typed::new(Expr::Signal(id), ty));
+        }
+        if let ExprKind::Selected(prefix, suffix) = &e.kind
+            && !self.resolved.contains_key(&suffix.span)
+            && let ExprKind::Name(id) | ExprKind::Selected(_, id) = &prefix.kind
+            && let Some(Item::Signal {
+                ty: Ty::Record(_), ..
+            }) = self.resolved_item(sc, id)
+            && let Some(Item::Signal { id, ty }) = self.lookup(sc, e)?.first()
+        {
+            return Ok(Typed::new(Expr::Signal(*id), ty.clone()));
         }
         self.expr(sc, e, None)
     }
@@ -146,38 +204,62 @@ impl<'a> Elab<'a> {
                 return Err(self.error(ElabError::invalid(*s, "expected an index", None)));
             }
         };
-        Ok(Item::Signal {
-            id: self.view(parent, (first, len), &ty, &index, span),
-            ty,
-        })
+        let id = self.view(parent, (first, len), &ty, &format!("({index})"), span)?;
+        Ok(Item::Signal { id, ty })
+    }
+
+    /// The view of field `suffix` of `parent`, a signal of record type `r`.
+    pub(super) fn field_view(
+        &mut self,
+        parent: SignalId,
+        record: &Ty,
+        suffix: &ast::Ident,
+    ) -> R<Item<'a>> {
+        let (pos, ty) = self.record_field(record, suffix, suffix.span)?;
+        let id = self.view(
+            parent,
+            (pos, None),
+            &ty,
+            &format!(".{}", suffix.name),
+            suffix.span,
+        )?;
+        Ok(Item::Signal { id, ty })
     }
 
     /// The view signal of `len` elements (one element: `None`) of `parent` from position
-    /// `first`, of type `ty`, named `parent(index)`; a view of a view is a view of the
-    /// latter's parent.
+    /// `first`, of type `ty`, named `parent` followed by `suffix` (`(3)`, `.hours`); a view
+    /// of a slice view is a view of the latter's parent. The kernel drives a signal by its
+    /// top-level elements, so a part of one element (`s.pos.x`, `words(2)(7)`) has no view.
     fn view(
         &mut self,
         parent: SignalId,
         (first, len): (usize, Option<usize>),
         ty: &Ty,
-        index: &str,
+        suffix: &str,
         span: Span,
-    ) -> SignalId {
+    ) -> R<SignalId> {
         let (parent, first) = match self.design.signals[parent.index()].kind {
             SignalKind::View {
                 parent: root,
                 first: offset,
-                ..
+                len: Some(_),
             } => (root, offset + first),
+            SignalKind::View { len: None, .. } => {
+                return Err(self.error(ElabError::unsupported(
+                    span,
+                    "naming a part of one element of a composite signal as a signal",
+                    "vams names and drives whole elements and fields of signals (`s(3)`, `s.f`): assign the whole element, or declare the part as its own signal",
+                )));
+            }
             _ => (parent, first),
         };
         if let Some(&id) = self.views.get(&(parent, first, len)) {
-            return id;
+            return Ok(id);
         }
         let p = &self.design.signals[parent.index()];
         // The caller checked the position against the parent's bounds.
         let init = p.init.view(first, len).unwrap_or_else(|| p.init.clone());
-        let name = format!("{}({index})", p.name);
+        let name = format!("{}{suffix}", p.name);
         let id = SignalId(self.design.signals.len() as u32);
         self.design.signals.push(Signal {
             name,
@@ -188,6 +270,6 @@ impl<'a> Elab<'a> {
             range: None,
         });
         self.views.insert((parent, first, len), id);
-        id
+        Ok(id)
     }
 }

@@ -104,15 +104,11 @@ pub(crate) fn integer(v: &Value) -> Result<i64, EvalError> {
 
 /// Position of index `i` in an array of type `ty` with `len` elements, bounds checked.
 pub(crate) fn offset(ty: &Type, i: i64, len: usize) -> Result<usize, EvalError> {
-    let (left, right, ascending) = match ty {
-        Type::Array {
-            left,
-            right,
-            ascending,
-            ..
-        } => (*left, *right, *ascending),
-        // `string` is indexed from 1 upwards.
-        _ => (1, len as i64, true),
+    let (left, ascending) = ty.index_origin();
+    let right = match ty {
+        Type::Array { right, .. } => *right,
+        // `string` from 1 upwards, a record's fields from 0.
+        _ => left + len as i64 - 1,
     };
     let (lo, hi) = if ascending {
         (left, right)

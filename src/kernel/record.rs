@@ -100,7 +100,11 @@ fn default_probes(design: &Design) -> Vec<Probe> {
         .iter()
         .enumerate()
         .filter(|(_, s)| {
-            s.kind == SignalKind::Explicit && !matches!(s.ty, Type::String | Type::Array { .. })
+            s.kind == SignalKind::Explicit
+                && !matches!(
+                    s.ty,
+                    Type::String | Type::Array { .. } | Type::Record { .. }
+                )
         })
         .map(|(i, _)| SignalId(i as u32))
         .filter(|&s| Some(s) != domain)

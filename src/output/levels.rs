@@ -46,7 +46,7 @@ pub fn presentation(column: &Column) -> Presentation {
                     Presentation::Integer
                 }
             }
-            Type::String | Type::Array { .. } => Presentation::Other,
+            Type::String | Type::Array { .. } | Type::Record { .. } => Presentation::Other,
         },
     }
 }
