@@ -2,7 +2,9 @@
 //! reports nothing) and checked top-down against the type the context expects (`expr`, which
 //! reports and records), overloads chosen from the operands and the expected type.
 
-use crate::ast::{Actual, Assoc, BinaryOp, Choice, Expr, ExprKind, Ident, Literal, UnaryOp};
+use crate::ast::{
+    Actual, Assoc, BinaryOp, Choice, ElementAssoc, Expr, ExprKind, Ident, Literal, UnaryOp,
+};
 use crate::source::Span;
 
 use super::error::AnalysisError;
@@ -578,17 +580,7 @@ impl Analyzer<'_> {
                 let kind = self.types().kind(expected).clone();
                 match kind {
                     TypeKind::Array { indexes, element } => {
-                        let (index, element) = if indexes.len() == 1 {
-                            (indexes[0], element)
-                        } else {
-                            (UNKNOWN, UNKNOWN)
-                        };
-                        for el in elements {
-                            for c in &el.choices {
-                                self.choice(c, index);
-                            }
-                            self.expr(&el.value, element);
-                        }
+                        self.array_aggregate(elements, &indexes, element);
                     }
                     TypeKind::Record { fields } => {
                         for (i, el) in elements.iter().enumerate() {
@@ -643,6 +635,31 @@ impl Analyzer<'_> {
             }
             _ => {
                 self.expr_any(p);
+            }
+        }
+    }
+
+    /// The elements of an aggregate of an array with these index types: a multi-dimensional
+    /// array's aggregate is an aggregate of aggregates (or strings) of its other dimensions
+    /// (LRM 7.3.2.2), typed level by level.
+    fn array_aggregate(&mut self, elements: &[ElementAssoc], indexes: &[TypeId], element: TypeId) {
+        let Some((&index, rest)) = indexes.split_first() else {
+            return;
+        };
+        for el in elements {
+            for c in &el.choices {
+                self.choice(c, index);
+            }
+            if rest.is_empty() {
+                self.expr(&el.value, element);
+                continue;
+            }
+            match &el.value.kind {
+                ExprKind::Aggregate(inner) => self.array_aggregate(inner, rest, element),
+                // A row of characters written as a string literal.
+                _ => {
+                    self.expr_any(&el.value);
+                }
             }
         }
     }

@@ -60,6 +60,8 @@ impl<T: Copy> Elements<T> {
             element: Ty::Real,
             bounds: Some((self.left, right, self.ascending)),
             index_low: self.left.min(right),
+            index: Ty::Integer,
+            dimension: 0,
         }))
     }
 

@@ -12,7 +12,7 @@ use crate::source::Span;
 use super::error::ElabError;
 use super::expr::Typed;
 use super::scope::{Item, Scope};
-use super::types::{Sub, Ty};
+use super::types::{Sub, Ty, index_value, position};
 use super::{Elab, R, Reported};
 
 const ANALOG_UNSUPPORTED: &[&str] = &["contribution", "reference", "across", "through"];
@@ -142,7 +142,10 @@ impl<'a> Elab<'a> {
                 let string = self.standard_type("string").unwrap_or(Ty::Integer);
                 Ok(Typed { e: Expr::Image(ty.to_design(), Box::new(x.e)), ty: string })
             }
-            "high" | "low" | "left" | "right" | "length" | "ascending" => self.bound_attribute(sc, prefix, name, span),
+            "high" | "low" | "left" | "right" | "length" | "ascending" => {
+                let dimension = self.dimension_arg(sc, args)?;
+                self.bound_attribute(sc, prefix, name, dimension, span)
+            }
             // The tolerance group of a subtype or a quantity (LRM 1076.1 14.1), "" without one.
             "tolerance" => {
                 let items = self.lookup(sc, prefix)?;
@@ -299,12 +302,61 @@ impl<'a> Elab<'a> {
         })
     }
 
-    /// `'high`, `'low`, `'left`, `'right`, `'length`, `'ascending` of a type or an array.
+    /// The dimension an array attribute's optional argument names (`m'range(2)`), from 1.
+    fn dimension_arg(&mut self, sc: &Scope<'a>, args: &[ast::Assoc]) -> R<usize> {
+        match args {
+            [] => Ok(1),
+            [
+                ast::Assoc {
+                    actual: Actual::Expr(e),
+                    ..
+                },
+            ] => {
+                let n = self.static_int(sc, e, "an attribute's dimension")?;
+                usize::try_from(n).ok().filter(|&n| n >= 1).ok_or_else(|| {
+                    self.error(ElabError::invalid(
+                        e.span,
+                        "a dimension counts from 1",
+                        None,
+                    ))
+                })
+            }
+            [a, ..] => Err(self.error(ElabError::invalid(
+                a.span,
+                "this attribute takes at most one argument, the dimension",
+                None,
+            ))),
+        }
+    }
+
+    /// Dimension `n` (from 1) of the array type `ty` (itself for 1).
+    fn nth_dimension(&mut self, ty: Ty, n: usize, span: Span) -> R<Ty> {
+        let mut level = ty;
+        for _ in 1..n {
+            let next = match &level {
+                Ty::Array(a) => a.next_dimension().cloned(),
+                _ => None,
+            };
+            let Some(next) = next else {
+                return Err(self.error(ElabError::invalid(
+                    span,
+                    format!("`{level}` has fewer than {n} dimensions"),
+                    None,
+                )));
+            };
+            level = Ty::Array(next);
+        }
+        Ok(level)
+    }
+
+    /// `'high`, `'low`, `'left`, `'right`, `'length`, `'ascending` of a type or an array
+    /// (of its dimension `dimension`).
     fn bound_attribute(
         &mut self,
         sc: &Scope<'a>,
         prefix: &ast::Expr,
         name: &str,
+        dimension: usize,
         span: Span,
     ) -> R<Typed> {
         let items = self.lookup(sc, prefix)?;
@@ -314,6 +366,7 @@ impl<'a> Elab<'a> {
             Item::QuantityArray(elements) => (elements.ty(), None),
             _ => (self.expr(sc, prefix, None)?.ty, None),
         };
+        let ty = self.nth_dimension(ty, dimension, span)?;
         if let Ty::Array(a) = &ty {
             let Some((l, r, asc)) = a.bounds else {
                 return Err(self.error(ElabError::invalid(
@@ -323,18 +376,19 @@ impl<'a> Elab<'a> {
                 )));
             };
             let (lo, hi) = if asc { (l, r) } else { (r, l) };
+            let index = |p| index_value(&a.index, p);
             let v = match name {
-                "high" => Value::Integer(hi),
-                "low" => Value::Integer(lo),
-                "left" => Value::Integer(l),
-                "right" => Value::Integer(r),
+                "high" => index(hi),
+                "low" => index(lo),
+                "left" => index(l),
+                "right" => index(r),
                 "length" => Value::Integer(super::types::bounds_len(l, r, asc) as i64),
                 _ => Value::Boolean(asc),
             };
-            let ty = if name == "ascending" {
-                Ty::Boolean
-            } else {
-                Ty::Integer
+            let ty = match name {
+                "ascending" => Ty::Boolean,
+                "length" => Ty::Integer,
+                _ => a.index.clone(),
             };
             return Ok(Typed {
                 e: Expr::Const(v),
@@ -404,6 +458,15 @@ impl<'a> Elab<'a> {
                 Ok((l, r, *dir == ast::Direction::To))
             }
             Range::Attribute(e) => {
+                // `m'range(2)`: the attribute with its dimension.
+                let (e, dimension) = match &e.kind {
+                    ast::ExprKind::Apply(inner, args)
+                        if matches!(inner.kind, ast::ExprKind::Attribute(..)) =>
+                    {
+                        (&**inner, self.dimension_arg(sc, args)?)
+                    }
+                    _ => (&**e, 1),
+                };
                 let ast::ExprKind::Attribute(prefix, attr) = &e.kind else {
                     return Err(self.error(ElabError::invalid(e.span, "expected a range", None)));
                 };
@@ -417,9 +480,12 @@ impl<'a> Elab<'a> {
                     Item::QuantityArray(elements) => (elements.ty(), None),
                     _ => (self.expr(sc, prefix, None)?.ty, None),
                 };
+                let ty = self.nth_dimension(ty, dimension, e.span)?;
                 let (l, r, asc) = match (&ty, range) {
                     (Ty::Array(a), _) => match a.bounds {
-                        Some((l, r, asc)) => (Value::Integer(l), Value::Integer(r), asc),
+                        Some((l, r, asc)) => {
+                            (index_value(&a.index, l), index_value(&a.index, r), asc)
+                        }
                         None => {
                             return Err(self.error(ElabError::invalid(
                                 e.span,
@@ -437,7 +503,7 @@ impl<'a> Elab<'a> {
                     },
                 };
                 let elem_ty = match &ty {
-                    Ty::Array(_) => Ty::Integer,
+                    Ty::Array(a) => a.index.clone(),
                     t => t.clone(),
                 };
                 let (l, r, asc) = if attr.name == "reverse_range" {
@@ -460,18 +526,29 @@ impl<'a> Elab<'a> {
         }
     }
 
-    /// A static integer range.
+    /// A static discrete range, as positions (an enumeration's literals by position).
     pub(super) fn range_bounds(&mut self, sc: &Scope<'a>, r: &Range) -> R<(i64, i64, bool)> {
+        self.range_bounds_typed(sc, r)
+            .map(|(l, r, asc, _)| (l, r, asc))
+    }
+
+    /// [`Elab::range_bounds`] with the range's type.
+    pub(super) fn range_bounds_typed(
+        &mut self,
+        sc: &Scope<'a>,
+        r: &Range,
+    ) -> R<(i64, i64, bool, Ty)> {
         let span = match r {
             Range::Explicit { span, .. } => *span,
             Range::Attribute(e) => e.span,
         };
         let (l, rr, asc) = self.range_exprs(sc, r)?;
-        match (l.value(), rr.value()) {
-            (Some(Value::Integer(a)), Some(Value::Integer(b))) => Ok((*a, *b, asc)),
-            (Some(_), Some(_)) => Err(self.error(ElabError::TypeMismatch {
+        let discrete = matches!(l.ty, Ty::Integer | Ty::Enum(_) | Ty::Boolean);
+        match (l.value().and_then(position), rr.value().and_then(position)) {
+            (Some(a), Some(b)) if discrete => Ok((a, b, asc, l.ty)),
+            _ if !discrete => Err(self.error(ElabError::TypeMismatch {
                 span,
-                expected: "an integer range".into(),
+                expected: "a discrete range (integers or an enumeration)".into(),
                 found: l.ty.to_string(),
                 help: None,
             })),
@@ -482,20 +559,48 @@ impl<'a> Elab<'a> {
         }
     }
 
-    /// A static discrete range: `1 to 4`, `x'range`, `natural range 0 to 3`.
+    /// A static discrete range: `1 to 4`, `x'range`, `natural range 0 to 3`, `state`,
+    /// `state range idle to busy`, as positions.
     pub(super) fn discrete_range(
         &mut self,
         sc: &Scope<'a>,
         r: &ast::DiscreteRange,
     ) -> R<(i64, i64, bool)> {
+        self.discrete_range_typed(sc, r)
+            .map(|(l, r, asc, _)| (l, r, asc))
+    }
+
+    /// [`Elab::discrete_range`] with the range's type.
+    pub(super) fn discrete_range_typed(
+        &mut self,
+        sc: &Scope<'a>,
+        r: &ast::DiscreteRange,
+    ) -> R<(i64, i64, bool, Ty)> {
         match r {
-            ast::DiscreteRange::Range(r) => self.range_bounds(sc, r),
+            ast::DiscreteRange::Range(r) => self.range_bounds_typed(sc, r),
+            // `m'range(2)` parses as a subtype indication.
+            ast::DiscreteRange::Subtype(si)
+                if si.range.is_none()
+                    && matches!(&si.type_mark.kind, ast::ExprKind::Apply(inner, _)
+                        if matches!(&inner.kind, ast::ExprKind::Attribute(_, a)
+                            if a.name == "range" || a.name == "reverse_range")) =>
+            {
+                let r = Range::Attribute(Box::new(si.type_mark.clone()));
+                self.range_bounds_typed(sc, &r)
+            }
             ast::DiscreteRange::Subtype(si) => match &si.range {
-                Some(r) => self.range_bounds(sc, r),
+                Some(r) => self.range_bounds_typed(sc, r),
                 None => {
                     let sub = self.type_mark(sc, &si.type_mark)?;
-                    match sub.range.clone() {
-                        Some((Value::Integer(l), Value::Integer(r))) => Ok((l, r, true)),
+                    let range = sub.range.clone().or_else(|| match &sub.ty {
+                        Ty::Enum(_) | Ty::Boolean => sub.ty.scalar_bounds(),
+                        _ => None,
+                    });
+                    let bounds = range.and_then(|(l, r)| Some((position(&l)?, position(&r)?)));
+                    match bounds {
+                        Some((l, r)) if !matches!(sub.ty, Ty::Real | Ty::Time) => {
+                            Ok((l, r, true, sub.ty.clone()))
+                        }
                         _ => Err(self.error(ElabError::unsupported(
                             si.span,
                             "this discrete range",

@@ -12,7 +12,7 @@ use super::arrays::NatureMark;
 use super::error::ElabError;
 use super::expr::constrain;
 use super::scope::{Item, Native, Scope};
-use super::types::{ArrayTy, EnumTy, RecordTy, Sub, Ty};
+use super::types::{ArrayTy, EnumTy, RecordTy, Sub, Ty, position};
 use super::{Elab, R};
 
 /// The name a subprogram is declared under (`sqrt`, `"and"`).
@@ -442,35 +442,41 @@ impl<'a> Elab<'a> {
                 Ok(())
             }
             TypeDef::Array { indexes, element } => {
-                let [index] = indexes.as_slice() else {
+                let elem = self.subtype_indication(sc, element)?.ty.clone();
+                // Each index's bounds (positions), lowest index value and base type.
+                let mut dims = Vec::with_capacity(indexes.len());
+                for index in indexes {
+                    dims.push(match index {
+                        IndexDef::Unconstrained(mark) => {
+                            let sub = self.type_mark(sc, mark)?;
+                            let low = match &sub.range {
+                                Some((l, _)) => position(l).unwrap_or(i32::MIN as i64),
+                                None if matches!(sub.ty, Ty::Enum(_) | Ty::Boolean) => 0,
+                                None => i32::MIN as i64,
+                            };
+                            (None, low, sub.ty.clone())
+                        }
+                        IndexDef::Constrained(r) => {
+                            let (l, r, asc, ty) = self.discrete_range_typed(sc, r)?;
+                            (Some((l, r, asc)), l.min(r), ty)
+                        }
+                    });
+                }
+                let total = dims.iter().try_fold(1u128, |n, (b, _, _)| {
+                    b.map(|(l, r, asc)| n * super::types::bounds_len(l, r, asc) as u128)
+                });
+                if let Some(n) = total
+                    && n > MAX_ARRAY_ELEMENTS as u128
+                {
                     return Err(self.error(ElabError::unsupported(
                         d.span,
-                        "multi-dimensional arrays",
-                        "use a one-dimensional array",
+                        format!("an array of {n} elements"),
+                        format!(
+                            "vams holds arrays of up to {MAX_ARRAY_ELEMENTS} elements; check the bounds"
+                        ),
                     )));
-                };
-                let elem = self.subtype_indication(sc, element)?.ty.clone();
-                let (bounds, index_low) = match index {
-                    IndexDef::Unconstrained(mark) => {
-                        let sub = self.type_mark(sc, mark)?;
-                        let low = match &sub.range {
-                            Some((Value::Integer(l), _)) => *l,
-                            _ => i32::MIN as i64,
-                        };
-                        (None, low)
-                    }
-                    IndexDef::Constrained(r) => {
-                        let (l, r, asc) = self.discrete_range(sc, r)?;
-                        self.array_size(l, r, asc, d.span)?;
-                        (Some((l, r, asc)), l.min(r))
-                    }
-                };
-                let ty = Ty::Array(Rc::new(ArrayTy {
-                    name: name.name.clone(),
-                    element: elem,
-                    bounds,
-                    index_low,
-                }));
+                }
+                let ty = array_type(&name.name, dims, elem);
                 self.declare(sc, name, Item::Type(Rc::new(Sub::of(ty, &name.name))))
             }
             TypeDef::Record(fields) => {
@@ -561,25 +567,48 @@ impl<'a> Elab<'a> {
                         None,
                     )));
                 };
-                let [ast::Assoc { actual, .. }] = args.as_slice() else {
-                    return Err(self.error(ElabError::unsupported(
+                if args.len() != arr.dimensions() {
+                    return Err(self.error(ElabError::invalid(
                         si.span,
-                        "multi-dimensional index constraints",
-                        "use one range",
+                        format!(
+                            "`{}` has {} dimension(s): give one index range for each",
+                            sub.name,
+                            arr.dimensions()
+                        ),
+                        None,
                     )));
-                };
-                let (l, r, asc) = match actual {
-                    ast::Actual::Range(r) => self.range_bounds(sc, r)?,
-                    ast::Actual::Expr(e) => {
-                        let r = ast::Range::Attribute(Box::new(e.clone()));
-                        self.range_bounds(sc, &r)?
-                    }
-                    ast::Actual::Open(s) => {
-                        return Err(self.error(ElabError::invalid(*s, "expected a range", None)));
-                    }
-                };
-                self.array_size(l, r, asc, si.span)?;
-                let ty = arr.with_bounds(Some((l, r, asc)));
+                }
+                let mut bounds = Vec::with_capacity(args.len());
+                for ast::Assoc { actual, .. } in args {
+                    let (l, r, asc) = match actual {
+                        ast::Actual::Range(r) => self.range_bounds(sc, r)?,
+                        ast::Actual::Expr(e) if matches!(e.kind, ast::ExprKind::Attribute(..)) => {
+                            let r = ast::Range::Attribute(Box::new(e.clone()));
+                            self.range_bounds(sc, &r)?
+                        }
+                        // A type mark: its whole range (`table(state)`).
+                        ast::Actual::Expr(e) => {
+                            let si = ast::SubtypeIndication {
+                                resolution: None,
+                                type_mark: e.clone(),
+                                range: None,
+                                tolerance: None,
+                                span: e.span,
+                            };
+                            self.discrete_range(sc, &ast::DiscreteRange::Subtype(si))?
+                        }
+                        ast::Actual::Open(s) => {
+                            return Err(self.error(ElabError::invalid(
+                                *s,
+                                "expected a range",
+                                None,
+                            )));
+                        }
+                    };
+                    self.array_size(l, r, asc, si.span)?;
+                    bounds.push((l, r, asc));
+                }
+                let ty = constrained(arr, &bounds);
                 Rc::new(Sub {
                     ty,
                     ..(*sub).clone()
@@ -595,7 +624,7 @@ impl<'a> Elab<'a> {
         }
         let mut sub = (*base).clone();
         if let Some(r) = &si.range {
-            if sub.ty.is_numeric() || sub.ty == Ty::Time {
+            if sub.ty.is_numeric() || matches!(sub.ty, Ty::Time | Ty::Enum(_) | Ty::Boolean) {
                 let (l, r, _) = self.range_exprs(sc, r)?;
                 match (l.value(), r.value()) {
                     (Some(a), Some(b)) if l.ty.same(&sub.ty) => {
@@ -650,6 +679,59 @@ impl<'a> Elab<'a> {
     }
 }
 
+/// One index of an array type declaration: its bounds as positions (`None`: unconstrained),
+/// its lowest index value and its index type.
+pub(super) type Dimension = (Option<(i64, i64, bool)>, i64, Ty);
+
+/// The type of an array named `name` with these dimensions (bounds as positions, lowest
+/// index, index type), outermost first: one level of [`ArrayTy`] per dimension, the inner
+/// ones marked by their `dimension`.
+pub(super) fn array_type(
+    name: &str,
+    dims: Vec<Dimension>,
+    element: Ty,
+) -> Ty {
+    dims.into_iter()
+        .enumerate()
+        .rev()
+        .fold(element, |element, (k, (bounds, index_low, index))| {
+            Ty::Array(Rc::new(ArrayTy {
+                name: name.to_string(),
+                element,
+                bounds,
+                index_low,
+                index,
+                dimension: k as u8,
+            }))
+        })
+}
+
+/// `arr` (and its inner dimensions) with `bounds`, one per dimension from `arr`'s on.
+fn constrained(arr: &ArrayTy, bounds: &[(i64, i64, bool)]) -> Ty {
+    let Some((&first, rest)) = bounds.split_first() else {
+        return Ty::Array(Rc::new(ArrayTy {
+            name: arr.name.clone(),
+            element: arr.element.clone(),
+            bounds: arr.bounds,
+            index_low: arr.index_low,
+            index: arr.index.clone(),
+            dimension: arr.dimension,
+        }));
+    };
+    let element = match arr.next_dimension() {
+        Some(inner) if !rest.is_empty() => constrained(inner, rest),
+        _ => arr.element.clone(),
+    };
+    Ty::Array(Rc::new(ArrayTy {
+        name: arr.name.clone(),
+        element,
+        bounds: Some(first),
+        index_low: arr.index_low,
+        index: arr.index.clone(),
+        dimension: arr.dimension,
+    }))
+}
+
 /// The bounds, low first, that an integer object of subtype `sub` must stay within: its range
 /// constraint, or `integer`'s own (-2**31 to 2**31 - 1) without one. `None` for other types.
 pub(super) fn integer_bounds(sub: &Sub) -> Option<(i64, i64)> {
@@ -666,7 +748,9 @@ pub(super) fn integer_bounds(sub: &Sub) -> Option<(i64, i64)> {
 /// `positive` starts at 1.
 pub(super) fn default_value(sub: &Sub) -> Value {
     match (&sub.ty, &sub.range) {
-        (Ty::Integer, Some((left @ Value::Integer(_), _))) => left.clone(),
+        (Ty::Integer, Some((left @ Value::Integer(_), _)))
+        | (Ty::Enum(_), Some((left @ Value::Enum(_), _)))
+        | (Ty::Boolean, Some((left @ Value::Boolean(_), _))) => left.clone(),
         _ => sub.ty.default_value(),
     }
 }

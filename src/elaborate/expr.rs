@@ -11,7 +11,7 @@ use crate::source::Span;
 use super::error::ElabError;
 use super::fold;
 use super::scope::{Item, Native, Part, Scope, Subprogram};
-use super::types::{ArrayTy, RecordTy, Ty, bounds_len};
+use super::types::{ArrayTy, RecordTy, Ty, bounds_len, position};
 use super::{Elab, R};
 
 /// A lowered expression and its type.
@@ -885,32 +885,60 @@ impl<'a> Elab<'a> {
             let e = Expr::Call(Builtin::Slice, vec![array.e, first, len]);
             return self.folded(e, ty, span);
         }
-        let [
-            ast::Assoc {
+        if args.len() != arr.dimensions() {
+            return Err(self.error(ElabError::invalid(
+                span,
+                format!(
+                    "`{}` has {} dimension(s): index it with {} index(es)",
+                    arr.name,
+                    arr.dimensions(),
+                    arr.dimensions()
+                ),
+                None,
+            )));
+        }
+        // One index per dimension, each selecting a row of the next.
+        let (mut e, mut ty) = (array.e, array.ty);
+        for a in args {
+            let ast::Assoc {
                 actual: Actual::Expr(ie),
                 formal: None,
                 ..
-            },
-        ] = args
-        else {
-            return Err(self.error(ElabError::unsupported(
-                span,
-                "multi-dimensional indexing",
-                "index one element: `a(i)`",
-            )));
-        };
-        let idx = self.expr_of(sc, ie, &Ty::Integer)?;
-        let elem = arr.element.clone();
-        let ty = array.ty.to_design();
-        self.folded(
-            Expr::Index {
-                array: Box::new(array.e),
-                index: Box::new(idx.e),
-                ty,
-            },
-            elem,
-            span,
-        )
+            } = a
+            else {
+                return Err(self.error(ElabError::invalid(
+                    a.span,
+                    "expected an index",
+                    Some("a slice takes one range: `a(1 to 3)`".into()),
+                )));
+            };
+            let Ty::Array(level) = &ty else {
+                // One index per dimension, checked above.
+                break;
+            };
+            let level = level.clone();
+            let index = self.index_position(sc, ie, &level.index)?;
+            e = Expr::Index {
+                array: Box::new(e),
+                index: Box::new(index),
+                ty: ty.to_design(),
+            };
+            ty = level.element.clone();
+        }
+        self.folded(e, ty, span)
+    }
+
+    /// Index `ie` of an array whose index type is `index`, as a position (an enumeration
+    /// literal's position, a boolean's 0 or 1, an integer itself).
+    pub(super) fn index_position(&mut self, sc: &Scope<'a>, ie: &ast::Expr, index: &Ty) -> R<Expr> {
+        let i = self.expr_of(sc, ie, index)?;
+        Ok(match index {
+            Ty::Integer => i.e,
+            _ => {
+                self.folded(Expr::Call(Builtin::Pos, vec![i.e]), Ty::Integer, ie.span)?
+                    .e
+            }
+        })
     }
 
     /// The slice `r` of an array of type `arr`: the position of its first element from the
@@ -998,7 +1026,14 @@ impl<'a> Elab<'a> {
                 match c {
                     ast::Choice::Others(_) => others = Some(v.clone()),
                     ast::Choice::Expr(ce) => {
-                        let i = self.static_int(sc, ce, "an aggregate choice")?;
+                        let i = self.static_value(sc, ce, &arr.index, "an aggregate choice")?;
+                        let Some(i) = position(&i) else {
+                            return Err(self.error(ElabError::invalid(
+                                ce.span,
+                                "an aggregate choice must be an index value",
+                                None,
+                            )));
+                        };
                         named.push((i, v.clone()));
                     }
                     ast::Choice::Range(r) => {
@@ -1276,6 +1311,8 @@ fn string_type(string: Option<Ty>, n: usize) -> Ty {
             element: Ty::Integer,
             bounds: Some((1, n as i64, true)),
             index_low: 1,
+            index: Ty::Integer,
+            dimension: 0,
         })),
     }
 }

@@ -742,22 +742,45 @@ impl<'a> Elab<'a> {
                         (l, r, asc)
                     }
                     ast::DiscreteRange::Subtype(_) => {
-                        let (l, r, asc) = self.discrete_range(sc, range)?;
-                        let int = |v| super::expr::Typed {
-                            e: Expr::Const(Value::Integer(v)),
-                            ty: Ty::Integer,
+                        let (l, r, asc, ty) = self.discrete_range_typed(sc, range)?;
+                        let value = |v| super::expr::Typed {
+                            e: Expr::Const(super::types::index_value(&ty, v)),
+                            ty: ty.clone(),
                         };
-                        (int(l), int(r), asc)
+                        (value(l), value(r), asc)
                     }
                 };
-                if !matches!(left.ty, Ty::Integer) {
-                    return Err(self.error(ElabError::unsupported(
-                        param.span,
-                        "loops over non-integer ranges",
-                        "loop over integers and index a constant array",
-                    )));
-                }
-                let var = p.new_var(&param.name, &Ty::Integer, Value::Integer(0));
+                // An enumeration or boolean range is counted by position; the parameter is
+                // the literal at the counter's position.
+                let param_ty = left.ty.clone();
+                let literals = match &param_ty {
+                    Ty::Integer => None,
+                    Ty::Enum(e) => Some((e.literals.len() as i64, 0)),
+                    Ty::Boolean => Some((2, 1)),
+                    _ => {
+                        return Err(self.error(ElabError::invalid(
+                            param.span,
+                            format!("a loop runs over a discrete range, not over {param_ty}"),
+                            None,
+                        )));
+                    }
+                };
+                let pos = |e: Expr| match literals {
+                    None => e,
+                    Some(_) => {
+                        let p = Expr::Call(crate::design::Builtin::Pos, vec![e]);
+                        super::fold::fold(p.clone()).unwrap_or(p)
+                    }
+                };
+                let (left, right) = (
+                    super::expr::Typed::new(pos(left.e), Ty::Integer),
+                    super::expr::Typed::new(pos(right.e), Ty::Integer),
+                );
+                let counter = format!("{}'pos", param.name);
+                let var = match literals {
+                    None => p.new_var(&param.name, &Ty::Integer, Value::Integer(0)),
+                    Some(_) => p.new_var(&counter, &Ty::Integer, Value::Integer(0)),
+                };
                 p.emit(Instr::SetVar { var, value: left.e });
                 let right = match right.e {
                     Expr::Const(_) => right.e,
@@ -778,14 +801,30 @@ impl<'a> Elab<'a> {
                 let op = if asc { BinaryOp::Le } else { BinaryOp::Ge };
                 let cond = Expr::Binary(op, Box::new(Expr::Var(var)), Box::new(right));
                 let test = p.emit(Instr::JumpIfNot { cond, target: 0 });
+                let visible = match literals {
+                    None => var,
+                    Some((n, boolean)) => {
+                        let init = param_ty.default_value();
+                        let visible = p.new_var(&param.name, &param_ty, init);
+                        let int = |k| Expr::Const(Value::Integer(k));
+                        p.emit(Instr::SetVar {
+                            var: visible,
+                            value: Expr::Call(
+                                crate::design::Builtin::EnumVal,
+                                vec![Expr::Var(var), int(n), int(boolean)],
+                            ),
+                        });
+                        visible
+                    }
+                };
                 sc.push();
                 pushed = true;
                 sc.declare_at(
                     &param.name,
                     param.span,
                     Item::Variable {
-                        id: var,
-                        ty: Ty::Integer,
+                        id: visible,
+                        ty: param_ty,
                         readonly: true,
                         path: std::rc::Rc::from([]),
                     },
@@ -924,20 +963,6 @@ impl<'a> Elab<'a> {
                 Ok((id, path, field))
             }
             ast::ExprKind::Apply(prefix, args) => {
-                let [
-                    ast::Assoc {
-                        actual,
-                        formal: None,
-                        ..
-                    },
-                ] = args.as_slice()
-                else {
-                    return Err(self.error(ElabError::unsupported(
-                        target.span,
-                        "this assignment target",
-                        "assign a variable, an element `v(i) := x`, a field `v.f := x` or a slice",
-                    )));
-                };
                 let (id, mut path, ty) = self.variable_target(sc, p, prefix)?;
                 let Ty::Array(arr) = &ty else {
                     return Err(self.error(ElabError::invalid(
@@ -946,27 +971,58 @@ impl<'a> Elab<'a> {
                         Some("only arrays are indexed".into()),
                     )));
                 };
-                match actual {
-                    Actual::Expr(i) => {
-                        let i = self.expr_of(sc, i, &Ty::Integer)?;
-                        // The first selection is in the variable's own bounds (an alias may
-                        // differ).
-                        let own = p.vars.get(id.index()).map(|v| &v.ty);
-                        let own = own.filter(|_| path.is_empty());
-                        let container = own.cloned().unwrap_or_else(|| ty.to_design());
-                        let index = own_index(i.e, arr, own);
-                        path.push(Part::Element { index, container });
-                        Ok((id, path, arr.element.clone()))
-                    }
-                    Actual::Range(r) => {
-                        let (first, len, slice) = self.slice(sc, arr, r, target.span)?;
-                        path.push(Part::Slice { first, len });
-                        Ok((id, path, slice))
-                    }
-                    Actual::Open(s) => {
-                        Err(self.error(ElabError::invalid(*s, "expected an index", None)))
-                    }
+                if let [
+                    ast::Assoc {
+                        actual: Actual::Range(r),
+                        formal: None,
+                        ..
+                    },
+                ] = args.as_slice()
+                {
+                    let (first, len, slice) = self.slice(sc, arr, r, target.span)?;
+                    path.push(Part::Slice { first, len });
+                    return Ok((id, path, slice));
                 }
+                if args.len() != arr.dimensions() {
+                    return Err(self.error(ElabError::invalid(
+                        target.span,
+                        format!(
+                            "`{}` has {} dimension(s): index it with as many indexes",
+                            arr.name,
+                            arr.dimensions()
+                        ),
+                        None,
+                    )));
+                }
+                let mut level = ty.clone();
+                for a in args {
+                    let (
+                        ast::Assoc {
+                            actual: Actual::Expr(i),
+                            formal: None,
+                            ..
+                        },
+                        Ty::Array(arr),
+                    ) = (a, &level)
+                    else {
+                        return Err(self.error(ElabError::unsupported(
+                            a.span,
+                            "this assignment target",
+                            "assign a variable, an element `v(i) := x`, a field `v.f := x` or a slice",
+                        )));
+                    };
+                    let arr = arr.clone();
+                    let i = self.index_position(sc, i, &arr.index)?;
+                    // The first selection is in the variable's own bounds (an alias may
+                    // differ).
+                    let own = p.vars.get(id.index()).map(|v| &v.ty);
+                    let own = own.filter(|_| path.is_empty());
+                    let container = own.cloned().unwrap_or_else(|| level.to_design());
+                    let index = own_index(i, &arr, own);
+                    path.push(Part::Element { index, container });
+                    level = arr.element.clone();
+                }
+                Ok((id, path, level))
             }
             _ => {
                 let items = self.lookup(sc, target)?;
@@ -1066,9 +1122,9 @@ impl<'a> Elab<'a> {
                     "vams drives whole elements and fields of signals (`s(3) <= ...`, `s.f <= ...`): assign the whole field, or declare the part as its own signal",
                 )));
             }
-            let i = self.expr_of(sc, i, &Ty::Integer)?;
+            let i = self.index_position(sc, i, &arr.index)?;
             let own = self.design.signals.get(id.index()).map(|s| &s.ty);
-            return Ok((id, arr.element.clone(), Some(own_index(i.e, &arr, own))));
+            return Ok((id, arr.element.clone(), Some(own_index(i, &arr, own))));
         }
         let items = self.lookup(sc, target)?;
         match &items[0] {

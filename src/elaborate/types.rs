@@ -60,9 +60,50 @@ pub struct ArrayTy {
     /// Lowest value of the index subtype (`natural`: 0, `positive`: 1): where the index of an
     /// unconstrained array's value starts.
     pub index_low: i64,
+    /// The index's base type: `integer`, or an enumeration (`array (state) of ...`) or
+    /// `boolean`, whose values index by their positions (`bounds` and `index_low` are
+    /// positions then).
+    pub index: Ty,
+    /// 0 for an array type of its own; k for the (k+1)-th dimension of a multi-dimensional
+    /// array, which is held as an array of its rows: `array (1 to 3, 1 to 4) of real` is an
+    /// array (dimension 0) of arrays (dimension 1), `m(i, j)` indexes both at once.
+    pub dimension: u8,
+}
+
+/// The position of a discrete value (an integer itself, an enumeration literal or boolean by
+/// position): what array bounds and indices are kept as.
+pub fn position(v: &Value) -> Option<i64> {
+    match v {
+        Value::Integer(i) => Some(*i),
+        Value::Enum(p) => Some(i64::from(*p)),
+        Value::Boolean(b) => Some(i64::from(*b)),
+        _ => None,
+    }
+}
+
+/// The value of index type `index` at position `pos` (the inverse of [`position`]).
+pub fn index_value(index: &Ty, pos: i64) -> Value {
+    match index {
+        Ty::Enum(_) => Value::Enum(pos.clamp(0, i64::from(u32::MAX)) as u32),
+        Ty::Boolean => Value::Boolean(pos != 0),
+        _ => Value::Integer(pos),
+    }
 }
 
 impl ArrayTy {
+    /// The array type of its next dimension, for a multi-dimensional array.
+    pub fn next_dimension(&self) -> Option<&Rc<ArrayTy>> {
+        match &self.element {
+            Ty::Array(e) if e.dimension == self.dimension + 1 => Some(e),
+            _ => None,
+        }
+    }
+
+    /// The number of dimensions from this one on (1 for a one-dimensional array).
+    pub fn dimensions(&self) -> usize {
+        1 + self.next_dimension().map_or(0, |e| e.dimensions())
+    }
+
     pub fn len(&self) -> Option<usize> {
         self.bounds.map(|(l, r, asc)| bounds_len(l, r, asc))
     }
@@ -74,6 +115,8 @@ impl ArrayTy {
             element: self.element.clone(),
             bounds,
             index_low: self.index_low,
+            index: self.index.clone(),
+            dimension: self.dimension,
         }))
     }
 }
@@ -93,7 +136,7 @@ impl Ty {
     pub fn same(&self, other: &Ty) -> bool {
         match (self, other) {
             (Ty::Enum(a), Ty::Enum(b)) => a.name == b.name,
-            (Ty::Array(a), Ty::Array(b)) => a.name == b.name,
+            (Ty::Array(a), Ty::Array(b)) => a.name == b.name && a.dimension == b.dimension,
             (Ty::Record(a), Ty::Record(b)) => a.name == b.name,
             (a, b) => std::mem::discriminant(a) == std::mem::discriminant(b),
         }

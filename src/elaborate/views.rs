@@ -163,7 +163,8 @@ impl<'a> Elab<'a> {
         let (first, len, ty, span) = match &arg.actual {
             Actual::Expr(ie) => {
                 let what = format!("the index of `{name}` (it names a signal element here)");
-                let i = self.static_int(sc, ie, &what)?;
+                let i = self.static_value(sc, ie, &a.index, &what)?;
+                let i = super::types::position(&i).unwrap_or(i64::MIN);
                 let Some(k) = position(i) else {
                     return Err(self.error(ElabError::IndexRange {
                         span: ie.span,
