@@ -149,6 +149,8 @@ pub struct InterfaceDecl {
     pub mode: Option<Mode>,
     /// For terminals, the nature (`electrical`); otherwise the subtype.
     pub subtype: SubtypeIndication,
+    /// A `bus` port: a guarded signal whose drivers in the entity can be disconnected.
+    pub bus: bool,
     pub default: Option<Expr>,
     pub span: Span,
 }
@@ -209,7 +211,7 @@ pub enum DeclKind {
         value: Option<Expr>,
         /// `bus` or `register`: a guarded signal, whose drivers a guarded assignment
         /// disconnects while the guard is false (LRM 4.3.1.2).
-        guarded: bool,
+        guarded: Option<GuardedKind>,
     },
     Variable {
         shared: bool,
@@ -571,6 +573,14 @@ pub enum DelayMechanism {
     Default,
     Transport,
     Inertial { reject: Option<Expr> },
+}
+
+/// The kind of a guarded signal (LRM 4.3.1.2): with every driver disconnected, a `bus`
+/// takes its resolution function's value for no drivers, a `register` keeps its value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GuardedKind {
+    Bus,
+    Register,
 }
 
 #[derive(Clone, Debug, PartialEq)]

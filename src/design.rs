@@ -227,6 +227,23 @@ pub struct Signal {
     pub span: Span,
     /// The bounds of an integer subtype, as for [`Variable::range`] (LRM 8.4).
     pub range: Option<(i64, i64)>,
+    /// A user-defined resolution function (`subtype wired_or_bit is wired_or bit;`);
+    /// `std_logic`'s is built into the kernel.
+    pub resolution: Option<Resolution>,
+    /// `bus` or `register` (LRM 4.3.1.2): its drivers can be disconnected.
+    pub guarded: Option<crate::ast::GuardedKind>,
+}
+
+/// A signal's resolution function, applied to the values of its connected drivers each time
+/// one of them is active (LRM 2.4). The function is elaborated once per number of values it
+/// can receive (its parameter is an unconstrained array, whose bounds a body is lowered with).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Resolution {
+    /// The function's name, for run-time errors.
+    pub name: String,
+    /// The function for `k` driving values at index `k`, from 0 to the signal's number of
+    /// drivers.
+    pub by_count: Vec<SubprogramId>,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -771,7 +788,9 @@ pub enum Instr {
         /// `target(index) <= ...`: one element of an array signal (index in the signal's
         /// type's bounds); each element then has its own driver (LRM 12.6.1).
         index: Option<Expr>,
-        waveform: Vec<(Expr, Expr)>,
+        /// `None` for a null transaction (`null after 5 ns`), which disconnects the driver of
+        /// a guarded signal.
+        waveform: Vec<(Option<Expr>, Expr)>,
         mechanism: DelayMechanism,
     },
     /// Suspend until an event on one of `on` with `until` true (or, with empty `on`, any event
@@ -840,7 +859,9 @@ impl Instr {
                     f(i);
                 }
                 for (v, d) in waveform {
-                    f(v);
+                    if let Some(v) = v {
+                        f(v);
+                    }
                     f(d);
                 }
                 if let DelayMechanism::Inertial {

@@ -39,6 +39,7 @@ mod inline;
 mod library;
 mod ltf;
 mod process;
+mod resolution;
 mod sampled;
 mod scope;
 mod simultaneous;
@@ -86,6 +87,9 @@ pub fn elaborate_analysed(
 ) -> Result<Design, Vec<ElabError>> {
     let mut elab = Elab::new(analysis, sources, files);
     elab.top(options);
+    if elab.errors.is_empty() {
+        elab.resolve_signals();
+    }
     if elab.errors.is_empty() {
         let mut design = elab.design;
         design.shrink_to_fit();
@@ -179,8 +183,14 @@ struct Elab<'a> {
     /// that drive the signal. Only the entries of the instances enclosing the current one
     /// are kept.
     port_defaults: Vec<(String, SignalId, Value)>,
-    /// Signals declared `bus` or `register` (guarded signals).
-    guarded_signals: FxHashSet<SignalId>,
+    /// The user-defined resolution functions that subtypes name (`Sub::resolution` indexes
+    /// this), and the signals of such subtypes with their function: each gets an instance
+    /// of it per number of driving values once all processes are known
+    /// (`Elab::resolve_signals`).
+    resolvers: Vec<Rc<scope::Subprogram<'a>>>,
+    resolved_signals: Vec<(SignalId, usize)>,
+    /// Disconnection delays of guarded signals in seconds (`disconnect s : t after 3 ns;`).
+    disconnect_delays: FxHashMap<SignalId, f64>,
     /// The `GUARD` signals of the guarded blocks being elaborated, innermost last: the guard
     /// of a guarded assignment.
     guards: Vec<SignalId>,
@@ -261,7 +271,9 @@ impl<'a> Elab<'a> {
             above: Vec::new(),
             views: FxHashMap::default(),
             port_defaults: Vec::new(),
-            guarded_signals: FxHashSet::default(),
+            resolvers: Vec::new(),
+            resolved_signals: Vec::new(),
+            disconnect_delays: FxHashMap::default(),
             guards: Vec::new(),
             dot_aux: FxHashMap::default(),
             integ_aux: FxHashMap::default(),

@@ -116,6 +116,8 @@ mod tests {
         };
         let signal = |name: &str, ty: Type| Signal {
             range: None,
+            resolution: None,
+            guarded: None,
             name: name.into(),
             ty,
             init: Value::Integer(0),

@@ -514,6 +514,8 @@ impl<'a> Elab<'a> {
                 level: level.clone(),
             },
             span,
+            resolution: None,
+            guarded: None,
         });
         self.above.push((q, level, id));
         id

@@ -270,6 +270,7 @@ impl<'a> Elab<'a> {
             tolerance: scalar.tolerance.clone(),
             unit: scalar.unit.clone(),
             range: None,
+            resolution: None,
         }))
     }
 

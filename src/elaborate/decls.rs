@@ -187,11 +187,16 @@ impl<'a> Elab<'a> {
                     }
                     None => default_value(&sub),
                 };
+                if guarded.is_some() && sub.resolution.is_none() && !is_std_logic(&sub.ty) {
+                    return Err(self.error(ElabError::invalid(
+                        subtype.span,
+                        "a guarded signal (`bus` or `register`) must be of a resolved subtype",
+                        Some("name a resolution function: `signal s : wired_or bit bus;`, or declare `subtype t is wired_or bit;`".into()),
+                    )));
+                }
                 for n in names {
                     let id = self.new_signal(&n.name, &sub, init.clone(), n.span);
-                    if *guarded {
-                        self.guarded_signals.insert(id);
-                    }
+                    self.design.signals[id.index()].guarded = *guarded;
                     self.declare(
                         sc,
                         n,
@@ -274,9 +279,60 @@ impl<'a> Elab<'a> {
             DeclKind::Attribute { name, .. } => self.declare(sc, name, Item::Attribute),
             // Groups only carry user attributes, which the simulator does not read.
             DeclKind::Group { .. } => Ok(()),
-            // Disconnection delays concern guarded signals' drivers, whose disconnection a
-            // guarded assignment refuses (`Elab::guarded_signals`).
-            DeclKind::Disconnect { .. } => Ok(()),
+            DeclKind::Disconnect {
+                signals,
+                type_mark,
+                after,
+            } => {
+                let Value::Time(delay) =
+                    self.static_value(sc, after, &Ty::Time, "a disconnection delay")?
+                else {
+                    return Err(super::Reported);
+                };
+                let names = match signals {
+                    ast::EntityNames::List(names) => names,
+                    // The guarded signals of the type declared in this region so far (the
+                    // specification follows their declarations, LRM 5.3); `others`: those
+                    // without a specification of their own.
+                    all_or_others => {
+                        let ty = self.type_mark(sc, type_mark)?.ty.to_design();
+                        let prefix = self.hier_name("");
+                        for (k, s) in self.design.signals.iter().enumerate() {
+                            let here = s
+                                .name
+                                .strip_prefix(prefix.as_str())
+                                .is_some_and(|n| !n.contains('.'));
+                            let id = SignalId(k as u32);
+                            if here
+                                && s.guarded.is_some()
+                                && s.ty == ty
+                                && s.kind == SignalKind::Explicit
+                                && (matches!(all_or_others, ast::EntityNames::All)
+                                    || !self.disconnect_delays.contains_key(&id))
+                            {
+                                self.disconnect_delays.insert(id, delay);
+                            }
+                        }
+                        return Ok(());
+                    }
+                };
+                for n in names {
+                    let items = self.lookup(sc, n)?;
+                    match items.first() {
+                        Some(Item::Signal { id, .. }) if self.is_guarded(*id) => {
+                            self.disconnect_delays.insert(*id, delay);
+                        }
+                        _ => {
+                            return Err(self.error(ElabError::invalid(
+                                n.span,
+                                "a disconnection specification names guarded signals (`bus` or `register`)",
+                                None,
+                            )));
+                        }
+                    }
+                }
+                Ok(())
+            }
             DeclKind::AttributeSpec {
                 attribute,
                 entities,
@@ -619,10 +675,24 @@ impl<'a> Elab<'a> {
             }
             _ => self.type_mark(sc, &si.type_mark)?,
         };
-        if si.range.is_none() && si.tolerance.is_none() {
+        if si.range.is_none() && si.tolerance.is_none() && si.resolution.is_none() {
             return Ok(base);
         }
         let mut sub = (*base).clone();
+        if let Some(f) = &si.resolution
+            && !is_std_logic(&sub.ty)
+        {
+            let items = self.lookup(sc, f)?;
+            let Some(Item::Subprogram(s)) = items.first() else {
+                return Err(self.error(ElabError::invalid(
+                    f.span,
+                    "a resolution function is named here",
+                    Some("name a function of one unconstrained array parameter: `subtype t is wired_or bit;`".into()),
+                )));
+            };
+            sub.resolution = Some(self.resolvers.len());
+            self.resolvers.push(s.clone());
+        }
         if let Some(r) = &si.range {
             if sub.ty.is_numeric() || matches!(sub.ty, Ty::Time | Ty::Enum(_) | Ty::Boolean) {
                 let (l, r, _) = self.range_exprs(sc, r)?;
@@ -667,6 +737,9 @@ impl<'a> Elab<'a> {
         span: crate::source::Span,
     ) -> SignalId {
         let id = SignalId(self.design.signals.len() as u32);
+        if let Some(r) = sub.resolution {
+            self.resolved_signals.push((id, r));
+        }
         self.design.signals.push(Signal {
             range: integer_bounds(sub),
             name: self.hier_name(name),
@@ -674,8 +747,20 @@ impl<'a> Elab<'a> {
             init,
             kind: SignalKind::Explicit,
             span,
+            resolution: None,
+            guarded: None,
         });
         id
+    }
+}
+
+/// `std_ulogic` or an array of it, whose resolution (`ieee.std_logic_1164.resolved`) the
+/// kernel does itself.
+fn is_std_logic(ty: &Ty) -> bool {
+    match ty {
+        Ty::Enum(e) => e.name == "std_ulogic",
+        Ty::Array(a) => is_std_logic(&a.element),
+        _ => false,
     }
 }
 
@@ -686,11 +771,7 @@ pub(super) type Dimension = (Option<(i64, i64, bool)>, i64, Ty);
 /// The type of an array named `name` with these dimensions (bounds as positions, lowest
 /// index, index type), outermost first: one level of [`ArrayTy`] per dimension, the inner
 /// ones marked by their `dimension`.
-pub(super) fn array_type(
-    name: &str,
-    dims: Vec<Dimension>,
-    element: Ty,
-) -> Ty {
+pub(super) fn array_type(name: &str, dims: Vec<Dimension>, element: Ty) -> Ty {
     dims.into_iter()
         .enumerate()
         .rev()

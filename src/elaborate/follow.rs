@@ -131,7 +131,7 @@ fn follow_code(
     let assign = |target: SignalId, value: Expr| Instr::Assign {
         index: None,
         target,
-        waveform: vec![(value, Expr::Const(Value::Time(0.0)))],
+        waveform: vec![(Some(value), Expr::Const(Value::Time(0.0)))],
         mechanism: DelayMechanism::Transport,
     };
     let set = |var: VarId, value: Expr| Instr::SetVar { var, value };

@@ -555,6 +555,13 @@ impl<'a> Elab<'a> {
                                     let v = self.static_value(sc, d, &ty, "a port's default")?;
                                     self.port_defaults.push((self.path.clone(), *id, v));
                                 }
+                                // A `bus` port's drivers disconnect: the signal they drive
+                                // through it is guarded (ports share their actual's id).
+                                if decl.bus {
+                                    let root = self.view_root(*id);
+                                    let signal = &mut self.design.signals[root.index()];
+                                    signal.guarded = signal.guarded.or(Some(ast::GuardedKind::Bus));
+                                }
                                 Item::Signal { id: *id, ty }
                             }
                             other => {
@@ -568,6 +575,9 @@ impl<'a> Elab<'a> {
                             None => super::decls::default_value(&sub),
                         };
                         let id = self.new_signal(&name.name, &sub, init, name.span);
+                        if decl.bus {
+                            self.design.signals[id.index()].guarded = Some(ast::GuardedKind::Bus);
+                        }
                         Item::Signal {
                             id,
                             ty: sub.ty.clone(),

@@ -907,11 +907,21 @@ impl<'a> Elab<'a> {
         let mut wave = Vec::new();
         for el in elems {
             let Some(v) = &el.value else {
-                return Err(self.error(ElabError::unsupported(
-                    el.span,
-                    "`null` waveform elements",
-                    "guarded signals are not supported",
-                )));
+                // A null transaction disconnects the driver (LRM 8.4.1): guarded signals only.
+                if let Some((s, ..)) = sigs.iter().find(|(s, ..)| !self.is_guarded(*s)) {
+                    let name = self.design.signals[s.index()].name.clone();
+                    return Err(self.error(ElabError::invalid(
+                        el.span,
+                        format!("`null` disconnects a driver, and `{name}` is not a guarded signal"),
+                        Some("declare the signal `bus` or `register` (of a resolved subtype) to disconnect its drivers".into()),
+                    )));
+                }
+                let d = match &el.after {
+                    Some(a) => self.expr_of(sc, a, &Ty::Time)?.e,
+                    None => Expr::Const(Value::Time(0.0)),
+                };
+                wave.push((vec![None; sigs.len()], d));
+                continue;
             };
             let v = if aggregate {
                 let v = self.expr(sc, v, None)?;
@@ -919,6 +929,7 @@ impl<'a> Elab<'a> {
             } else {
                 vec![self.expr_of(sc, v, &sigs[0].1)?.e]
             };
+            let v = v.into_iter().map(Some).collect::<Vec<_>>();
             let d = match &el.after {
                 Some(a) => self.expr_of(sc, a, &Ty::Time)?.e,
                 None => Expr::Const(Value::Time(0.0)),
@@ -1330,16 +1341,22 @@ impl<'a> Elab<'a> {
         p.emit(Instr::Assign {
             target: id,
             index: None,
-            waveform: vec![(cond, Expr::Const(Value::Time(0.0)))],
+            waveform: vec![(Some(cond), Expr::Const(Value::Time(0.0)))],
             mechanism: DelayMechanism::Inertial { reject: None },
         });
         self.equivalent_process(None, guard.span, p, None);
         Ok(id)
     }
 
-    /// `Instr`s that run `assign` only while the innermost guard is true (`target <= guarded
-    /// ...`, LRM 9.5.1), wrapped around the body the caller emits next.
-    fn guarded_assignment(&mut self, sc: &Scope<'a>, target: &ast::Expr) -> R<Expr> {
+    /// The guard of a guarded assignment (`target <= guarded ...`, LRM 9.5.1), and for a
+    /// guarded target signal the null transaction that disconnects its driver while the
+    /// guard is false, after its disconnection delay (`disconnect s : t after 3 ns;`, 0 by
+    /// default).
+    fn guarded_assignment(
+        &mut self,
+        sc: &Scope<'a>,
+        target: &ast::Expr,
+    ) -> R<(Expr, Option<Instr>)> {
         let Some(&guard) = self.guards.last() else {
             return Err(self.error(ElabError::unsupported(
                 target.span,
@@ -1347,22 +1364,57 @@ impl<'a> Elab<'a> {
                 "put it in a block with a guard expression: `b : block (en = '1') is begin ... end block;`",
             )));
         };
-        if let Ok(items) = self.lookup(sc, target)
-            && let Some(Item::Signal { id, .. }) = items.first()
-            && self.guarded_signals.contains(id)
-        {
-            return Err(self.error(ElabError::unsupported(
-                target.span,
-                "a guarded assignment to a guarded signal (`bus` or `register`), which disconnects its driver while the guard is false",
-                "declare the signal without `bus` or `register`; the assignment then holds its value while the guard is false",
-            )));
+        let targets = match &target.kind {
+            ast::ExprKind::Aggregate(elems) => self.aggregate_targets(elems, target.span)?,
+            _ => vec![target],
+        };
+        let mut disconnect = Vec::new();
+        for t in targets {
+            let (sig, _, index) = self.target_signal(sc, t)?;
+            if self.is_guarded(sig) {
+                let root = self.view_root(sig);
+                let delay = self.disconnect_delays.get(&root).copied().unwrap_or(0.0);
+                disconnect.push(Instr::Assign {
+                    target: sig,
+                    index,
+                    waveform: vec![(None, Expr::Const(Value::Time(delay)))],
+                    mechanism: DelayMechanism::Inertial { reject: None },
+                });
+            }
         }
-        Ok(Expr::Signal(guard))
+        let disconnect = match disconnect.len() {
+            0 => None,
+            1 => disconnect.pop(),
+            _ => {
+                return Err(self.error(ElabError::unsupported(
+                    target.span,
+                    "a guarded aggregate target with guarded signals",
+                    "assign each guarded signal in its own guarded assignment",
+                )));
+            }
+        };
+        Ok((Expr::Signal(guard), disconnect))
+    }
+
+    /// The signal a view shows part of (the signal itself when it is not a view).
+    pub(super) fn view_root(&self, s: SignalId) -> SignalId {
+        match self.design.signals[s.index()].kind {
+            crate::design::SignalKind::View { parent, .. } => parent,
+            _ => s,
+        }
+    }
+
+    /// Whether `s` (or the signal it is a view of) is a guarded signal (`bus`, `register`).
+    pub(super) fn is_guarded(&self, s: SignalId) -> bool {
+        self.design.signals[self.view_root(s).index()]
+            .guarded
+            .is_some()
     }
 
     pub(super) fn concurrent_assign(&mut self, sc: &Scope<'a>, stmt: &ConcStmt) -> R<()> {
         let mut p = Proc::default();
-        // `target <= guarded ...`: the whole statement is skipped while GUARD is false.
+        // `target <= guarded ...`: the whole statement is skipped while GUARD is false (and a
+        // guarded target's driver disconnected).
         let guard = match &stmt.kind {
             ast::ConcKind::ConditionalAssign {
                 target,
@@ -1374,8 +1426,8 @@ impl<'a> Elab<'a> {
                 guarded: true,
                 ..
             } => {
-                let g = self.guarded_assignment(sc, target)?;
-                Some(p.emit(Instr::JumpIfNot { cond: g, target: 0 }))
+                let (g, disconnect) = self.guarded_assignment(sc, target)?;
+                Some((p.emit(Instr::JumpIfNot { cond: g, target: 0 }), disconnect))
             }
             _ => None,
         };
@@ -1433,10 +1485,7 @@ impl<'a> Elab<'a> {
                 for j in ends {
                     p.patch(j, end);
                 }
-                if let Some(skip) = guard {
-                    let end = p.here();
-                    p.patch(skip, end);
-                }
+                end_guard(&mut p, guard);
                 // The selector is read even when no choice matches.
                 let mut on = signals_read(&p.code);
                 for s in sel.e.signals() {
@@ -1483,12 +1532,31 @@ impl<'a> Elab<'a> {
             }
             _ => return Ok(()),
         }
-        if let Some(skip) = guard {
+        end_guard(&mut p, guard);
+        self.equivalent(stmt, p, None);
+        Ok(())
+    }
+}
+
+/// Ends a guarded assignment's body: the guard's jump lands here, on the null transaction
+/// of a guarded target if there is one (skipped when the guard is true).
+fn end_guard(p: &mut Proc, guard: Option<(usize, Option<Instr>)>) {
+    let Some((skip, disconnect)) = guard else {
+        return;
+    };
+    match disconnect {
+        None => {
             let end = p.here();
             p.patch(skip, end);
         }
-        self.equivalent(stmt, p, None);
-        Ok(())
+        Some(instr) => {
+            let over = p.emit(Instr::Jump(0));
+            let here = p.here();
+            p.patch(skip, here);
+            p.emit(instr);
+            let end = p.here();
+            p.patch(over, end);
+        }
     }
 }
 

@@ -48,7 +48,7 @@ impl<'a> Elab<'a> {
         let code = vec![Instr::Assign {
             index: None,
             target: out,
-            waveform: vec![(Expr::Quantity(q), Expr::Const(Value::Time(0.0)))],
+            waveform: vec![(Some(Expr::Quantity(q)), Expr::Const(Value::Time(0.0)))],
             mechanism: DelayMechanism::Transport,
         }];
         self.sampling_process(name, Vec::new(), code, sampling, span);
@@ -207,7 +207,7 @@ fn ztf_code(
     code.push(Instr::Assign {
         index: None,
         target: out,
-        waveform: vec![(v(y), Expr::Const(Value::Time(0.0)))],
+        waveform: vec![(Some(v(y)), Expr::Const(Value::Time(0.0)))],
         mechanism: DelayMechanism::Transport,
     });
     (vars, code)

@@ -112,6 +112,8 @@ impl<'a> Elab<'a> {
                 level: real(0.0),
             },
             span,
+            resolution: None,
+            guarded: None,
         });
         id
     }
@@ -129,7 +131,7 @@ fn mode_code(
     let assign = |target: SignalId, value: Expr| Instr::Assign {
         index: None,
         target,
-        waveform: vec![(value, Expr::Const(Value::Time(0.0)))],
+        waveform: vec![(Some(value), Expr::Const(Value::Time(0.0)))],
         mechanism: DelayMechanism::Transport,
     };
     let s = Expr::Signal;

@@ -422,7 +422,7 @@ impl<'a> Elab<'a> {
     /// actuals of its unconstrained array parameters (one entry per parameter), lowered on
     /// first use: in the body such a parameter has its actual's bounds, so `x'right` and
     /// `x'range` are static there.
-    fn instance(
+    pub(super) fn instance(
         &mut self,
         sub: &Rc<Subprogram<'a>>,
         signals: &[SignalId],

@@ -142,6 +142,8 @@ impl<'a> Elab<'a> {
             init: Value::Real(init),
             kind: SignalKind::Implicit,
             span,
+            resolution: None,
+            guarded: None,
         });
         id
     }

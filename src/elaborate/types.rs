@@ -253,6 +253,9 @@ pub struct Sub {
     pub unit: Option<Arc<str>>,
     /// A range constraint of an integer or real subtype (`natural`), for `'high`/`'low`.
     pub range: Option<(Value, Value)>,
+    /// The user-defined resolution function of a resolved subtype (an index into
+    /// `Elab::resolvers`); `std_logic`'s is the kernel's own.
+    pub resolution: Option<usize>,
 }
 
 impl Sub {
@@ -263,6 +266,7 @@ impl Sub {
             tolerance: None,
             unit: None,
             range: None,
+            resolution: None,
         }
     }
 }

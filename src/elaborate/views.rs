@@ -269,6 +269,8 @@ impl<'a> Elab<'a> {
             kind: SignalKind::View { parent, first, len },
             span,
             range: None,
+            resolution: None,
+            guarded: None,
         });
         self.views.insert((parent, first, len), id);
         Ok(id)

@@ -26,7 +26,7 @@ pub(crate) struct EventKernel<'d> {
     breaks: Vec<(QuantityId, f64)>,
     break_count: usize,
     pub reports: Vec<Report>,
-    waveform: Vec<(Value, f64)>,
+    waveform: Vec<(Option<Value>, f64)>,
     resume: Vec<usize>,
     last_process: usize,
     /// Time of the last simulation cycle (initialisation counts as one at 0).
@@ -116,7 +116,7 @@ impl<'d> EventKernel<'d> {
         analog: &AnalogView,
         on_report: &mut dyn FnMut(&Report),
     ) -> Result<Option<Outcome>, SimError> {
-        self.signals.update(now);
+        self.signals.update(now, self.design)?;
         self.events += self.signals.events.len();
         self.resume.clear();
         for (i, p) in self.procs.iter().enumerate() {

@@ -133,7 +133,7 @@ pub(crate) struct Context<'a> {
     pub reports: &'a mut Vec<Report>,
     pub on_report: &'a mut dyn FnMut(&Report),
     /// Reused buffer for a waveform being assigned.
-    pub waveform: &'a mut Vec<(Value, f64)>,
+    pub waveform: &'a mut Vec<(Option<Value>, f64)>,
     /// The design's subprograms.
     pub subprograms: &'a [Subprogram],
     /// The design's signals (their names and integer ranges, for range checks).
@@ -230,10 +230,17 @@ pub(crate) fn run(
                 let mut last = cx.now;
                 let signal = cx.design_signals.get(target.index());
                 for (value, delay) in waveform {
-                    let v = eval(value, &env).map_err(at)?;
-                    if let Some(s) = signal {
-                        in_range(&v, s.range, "signal", &s.name).map_err(at)?;
-                    }
+                    let v = match value {
+                        Some(value) => {
+                            let v = eval(value, &env).map_err(at)?;
+                            if let Some(s) = signal {
+                                in_range(&v, s.range, "signal", &s.name).map_err(at)?;
+                            }
+                            Some(v)
+                        }
+                        // A null transaction (elaboration allows it on guarded signals only).
+                        None => None,
+                    };
                     let d = seconds(&eval(delay, &env).map_err(at)?).map_err(at)?;
                     let t = cx.now + d;
                     if d < 0.0 || t < last {
@@ -285,15 +292,23 @@ pub(crate) fn run(
                     // of each value goes to that element's driver.
                     (None, Some(n)) => {
                         let whole = &*cx.waveform;
-                        let split: Vec<Vec<Value>> =
-                            whole.iter().map(|(v, _)| v.elements()).collect();
+                        let split: Vec<Option<Vec<Value>>> = whole
+                            .iter()
+                            .map(|(v, _)| v.as_ref().map(Value::elements))
+                            .collect();
                         for k in 0..n {
                             let d = cx
                                 .signals
                                 .driver(index, *target, Some(k))
                                 .ok_or_else(no_driver)?;
-                            let mut wave: Vec<(Value, f64)> = Vec::with_capacity(whole.len());
+                            let mut wave: Vec<(Option<Value>, f64)> =
+                                Vec::with_capacity(whole.len());
                             for ((_, t), values) in whole.iter().zip(&split) {
+                                // A null transaction disconnects every element's driver.
+                                let Some(values) = values else {
+                                    wave.push((None, *t));
+                                    continue;
+                                };
                                 let v = values.get(k).cloned().ok_or_else(|| {
                                     at(EvalError::new(
                                         format!(
@@ -303,7 +318,7 @@ pub(crate) fn run(
                                         "an array assignment needs a value of the target's length",
                                     ))
                                 })?;
-                                wave.push((v, *t));
+                                wave.push((Some(v), *t));
                             }
                             cx.signals.assign(d, &mut wave, delay);
                         }

@@ -10,7 +10,8 @@
 
 use std::collections::{HashMap, HashSet, VecDeque};
 
-use crate::design::{Design, Expr, Instr, SignalId, SignalKind, Type, Value};
+use crate::ast::GuardedKind;
+use crate::design::{Design, Expr, Instr, Resolution, SignalId, SignalKind, Type, Value};
 
 use super::error::SimError;
 
@@ -30,7 +31,8 @@ pub(crate) struct SignalState {
 #[derive(Clone, Debug)]
 struct Transaction {
     time: f64,
-    value: Value,
+    /// `None`: a null transaction, which disconnects the driver (LRM 12.6.2).
+    value: Option<Value>,
 }
 
 /// How an assignment edits the projected waveform.
@@ -49,6 +51,9 @@ struct Driver {
     /// subelement); `None` for a whole signal.
     element: Option<usize>,
     current: Value,
+    /// False after a null transaction, until the next value: a disconnected driver of a
+    /// guarded signal takes no part in its resolution.
+    connected: bool,
     waveform: VecDeque<Transaction>,
 }
 
@@ -64,6 +69,10 @@ pub(crate) struct Signals {
     split: Vec<Option<usize>>,
     /// Signals resolved with the std_logic table.
     resolved: Vec<bool>,
+    /// User-defined resolution functions (`Signal::resolution`).
+    resolution: Vec<Option<Resolution>>,
+    /// `bus` or `register` (`Signal::guarded`).
+    guarded: Vec<Option<GuardedKind>>,
     /// What each view signal shows of its parent: `(parent, first, len)`
     /// ([`SignalKind::View`]); `None` for other signals.
     view_of: Vec<Option<(SignalId, usize, Option<usize>)>>,
@@ -240,6 +249,7 @@ impl Signals {
                             signal: target,
                             element,
                             current,
+                            connected: true,
                             waveform: VecDeque::new(),
                         });
                         drivers.len() - 1
@@ -255,7 +265,17 @@ impl Signals {
         // An unresolved signal (or element) has at most one driver: processes may drive
         // different elements of one array.
         for (s, ds) in by_signal.iter().enumerate() {
-            if resolved[s] {
+            let signal = &design.signals[s];
+            if signal.resolution.is_some() && split[s].is_some() {
+                return Err(SimError::Runtime {
+                    process: format!("resolution of `{}`", signal.name),
+                    time: 0.0,
+                    message: "a signal with a resolution function of its own is driven element by element".into(),
+                    span: signal.span,
+                    help: "assign the whole signal in each process (its resolution function resolves whole values)".into(),
+                });
+            }
+            if resolved[s] || signal.resolution.is_some() {
                 continue;
             }
             let element = |d: &usize| drivers[*d].element;
@@ -304,6 +324,12 @@ impl Signals {
             index,
             split,
             resolved,
+            resolution: design
+                .signals
+                .iter()
+                .map(|s| s.resolution.clone())
+                .collect(),
+            guarded: design.signals.iter().map(|s| s.guarded).collect(),
             views: (0..view_of.len())
                 .filter(|&s| view_of[s].is_some())
                 .map(|s| SignalId(s as u32))
@@ -314,18 +340,20 @@ impl Signals {
             changed: vec![false; n],
             changed_list: Vec::new(),
         };
-        signals.initialize();
+        signals.initialize(design)?;
         Ok(signals)
     }
 
     /// The initial effective values (LRM 12.6.4): each driven signal's from its drivers'
     /// initial values (which a port's default may set), then each view's from its parent.
-    fn initialize(&mut self) {
+    fn initialize(&mut self, design: &Design) -> Result<(), SimError> {
         for s in 0..self.states.len() {
             if self.by_signal[s].is_empty() {
                 continue;
             }
-            let value = self.effective(s);
+            let Some(value) = self.effective(s, design, 0.0)? else {
+                continue;
+            };
             let st = &mut self.states[s];
             st.last_value = value.clone();
             st.value = value;
@@ -339,6 +367,7 @@ impl Signals {
                 st.value = value;
             }
         }
+        Ok(())
     }
 
     /// The driver of `signal` in process `process` (every assignment has one), or of its
@@ -378,7 +407,7 @@ impl Signals {
 
     /// Applies an assignment's waveform `(value, absolute time)` to driver `d` (LRM 10.5.2.2).
     /// `elements` is non-empty with non-decreasing times, all at or after `now`.
-    pub fn assign(&mut self, d: usize, elements: &mut Vec<(Value, f64)>, delay: Delay) {
+    pub fn assign(&mut self, d: usize, elements: &mut Vec<(Option<Value>, f64)>, delay: Delay) {
         let Some(&(ref first_value, first_time)) = elements.first() else {
             return;
         };
@@ -422,7 +451,7 @@ impl Signals {
 
     /// The update phase at `now`: transactions due become driving values; effective values are
     /// recomputed; `events` lists the signals whose value changed.
-    pub fn update(&mut self, now: f64) {
+    pub fn update(&mut self, now: f64, design: &Design) -> Result<(), SimError> {
         for st in &mut self.states {
             st.event = false;
             st.active = false;
@@ -434,7 +463,10 @@ impl Signals {
             while driver.waveform.front().is_some_and(|t| t.time <= now) {
                 // The loop condition guarantees an element.
                 let tr = driver.waveform.pop_front().unwrap();
-                driver.current = tr.value;
+                driver.connected = tr.value.is_some();
+                if let Some(v) = tr.value {
+                    driver.current = v;
+                }
                 due = true;
             }
             if due {
@@ -445,8 +477,9 @@ impl Signals {
             if !self.states[s].active {
                 continue;
             }
-            let value = self.effective(s);
-            self.set(SignalId(s as u32), value, now);
+            if let Some(value) = self.effective(s, design, now)? {
+                self.set(SignalId(s as u32), value, now);
+            }
         }
         let forced = std::mem::take(&mut self.forced);
         for (s, value) in &forced {
@@ -471,6 +504,7 @@ impl Signals {
                 self.set(v, value, now);
             }
         }
+        Ok(())
     }
 
     fn set(&mut self, s: SignalId, value: Value, now: f64) {
@@ -487,33 +521,95 @@ impl Signals {
         }
     }
 
-    fn effective(&self, s: usize) -> Value {
+    /// The effective value of signal `s` from its connected drivers (LRM 12.6.2): `None`
+    /// when it keeps its value (a `register` with every driver disconnected).
+    fn effective(&self, s: usize, design: &Design, now: f64) -> Result<Option<Value>, SimError> {
         let ds = &self.by_signal[s];
+        let value = &self.states[s].value;
+        let z = self.resolved[s] && self.guarded[s] == Some(GuardedKind::Bus);
         if let Some(n) = self.split[s] {
             let mut columns: Vec<Vec<&Value>> = vec![Vec::new(); n];
             for &d in ds {
                 let driver = &self.drivers[d];
-                if let Some(k) = driver.element.filter(|&k| k < n) {
+                if let Some(k) = driver.element.filter(|&k| k < n && driver.connected) {
                     columns[k].push(&driver.current);
                 }
             }
-            let value = &self.states[s].value;
             let values = columns
                 .iter()
                 .zip(value.elements())
                 .map(|(column, old)| match column.as_slice() {
+                    [] if z => all_z(&old),
                     [] => old,
                     [one] => (*one).clone(),
                     many => resolve(many),
                 })
                 .collect();
-            return crate::design::aggregate_value(values, matches!(value, Value::String(_)));
+            let string = matches!(value, Value::String(_));
+            return Ok(Some(crate::design::aggregate_value(values, string)));
         }
-        if ds.len() == 1 || !self.resolved[s] {
-            return self.drivers[ds[0]].current.clone();
+        let on: Vec<&Value> = ds
+            .iter()
+            .map(|&d| &self.drivers[d])
+            .filter(|d| d.connected)
+            .map(|d| &d.current)
+            .collect();
+        if let Some(r) = &self.resolution[s] {
+            if on.is_empty() && self.guarded[s] == Some(GuardedKind::Register) {
+                return Ok(None);
+            }
+            return self.resolve_with(s, r, &on, design, now).map(Some);
         }
-        let values: Vec<&Value> = ds.iter().map(|&d| &self.drivers[d].current).collect();
-        resolve(&values)
+        Ok(match on.as_slice() {
+            [] if z => Some(all_z(value)),
+            [] => None,
+            [one] => Some((*one).clone()),
+            _ if !self.resolved[s] => Some(on[0].clone()),
+            _ => Some(resolve(&on)),
+        })
+    }
+
+    /// Signal `s`'s resolution function `r` applied to the driving values `on`.
+    fn resolve_with(
+        &self,
+        s: usize,
+        r: &Resolution,
+        on: &[&Value],
+        design: &Design,
+        now: f64,
+    ) -> Result<Value, SimError> {
+        let signal = &design.signals[s];
+        let fail = |message: String, help: &str| SimError::Runtime {
+            process: format!("resolution of `{}`", signal.name),
+            time: now,
+            message,
+            span: signal.span,
+            help: help.to_string(),
+        };
+        let Some(&function) = r.by_count.get(on.len()) else {
+            return Err(fail(
+                format!(
+                    "`{}` has {} driving values, more than elaboration counted",
+                    signal.name,
+                    on.len()
+                ),
+                "this is a bug in vams's count of drivers",
+            ));
+        };
+        let character = matches!(&signal.ty, Type::Enum { name, .. } if name == "character");
+        let values =
+            crate::design::aggregate_value(on.iter().map(|v| (*v).clone()).collect(), character);
+        let env = super::eval::Env {
+            signals: &self.states,
+            vars: &[],
+            quantities: &[],
+            derivatives: &[],
+            now,
+            subprograms: &design.subprograms,
+            depth: 0,
+        };
+        super::call::call_function(function, &[Expr::Const(values)], &env)
+            .map_err(|e| fail(format!("in `{}`: {}", r.name, e.message), e.help))
     }
 
     /// Moves the signals with an event since the last call into `out` (cleared first).
@@ -548,6 +644,15 @@ const RESOLUTION: [[u32; 9]; 9] = [
     [0, 1, 2, 3, 7, 5, 5, 7, 1],
     [0, 1, 1, 1, 1, 1, 1, 1, 1],
 ];
+
+/// A std_logic value with every element `'Z'`: a `bus` with all its drivers disconnected
+/// (`resolved` of no values).
+fn all_z(v: &Value) -> Value {
+    match v {
+        Value::Array(items) => Value::Array(items.iter().map(all_z).collect()),
+        _ => Value::Enum(4),
+    }
+}
 
 /// Resolves the driving values of a std_logic signal (element-wise for vectors).
 fn resolve(values: &[&Value]) -> Value {

@@ -241,6 +241,8 @@ fn above_signals_are_root_functions() {
     let (mut d, _) = b.finish();
     d.signals.push(Signal {
         range: None,
+        resolution: None,
+        guarded: None,
         name: "x'above(0.5)".into(),
         ty: Type::Boolean,
         init: Value::Boolean(false),

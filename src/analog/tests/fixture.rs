@@ -145,6 +145,8 @@ impl Builder {
         let span = self.line(&format!("signal {name} : real := {init:?};"));
         self.design.signals.push(Signal {
             range: None,
+            resolution: None,
+            guarded: None,
             name: name.into(),
             ty: Type::Real,
             init: Value::Real(init),

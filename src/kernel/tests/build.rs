@@ -31,6 +31,8 @@ pub fn signal(d: &mut Design, name: &str, ty: Type, init: Value) -> SignalId {
         init,
         kind: SignalKind::Explicit,
         span: Span::default(),
+        resolution: None,
+        guarded: None,
     });
     SignalId(d.signals.len() as u32 - 1)
 }
@@ -91,7 +93,7 @@ pub fn assign(target: SignalId, value: Expr, delay: f64) -> Instr {
     Instr::Assign {
         index: None,
         target,
-        waveform: vec![(value, time(delay))],
+        waveform: vec![(Some(value), time(delay))],
         mechanism: DelayMechanism::Inertial { reject: None },
     }
 }
@@ -100,7 +102,7 @@ pub fn transport(target: SignalId, value: Expr, delay: f64) -> Instr {
     Instr::Assign {
         index: None,
         target,
-        waveform: vec![(value, time(delay))],
+        waveform: vec![(Some(value), time(delay))],
         mechanism: DelayMechanism::Transport,
     }
 }

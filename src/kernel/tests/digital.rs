@@ -177,7 +177,7 @@ fn pulse_design() -> Design {
             Instr::Assign {
                 index: None,
                 target: reject1,
-                waveform: vec![(sig(a), time(5.0 * NS))],
+                waveform: vec![(Some(sig(a)), time(5.0 * NS))],
                 mechanism: DelayMechanism::Inertial {
                     reject: Some(time(1.0 * NS)),
                 },
