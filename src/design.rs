@@ -638,6 +638,10 @@ pub enum Builtin {
     /// The array `a` with the elements from a position replaced by those of `v` (a slice
     /// assignment `a(l to r) := v`): arguments `a`, the position, the slice's length, `v`.
     Splice,
+    /// A character array in the other representation (arguments: the array, and whether
+    /// the result is a `string`): a conversion between `string` and another array of
+    /// characters (`display_string(s)`), which the kernel holds as a `Value::Array`.
+    Restring,
 }
 
 impl Builtin {
@@ -652,6 +656,7 @@ impl Builtin {
                 | Builtin::Slice
                 | Builtin::Splice
                 | Builtin::ValueOf
+                | Builtin::Restring
         )
     }
 }
@@ -698,6 +703,9 @@ pub fn value_builtin(f: Builtin, args: &[Value]) -> Result<Value, String> {
             Ok(aggregate_value(elements, matches!(a, Value::String(_))))
         }
         (Builtin::ValueOf, [text, kind]) => value_of(text, kind),
+        (Builtin::Restring, [a, Value::Boolean(string)]) => {
+            Ok(aggregate_value(a.elements(), *string))
+        }
         _ => scalar_attribute(f, args),
     }
 }

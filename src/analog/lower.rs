@@ -112,5 +112,6 @@ fn lower_call(
         }
         Builtin::Slice | Builtin::Splice => Err(NotAnalog("a slice")),
         Builtin::ValueOf => Err(NotAnalog("the 'value attribute")),
+        Builtin::Restring => Err(NotAnalog("a character array")),
     }
 }

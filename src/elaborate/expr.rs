@@ -853,11 +853,43 @@ impl<'a> Elab<'a> {
             (Ty::Real, Ty::Integer) => Expr::Call(Builtin::ToReal, vec![a.e]),
             (Ty::Integer, Ty::Real) => Expr::Call(Builtin::ToInteger, vec![a.e]),
             (t, from) if t.same(from) => a.e,
+            // Closely related array types (LRM 7.3.5): the same elements, index types that
+            // convert; the result keeps the operand's bounds unless the target has its own.
+            (Ty::Array(t), Ty::Array(f))
+                if t.element.same(&f.element)
+                    && t.dimensions() == f.dimensions()
+                    && (t.index.same(&f.index) || t.index.is_numeric() && f.index.is_numeric()) =>
+            {
+                if let (Some(n), Some(m)) = (t.len(), f.len())
+                    && n != m
+                {
+                    return Err(self.error(ElabError::invalid(
+                        span,
+                        format!(
+                            "a value of {m} element(s) converted to {t} of {n}",
+                            t = t.name
+                        ),
+                        None,
+                    )));
+                }
+                let ty = match t.bounds {
+                    Some(_) => target.clone(),
+                    None => t.with_bounds(f.bounds),
+                };
+                let e = match t.name == "string" || f.name == "string" {
+                    true if t.name != f.name => {
+                        let string = Expr::Const(Value::Boolean(ty.is_string()));
+                        Expr::Call(Builtin::Restring, vec![a.e, string])
+                    }
+                    _ => a.e,
+                };
+                return self.folded(e, ty, span);
+            }
             (t, from) => {
                 return Err(self.error(ElabError::invalid(
                     span,
                     format!("cannot convert {from} to {t}"),
-                    Some("only integer <-> real conversions and conversions within one type are supported".into()),
+                    Some("VHDL converts between integer and real, between closely related array types, and within one type".into()),
                 )));
             }
         };

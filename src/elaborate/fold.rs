@@ -300,7 +300,8 @@ fn call(f: Builtin, args: &[Value]) -> Result<Value, NoFold> {
         | Builtin::TimeVal
         | Builtin::Slice
         | Builtin::Splice
-        | Builtin::ValueOf => {
+        | Builtin::ValueOf
+        | Builtin::Restring => {
             unreachable!("handled above")
         }
     };

@@ -526,6 +526,37 @@ impl<'a> Elab<'a> {
             }
             ObjectClass::Signal => {
                 let sub = self.subtype_indication(sc, &decl.subtype)?;
+                // An `in` port's actual may be a static expression (LRM 1.1.1.2): the port
+                // is then a signal of that constant value.
+                let constant = actual_expr.filter(|(e, p)| {
+                    matches!(decl.mode, None | Some(ast::Mode::In))
+                        && match &e.kind {
+                            ast::ExprKind::Name(id) | ast::ExprKind::Selected(_, id) => {
+                                matches!(self.resolved_item(p, id), Some(Item::Constant { .. }))
+                            }
+                            ast::ExprKind::Literal(_)
+                            | ast::ExprKind::Aggregate(_)
+                            | ast::ExprKind::Qualified(..)
+                            | ast::ExprKind::Unary(..)
+                            | ast::ExprKind::Binary(..)
+                            | ast::ExprKind::Paren(_) => true,
+                            _ => false,
+                        }
+                });
+                if let Some((e, p)) = constant {
+                    let value = self.static_value(p, e, &sub.ty, "a port's actual expression")?;
+                    self.check_initial(&sub, &value, e.span)?;
+                    let id = self.new_signal(&name.name, &sub, value, name.span);
+                    sc.declare_at(
+                        &name.name,
+                        name.span,
+                        Item::Signal {
+                            id,
+                            ty: sub.ty.clone(),
+                        },
+                    );
+                    return Ok(());
+                }
                 match actual_expr {
                     Some((e, p)) => {
                         let items = self.lookup(p, e)?;

@@ -318,8 +318,27 @@ impl<'a> Elab<'a> {
         choices: &[Choice],
     ) -> R<Expr> {
         let mut cond: Option<Expr> = None;
+        let within = |lo: Expr, hi: Expr| {
+            let cmp = |op, b: Expr| Box::new(Expr::Binary(op, Box::new(sel.clone()), Box::new(b)));
+            Expr::Binary(BinaryOp::And, cmp(BinaryOp::Ge, lo), cmp(BinaryOp::Le, hi))
+        };
         for c in choices {
             let one = match c {
+                // A subtype name chooses its range (`when control_transfer_opcodes =>`).
+                Choice::Expr(e)
+                    if let ast::ExprKind::Name(id) | ast::ExprKind::Selected(_, id) = &e.kind
+                        && let Some(super::scope::Item::Type(sub)) = self.resolved_item(sc, id) =>
+                {
+                    let Some((lo, hi)) = sub.range.clone().or_else(|| sub.ty.scalar_bounds())
+                    else {
+                        return Err(self.error(ElabError::invalid(
+                            e.span,
+                            format!("`{}` has no range to choose", sub.name),
+                            None,
+                        )));
+                    };
+                    within(Expr::Const(lo), Expr::Const(hi))
+                }
                 Choice::Expr(e) => {
                     let v = self.expr_of(sc, e, ty)?;
                     if !matches!(v.e, Expr::Const(_)) {
@@ -333,19 +352,7 @@ impl<'a> Elab<'a> {
                 Choice::Range(r) => {
                     let (l, h, asc) = self.range_exprs(sc, r)?;
                     let (lo, hi) = if asc { (l.e, h.e) } else { (h.e, l.e) };
-                    Expr::Binary(
-                        BinaryOp::And,
-                        Box::new(Expr::Binary(
-                            BinaryOp::Ge,
-                            Box::new(sel.clone()),
-                            Box::new(lo),
-                        )),
-                        Box::new(Expr::Binary(
-                            BinaryOp::Le,
-                            Box::new(sel.clone()),
-                            Box::new(hi),
-                        )),
-                    )
+                    within(lo, hi)
                 }
                 Choice::Others(_) => Expr::Const(Value::Boolean(true)),
             };
