@@ -5,7 +5,7 @@
 use std::rc::Rc;
 use std::sync::Arc;
 
-use crate::ast::{self, BranchName, EntityNames, Ident, NatureDef, QuantityDecl};
+use crate::ast::{self, EntityNames, Ident, NatureDef, QuantityDecl};
 use crate::design::{
     BinaryOp, BreakReinit, Equation, Expr, Instr, Limit, Nature, NatureId, Process, Quantity,
     QuantityId, QuantityKind, Signal, SignalId, SignalKind, Terminal, TerminalId, Value,
@@ -17,6 +17,10 @@ use super::error::ElabError;
 use super::scope::{Item, Scope};
 use super::types::{Sub, Ty};
 use super::{Elab, NatureInfo, R};
+
+/// The terminals of one end of a branch, their nature, and `(left, ascending)` of a
+/// terminal array's index.
+type BranchEnd = (Vec<TerminalId>, usize, Option<(i64, bool)>);
 
 impl<'a> Elab<'a> {
     pub(super) fn nature_decl(
@@ -140,6 +144,19 @@ impl<'a> Elab<'a> {
     }
 
     /// A terminal named in a branch quantity or a port map: `(id, nature)`.
+    /// An end of a branch: one terminal, or the elements of a terminal array with its
+    /// `(left, ascending)`, and the (element) nature.
+    fn branch_end(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<BranchEnd> {
+        if let ast::ExprKind::Name(id) | ast::ExprKind::Selected(_, id) = &e.kind
+            && let Some(Item::TerminalArray { elements, nature }) = self.resolved_item(sc, id)
+        {
+            let bounds = (elements.left, elements.ascending);
+            return Ok((elements.ids.clone(), nature, Some(bounds)));
+        }
+        let (t, nature) = self.terminal(sc, e)?;
+        Ok((vec![t], nature, None))
+    }
+
     pub(super) fn terminal(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<(TerminalId, usize)> {
         if let ast::ExprKind::Apply(prefix, args) = &e.kind {
             return self.indexed_terminal(sc, prefix, args, e.span);
@@ -263,10 +280,10 @@ impl<'a> Elab<'a> {
                         None,
                     )));
                 };
-                let (p, nature) = self.terminal(sc, plus)?;
-                let m = match minus {
+                let (ps, nature, plus_bounds) = self.branch_end(sc, plus)?;
+                let (ms, minus_bounds) = match minus {
                     Some(minus) => {
-                        let (m, mn) = self.terminal(sc, minus)?;
+                        let (ms, mn, bounds) = self.branch_end(sc, minus)?;
                         if mn != nature {
                             let (a, b) = (
                                 self.natures[nature].name.clone(),
@@ -281,35 +298,77 @@ impl<'a> Elab<'a> {
                                 ),
                             }));
                         }
-                        m
+                        (ms, bounds)
                     }
-                    None => self.reference_terminal(nature),
+                    None => (vec![self.reference_terminal(nature)], None),
                 };
+                // Between terminal arrays (or an array and one terminal), element by element:
+                // the quantities are arrays of branch quantities (LRM 1076.1 4.3.1.6).
+                let n = ps.len().max(ms.len());
+                if ps.len() != n && ps.len() != 1 || ms.len() != n && ms.len() != 1 {
+                    return Err(self.error(ElabError::invalid(
+                        span,
+                        format!(
+                            "the ends of this branch have {} and {} terminals",
+                            ps.len(),
+                            ms.len()
+                        ),
+                        Some("an array branch joins arrays of the same length, or an array and one terminal".into()),
+                    )));
+                }
+                let bounds = plus_bounds.or(minus_bounds);
                 let across_sub = self.natures[nature].across.clone();
                 let through_sub = self.natures[nature].through.clone();
-                let groups: [(&Vec<BranchName>, Rc<Sub>, QuantityKind); 2] = [
-                    (
-                        across,
-                        across_sub,
-                        QuantityKind::Across { plus: p, minus: m },
-                    ),
-                    (
-                        through,
-                        through_sub,
-                        QuantityKind::Through { plus: p, minus: m },
-                    ),
-                ];
-                for (names, sub, kind) in groups {
+                for (names, sub, through) in
+                    [(across, across_sub, false), (through, through_sub, true)]
+                {
                     for b in names {
                         let (tol, init) =
                             self.tolerance_and_init(sc, b.tolerance.as_ref(), b.value.as_ref())?;
-                        for n in &b.names {
-                            let id =
-                                self.new_quantity(&n.name, kind, &sub, tol.clone(), init, n.span);
-                            if !sc.declare_at(&n.name, n.span, Item::Quantity(id)) {
+                        for nm in &b.names {
+                            let mut ids = Vec::with_capacity(n);
+                            for k in 0..n {
+                                let (plus, minus) =
+                                    (ps[k.min(ps.len() - 1)], ms[k.min(ms.len() - 1)]);
+                                let kind = match through {
+                                    false => QuantityKind::Across { plus, minus },
+                                    true => QuantityKind::Through { plus, minus },
+                                };
+                                let name = match bounds {
+                                    Some((left, asc)) => {
+                                        let i = if asc {
+                                            left + k as i64
+                                        } else {
+                                            left - k as i64
+                                        };
+                                        format!("{}({i})", nm.name)
+                                    }
+                                    None => nm.name.clone(),
+                                };
+                                ids.push(self.new_quantity(
+                                    &name,
+                                    kind,
+                                    &sub,
+                                    tol.clone(),
+                                    init,
+                                    nm.span,
+                                ));
+                            }
+                            let item = match bounds {
+                                Some((left, ascending)) => {
+                                    Item::QuantityArray(Rc::new(super::arrays::Elements {
+                                        name: nm.name.clone(),
+                                        left,
+                                        ascending,
+                                        ids,
+                                    }))
+                                }
+                                None => Item::Quantity(ids[0]),
+                            };
+                            if !sc.declare_at(&nm.name, nm.span, item) {
                                 return Err(self.error(ElabError::Redeclared {
-                                    span: n.span,
-                                    name: n.name.clone(),
+                                    span: nm.span,
+                                    name: nm.name.clone(),
                                 }));
                             }
                         }

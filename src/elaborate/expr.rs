@@ -338,6 +338,35 @@ impl<'a> Elab<'a> {
                         self.conversion(sc, &target, args, e.span)
                     }
                     Some(Item::QuantityArray(elements)) => {
+                        // A process may read an element by an index computed from its
+                        // variables: the index selects among the quantities' values at run
+                        // time (in an equation the index must be static).
+                        if let [
+                            ast::Assoc {
+                                formal: None,
+                                actual: Actual::Expr(ie),
+                                ..
+                            },
+                        ] = args.as_slice()
+                        {
+                            let i = self.expr_of(sc, ie, &Ty::Integer)?;
+                            if !i.e.is_analog() {
+                                let elems =
+                                    elements.ids.iter().map(|q| Expr::Quantity(*q)).collect();
+                                let array = Expr::Aggregate {
+                                    elems,
+                                    string: false,
+                                };
+                                let ty = elements.ty().to_design();
+                                let index = Box::new(i.e);
+                                let e = Expr::Index {
+                                    array: Box::new(array),
+                                    index,
+                                    ty,
+                                };
+                                return Ok(Typed::new(e, Ty::Real));
+                            }
+                        }
                         let q = self.indexed_quantity(sc, elements, args, e.span)?;
                         Ok(Typed::new(Expr::Quantity(q), Ty::Real))
                     }
