@@ -318,6 +318,13 @@ pub enum Type {
         right: i64,
         ascending: bool,
     },
+    /// A physical type of the user's own: values are `Value::Integer`s counting the primary
+    /// unit; `units` are the units with their values in it, the primary first (for
+    /// `'image`, which writes the primary unit, and `'value`).
+    Physical {
+        name: String,
+        units: Vec<(String, i64)>,
+    },
     /// A record: its fields in order. Its value is a [`Value::Array`] of the fields' values,
     /// and `Expr::Index` selects a field by its position (from 0).
     Record {
@@ -719,6 +726,26 @@ fn value_of(text: &Value, kind: &Value) -> Result<Value, String> {
     let t = text.trim();
     let bad = |what: &str| format!("\"{t}\" is not {what}");
     match kind {
+        // A physical type's units: `"5 Mohm"`.
+        Value::Array(units) if matches!(units.first(), Some(Value::Array(_))) => {
+            let (number, unit) = t.split_once(char::is_whitespace).unwrap_or((t, ""));
+            let factor = units.iter().find_map(|u| match u.elements().as_slice() {
+                [Value::String(name), Value::Integer(f)]
+                    if name.eq_ignore_ascii_case(unit.trim()) =>
+                {
+                    Some(*f)
+                }
+                _ => None,
+            });
+            let n: f64 = number
+                .replace('_', "")
+                .parse()
+                .map_err(|_| bad("a physical literal (`5 kohm`)"))?;
+            match factor {
+                Some(f) => Ok(Value::Integer((n * f as f64).round() as i64)),
+                None => Err(bad("a literal with a unit of the type")),
+            }
+        }
         Value::Array(literals) => {
             let found = literals.iter().position(|l| match l {
                 Value::String(l) if l.starts_with('\'') => l == t,

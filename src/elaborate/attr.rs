@@ -183,6 +183,13 @@ impl<'a> Elab<'a> {
                     Ty::Real => Value::String("real".into()),
                     Ty::Time => Value::String("time".into()),
                     Ty::Boolean => Value::String("boolean".into()),
+                    // The units and their values: `[("ohm", 1), ("kohm", 1000)]`.
+                    Ty::Physical(p) => Value::Array(
+                        p.units
+                            .iter()
+                            .map(|(u, f)| Value::Array(vec![Value::String(u.clone()), Value::Integer(*f)]))
+                            .collect(),
+                    ),
                     Ty::Array(_) | Ty::Record(_) => {
                         return Err(self.error(ElabError::invalid(span, format!("`'value` applies to scalar types, not `{ty}`"), None)));
                     }
@@ -236,7 +243,7 @@ impl<'a> Elab<'a> {
         let literals = match &ty {
             Ty::Enum(e) => Some(e.literals.len() as i64),
             Ty::Boolean => Some(2),
-            Ty::Integer | Ty::Time => None,
+            Ty::Integer | Ty::Time | Ty::Physical(_) => None,
             Ty::Real | Ty::Array(_) | Ty::Record(_) => {
                 return Err(self.error(ElabError::invalid(
                     span,

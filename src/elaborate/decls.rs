@@ -479,11 +479,7 @@ impl<'a> Elab<'a> {
                 primary, secondary, ..
             } => {
                 if name.name != "time" {
-                    return Err(self.error(ElabError::unsupported(
-                        d.span,
-                        "physical types other than `time`",
-                        "use `real` with a unit symbol subtype instead",
-                    )));
+                    return self.physical_type(sc, name, d);
                 }
                 self.declare(sc, name, Item::Type(Rc::new(Sub::of(Ty::Time, "time"))))?;
                 sc.declare_at(&primary.name, primary.span, Item::TimeUnit(1.0));
@@ -572,6 +568,75 @@ impl<'a> Elab<'a> {
                 "use `report` to print",
             ))),
         }
+    }
+
+    /// A physical type of the user's own (LRM 3.1.3): its range in primary units, each
+    /// secondary unit's value in primary units (`kohm = 1000 ohm`, `Mohm = 1000 kohm`).
+    fn physical_type(&mut self, sc: &mut Scope<'a>, name: &ast::Ident, d: &ast::Decl) -> R<()> {
+        let ast::DeclKind::Type {
+            def:
+                Some(TypeDef::Physical {
+                    range,
+                    primary,
+                    secondary,
+                }),
+            ..
+        } = &d.kind
+        else {
+            return Err(super::Reported);
+        };
+        let (l, r, _) = self.range_exprs(sc, range)?;
+        let bound = |v: Option<&Value>| match v {
+            Some(Value::Integer(i)) => Some(*i),
+            Some(Value::Real(x)) if x.is_finite() && x.fract() == 0.0 => Some(*x as i64),
+            _ => None,
+        };
+        let (Some(lo), Some(hi)) = (bound(l.value()), bound(r.value())) else {
+            return Err(self.error(ElabError::invalid(
+                d.span,
+                "a physical type's range needs static integer bounds",
+                None,
+            )));
+        };
+        let mut units = vec![(primary.name.clone(), 1i64)];
+        let provisional = |units: &[(String, i64)]| {
+            Ty::Physical(Rc::new(super::types::PhysicalTy {
+                name: name.name.clone(),
+                units: units.to_vec(),
+            }))
+        };
+        sc.declare_at(
+            &primary.name,
+            primary.span,
+            Item::Unit {
+                ty: provisional(&units),
+                factor: 1,
+            },
+        );
+        for (unit, value) in secondary {
+            let ty = provisional(&units);
+            let Value::Integer(factor) = self.static_value(sc, value, &ty, "a unit's value")?
+            else {
+                return Err(super::Reported);
+            };
+            units.push((unit.name.clone(), factor));
+            sc.declare_at(&unit.name, unit.span, Item::Unit { ty, factor });
+        }
+        // The units again, of the finished type (the same type by name).
+        let ty = provisional(&units);
+        for (unit, factor) in std::iter::once(primary)
+            .chain(secondary.iter().map(|(u, _)| u))
+            .zip(units.iter().map(|u| u.1))
+        {
+            let item = Item::Unit {
+                ty: ty.clone(),
+                factor,
+            };
+            sc.declare_at(&unit.name, unit.span, item);
+        }
+        let mut sub = Sub::of(ty, &name.name);
+        sub.range = Some((Value::Integer(lo), Value::Integer(hi)));
+        self.declare(sc, name, Item::Type(Rc::new(sub)))
     }
 
     /// `type_mark [range ...] [tolerance "..."]`, including index constraints `t(1 to 3)`.
@@ -829,7 +894,7 @@ pub(super) fn integer_bounds(sub: &Sub) -> Option<(i64, i64)> {
 /// `positive` starts at 1.
 pub(super) fn default_value(sub: &Sub) -> Value {
     match (&sub.ty, &sub.range) {
-        (Ty::Integer, Some((left @ Value::Integer(_), _)))
+        (Ty::Integer | Ty::Physical(_), Some((left @ Value::Integer(_), _)))
         | (Ty::Enum(_), Some((left @ Value::Enum(_), _)))
         | (Ty::Boolean, Some((left @ Value::Boolean(_), _))) => left.clone(),
         _ => sub.ty.default_value(),

@@ -11,7 +11,7 @@ use crate::source::Span;
 use super::error::ElabError;
 use super::fold;
 use super::scope::{Item, Native, Part, Scope, Subprogram};
-use super::types::{ArrayTy, RecordTy, Ty, bounds_len, position};
+use super::types::{ArrayTy, RecordTy, Sub, Ty, bounds_len, position};
 use super::{Elab, R};
 
 /// A lowered expression and its type.
@@ -148,6 +148,14 @@ impl<'a> Elab<'a> {
         let (ExprKind::Name(id) | ExprKind::Selected(_, id)) = &e.kind else {
             if let ExprKind::Apply(prefix, args) = &e.kind {
                 return Ok(vec![self.element_item(sc, e, prefix, args)?]);
+            }
+            // `T'base`: the base type, without the subtype's range (LRM 14.1).
+            if let ExprKind::Attribute(prefix, attr) = &e.kind
+                && attr.name == "base"
+                && let Some(Item::Type(sub)) = self.lookup(sc, prefix)?.first()
+            {
+                let base = Sub::of(sub.ty.clone(), &sub.ty.to_string());
+                return Ok(vec![Item::Type(Rc::new(base))]);
             }
             return Err(self.error(ElabError::invalid(e.span, "expected a name", None)));
         };
@@ -496,6 +504,15 @@ impl<'a> Elab<'a> {
             Literal::Physical(n, unit) => {
                 let factor = match self.resolved_item(sc, unit) {
                     Some(Item::TimeUnit(f)) => f,
+                    Some(Item::Unit { ty, factor }) => {
+                        let n = match **n {
+                            Literal::Integer(i) => i as f64,
+                            Literal::Real(x) => x,
+                            _ => 1.0,
+                        };
+                        let v = Value::Integer((n * factor as f64).round() as i64);
+                        return Ok(Typed::new(Expr::Const(v), ty));
+                    }
                     _ => {
                         return Err(self.error(ElabError::Undeclared {
                             span: unit.span,
@@ -632,6 +649,8 @@ impl<'a> Elab<'a> {
                 Typed::new(e, ty)
             }
             Item::EnumLiteral { .. } => return self.enum_literal(items, want, e.span),
+            // A unit alone is one of it (`ohm`, LRM 3.1.3).
+            Item::Unit { ty, factor } => Typed::new(Expr::Const(Value::Integer(factor)), ty),
             Item::Subprogram(_) => {
                 let subs = items
                     .iter()
@@ -658,9 +677,9 @@ impl<'a> Elab<'a> {
 
     fn unary(&mut self, op: ast::UnaryOp, a: Typed, span: Span) -> R<Typed> {
         let (uop, ok) = match op {
-            ast::UnaryOp::Minus => (UnaryOp::Neg, a.ty.is_numeric() || a.ty == Ty::Time),
-            ast::UnaryOp::Plus => (UnaryOp::Plus, a.ty.is_numeric() || a.ty == Ty::Time),
-            ast::UnaryOp::Abs => (UnaryOp::Abs, a.ty.is_numeric() || a.ty == Ty::Time),
+            ast::UnaryOp::Minus => (UnaryOp::Neg, a.ty.is_numeric() || is_physical(&a.ty)),
+            ast::UnaryOp::Plus => (UnaryOp::Plus, a.ty.is_numeric() || is_physical(&a.ty)),
+            ast::UnaryOp::Abs => (UnaryOp::Abs, a.ty.is_numeric() || is_physical(&a.ty)),
             ast::UnaryOp::Not => (
                 UnaryOp::Not,
                 is_logical_scalar(&a.ty) || logical_array(&a.ty),
@@ -754,6 +773,17 @@ impl<'a> Elab<'a> {
                 }));
             }
         };
+        // A physical value times or over a real: computed in reals, rounded to the unit.
+        if let Ty::Physical(_) = ty
+            && (lt.ty == Ty::Real || rt.ty == Ty::Real)
+        {
+            let real = |t: Typed| match t.ty {
+                Ty::Real => t.e,
+                _ => Expr::Call(Builtin::ToReal, vec![t.e]),
+            };
+            let product = Expr::Binary(bop, Box::new(real(lt)), Box::new(real(rt)));
+            return self.folded(Expr::Call(Builtin::ToInteger, vec![product]), ty, span);
+        }
         self.folded(Expr::Binary(bop, Box::new(lt.e), Box::new(rt.e)), ty, span)
     }
 
@@ -1299,9 +1329,26 @@ impl<'a> Elab<'a> {
     }
 }
 
+/// `time` or a physical type of the user's own.
+fn is_physical(t: &Ty) -> bool {
+    matches!(t, Ty::Time | Ty::Physical(_))
+}
+
 /// The result type of `l op r`, or `None` when the operator is not defined for them.
 fn result_type(op: BinaryOp, l: &Ty, r: &Ty) -> Option<Ty> {
     use BinaryOp::*;
+    // A user's physical type counts its primary unit in integers (LRM 7.2.4, 7.2.6).
+    if let (Ty::Physical(_), _) | (_, Ty::Physical(_)) = (l, r) {
+        return match (op, l, r) {
+            (Add | Sub, Ty::Physical(_), _) if l.same(r) => Some(l.clone()),
+            (Mul, Ty::Physical(_), Ty::Integer | Ty::Real) => Some(l.clone()),
+            (Mul, Ty::Integer | Ty::Real, Ty::Physical(_)) => Some(r.clone()),
+            (Div, Ty::Physical(_), Ty::Integer | Ty::Real) => Some(l.clone()),
+            (Div, Ty::Physical(_), _) if l.same(r) => Some(Ty::Integer),
+            (Eq | Ne | Lt | Le | Gt | Ge, _, _) if l.same(r) => Some(Ty::Boolean),
+            _ => None,
+        };
+    }
     match op {
         Add | Sub => (l.same(r) && (l.is_numeric() || *l == Ty::Time)).then(|| l.clone()),
         Mul => match (l, r) {

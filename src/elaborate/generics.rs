@@ -17,6 +17,12 @@ pub(super) fn parse_literal(
     let t = text.trim();
     match ty {
         Ty::Real => number(t).map(Value::Real),
+        Ty::Physical(p) => {
+            let (n, unit) = t.split_once(char::is_whitespace).unwrap_or((t, ""));
+            let unit = unit.trim().to_ascii_lowercase();
+            let factor = p.units.iter().find(|(u, _)| *u == unit).map(|u| u.1)?;
+            number(n).map(|n| Value::Integer((n * factor as f64).round() as i64))
+        }
         Ty::Integer => {
             let clean: String = t.chars().filter(|c| *c != '_').collect();
             clean.parse::<i64>().ok().map(Value::Integer)

@@ -1131,6 +1131,10 @@ fn literal_help(ty: &Ty) -> String {
         Ty::Real => "write a real number: `-g NAME=4.0` or `1e-3`".into(),
         Ty::Integer => "write an integer: `-g NAME=12`".into(),
         Ty::Time => "write a number and a unit: `-g NAME=\"10 ms\"`".into(),
+        Ty::Physical(p) => format!(
+            "write a number and a unit of {}: `-g NAME=\"10 {}\"`",
+            p.name, p.units[0].0
+        ),
         Ty::Boolean => "write `true` or `false`".into(),
         Ty::Enum(e) => format!("write one of {}", list_names(&e.literals)),
         Ty::Array(_) | Ty::Record(_) => {

@@ -77,6 +77,11 @@ pub enum Item<'a> {
     /// A unit of the physical type `time`, in femtoseconds (integral, so that `1 sec` is
     /// exactly 1.0 s).
     TimeUnit(f64),
+    /// A unit of a physical type of the user's own, with its value in the primary unit.
+    Unit {
+        ty: Ty,
+        factor: i64,
+    },
     Library(String),
     Package(Rc<PackageScope<'a>>),
     Component(&'a ast::Decl),
@@ -165,6 +170,7 @@ impl<'a> Item<'a> {
             Item::EnumLiteral { .. } => "an enumeration literal",
             Item::Subprogram(_) => "a subprogram",
             Item::TimeUnit(_) => "a unit of time",
+            Item::Unit { .. } => "a unit",
             Item::Library(_) => "a library",
             Item::Package(_) => "a package",
             Item::Component(_) => "a component",

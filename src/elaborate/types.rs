@@ -19,6 +19,17 @@ pub enum Ty {
     Enum(Rc<EnumTy>),
     Array(Rc<ArrayTy>),
     Record(Rc<RecordTy>),
+    /// A physical type of the user's own (`resistance` with `ohm`, `kohm`): values are
+    /// integers counting its primary unit.
+    Physical(Rc<PhysicalTy>),
+}
+
+/// A physical type other than `time` (LRM 3.1.3): its units and their values in the
+/// primary unit, the primary first.
+#[derive(Debug, PartialEq)]
+pub struct PhysicalTy {
+    pub name: String,
+    pub units: Vec<(String, i64)>,
 }
 
 /// A record type: its fields in declaration order. A record value is a
@@ -138,6 +149,7 @@ impl Ty {
             (Ty::Enum(a), Ty::Enum(b)) => a.name == b.name,
             (Ty::Array(a), Ty::Array(b)) => a.name == b.name && a.dimension == b.dimension,
             (Ty::Record(a), Ty::Record(b)) => a.name == b.name,
+            (Ty::Physical(a), Ty::Physical(b)) => a.name == b.name,
             (a, b) => std::mem::discriminant(a) == std::mem::discriminant(b),
         }
     }
@@ -179,6 +191,10 @@ impl Ty {
                     ascending,
                 }
             }
+            Ty::Physical(p) => Type::Physical {
+                name: p.name.clone(),
+                units: p.units.clone(),
+            },
             Ty::Record(r) => Type::Record {
                 name: r.name.clone(),
                 fields: r
@@ -201,6 +217,7 @@ impl Ty {
             Ty::Array(a) if a.name == "string" => Value::String(" ".repeat(a.len().unwrap_or(0))),
             Ty::Array(a) => Value::Array(vec![a.element.default_value(); a.len().unwrap_or(0)]),
             Ty::Record(r) => Value::Array(r.defaults.clone()),
+            Ty::Physical(_) => Value::Integer(0),
         }
     }
 
@@ -221,6 +238,10 @@ impl Ty {
                 Value::Enum(0),
                 Value::Enum(e.literals.len().saturating_sub(1) as u32),
             )),
+            Ty::Physical(_) => Some((
+                Value::Integer(i64::from(i32::MIN)),
+                Value::Integer(i64::from(i32::MAX)),
+            )),
             Ty::Array(_) | Ty::Record(_) => None,
         }
     }
@@ -236,6 +257,7 @@ impl fmt::Display for Ty {
             Ty::Enum(e) => f.write_str(&e.name),
             Ty::Array(a) => f.write_str(&a.name),
             Ty::Record(r) => f.write_str(&r.name),
+            Ty::Physical(p) => f.write_str(&p.name),
         }
     }
 }

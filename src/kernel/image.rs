@@ -12,6 +12,11 @@ pub(crate) fn image(ty: &Type, v: &Value) -> String {
             .get(*p as usize)
             .cloned()
             .unwrap_or_else(|| p.to_string()),
+        // In the primary unit (LRM 14.1: `resistance'image(2 kohm)` is "2000 ohm").
+        (Type::Physical { units, .. }, Value::Integer(n)) => match units.first() {
+            Some((unit, _)) => format!("{n} {unit}"),
+            None => n.to_string(),
+        },
         (_, v) => value_text(v),
     }
 }

@@ -35,7 +35,7 @@ pub fn presentation(column: &Column) -> Presentation {
         ColumnKind::Signal { ty } => match ty {
             Type::Real | Type::Time => Presentation::Real,
             Type::Boolean => Presentation::Bit,
-            Type::Integer => Presentation::Integer,
+            Type::Integer | Type::Physical { .. } => Presentation::Integer,
             Type::Enum { literals, .. } => {
                 let bare: Vec<String> = literals.iter().map(|l| bare(l)).collect();
                 if bare == ["0", "1"] || bare == ["false", "true"] {

@@ -1,4 +1,5 @@
--- A subtype name as a case choice stands for its range (Ashenden's instruction decoder).
+-- A subtype name as a case choice stands for its range (Ashenden's instruction decoder);
+-- 'base of a subtype.
 -- vams: stop 1 ns
 
 entity tb_case_subtype_choices is
@@ -13,6 +14,9 @@ begin
     variable kind : string(1 to 7);
     variable class : natural;
   begin
+    -- 'base: the subtype's base type, its whole range.
+    assert control_transfer_opcodes'left = jump and control_transfer_opcodes'base'left = nop;
+    assert digit'high = 9 and digit'base'high = integer'high;
     for op in opcodes loop
       case op is
         when load | add | subtract => kind := "operate";
