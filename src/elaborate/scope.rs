@@ -249,6 +249,10 @@ pub struct Body<'a> {
     /// Where the body declares each parameter (a body completing a declaration repeats the
     /// parameters, and names in the body denote the body's).
     pub params: Vec<Span>,
+    /// The variables of the enclosing process (or subprogram) that the body may use (LRM
+    /// 2.1.1.1): passed to each call after the parameters and, for a procedure, copied back
+    /// on return, as `inout` parameters would be. Each with the span of its declaration.
+    pub captured: Vec<(Span, VarId, Ty)>,
 }
 
 impl std::fmt::Debug for Body<'_> {

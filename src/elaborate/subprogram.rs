@@ -61,10 +61,13 @@ fn mode(m: Option<Mode>) -> ParamMode {
     }
 }
 
-/// A copy of `sc` in which the variables of an enclosing process cannot be named (their ids
-/// index the process's frame, not the subprogram's).
-fn body_scope<'a>(sc: &Scope<'a>) -> Scope<'a> {
+/// A copy of `sc` in which the variables of an enclosing process (or subprogram) are not its
+/// own (their ids index the enclosing frame), with those variables: the body reaches them as
+/// implicit parameters ([`Body::captured`]), declared again in each instance. An alias of a
+/// part of such a variable stays hidden.
+fn body_scope<'a>(sc: &Scope<'a>) -> (Scope<'a>, Vec<(Span, VarId, Ty)>) {
     let mut out = sc.clone();
+    let mut captured = Vec::new();
     for region in &mut out.regions {
         // Only regions that hold a variable are copied (the rest stay shared).
         let has_variable = region
@@ -77,11 +80,14 @@ fn body_scope<'a>(sc: &Scope<'a>) -> Scope<'a> {
         }
         let hidden = || {
             Item::Poison(Some(
-                "a variable of the enclosing process, which a subprogram cannot read; pass it as a parameter".into(),
+                "a part of a variable of the enclosing process named by an alias, which a subprogram cannot reach; pass the variable as a parameter".into(),
             ))
         };
-        for item in std::rc::Rc::make_mut(&mut region.decls).values_mut() {
-            if matches!(item, Item::Variable { .. }) {
+        for (decl, item) in std::rc::Rc::make_mut(&mut region.decls).iter_mut() {
+            if let Item::Variable { id, ty, path, .. } = item {
+                if path.is_empty() {
+                    captured.push((*decl, *id, ty.clone()));
+                }
                 *item = hidden();
             }
         }
@@ -93,7 +99,9 @@ fn body_scope<'a>(sc: &Scope<'a>) -> Scope<'a> {
             }
         }
     }
-    out
+    // In declaration order: the order of the implicit parameters.
+    captured.sort_by_key(|c| (c.0.file, c.0.start));
+    (out, captured)
 }
 
 impl<'a> Elab<'a> {
@@ -138,11 +146,13 @@ impl<'a> Elab<'a> {
                     _ => None,
                 });
             if let Some(s) = bound {
+                let (scope, captured) = body_scope(sc);
                 *s.body.borrow_mut() = Some(Rc::new(Body {
                     decls,
                     stmts,
-                    scope: body_scope(sc),
+                    scope,
                     params: params.iter().map(|p| p.span).collect(),
+                    captured,
                 }));
                 return Ok(());
             }
@@ -165,11 +175,13 @@ impl<'a> Elab<'a> {
         sc.declare_at(&name, designator_span(spec), Item::Subprogram(sub.clone()));
         if let Some((decls, stmts)) = body {
             // Declared first, so that the body sees itself (recursion).
+            let (scope, captured) = body_scope(sc);
             *sub.body.borrow_mut() = Some(Rc::new(Body {
                 decls,
                 stmts,
-                scope: body_scope(sc),
+                scope,
                 params: sub.params.iter().map(|p| p.span).collect(),
+                captured,
             }));
         }
         Ok(())
@@ -289,6 +301,7 @@ impl<'a> Elab<'a> {
                 args.push(t.e);
             }
         }
+        args.extend(self.captured(sc, sub, span)?.into_iter().map(Expr::Var));
         self.function_expr(sub, args, signals, &bounds, span)
     }
 
@@ -408,6 +421,11 @@ impl<'a> Elab<'a> {
                 }
             }
         }
+        // The enclosing process's variables: in, and back on return.
+        for outer in self.captured(sc, sub, span)? {
+            copy_back.push((VarId(args.len() as u32), outer));
+            args.push(Expr::Var(outer));
+        }
         let id = self.instance(sub, &signals, &bounds, span)?;
         Ok(Instr::Call {
             sub: id,
@@ -416,6 +434,33 @@ impl<'a> Elab<'a> {
             signals,
             span,
         })
+    }
+
+    /// The variables that a call of `sub` at `sc` passes after its parameters: those of the
+    /// enclosing process its body uses, as the call site names them (in a subprogram
+    /// declared beside `sub`, its own implicit parameters).
+    fn captured(&mut self, sc: &Scope<'a>, sub: &Subprogram<'a>, span: Span) -> R<Vec<VarId>> {
+        let Some(body) = sub.body.borrow().clone() else {
+            return Ok(Vec::new());
+        };
+        let mut out = Vec::with_capacity(body.captured.len());
+        for (decl, ..) in &body.captured {
+            match sc.declared(*decl) {
+                Some(Item::Variable { id, path, .. }) if path.is_empty() => out.push(*id),
+                _ => {
+                    return Err(self.error(ElabError::unsupported(
+                        span,
+                        format!(
+                            "calling `{}` where the variable `{}` of its process is out of reach",
+                            sub.name,
+                            self.sources.snippet(*decl)
+                        ),
+                        "call it from the process that declares it",
+                    )));
+                }
+            }
+        }
+        Ok(out)
     }
 
     /// The design subprogram of `sub` for the actual signals `signals` and the bounds of the
@@ -499,6 +544,21 @@ impl<'a> Elab<'a> {
             };
             sc.declare_at(&param.name, at, item);
         }
+        // The enclosing process's variables, as implicit parameters after the declared ones.
+        let mut own = Vec::with_capacity(body.captured.len());
+        for (decl, _, ty) in &body.captured {
+            let name = self.sources.snippet(*decl).to_string();
+            let var = p.new_var(&name, ty, ty.default_value());
+            params.push(ParamMode::InOut);
+            own.push(var);
+            let item = Item::Variable {
+                id: var,
+                ty: ty.clone(),
+                readonly: false,
+                path: Rc::from([]),
+            };
+            sc.declare_at(&name, *decl, item);
+        }
         let before = self.errors.len();
         let decls_ok = self.process_decls(&mut sc, &mut p, body.decls).is_ok();
         self.seq(&mut sc, &mut p, body.stmts);
@@ -513,7 +573,22 @@ impl<'a> Elab<'a> {
         {
             i.result = Some(first);
         }
+        // A function's call is an expression, with nothing to copy back: its process's
+        // variables are read-only in it.
         let (vars, code, spans) = p.into_parts();
+        let assigns_captured = code.iter().any(|i| {
+            matches!(i, Instr::SetVar { var, .. } | Instr::SetVarElement { var, .. } if own.contains(var))
+        });
+        if kind == SubprogramKind::Function && assigns_captured {
+            return Err(self.error(ElabError::unsupported(
+                sub.span,
+                format!(
+                    "the function `{}` assigns a variable of its process",
+                    sub.name
+                ),
+                "make it a procedure, or pass the variable as a parameter and return the new value",
+            )));
+        }
         let slot = &mut self.design.subprograms[id.index()];
         slot.params = params;
         slot.vars = vars;

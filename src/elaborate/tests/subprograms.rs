@@ -163,15 +163,16 @@ end;
     assert!(text.contains("a function cannot assign signals"), "{text}");
 }
 
+/// A function declared in a process reads the process's variables (passed to each call);
+/// one that assigns them is refused, as a call has nothing to copy back.
 #[test]
-fn process_variables_are_not_visible_in_a_local_function() {
-    let errs = errors(
-        "entity t is end;
+fn a_local_function_reads_but_does_not_assign_process_variables() {
+    let reads = "entity t is end;
 architecture a of t is
 begin
   process
     variable count : integer := 0;
-    function next_count return integer is
+    impure function next_count return integer is
     begin
       return count + 1;
     end function;
@@ -180,11 +181,12 @@ begin
     wait;
   end process;
 end;
-",
-        "t",
-    );
+";
+    ok(reads, "t");
+    let assigns = reads.replace("return count + 1;", "count := 5;\n      return count;");
+    let errs = errors(&assigns, "t");
     assert!(
-        errs.join("\n").contains("enclosing process"),
+        errs.join("\n").contains("assigns a variable of its process"),
         "{}",
         errs.join("\n")
     );
