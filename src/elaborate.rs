@@ -189,6 +189,8 @@ struct Elab<'a> {
     /// (`Elab::resolve_signals`).
     resolvers: Vec<Rc<scope::Subprogram<'a>>>,
     resolved_signals: Vec<(SignalId, usize)>,
+    /// The implicit signals of `s'delayed(t)`, by signal and delay (its bits).
+    delayed_signals: FxHashMap<(SignalId, u64), SignalId>,
     /// Disconnection delays of guarded signals in seconds (`disconnect s : t after 3 ns;`).
     disconnect_delays: FxHashMap<SignalId, f64>,
     /// The `GUARD` signals of the guarded blocks being elaborated, innermost last: the guard
@@ -274,6 +276,7 @@ impl<'a> Elab<'a> {
             resolvers: Vec::new(),
             resolved_signals: Vec::new(),
             disconnect_delays: FxHashMap::default(),
+            delayed_signals: FxHashMap::default(),
             guards: Vec::new(),
             dot_aux: FxHashMap::default(),
             integ_aux: FxHashMap::default(),

@@ -87,13 +87,23 @@ impl<'a> Elab<'a> {
                 Ok(Typed { e: Expr::Signal(s), ty: Ty::Boolean })
             }
             "ltf" | "zoh" | "ztf" | "delayed" => {
-                let p = self.expr(sc, prefix, None)?;
-                if let (Expr::Signal(_), "delayed") = (&p.e, name) {
-                    return Err(self.error(ElabError::unsupported(
-                        attr.span,
-                        "the signal attribute `'delayed`",
-                        "assign a delayed copy in a process: `d <= transport s after 1 ms;`",
-                    )));
+                let p = if name == "delayed" {
+                    self.signal_expr(sc, prefix)?
+                } else {
+                    self.expr(sc, prefix, None)?
+                };
+                if let (Expr::Signal(s), "delayed") = (&p.e, name) {
+                    let delay = match arg(0) {
+                        Some(t) => match self.static_value(sc, t, &Ty::Time, "the delay of `'delayed`")? {
+                            Value::Time(d) if d >= 0.0 => d,
+                            _ => {
+                                return Err(self.error(ElabError::invalid(t.span, "the delay of `'delayed` must not be negative", None)));
+                            }
+                        },
+                        None => 0.0,
+                    };
+                    let d = self.delayed_signal(*s, delay, span);
+                    return Ok(Typed { e: Expr::Signal(d), ty: p.ty });
                 }
                 let Expr::Quantity(q) = p.e else {
                     return Err(self.wrong_class(prefix, &p, "a quantity", name));
@@ -216,7 +226,7 @@ impl<'a> Elab<'a> {
                 Err(self.error(ElabError::unsupported(
                     attr.span,
                     format!("the attribute `'{name}`"),
-                    "vams supports 'dot, 'integ, 'above, 'delayed, 'slew, 'ltf, 'zoh and 'ztf on quantities and 'event, 'active, 'last_value, 'last_event, 'ramp and 'slew on signals",
+                    "vams supports 'dot, 'integ, 'above, 'delayed, 'slew, 'ltf, 'zoh and 'ztf on quantities and 'event, 'active, 'last_value, 'last_event, 'delayed, 'ramp and 'slew on signals",
                 )))
             }
             _ => Err(self.error(ElabError::unsupported(

@@ -1310,6 +1310,39 @@ impl<'a> Elab<'a> {
         self.push_process(label, span, p);
     }
 
+    /// `s'delayed(t)` (LRM 14.1): an implicit signal following `s` by a transport delay of
+    /// `t` seconds (0: one delta cycle), kept by the LRM's equivalent process
+    /// `process (s) begin d <= transport s after t; end process;`. One per signal and delay.
+    pub(super) fn delayed_signal(&mut self, s: SignalId, t: f64, span: Span) -> SignalId {
+        if let Some(&d) = self.delayed_signals.get(&(s, t.to_bits())) {
+            return d;
+        }
+        let name = self.hier_name(self.sources.snippet(span));
+        let source = &self.design.signals[s.index()];
+        let id = SignalId(self.design.signals.len() as u32);
+        let signal = crate::design::Signal {
+            name,
+            ty: source.ty.clone(),
+            init: source.init.clone(),
+            kind: crate::design::SignalKind::Implicit,
+            span,
+            range: None,
+            resolution: None,
+            guarded: None,
+        };
+        self.design.signals.push(signal);
+        self.delayed_signals.insert((s, t.to_bits()), id);
+        let mut p = Proc::default();
+        p.emit(Instr::Assign {
+            target: id,
+            index: None,
+            waveform: vec![(Some(Expr::Signal(s)), Expr::Const(Value::Time(t)))],
+            mechanism: DelayMechanism::Transport,
+        });
+        self.equivalent_process(None, span, p, Some(vec![s]));
+        id
+    }
+
     /// The implicit signal `GUARD` of the guarded block `block` (LRM 9.1), declared in `sc`
     /// and kept equal to `guard` by an equivalent process.
     pub(super) fn guard_signal(

@@ -3,5 +3,5 @@ architecture a of t is
   signal s : real := 0.0;
   quantity y : real;
 begin
-  y == s'delayed(1 ms);
+  y == s'driving_value;
 end;

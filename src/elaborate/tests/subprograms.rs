@@ -186,7 +186,8 @@ end;
     let assigns = reads.replace("return count + 1;", "count := 5;\n      return count;");
     let errs = errors(&assigns, "t");
     assert!(
-        errs.join("\n").contains("assigns a variable of its process"),
+        errs.join("\n")
+            .contains("assigns a variable of its process"),
         "{}",
         errs.join("\n")
     );
