@@ -6,7 +6,7 @@
 use std::rc::Rc;
 
 use crate::ast::{self, Actual, Ident, Range};
-use crate::design::{BinaryOp, Builtin, Expr, QuantityKind, SignalAttr, Value};
+use crate::design::{BinaryOp, Builtin, Expr, QuantityKind, SignalAttr, UnaryOp, Value};
 use crate::source::Span;
 
 use super::error::ElabError;
@@ -16,14 +16,7 @@ use super::types::{Sub, Ty, index_value, position};
 use super::{Elab, R, Reported};
 
 const ANALOG_UNSUPPORTED: &[&str] = &["contribution", "reference", "across", "through"];
-const SIGNAL_UNSUPPORTED: &[&str] = &[
-    "stable",
-    "quiet",
-    "transaction",
-    "last_active",
-    "driving",
-    "driving_value",
-];
+const SIGNAL_UNSUPPORTED: &[&str] = &["transaction", "last_active", "driving", "driving_value"];
 
 impl<'a> Elab<'a> {
     pub(super) fn type_mark(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<Rc<Sub>> {
@@ -130,6 +123,39 @@ impl<'a> Elab<'a> {
                 };
                 Ok(Typed { e, ty: Ty::Real })
             }
+            // As a value (LRM 14.1): `S'stable` is false in the cycle of an event on `S`,
+            // `S'stable(T)` until `T` after it; `S'quiet` likewise for a transaction. Not a
+            // signal of its own: a process cannot wait on it.
+            "stable" | "quiet" => {
+                let p = self.signal_expr(sc, prefix)?;
+                let Expr::Signal(s) = p.e else {
+                    return Err(self.wrong_class(prefix, &p, "a signal", name));
+                };
+                let t = match arg(0) {
+                    Some(t) => match self.static_value(sc, t, &Ty::Time, "the time of a signal attribute")? {
+                        Value::Time(d) if d >= 0.0 => d,
+                        _ => return Err(self.error(ElabError::invalid(t.span, "the time must not be negative", None))),
+                    },
+                    None => 0.0,
+                };
+                let e = match (name, t > 0.0) {
+                    ("stable", false) => Expr::Unary(UnaryOp::Not, Box::new(Expr::SignalAttr(s, SignalAttr::Event))),
+                    ("stable", true) => Expr::Binary(
+                        BinaryOp::Ge,
+                        Box::new(Expr::SignalAttr(s, SignalAttr::LastEvent)),
+                        Box::new(Expr::Const(Value::Time(t))),
+                    ),
+                    (_, false) => Expr::Unary(UnaryOp::Not, Box::new(Expr::SignalAttr(s, SignalAttr::Active))),
+                    _ => {
+                        return Err(self.error(ElabError::unsupported(
+                            span,
+                            "`S'quiet(T)` with a time",
+                            "use `S'quiet` (this cycle) or `S'stable(T)` (events)",
+                        )));
+                    }
+                };
+                Ok(Typed { e, ty: Ty::Boolean })
+            }
             "event" | "active" | "last_value" | "last_event" => {
                 let p = self.signal_expr(sc, prefix)?;
                 let Expr::Signal(s) = p.e else {
@@ -226,7 +252,7 @@ impl<'a> Elab<'a> {
                 Err(self.error(ElabError::unsupported(
                     attr.span,
                     format!("the attribute `'{name}`"),
-                    "vams supports 'dot, 'integ, 'above, 'delayed, 'slew, 'ltf, 'zoh and 'ztf on quantities and 'event, 'active, 'last_value, 'last_event, 'delayed, 'ramp and 'slew on signals",
+                    "vams supports 'dot, 'integ, 'above, 'delayed, 'slew, 'ltf, 'zoh and 'ztf on quantities and 'event, 'active, 'last_value, 'last_event, 'delayed, 'stable, 'quiet, 'ramp and 'slew on signals",
                 )))
             }
             _ => Err(self.error(ElabError::unsupported(

@@ -314,11 +314,17 @@ impl<'a> Elab<'a> {
                         sc.declare(&key, binding.clone());
                     }
                 }
+                // A block statement's or a whole generate statement's configuration: its
+                // bindings apply to the instances of that label's statements, which see
+                // this scope (labels are unique in an architecture).
+                ast::ConfigItem::Block(b) if matches!(b.spec.kind, ast::ExprKind::Name(_)) => {
+                    self.block_config(sc, b)?;
+                }
                 ast::ConfigItem::Block(b) => {
                     return Err(self.error(ElabError::unsupported(
                         b.span,
-                        "configurations of block and generate statements",
-                        "configure the components of the architecture itself, or use configuration specifications inside the generate statement",
+                        "configurations of some iterations of a generate statement",
+                        "configure the whole generate statement (`for gen_label ... end for;`), or use configuration specifications inside it",
                     )));
                 }
             }

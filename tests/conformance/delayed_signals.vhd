@@ -1,5 +1,5 @@
 -- S'delayed(T): a signal that follows S by a transport delay (LRM 14.1), and S'delayed
--- (one delta cycle) in a setup check.
+-- (one delta cycle) in a setup check; S'stable and S'stable(T) as values.
 -- vams: stop 100 ns
 
 entity tb_delayed_signals is
@@ -19,6 +19,7 @@ begin
     assert d = '1' and d'delayed(5 ns) = '0' and late = '0';
     wait for 4 ns;   -- 16 ns
     assert late = '1' and d'delayed(5 ns) = '1';
+    assert d'stable and d'stable(5 ns) and not d'stable(7 ns);
     wait;
   end process check;
 
@@ -26,7 +27,9 @@ begin
   setup : process (clk) is
   begin
     if clk = '1' then
+      assert not clk'stable report "clk'stable is false in the cycle of its event";
       assert d'delayed = d report "d changed in the clock's delta cycle";
+      assert d'stable(5 ns) report "d changed within 5 ns of the clock";
       if now = 60 ns then
         assert d = '0' and d'delayed(10 ns) = '1' report "d'delayed(10 ns) at 60 ns";
       end if;
