@@ -688,17 +688,7 @@ impl<'a> Elab<'a> {
                         None,
                     )));
                 };
-                if args.len() != arr.dimensions() {
-                    return Err(self.error(ElabError::invalid(
-                        si.span,
-                        format!(
-                            "`{}` has {} dimension(s): give one index range for each",
-                            sub.name,
-                            arr.dimensions()
-                        ),
-                        None,
-                    )));
-                }
+                self.dimension_count(arr, args.len(), si.span, "index range")?;
                 let mut bounds = Vec::with_capacity(args.len());
                 for ast::Assoc { actual, .. } in args {
                     let (l, r, asc) = match actual {

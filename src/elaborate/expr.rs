@@ -976,18 +976,7 @@ impl<'a> Elab<'a> {
             let e = Expr::Call(Builtin::Slice, vec![array.e, first, len]);
             return self.folded(e, ty, span);
         }
-        if args.len() != arr.dimensions() {
-            return Err(self.error(ElabError::invalid(
-                span,
-                format!(
-                    "`{}` has {} dimension(s): index it with {} index(es)",
-                    arr.name,
-                    arr.dimensions(),
-                    arr.dimensions()
-                ),
-                None,
-            )));
-        }
+        self.dimension_count(arr, args.len(), span, "index")?;
         // One index per dimension, each selecting a row of the next.
         let (mut e, mut ty) = (array.e, array.ty);
         for a in args {
@@ -1017,6 +1006,25 @@ impl<'a> Elab<'a> {
             ty = level.element.clone();
         }
         self.folded(e, ty, span)
+    }
+
+    /// Checks that `given` indexes (or index ranges, `what`) name one per dimension of `arr`.
+    pub(super) fn dimension_count(
+        &mut self,
+        arr: &ArrayTy,
+        given: usize,
+        span: Span,
+        what: &str,
+    ) -> R<()> {
+        let n = arr.dimensions();
+        if given == n {
+            return Ok(());
+        }
+        Err(self.error(ElabError::invalid(
+            span,
+            format!("`{}` has {n} dimension(s), not {given}", arr.name),
+            Some(format!("give one {what} per dimension")),
+        )))
     }
 
     /// Index `ie` of an array whose index type is `index`, as a position (an enumeration
@@ -1188,18 +1196,7 @@ impl<'a> Elab<'a> {
         }
         let ty = arr.with_bounds(Some((left, right, asc)));
         let string = ty.is_string();
-        let e = match out
-            .iter()
-            .map(|e| match e {
-                Expr::Const(v) => Some(v.clone()),
-                _ => None,
-            })
-            .collect::<Option<Vec<Value>>>()
-        {
-            Some(values) => Expr::Const(crate::design::aggregate_value(values, string)),
-            None => Expr::Aggregate { elems: out, string },
-        };
-        Ok(Typed::new(e, ty))
+        Ok(Typed::new(composite(out, string), ty))
     }
 }
 
@@ -1263,22 +1260,7 @@ impl<'a> Elab<'a> {
             };
             out.push(self.expr_of(sc, value, ty)?.e);
         }
-        let ty = Ty::Record(rec.clone());
-        let e = match out
-            .iter()
-            .map(|e| match e {
-                Expr::Const(v) => Some(v.clone()),
-                _ => None,
-            })
-            .collect::<Option<Vec<Value>>>()
-        {
-            Some(values) => Expr::Const(Value::Array(values)),
-            None => Expr::Aggregate {
-                elems: out,
-                string: false,
-            },
-        };
-        Ok(Typed::new(e, ty))
+        Ok(Typed::new(composite(out, false), Ty::Record(rec.clone())))
     }
 
     /// The position and type of field `suffix` of a value of type `ty` (`span`: the whole
@@ -1326,6 +1308,22 @@ impl<'a> Elab<'a> {
             ty,
             span,
         )
+    }
+}
+
+/// A composite value from its elements in order: a constant when every element is one, else
+/// built at run time (`string`: a character array held as a `Value::String`).
+fn composite(elems: Vec<Expr>, string: bool) -> Expr {
+    let values = elems
+        .iter()
+        .map(|e| match e {
+            Expr::Const(v) => Some(v.clone()),
+            _ => None,
+        })
+        .collect::<Option<Vec<Value>>>();
+    match values {
+        Some(values) => Expr::Const(crate::design::aggregate_value(values, string)),
+        None => Expr::Aggregate { elems, string },
     }
 }
 

@@ -994,17 +994,7 @@ impl<'a> Elab<'a> {
                     path.push(Part::Slice { first, len });
                     return Ok((id, path, slice));
                 }
-                if args.len() != arr.dimensions() {
-                    return Err(self.error(ElabError::invalid(
-                        target.span,
-                        format!(
-                            "`{}` has {} dimension(s): index it with as many indexes",
-                            arr.name,
-                            arr.dimensions()
-                        ),
-                        None,
-                    )));
-                }
+                self.dimension_count(arr, args.len(), target.span, "index")?;
                 let mut level = ty.clone();
                 for a in args {
                     let (
