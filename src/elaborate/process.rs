@@ -543,7 +543,7 @@ impl<'a> Elab<'a> {
                     }
                     return Ok(());
                 }
-                let (id, path, ty) = self.variable_target(sc, p, target)?;
+                let (id, path, ty) = self.variable_target(sc, &p.vars, target)?;
                 let v = self.expr_of(sc, value, &ty)?;
                 p.emit(match path.as_slice() {
                     [] => Instr::SetVar {
@@ -696,8 +696,25 @@ impl<'a> Elab<'a> {
                 });
             }
             SeqKind::ProcedureCall(call) => {
-                let i = self.procedure_call(sc, call)?;
+                let (mut i, parts) = self.procedure_call(sc, &p.vars, call)?;
+                // Parts of variables as `out` actuals: copied back into temporaries, then
+                // spliced into their variables.
+                let mut updates = Vec::new();
+                for part in parts {
+                    let tmp = p.new_var("(actual)", &part.ty, part.ty.default_value());
+                    if let Instr::Call { copy_back, .. } = &mut i {
+                        copy_back.push((part.param, tmp));
+                    }
+                    let value = updated(Expr::Var(part.var), &part.path, Expr::Var(tmp));
+                    updates.push(Instr::SetVar {
+                        var: part.var,
+                        value,
+                    });
+                }
                 p.emit(i);
+                for u in updates {
+                    p.emit(u);
+                }
             }
             SeqKind::Break(b) => {
                 if let Some(first) = b.sensitivity.first() {
@@ -955,17 +972,17 @@ impl<'a> Elab<'a> {
     /// selections from it down to the target (each an index in the bounds of the composite
     /// it selects from, a record's field by its position, with that composite's type), and
     /// the target's type.
-    fn variable_target(
+    pub(super) fn variable_target(
         &mut self,
         sc: &Scope<'a>,
-        p: &Proc,
+        vars: &[Variable],
         target: &ast::Expr,
     ) -> R<(VarId, Vec<Part>, Ty)> {
         match &target.kind {
             ast::ExprKind::Selected(prefix, suffix)
                 if !self.resolved.contains_key(&suffix.span) =>
             {
-                let (id, mut path, ty) = self.variable_target(sc, p, prefix)?;
+                let (id, mut path, ty) = self.variable_target(sc, vars, prefix)?;
                 let (pos, field) = self.record_field(&ty, suffix, target.span)?;
                 path.push(Part::Element {
                     index: Expr::Const(Value::Integer(pos as i64)),
@@ -974,7 +991,7 @@ impl<'a> Elab<'a> {
                 Ok((id, path, field))
             }
             ast::ExprKind::Apply(prefix, args) => {
-                let (id, mut path, ty) = self.variable_target(sc, p, prefix)?;
+                let (id, mut path, ty) = self.variable_target(sc, vars, prefix)?;
                 let Ty::Array(arr) = &ty else {
                     return Err(self.error(ElabError::invalid(
                         target.span,
@@ -1016,7 +1033,7 @@ impl<'a> Elab<'a> {
                     let i = self.index_position(sc, i, &arr.index)?;
                     // The first selection is in the variable's own bounds (an alias may
                     // differ).
-                    let own = p.vars.get(id.index()).map(|v| &v.ty);
+                    let own = vars.get(id.index()).map(|v| &v.ty);
                     let own = own.filter(|_| path.is_empty());
                     let container = own.cloned().unwrap_or_else(|| level.to_design());
                     let index = own_index(i, &arr, own);
@@ -1180,7 +1197,12 @@ impl<'a> Elab<'a> {
             .collect())
     }
 
-    fn procedure_call(&mut self, sc: &Scope<'a>, call: &ast::Expr) -> R<Instr> {
+    fn procedure_call(
+        &mut self,
+        sc: &Scope<'a>,
+        vars: &[Variable],
+        call: &ast::Expr,
+    ) -> R<(Instr, Vec<super::subprogram::PartActual>)> {
         let name = match &call.kind {
             ast::ExprKind::Apply(prefix, _) => &**prefix,
             _ => call,
@@ -1191,7 +1213,7 @@ impl<'a> Elab<'a> {
             _ => None,
         });
         match native {
-            Some(Some(Native::Stop | Native::Finish)) => Ok(Instr::Stop),
+            Some(Some(Native::Stop | Native::Finish)) => Ok((Instr::Stop, Vec::new())),
             Some(None) => {
                 let subs = items
                     .iter()
@@ -1207,7 +1229,7 @@ impl<'a> Elab<'a> {
                     _ => (&[][..], super::expr::designator_span(call)),
                 };
                 let (sub, slots) = self.resolve_call(subs, args, false, call.span, name_span)?;
-                self.user_procedure_call(sc, &sub, &slots, call.span)
+                self.user_procedure_call(sc, vars, &sub, &slots, call.span)
             }
             Some(Some(_)) => Err(self.error(ElabError::unsupported(
                 name.span,
@@ -1524,7 +1546,8 @@ impl<'a> Elab<'a> {
                 p.emit(i);
             }
             ast::ConcKind::ProcedureCall(call) => {
-                let i = self.procedure_call(sc, call)?;
+                // A concurrent call has no variables to pass parts of.
+                let (i, _) = self.procedure_call(sc, &[], call)?;
                 p.emit(i);
             }
             ast::ConcKind::Break(b) => {

@@ -19,7 +19,7 @@ use super::decls::{designator, native};
 use super::error::ElabError;
 use super::expr::Typed;
 use super::process::{Proc, SubContext};
-use super::scope::{Body, Bounds, Instance, Item, Param, Scope, Subprogram};
+use super::scope::{Body, Bounds, Instance, Item, Param, Part, Scope, Subprogram};
 use super::types::Ty;
 use super::{Elab, R};
 
@@ -342,17 +342,21 @@ impl<'a> Elab<'a> {
     }
 
     /// A call of the user-defined procedure `sub`: `in` arguments by value, `out` and `inout`
-    /// actuals (variables) copied back on return, signal actuals bound in the instance.
+    /// actuals (variables) copied back on return, signal actuals bound in the instance. An
+    /// actual that is a part of a variable is returned beside the call, for the caller to
+    /// copy it back through a temporary (`PartActual`).
     pub(super) fn user_procedure_call(
         &mut self,
         sc: &Scope<'a>,
+        vars: &[design::Variable],
         sub: &Rc<Subprogram<'a>>,
         slots: &Slots<'_>,
         span: Span,
-    ) -> R<Instr> {
+    ) -> R<(Instr, Vec<PartActual>)> {
         let mut args = Vec::new();
         let mut signals = Vec::new();
         let mut copy_back = Vec::new();
+        let mut parts = Vec::new();
         let mut bounds = Vec::new();
         for (p, actual) in sub.params.iter().zip(slots) {
             if p.is_signal {
@@ -375,16 +379,34 @@ impl<'a> Elab<'a> {
                             None,
                         )));
                     };
-                    let items = self.lookup(sc, actual)?;
-                    if let Some(Item::Variable { path, .. }) = items.first()
-                        && !path.is_empty()
-                    {
-                        return Err(self.error(ElabError::unsupported(
-                            actual.span,
-                            "a field or element of a variable as the actual of an `out` or `inout` parameter",
-                            "pass a whole variable and copy the part after the call",
-                        )));
+                    // A part of a variable (`swap(a(1), a(2))`, `read_field(r.f)`): passed by
+                    // value, and written back into the variable after the call.
+                    if let Some(part) = self.variable_part_actual(sc, vars, actual)? {
+                        let (id, path, ty) = part;
+                        if !ty.same(&p.ty) {
+                            return Err(self.error(ElabError::TypeMismatch {
+                                span: actual.span,
+                                expected: p.ty.to_string(),
+                                found: ty.to_string(),
+                                help: None,
+                            }));
+                        }
+                        let value = path.iter().fold(Expr::Var(id), |e, part| part.of(e));
+                        bounds.push(actual_bounds(&p.ty, &ty, &value));
+                        args.push(if p.mode == ParamMode::Out {
+                            Expr::Const(p.ty.default_value())
+                        } else {
+                            value
+                        });
+                        parts.push(PartActual {
+                            param,
+                            var: id,
+                            path,
+                            ty,
+                        });
+                        continue;
                     }
+                    let items = self.lookup(sc, actual)?;
                     let Some(Item::Variable {
                         id,
                         ty,
@@ -427,13 +449,44 @@ impl<'a> Elab<'a> {
             args.push(Expr::Var(outer));
         }
         let id = self.instance(sub, &signals, &bounds, span)?;
-        Ok(Instr::Call {
+        let call = Instr::Call {
             sub: id,
             args,
             copy_back,
             signals,
             span,
-        })
+        };
+        Ok((call, parts))
+    }
+
+    /// An `out` or `inout` actual naming a part of a variable (a field, an element, a
+    /// slice, or an alias of one): the variable, the path to the part and its type; `None`
+    /// for a whole variable or anything else.
+    fn variable_part_actual(
+        &mut self,
+        sc: &Scope<'a>,
+        vars: &[design::Variable],
+        actual: &ast::Expr,
+    ) -> R<Option<(VarId, Vec<Part>, Ty)>> {
+        let names_variable = |e: &ast::Expr| {
+            let mut e = e;
+            loop {
+                match &e.kind {
+                    ast::ExprKind::Apply(prefix, _) | ast::ExprKind::Selected(prefix, _) => {
+                        e = prefix
+                    }
+                    ast::ExprKind::Name(id) => {
+                        return matches!(self.resolved_item(sc, id), Some(Item::Variable { .. }));
+                    }
+                    _ => return false,
+                }
+            }
+        };
+        if !names_variable(actual) {
+            return Ok(None);
+        }
+        let (id, path, ty) = self.variable_target(sc, vars, actual)?;
+        Ok((!path.is_empty()).then_some((id, path, ty)))
     }
 
     /// The variables that a call of `sub` at `sc` passes after its parameters: those of the
@@ -643,6 +696,15 @@ impl<'a> Elab<'a> {
                 }),
         )
     }
+}
+
+/// An `out` or `inout` actual that is a part of a variable: the callee's parameter `param`
+/// is copied into the part of `var` at `path` after the call.
+pub(super) struct PartActual {
+    pub param: VarId,
+    pub var: VarId,
+    pub path: Vec<Part>,
+    pub ty: Ty,
 }
 
 /// The bounds an unconstrained array parameter of type `formal` takes from its actual: the
