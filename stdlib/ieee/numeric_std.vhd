@@ -143,11 +143,12 @@ end package numeric_std;
 -- std_logic_arith's body): operands are first copied into local std_logic_vector variables
 -- indexed (n-1 downto 0), bit 0 the least significant, with 'L'/'H' read as '0'/'1' and a
 -- vector holding any metavalue replaced by all 'X'. Written within what vams elaborates:
--- array types are converted element by element (u2v, v2u, ...), an array passed to a function
--- is always a named object (vams takes a call's bounds from its actuals at elaboration, and a
--- function's result has none), a helper's result length comes from an array argument
--- (`like`) rather than a size number, and a result whose length is a size parameter
--- (resize, to_unsigned, to_signed) is built by recursion with "&".
+-- array types are converted through an alias that renumbers them (n-1 downto 0) (u2v, v2u,
+-- ...), an array passed to a function is always a named object (vams takes a call's bounds
+-- from its actuals at elaboration, and a function's result has none), a helper's result
+-- length comes from an array argument (`like`) rather than a size number, and a result
+-- whose length is a size parameter (resize, to_unsigned, to_signed) is built by recursion
+-- with "&" (vams_vector_arith's vbuild, converted).
 
 library ieee;
 use ieee.std_logic_1164.all;
@@ -156,17 +157,8 @@ use ieee.vams_vector_arith.all;
 package body numeric_std is
 
   function sbuild (a : std_logic_vector; fill : std_logic; size : natural) return signed is
-    alias av : std_logic_vector(a'length - 1 downto 0) is a;
-    constant none : signed(-1 downto 0) := (others => '0');
-    variable e : std_logic := fill;
   begin
-    if size = 0 then
-      return none;
-    end if;
-    if size <= a'length then
-      e := av(size - 1);
-    end if;
-    return e & sbuild(a, fill, size - 1);
+    return signed(vbuild(a, fill, size));
   end function sbuild;
 
 
@@ -176,42 +168,26 @@ package body numeric_std is
   -- Element-by-element copies between the three array types, indexed (length-1 downto 0).
   function u2v (a : unsigned) return std_logic_vector is
     alias av : unsigned(a'length - 1 downto 0) is a;
-    variable result : std_logic_vector(a'length - 1 downto 0);
   begin
-    for i in result'range loop
-      result(i) := av(i);
-    end loop;
-    return result;
+    return std_logic_vector(av);
   end function u2v;
 
   function s2v (a : signed) return std_logic_vector is
     alias av : signed(a'length - 1 downto 0) is a;
-    variable result : std_logic_vector(a'length - 1 downto 0);
   begin
-    for i in result'range loop
-      result(i) := av(i);
-    end loop;
-    return result;
+    return std_logic_vector(av);
   end function s2v;
 
   function v2u (a : std_logic_vector) return unsigned is
     alias av : std_logic_vector(a'length - 1 downto 0) is a;
-    variable result : unsigned(a'length - 1 downto 0);
   begin
-    for i in result'range loop
-      result(i) := av(i);
-    end loop;
-    return result;
+    return unsigned(av);
   end function v2u;
 
   function v2s (a : std_logic_vector) return signed is
     alias av : std_logic_vector(a'length - 1 downto 0) is a;
-    variable result : signed(a'length - 1 downto 0);
   begin
-    for i in result'range loop
-      result(i) := av(i);
-    end loop;
-    return result;
+    return signed(av);
   end function v2s;
 
   -- The operands as numbers of like'length bits: an unsigned one zero-extended, a signed one
@@ -246,17 +222,8 @@ package body numeric_std is
 
 
   function ubuild (a : std_logic_vector; fill : std_logic; size : natural) return unsigned is
-    alias av : std_logic_vector(a'length - 1 downto 0) is a;
-    constant none : unsigned(-1 downto 0) := (others => '0');
-    variable e : std_logic := fill;
   begin
-    if size = 0 then
-      return none;
-    end if;
-    if size <= a'length then
-      e := av(size - 1);
-    end if;
-    return e & ubuild(a, fill, size - 1);
+    return unsigned(vbuild(a, fill, size));
   end function ubuild;
 
 
