@@ -75,6 +75,32 @@ pub struct Design {
 }
 
 impl Design {
+    /// The signal assignments of `code`, directly or in the procedures it calls (a
+    /// procedure drives its signal parameters through the calling process's drivers, LRM
+    /// 14.7.2): each target with the index of an element assignment. A procedure's code is
+    /// visited once.
+    pub fn assignments<'d>(&'d self, code: &'d [Instr]) -> Vec<(SignalId, Option<&'d Expr>)> {
+        let mut out = Vec::new();
+        let mut seen = std::collections::HashSet::new();
+        let mut todo = vec![code];
+        while let Some(code) = todo.pop() {
+            for instr in code {
+                match instr {
+                    Instr::Assign { target, index, .. } => out.push((*target, index.as_ref())),
+                    Instr::Call { sub, .. } => {
+                        if let Some(s) = self.subprograms.get(sub.index())
+                            && seen.insert(*sub)
+                        {
+                            todo.push(&s.code);
+                        }
+                    }
+                    _ => {}
+                }
+            }
+        }
+        out
+    }
+
     /// The predefined signal `std.standard.domain` (LRM 1076.1, 12.6.4): the simulator's own
     /// phase, `quiescent_domain` while the quiescent point is computed, then `time_domain`.
     /// Every design has it (`std.standard` is always elaborated) unless a test builds one by hand.

@@ -6,7 +6,7 @@
 
 use std::collections::HashSet;
 
-use crate::design::{Design, Instr, Resolution, SignalId, SignalKind, SubprogramId};
+use crate::design::{Design, Resolution, SignalId, SignalKind};
 
 use super::Elab;
 use super::error::ElabError;
@@ -64,26 +64,11 @@ fn driver_counts(design: &Design) -> Vec<usize> {
         _ => s,
     };
     for p in &design.processes {
-        let mut driven = HashSet::new();
-        let mut seen: HashSet<SubprogramId> = HashSet::new();
-        let mut todo = vec![p.code.as_slice()];
-        while let Some(code) = todo.pop() {
-            for instr in code {
-                match instr {
-                    Instr::Assign { target, .. } => {
-                        driven.insert(root(*target));
-                    }
-                    Instr::Call { sub, .. } => {
-                        if seen.insert(*sub)
-                            && let Some(s) = design.subprograms.get(sub.index())
-                        {
-                            todo.push(&s.code);
-                        }
-                    }
-                    _ => {}
-                }
-            }
-        }
+        let driven: HashSet<SignalId> = design
+            .assignments(&p.code)
+            .into_iter()
+            .map(|(target, _)| root(target))
+            .collect();
         for s in driven {
             counts[s.index()] += 1;
         }

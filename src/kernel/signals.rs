@@ -8,10 +8,10 @@
 //! several drivers act on a `std_ulogic` signal). `'above` signals have no driver: the analog
 //! side forces their values at threshold crossings.
 
-use std::collections::{HashMap, HashSet, VecDeque};
+use std::collections::{HashMap, VecDeque};
 
 use crate::ast::GuardedKind;
-use crate::design::{Design, Expr, Instr, Resolution, SignalId, SignalKind, Type, Value};
+use crate::design::{Design, Expr, Resolution, SignalId, SignalKind, Type, Value};
 
 use super::error::SimError;
 
@@ -113,38 +113,6 @@ fn view_slots(ty: &Type, first: usize, len: Option<usize>, driven: Driven) -> Ve
     }
 }
 
-/// The signals `code` assigns, directly or in the procedures it calls (a procedure drives
-/// its signal parameters through the calling process's drivers, LRM 14.7.2), each with
-/// what the assignment drives.
-fn assigned_signals(design: &Design, code: &[Instr]) -> Vec<(SignalId, Driven)> {
-    let mut out = Vec::new();
-    let mut seen = HashSet::new();
-    let mut todo = vec![code];
-    while let Some(code) = todo.pop() {
-        for instr in code {
-            match instr {
-                Instr::Assign { target, index, .. } => out.push((
-                    *target,
-                    match index {
-                        None => Driven::Whole,
-                        Some(Expr::Const(Value::Integer(i))) => Driven::Static(*i),
-                        Some(_) => Driven::Dynamic,
-                    },
-                )),
-                Instr::Call { sub, .. } => {
-                    if let Some(s) = design.subprograms.get(sub.index()) {
-                        if seen.insert(*sub) {
-                            todo.push(&s.code);
-                        }
-                    }
-                }
-                _ => {}
-            }
-        }
-    }
-    out
-}
-
 impl Signals {
     /// Creates a driver for every `(process, target)` pair of the design's assignments and
     /// rejects unresolved signals with several drivers.
@@ -179,7 +147,12 @@ impl Signals {
             .iter()
             .map(|p| {
                 let mut out = Vec::new();
-                for (target, driven) in assigned_signals(design, &p.code) {
+                for (target, index) in design.assignments(&p.code) {
+                    let driven = match index {
+                        None => Driven::Whole,
+                        Some(Expr::Const(Value::Integer(i))) => Driven::Static(*i),
+                        Some(_) => Driven::Dynamic,
+                    };
                     let port_default = p
                         .driver_inits
                         .iter()
