@@ -218,7 +218,7 @@ impl<'a> Elab<'a> {
                 return Err(self.error(ElabError::invalid(*s, "expected a range", None)));
             }
         };
-        self.array_size(l, r, asc, span)?;
+        self.array_size(&[(l, r, asc)], span)?;
         Ok((l, r, asc))
     }
 

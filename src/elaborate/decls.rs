@@ -514,19 +514,9 @@ impl<'a> Elab<'a> {
                         }
                     });
                 }
-                let total = dims.iter().try_fold(1u128, |n, (b, _, _)| {
-                    b.map(|(l, r, asc)| n * super::types::bounds_len(l, r, asc) as u128)
-                });
-                if let Some(n) = total
-                    && n > MAX_ARRAY_ELEMENTS as u128
-                {
-                    return Err(self.error(ElabError::unsupported(
-                        d.span,
-                        format!("an array of {n} elements"),
-                        format!(
-                            "vams holds arrays of up to {MAX_ARRAY_ELEMENTS} elements; check the bounds"
-                        ),
-                    )));
+                let bounds: Option<Vec<_>> = dims.iter().map(|d| d.0).collect();
+                if let Some(bounds) = bounds {
+                    self.array_size(&bounds, d.span)?;
                 }
                 let ty = array_type(&name.name, dims, elem);
                 self.declare(sc, name, Item::Type(Rc::new(Sub::of(ty, &name.name))))
@@ -716,9 +706,10 @@ impl<'a> Elab<'a> {
                             )));
                         }
                     };
-                    self.array_size(l, r, asc, si.span)?;
                     bounds.push((l, r, asc));
                 }
+                // All dimensions at once: each may be small and their product not.
+                self.array_size(&bounds, si.span)?;
                 let ty = constrained(arr, &bounds);
                 Rc::new(Sub {
                     ty,
@@ -897,16 +888,18 @@ pub(super) fn default_value(sub: &Sub) -> Value {
 const MAX_ARRAY_ELEMENTS: usize = 1 << 24;
 
 impl Elab<'_> {
-    /// An array constrained to `left to/downto right`, or a diagnostic at `span` when it would
-    /// hold more than [`MAX_ARRAY_ELEMENTS`].
+    /// An array constrained to these dimensions (`left to/downto right` each), or a
+    /// diagnostic at `span` when it would hold more than [`MAX_ARRAY_ELEMENTS`].
     pub(super) fn array_size(
         &mut self,
-        left: i64,
-        right: i64,
-        ascending: bool,
+        dims: &[(i64, i64, bool)],
         span: crate::source::Span,
     ) -> R<()> {
-        let n = (i128::from(right) - i128::from(left)) * if ascending { 1 } else { -1 } + 1;
+        // i128 and saturating: no bounds an i64 holds overflow here.
+        let n = dims.iter().fold(1i128, |n, &(left, right, ascending)| {
+            let len = (i128::from(right) - i128::from(left)) * if ascending { 1 } else { -1 } + 1;
+            n.saturating_mul(len.max(0))
+        });
         if n > MAX_ARRAY_ELEMENTS as i128 {
             return Err(self.error(ElabError::unsupported(
                 span,
