@@ -621,16 +621,6 @@ impl<'a> Elab<'a> {
     ) -> R<(i64, i64, bool, Ty)> {
         match r {
             ast::DiscreteRange::Range(r) => self.range_bounds_typed(sc, r),
-            // `m'range(2)` parses as a subtype indication.
-            ast::DiscreteRange::Subtype(si)
-                if si.range.is_none()
-                    && matches!(&si.type_mark.kind, ast::ExprKind::Apply(inner, _)
-                        if matches!(&inner.kind, ast::ExprKind::Attribute(_, a)
-                            if a.name == "range" || a.name == "reverse_range")) =>
-            {
-                let r = Range::Attribute(Box::new(si.type_mark.clone()));
-                self.range_bounds_typed(sc, &r)
-            }
             ast::DiscreteRange::Subtype(si) => match &si.range {
                 Some(r) => self.range_bounds_typed(sc, r),
                 None => {

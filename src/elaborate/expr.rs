@@ -1124,18 +1124,6 @@ impl<'a> Elab<'a> {
             for c in &el.choices {
                 match c {
                     ast::Choice::Others(_) => others = Some(v.clone()),
-                    // `v'range => b`: a range written as an attribute.
-                    ast::Choice::Expr(ce)
-                        if matches!(&ce.kind, ExprKind::Attribute(_, a)
-                            if a.name == "range" || a.name == "reverse_range") =>
-                    {
-                        let r = ast::Range::Attribute(Box::new(ce.clone()));
-                        let (l, rr, asc) = self.range_bounds(sc, &r)?;
-                        let (lo, hi) = if asc { (l, rr) } else { (rr, l) };
-                        for i in lo..=hi {
-                            named.push((i, v.clone()));
-                        }
-                    }
                     ast::Choice::Expr(ce) => {
                         let i = self.static_value(sc, ce, &arr.index, "an aggregate choice")?;
                         let Some(i) = position(&i) else {

@@ -127,13 +127,32 @@ pub fn wave_value(e: Expr) -> Option<Expr> {
     }
 }
 
+/// `a'range`, `a'reverse_range`, or either with a dimension (`m'range(2)`): a range, though
+/// it parses as a name.
+fn is_range_attribute(e: &Expr) -> bool {
+    match &e.kind {
+        ExprKind::Attribute(_, attr) => attr.name == "range" || attr.name == "reverse_range",
+        ExprKind::Apply(prefix, _) => {
+            matches!(&prefix.kind, ExprKind::Attribute(..)) && is_range_attribute(prefix)
+        }
+        _ => false,
+    }
+}
+
+/// A choice written as an expression: a range attribute (`v'range => '0'`) is a range.
+pub fn choice(e: Expr) -> Choice {
+    if is_range_attribute(&e) {
+        Choice::Range(Range::Attribute(Box::new(e)))
+    } else {
+        Choice::Expr(e)
+    }
+}
+
 /// A name in a discrete range is a range attribute (`a'range`) or a type mark (`natural`).
 pub fn discrete_name(name: Expr) -> DiscreteRange {
-    match &name.kind {
-        ExprKind::Attribute(_, attr) if attr.name == "range" || attr.name == "reverse_range" => {
-            DiscreteRange::Range(Range::Attribute(Box::new(name)))
-        }
-        _ => DiscreteRange::Subtype(SubtypeIndication {
+    match is_range_attribute(&name) {
+        true => DiscreteRange::Range(Range::Attribute(Box::new(name))),
+        false => DiscreteRange::Subtype(SubtypeIndication {
             resolution: None,
             span: name.span,
             type_mark: name,
