@@ -521,6 +521,14 @@ impl Signals {
             let string = matches!(value, Value::String(_));
             return Ok(Some(crate::design::aggregate_value(values, string)));
         }
+        // The common case, a driver that is always connected: its value, without collecting
+        // the connected ones (this runs at every transaction).
+        if let [d] = ds.as_slice()
+            && self.drivers[*d].connected
+            && self.resolution[s].is_none()
+        {
+            return Ok(Some(self.drivers[*d].current.clone()));
+        }
         let on: Vec<&Value> = ds
             .iter()
             .map(|&d| &self.drivers[d])
