@@ -54,7 +54,7 @@ mod views;
 pub use candidates::TopCandidate;
 pub use error::ElabError;
 
-use library::{Library, canonical_library};
+use library::{Library, Unit, canonical_library};
 use scope::{Item, PackageScope, Scope};
 use types::Sub;
 
@@ -170,8 +170,12 @@ struct Elab<'a> {
     lib: Library<'a>,
     design: Design,
     errors: Vec<ElabError>,
-    packages: FxHashMap<(String, String), Rc<PackageScope<'a>>>,
-    packages_in_progress: FxHashSet<(String, String)>,
+    /// Packages elaborated so far, by unit index.
+    packages: FxHashMap<usize, Rc<PackageScope<'a>>>,
+    packages_in_progress: FxHashSet<usize>,
+    /// The unit whose text is being elaborated: which of several namesake units a name
+    /// in it denotes ([`Library::package`]).
+    unit_at: usize,
     natures: Vec<NatureInfo>,
     /// Implicit `Q'above(level)` signals, one per distinct pair.
     above: Vec<(QuantityId, Expr, SignalId)>,
@@ -269,6 +273,7 @@ impl<'a> Elab<'a> {
             errors: Vec::new(),
             packages: FxHashMap::default(),
             packages_in_progress: FxHashSet::default(),
+            unit_at: usize::MAX,
             natures: Vec::new(),
             above: Vec::new(),
             views: FxHashMap::default(),
@@ -327,20 +332,23 @@ impl<'a> Elab<'a> {
     /// (a string literal is a `string`, a report's severity a `severity_level`): the
     /// standard's own, whatever a model declares with the same name.
     fn standard_type(&self, name: &str) -> Option<types::Ty> {
-        let std = self
-            .packages
-            .get(&("std".to_string(), "standard".to_string()))?;
+        let std = self.standard()?;
         match std.items.get(name)?.first()? {
             Item::Type(sub) => Some(sub.ty.clone()),
             _ => None,
         }
     }
 
+    /// The elaborated std.standard.
+    fn standard(&self) -> Option<&Rc<PackageScope<'a>>> {
+        let key = ("std".to_string(), "standard".to_string());
+        self.packages
+            .get(&self.lib.package(&key, usize::MAX)?.index)
+    }
+
     /// A unit of std.standard's `time` by name, in femtoseconds.
     fn standard_time_unit(&self, name: &str) -> Option<f64> {
-        let std = self
-            .packages
-            .get(&("std".to_string(), "standard".to_string()))?;
+        let std = self.standard()?;
         match std.items.get(name)?.first()? {
             Item::TimeUnit(f) => Some(*f),
             _ => None,
@@ -352,7 +360,13 @@ impl<'a> Elab<'a> {
     /// library (every copy of a model says `use ieee.electrical_systems.all;`), unless building
     /// it reported an error, so that the error is reported wherever the clause is.
     fn unit_scope(&mut self, library: &str, contexts: &[&'a [ContextItem]]) -> Scope<'a> {
-        let key = context_key(library, contexts);
+        let mut key = context_key(library, contexts);
+        if self.lib.has_namesakes()
+            && let Some(key) = &mut key
+        {
+            // Which namesake package a clause names depends on where the unit is.
+            key.push_str(&self.unit_at.to_string());
+        }
         if let Some(region) = key.as_ref().and_then(|k| self.use_regions.get(k)) {
             return Scope::with_use_region(region.clone());
         }
@@ -469,10 +483,7 @@ impl<'a> Elab<'a> {
     /// The declarations of package `lib.name`, elaborated on first use.
     fn package(&mut self, lib: &str, name: &str, span: Option<Span>) -> R<Rc<PackageScope<'a>>> {
         let key = (canonical_library(lib).to_string(), name.to_string());
-        if let Some(p) = self.packages.get(&key) {
-            return Ok(p.clone());
-        }
-        let Some(unit) = self.lib.packages.get(&key).cloned() else {
+        let Some(unit) = self.lib.package(&key, self.unit_at).cloned() else {
             let err = ElabError::Undeclared {
                 span: span.unwrap_or_default(),
                 name: format!("{}.{}", key.0, key.1),
@@ -480,7 +491,20 @@ impl<'a> Elab<'a> {
             };
             return Err(self.error(err));
         };
-        if !self.packages_in_progress.insert(key.clone()) {
+        self.package_unit(unit, span)
+    }
+
+    /// The declarations of the package `unit`, elaborated on first use.
+    fn package_unit(
+        &mut self,
+        unit: Unit<'a, crate::ast::Package>,
+        span: Option<Span>,
+    ) -> R<Rc<PackageScope<'a>>> {
+        if let Some(p) = self.packages.get(&unit.index) {
+            return Ok(p.clone());
+        }
+        let key = (unit.library.clone(), unit.unit.name.name.clone());
+        if !self.packages_in_progress.insert(unit.index) {
             let err = ElabError::invalid(
                 span.unwrap_or(unit.unit.name.span),
                 format!("package `{}` uses itself", key.1),
@@ -494,6 +518,7 @@ impl<'a> Elab<'a> {
             self.quiet,
             self.native_names.take(),
             std::mem::take(&mut self.path),
+            std::mem::replace(&mut self.unit_at, unit.index),
         );
         self.quiet = stdlib;
         if stdlib {
@@ -558,8 +583,8 @@ impl<'a> Elab<'a> {
                 }
             }
         }
-        (self.quiet, self.native_names, self.path) = saved;
-        self.packages_in_progress.remove(&key);
+        (self.quiet, self.native_names, self.path, self.unit_at) = saved;
+        self.packages_in_progress.remove(&unit.index);
         let region = sc.regions.pop().unwrap_or_default();
         self.package_decls
             .extend(region.decls.iter().map(|(s, i)| (*s, i.clone())));
@@ -567,7 +592,7 @@ impl<'a> Elab<'a> {
             name: key.1.clone(),
             items: Rc::unwrap_or_clone(region.items),
         });
-        self.packages.insert(key, pkg.clone());
+        self.packages.insert(unit.index, pkg.clone());
         Ok(pkg)
     }
 }

@@ -136,6 +136,55 @@ architecture a of top_b is begin u : entity work.leaf; end architecture;
     );
 }
 
+/// A folder of testbenches where each file carries its own copy of a package or entity (the
+/// book's case studies): each unit sees the namesake declared last before it in file order,
+/// in analysis and in elaboration alike, and an instance naming an architecture that only
+/// another namesake has gets that one.
+#[test]
+fn namesake_units_of_several_files_are_the_ones_each_unit_sees() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("a.vhd"),
+        "-- vams: stop 1 ns
+package pwl is function step(x : real) return real; end package;
+package body pwl is
+  function step(x : real) return real is begin return x + 1.0; end function;
+end package body;
+entity reg is end entity;
+architecture test of reg is begin end architecture;
+use work.pwl.all;
+entity tb_a is end entity;
+architecture t of tb_a is
+begin
+  process begin
+    assert step(1.0) = 2.0 report \"wrong step\" severity error;
+    wait;
+  end process;
+  u : entity work.reg(behavioral);
+end architecture;
+",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.path().join("b.vhd"),
+        "package pwl is function other(x : real) return real; end package;
+package body pwl is
+  function other(x : real) return real is begin return x; end function;
+end package body;
+entity reg is end entity;
+architecture behavioral of reg is begin end architecture;
+",
+    )
+    .unwrap();
+    vams().arg("check").arg(dir.path()).assert().success();
+    vams()
+        .arg("test")
+        .arg(dir.path())
+        .assert()
+        .success()
+        .stdout(predicates::str::contains("1 passed, 0 failed"));
+}
+
 #[test]
 fn bad_input_of_every_kind_exits_1() {
     let dir = tempfile::tempdir().unwrap();

@@ -47,7 +47,9 @@ pub fn candidates(lib: &Library) -> Vec<TopCandidate> {
     lib.tops()
         .into_iter()
         .filter_map(|name| {
-            let entity = lib.entities.get(&("work".to_string(), name.clone()))?.unit;
+            let entity = lib
+                .entity(&("work".to_string(), name.clone()), usize::MAX)?
+                .unit;
             Some(TopCandidate {
                 span: entity.name.span,
                 generics_without_default: names_where(&entity.generics, |d| d.default.is_none()),

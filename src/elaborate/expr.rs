@@ -129,15 +129,13 @@ impl<'a> Elab<'a> {
     /// Elaborates the package whose declarations include `decl`, if there is one and it was
     /// not elaborated yet; true when it was.
     fn elaborate_package_declaring(&mut self, decl: Span) -> bool {
-        let Some((lib, name)) = self.lib.packages.iter().find_map(|((lib, name), p)| {
+        let Some(unit) = self.lib.packages.values().flatten().find(|p| {
             let s = p.unit.span;
-            (s.file == decl.file && s.start <= decl.start && decl.end <= s.end)
-                .then(|| (lib.clone(), name.clone()))
+            s.file == decl.file && s.start <= decl.start && decl.end <= s.end
         }) else {
             return false;
         };
-        !self.packages.contains_key(&(lib.clone(), name.clone()))
-            && self.package(&lib, &name, None).is_ok()
+        !self.packages.contains_key(&unit.index) && self.package_unit(unit.clone(), None).is_ok()
     }
 
     /// The item a (simple or selected) name denotes: the one built for the declaration

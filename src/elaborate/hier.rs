@@ -68,7 +68,7 @@ impl<'a> Elab<'a> {
             arch_name = arch;
             config = Some(block);
         }
-        let Some(entity) = self.lib.entities.get(&key).cloned() else {
+        let Some(entity) = self.lib.entity(&key, usize::MAX).cloned() else {
             let cands = self.lib.tops();
             let help = match self
                 .lib
@@ -224,6 +224,21 @@ impl<'a> Elab<'a> {
     }
 
     fn instance_body(
+        &mut self,
+        entity: &Unit<'a, Entity>,
+        arch: &Unit<'a, Architecture>,
+        actuals: Actuals<'_, 'a>,
+        config: Option<&'a ast::BlockConfig>,
+        depth: usize,
+    ) -> R<()> {
+        // The names of the architecture's text denote the units it sees.
+        let outer = std::mem::replace(&mut self.unit_at, arch.index);
+        let result = self.instance_body_at(entity, arch, actuals, config, depth);
+        self.unit_at = outer;
+        result
+    }
+
+    fn instance_body_at(
         &mut self,
         entity: &Unit<'a, Entity>,
         arch: &Unit<'a, Architecture>,
@@ -1062,7 +1077,12 @@ impl<'a> Elab<'a> {
         depth: usize,
     ) -> R<()> {
         let key = (canonical_library(&lib).to_string(), name.clone());
-        let Some(entity) = self.lib.entities.get(&key).cloned() else {
+        let arch_named = arch_name.map(|a| a.name.as_str());
+        let Some(entity) = self
+            .lib
+            .entity_with(&key, self.unit_at, arch_named)
+            .cloned()
+        else {
             let cands = self.lib.work_entities();
             let best = cands
                 .iter()

@@ -16,13 +16,14 @@ use crate::source::FileId;
 /// Design units of one compilation. Library `ieee_proposed` is an alias of `ieee`.
 #[derive(Default)]
 pub struct Library<'a> {
-    /// The last entity of each name.
-    pub entities: FxHashMap<(String, String), Unit<'a, Entity>>,
+    /// The entities of each name, in file order (a folder of testbenches may declare one
+    /// in several files).
+    pub entities: FxHashMap<(String, String), Vec<Unit<'a, Entity>>>,
     /// Architectures of each entity (by its unit index) in file order (the last is the
     /// default).
     pub architectures: FxHashMap<usize, Vec<Unit<'a, Architecture>>>,
-    /// The last package of each name.
-    pub packages: FxHashMap<(String, String), Unit<'a, Package>>,
+    /// The packages of each name, in file order.
+    pub packages: FxHashMap<(String, String), Vec<Unit<'a, Package>>>,
     /// The body of each package (by its unit index; the last when several complete it).
     pub bodies: FxHashMap<usize, Unit<'a, PackageBody>>,
     /// Configuration declarations by (library, name).
@@ -82,7 +83,10 @@ impl<'a> Library<'a> {
             match &du.unit {
                 LibraryUnit::Entity(e) => {
                     let unit = Unit::new(e, context, library, index);
-                    lib.entities.insert(key(&e.name.name), unit);
+                    lib.entities
+                        .entry(key(&e.name.name))
+                        .or_default()
+                        .push(unit);
                 }
                 LibraryUnit::Architecture(a) => {
                     let unit = Unit::new(a, context, library, index);
@@ -93,7 +97,10 @@ impl<'a> Library<'a> {
                 }
                 LibraryUnit::Package(p) => {
                     let unit = Unit::new(p, context, library, index);
-                    lib.packages.insert(key(&p.name.name), unit);
+                    lib.packages
+                        .entry(key(&p.name.name))
+                        .or_default()
+                        .push(unit);
                 }
                 LibraryUnit::Configuration(c) => {
                     let unit = Unit::new(c, context, library, index);
@@ -107,6 +114,48 @@ impl<'a> Library<'a> {
             }
         }
         lib
+    }
+
+    /// The entity `key` that unit `before` sees (see [`seen_from`]).
+    pub fn entity(&self, key: &(String, String), before: usize) -> Option<&Unit<'a, Entity>> {
+        seen_from(self.entities.get(key)?, before)
+    }
+
+    /// The entity `key` for an instance in unit `before` that names architecture `arch`: the
+    /// one it sees, unless only another namesake has that architecture (a folder where two
+    /// files declare `reg`, and the instance names the architecture of the second).
+    pub fn entity_with(
+        &self,
+        key: &(String, String),
+        before: usize,
+        arch: Option<&str>,
+    ) -> Option<&Unit<'a, Entity>> {
+        let seen = self.entity(key, before)?;
+        let has = |e: &Unit<'a, Entity>| {
+            arch.is_none_or(|a| {
+                self.architectures
+                    .get(&e.index)
+                    .is_some_and(|archs| archs.iter().any(|x| x.unit.name.name == a))
+            })
+        };
+        if has(seen) {
+            return Some(seen);
+        }
+        let all = self.entities.get(key)?;
+        let before_first = all.iter().rev().filter(|u| u.index < before);
+        let after = all.iter().rev().filter(|u| u.index >= before);
+        Some(before_first.chain(after).find(|e| has(e)).unwrap_or(seen))
+    }
+
+    /// The package `key` that unit `before` sees (see [`seen_from`]).
+    pub fn package(&self, key: &(String, String), before: usize) -> Option<&Unit<'a, Package>> {
+        seen_from(self.packages.get(key)?, before)
+    }
+
+    /// True when some entity or package name is declared by several units, so that which
+    /// one a unit sees depends on where the unit is.
+    pub fn has_namesakes(&self) -> bool {
+        self.entities.values().any(|v| v.len() > 1) || self.packages.values().any(|v| v.len() > 1)
     }
 
     /// Entities of library `work`, sorted.
@@ -134,6 +183,13 @@ impl<'a> Library<'a> {
             .filter(|e| !used.contains(e))
             .collect()
     }
+}
+
+/// Of the namesake primary units `all` (in file order), the one unit `before` sees: the last
+/// declared before it, else the last of all. This is analysis's rule (a folder analysed file
+/// by file in order), so that elaboration builds the unit analysis resolved names into.
+fn seen_from<'u, 'a, T>(all: &'u [Unit<'a, T>], before: usize) -> Option<&'u Unit<'a, T>> {
+    all.iter().rev().find(|u| u.index < before).or(all.last())
 }
 
 /// Names of the entities (or components, bound by name) instantiated in `stmts`.
