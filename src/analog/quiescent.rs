@@ -2,6 +2,14 @@
 //! `x'_i = 0` for every differential unknown, except those a break statement fixes, which are
 //! held at their value while `x'_i` takes their place as the Newton unknown.
 //!
+//! A differential unknown that `x' = 0` leaves undetermined is held at its initial value too,
+//! as if a break statement fixed it: one that appears nowhere undifferentiated (an integrator
+//! whose output feeds nothing algebraic), or one whose derivative an equation sets without
+//! any undifferentiated unknown (`phi'dot == wc`, a free-running oscillator's phase, where
+//! `x' = 0` contradicts the equation). Without this such models have no quiescent point
+//! (a singular Jacobian at t = 0); with it they start from their initial values, as a
+//! `break phi => 0.0;` the model does not write would make them.
+//!
 //! An adapter [`DaeSystem`] presents the augmented problem to [`operating_point`] (which adds
 //! gmin and source stepping): its unknown `z_i` is `x'_i` for a fixed differential unknown and
 //! `x_i` otherwise, and its Jacobian column `i` is `dF/dx'_i` or `dF/dx_i` accordingly.
@@ -55,6 +63,33 @@ impl DaeSystem for Quiescent<'_> {
     }
 }
 
+/// Marks in `held` the differential unknowns that `x' = 0` leaves undetermined (see the
+/// module comment), from the Jacobian's values at `x`: an unknown whose `dF/dx` column is
+/// zero, and the unknowns of an equation whose `dF/dx` row is zero but whose `dF/dx'` row is
+/// not. Exact zeros: the tape gives an exact 0 for an unknown a branch does not use.
+fn hold_undetermined(sys: &mut AnalogSystem, t: f64, x: &[f64], held: &mut [bool]) {
+    let n = held.len();
+    let pattern = sys.pattern().to_vec();
+    let differential = sys.differential().to_vec();
+    let xdot = vec![0.0; n];
+    let mut dx = vec![0.0; pattern.len()];
+    let mut ddot = vec![0.0; pattern.len()];
+    sys.jacobian_columns(t, x, &xdot, &vec![false; n], &mut dx);
+    sys.jacobian_columns(t, x, &xdot, &differential, &mut ddot);
+    let (mut row_x, mut col_x) = (vec![false; n], vec![false; n]);
+    for (k, &(r, c)) in pattern.iter().enumerate() {
+        if dx[k] != 0.0 && !held[c] {
+            row_x[r] = true;
+            col_x[c] = true;
+        }
+    }
+    for (k, &(r, c)) in pattern.iter().enumerate() {
+        if differential[c] && ddot[k] != 0.0 && (!row_x[r] || !col_x[c]) {
+            held[c] = true;
+        }
+    }
+}
+
 /// See [`AnalogSystem::quiescent_point`]. A fixed value for an unknown that appears nowhere
 /// differentiated has no `x' = 0` equation to replace: it only serves as the starting guess.
 pub fn solve(
@@ -86,6 +121,7 @@ pub fn solve(
         x[i] = v;
         held[i] = sys.differential()[i];
     }
+    hold_undetermined(sys, t, &x, &mut held);
     let mut z: Vec<f64> = (0..n).map(|i| if held[i] { 0.0 } else { x[i] }).collect();
     let mut p = Quiescent {
         sys,

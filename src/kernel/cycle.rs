@@ -33,6 +33,9 @@ struct Analog<A> {
     integ: Transient,
     x: Vec<f64>,
     g: Vec<f64>,
+    /// Within this of zero, a root function's sign is undecided after a restart (the
+    /// smallest absolute tolerance): see [`Simulation::synchronise`].
+    root_band: f64,
     /// The quiescent point (every `x'` zero), before the integrator's consistent
     /// initialisation gives the derivatives their values at `0+`: what `vams op` reports.
     quiescent: Vec<f64>,
@@ -181,9 +184,10 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         let max_step = self
             .max_step(options)?
             .min(sys.shortest_delay().unwrap_or(f64::INFINITY));
+        let root_band = abstol.iter().copied().fold(DEFAULT_ABSTOL, f64::min);
         let topts = TransientOptions {
             reltol: options.reltol,
-            abstol: abstol.iter().copied().fold(DEFAULT_ABSTOL, f64::min),
+            abstol: root_band,
             abstol_per_unknown: abstol,
             max_step,
             // No unknown beyond a few tolerances, however large the system (see the norm).
@@ -197,6 +201,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             slots,
             above,
             integ,
+            root_band,
             x: vec![0.0; n],
             g,
             quiescent: x,
@@ -379,7 +384,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             match self.step(t, target)? {
                 Advance::StepAccepted(t1) => {
                     self.refresh()?;
-                    let crossed = self.sync_above(t1);
+                    let crossed = self.sync_above(t1, 0.0);
                     recorder.record(t1, &self.values, &self.kernel.signals.states);
                     self.progress.tick(t1);
                     self.check_cancelled(t1)?;
@@ -389,7 +394,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                 }
                 Advance::Reached(t1) => {
                     self.refresh()?;
-                    self.sync_above(t1);
+                    self.sync_above(t1, 0.0);
                     recorder.record(t1, &self.values, &self.kernel.signals.states);
                     return Ok(t1);
                 }
@@ -442,7 +447,8 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
     /// Forces every `'above` signal whose value disagrees with the sign of its root function at
     /// the current state: crossings the integrator cannot see, because the function started a
     /// step at exactly zero or a break moved the quantity across its threshold. True if any.
-    fn sync_above(&mut self, t: f64) -> bool {
+    /// With `band`, a function within it of zero leaves its signal as it is.
+    fn sync_above(&mut self, t: f64, band: f64) -> bool {
         let Some(a) = self.analog.as_mut() else {
             return false;
         };
@@ -454,7 +460,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         let mut any = false;
         for (&s, &g) in a.above.iter().zip(&a.g) {
             let now = matches!(self.kernel.value(s), Value::Boolean(true));
-            if (g > 0.0 && !now) || (g < 0.0 && now) {
+            if g.abs() > band && ((g > 0.0 && !now) || (g < 0.0 && now)) {
                 self.kernel.signals.force(s, Value::Boolean(g > 0.0));
                 any = true;
             }
@@ -492,7 +498,12 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             .restart(&mut a.sys, t, &a.x)
             .map_err(|e| solve_error(e, t, &a.sys, &a.slots, design))?;
         self.refresh()?;
-        self.sync_above(t);
+        // A restart that lands within tolerance of a threshold does not cross it: a limiter
+        // in a feedback loop sits on its threshold (sliding), and each set of equations puts
+        // the solution a rounding error on the other side (4.8 + 2e-11 with `vout == vin`,
+        // 4.8 - 1e-11 limited), which would flip the `'above` and restart forever.
+        let band = self.analog.as_ref().map_or(0.0, |a| a.root_band);
+        self.sync_above(t, band);
         Ok(true)
     }
 

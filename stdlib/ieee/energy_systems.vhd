@@ -33,4 +33,10 @@ package energy_systems is
   subtype real_across_vector  is unspecified_vector'across;
   subtype real_through_vector is unspecified_vector'through;
 
+  -- The drafts of 1076.1.1 (the `ieee_proposed` library of The System Designer's Guide)
+  -- declared Boltzmann's constant and the elementary charge here, and textbook diode and
+  -- noise models use them from this package (`vt == temp * K / Q;`).
+  constant k : real := phys_k;          -- Boltzmann's constant [J/K]
+  constant q : real := phys_q;          -- elementary charge [C]
+
 end package energy_systems;

@@ -126,3 +126,33 @@ fn gmin_stepping_rescues_a_singular_start() {
     assert_eq!(rep.strategy, OpStrategy::GminStepping);
     assert!((x[0] - 1.0).abs() < 1e-12, "{}", x[0]);
 }
+
+/// `l = 6`, `r = 10^l` from zero (a switch's resistance interpolated in decades): every full
+/// step makes the residual's norm larger until the last (r goes 0, 14.8, 1e6), so the line
+/// search creeps 3 % of the way per iteration and the damped strategies run out of
+/// iterations; full Newton steps land on r = 1e6 in a few.
+#[test]
+fn full_steps_rescue_an_exponential_the_line_search_creeps_along() {
+    let mut s = Algebraic {
+        n: 2,
+        pattern: vec![(0, 0), (1, 0), (1, 1)],
+        diff: vec![false, false],
+        f: |x: &[f64], out: &mut [f64]| {
+            out[0] = x[0] - 6.0;
+            out[1] = x[1] - 10f64.powf(x[0]);
+        },
+        j: |x: &[f64], out: &mut [f64]| {
+            out[0] = 1.0;
+            out[1] = -std::f64::consts::LN_10 * 10f64.powf(x[0]);
+            out[2] = 1.0;
+        },
+    };
+    let tol = Tolerances::uniform(2, 1e-9, 1e-12);
+    let mut x = [0.0, 0.0];
+    let rep = operating_point(&mut s, 0.0, &mut x, &tol, &OpOptions::default()).expect("op");
+    assert_eq!(rep.strategy, OpStrategy::FullSteps);
+    assert!(
+        (x[0] - 6.0).abs() < 1e-12 && (x[1] - 1e6).abs() < 1e-6,
+        "{x:?}"
+    );
+}
