@@ -84,6 +84,9 @@ pub struct Transient {
     g_tmp: Vec<f64>,
     /// Scratch: `x'` of the dense output where root functions are evaluated.
     xdot_tmp: Vec<f64>,
+    /// `x'` just before a restart, where the implicit-Euler fallback of the consistent
+    /// initialisation starts its step (see `init`).
+    xdot_held: Vec<f64>,
     /// Roots found at `t` still to be reported, last to report first.
     pending: Vec<(usize, bool)>,
     /// Breakpoints ahead, sorted descending (the next one is last).
@@ -203,6 +206,7 @@ impl Transient {
             g_new: vec![0.0; m],
             g_tmp: vec![0.0; m],
             xdot_tmp: vec![0.0; n],
+            xdot_held: vec![0.0; n],
             pending: Vec::with_capacity(m),
             breakpoints: Vec::new(),
             modes: Vec::new(),

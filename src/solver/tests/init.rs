@@ -55,3 +55,31 @@ fn inconsistent_held_currents_are_projected_conserving_flux() {
     // Without sources or losses the currents stay put after the jump.
     assert!(tr.derivative()[0].abs() < 1e-3 && tr.derivative()[1].abs() < 1e-3);
 }
+
+/// Restarts at a consistent state leave it where it is: the fallback's Euler step starts
+/// from the held state taken back along its derivative, so a thousand restarts at one
+/// instant (a limiter chattering on its threshold, a clock the equations read) do not run
+/// the currents ahead. Starting from the held state itself moved them by `h x'` (1e-8 s of
+/// the 500 A/s slope) at every restart, 5e-3 A after a thousand.
+#[test]
+fn restarts_at_a_consistent_state_do_not_move_it() {
+    let (l1, l2, v) = (3e-3, 1e-3, 2.0);
+    let mut sys = series_inductors(l1, l2, 0.0, 0.0, v);
+    let mut tr = Transient::new(&mut sys, 0.0, &[0.0; 3], opts(1e-6, 1e-12)).expect("init");
+    tr.advance(&mut sys, 1e-4).expect("step");
+    let t = tr.time();
+    let before = tr.state().to_vec();
+    for _ in 0..1000 {
+        let x = tr.state().to_vec();
+        tr.restart(&mut sys, t, &x).expect("restart");
+    }
+    let slope = v / (l1 + l2);
+    for (i, (&now, &then)) in tr.state().iter().zip(&before).take(2).enumerate() {
+        assert!(
+            (now - then).abs() < 1e-9,
+            "i{} moved from {then} to {now}",
+            i + 1
+        );
+        assert!((tr.derivative()[i] - slope).abs() < 1e-4 * slope);
+    }
+}

@@ -10,12 +10,15 @@
 //! algebraic constraint ties differential unknowns together: two inductors in series (a KCL row
 //! that contains only the two held currents), two inertias coupled by a gear (`v = ratio * w`
 //! with `v'` and `w'` both present). Then a tiny implicit-Euler step is taken instead: solve
-//! `F((x - x_held) / h, x, t) = 0` for all of `x`, a step that ends at `t` (the held state
-//! taken as the state at `t - h`), and keep `x`: it satisfies every equation at `t`, with the
-//! sources at their values at `t` (inconsistent held values are projected onto the
-//! constraints; a consistent state moves by `O(h x')` only, `h` being far below any time
-//! constant the integrator could resolve). `x'` comes from a second such step from there, to
-//! `t + h`, which is not kept.
+//! `F((x - x_start) / h, x, t) = 0` for all of `x`, a step that ends at `t` from
+//! `x_start = x_held - h x'_before` (the held state taken back along the derivative it had
+//! before the restart), and keep `x`: it satisfies every equation at `t`, with the sources at
+//! their values at `t` (inconsistent held values are projected onto the constraints; a
+//! consistent state moves by `h` times the change of its derivative only). Starting from the
+//! held state itself would move a consistent state by `h x'` at every restart, time standing
+//! still: a servo whose limiter restarts every few nanoseconds ran its gear 12 times too
+//! fast, and the moves kept its limiter chattering. `x'` comes from a second such step from
+//! there, to `t + h`, which is not kept.
 
 use super::Transient;
 use crate::solver::newton::{NewtonOptions, NonlinearProblem, norm2};
@@ -178,6 +181,7 @@ impl Transient {
         sys: &mut S,
     ) -> Result<(), SolveError> {
         let t = self.t;
+        self.xdot_held.copy_from_slice(&self.xdot);
         self.xdot.fill(0.0);
         let mode = sys.mode();
         // Unknowns appearing nowhere differentiated keep x' = 0.
@@ -331,6 +335,15 @@ impl Transient {
         for step in 0..2 {
             self.x_pred.copy_from_slice(&self.hist_x[0]);
             self.x_new.copy_from_slice(&self.hist_x[0]);
+            if step == 0 {
+                for ((start, &d), &diff) in
+                    self.x_pred.iter_mut().zip(&self.xdot_held).zip(&self.diff)
+                {
+                    if diff {
+                        *start -= h * d;
+                    }
+                }
+            }
             // The first step ends at `t` (its result is the state kept), the second at `t + h`.
             let mut p = EulerProblem {
                 sys: &mut *sys,
