@@ -784,6 +784,13 @@ impl AnalogSystem {
         listing::listing(self, design, sources)
     }
 
+    /// Each Jacobian entry `(row, column)` with whether the equation reads the unknown
+    /// undifferentiated (`dF/dx` is not identically zero) and differentiated (`dF/dx'`).
+    fn jacobian_structure(&self) -> impl Iterator<Item = ((usize, usize), bool, bool)> + '_ {
+        (self.pattern.iter().zip(&self.jac_dx).zip(&self.jac_ddot))
+            .map(|((&rc, dx), ddot)| (rc, dx.is_some(), ddot.is_some()))
+    }
+
     /// Fills `out` (pattern order) with `dF/dx'` for the columns flagged in `dot_columns` and
     /// `dF/dx` for the others.
     fn jacobian_columns(

@@ -443,7 +443,7 @@ fn integers_outside_their_range_stop_the_run() {
         .assert()
         .code(1)
         .stderr(contains("signal `k` assigned 8, outside its range 0 to 7"))
-        .stderr(contains("at t = 0.000000008 s"))
+        .stderr(contains("at t = 8e-9 s"))
         // The statement that assigns it, not just its process.
         .stderr(contains("range_check.vhd:21:7"));
     vams()

@@ -64,29 +64,28 @@ impl DaeSystem for Quiescent<'_> {
 }
 
 /// Marks in `held` the differential unknowns that `x' = 0` leaves undetermined (see the
-/// module comment), from the Jacobian's values at `x`: an unknown whose `dF/dx` column is
-/// zero, and the unknowns of an equation whose `dF/dx` row is zero but whose `dF/dx'` row is
-/// not. Exact zeros: the tape gives an exact 0 for an unknown a branch does not use.
-fn hold_undetermined(sys: &mut AnalogSystem, t: f64, x: &[f64], held: &mut [bool]) {
+/// module comment), from the structure of the Jacobian: an unknown that no equation reads
+/// undifferentiated, and the unknowns of an equation that reads no unknown undifferentiated
+/// (every branch of its simultaneous `if` included). Structure, not values: a value that is
+/// zero at the guess (a flat table segment, `x**2` at 0) does not make an unknown free.
+fn hold_undetermined(sys: &AnalogSystem, held: &mut [bool]) {
     let n = held.len();
-    let pattern = sys.pattern().to_vec();
-    let differential = sys.differential().to_vec();
-    let xdot = vec![0.0; n];
-    let mut dx = vec![0.0; pattern.len()];
-    let mut ddot = vec![0.0; pattern.len()];
-    sys.jacobian_columns(t, x, &xdot, &vec![false; n], &mut dx);
-    sys.jacobian_columns(t, x, &xdot, &differential, &mut ddot);
+    let differential = sys.differential();
     let (mut row_x, mut col_x) = (vec![false; n], vec![false; n]);
-    for (k, &(r, c)) in pattern.iter().enumerate() {
-        if dx[k] != 0.0 && !held[c] {
+    for ((r, c), reads_x, _) in sys.jacobian_structure() {
+        if reads_x && !held[c] {
             row_x[r] = true;
             col_x[c] = true;
         }
     }
-    for (k, &(r, c)) in pattern.iter().enumerate() {
-        if differential[c] && ddot[k] != 0.0 && (!row_x[r] || !col_x[c]) {
-            held[c] = true;
+    let mut hold = vec![false; n];
+    for ((r, c), _, reads_dot) in sys.jacobian_structure() {
+        if differential[c] && reads_dot && (!row_x[r] || !col_x[c]) {
+            hold[c] = true;
         }
+    }
+    for (h, new) in held.iter_mut().zip(hold) {
+        *h |= new;
     }
 }
 
@@ -121,7 +120,7 @@ pub fn solve(
         x[i] = v;
         held[i] = sys.differential()[i];
     }
-    hold_undetermined(sys, t, &x, &mut held);
+    hold_undetermined(sys, &mut held);
     let mut z: Vec<f64> = (0..n).map(|i| if held[i] { 0.0 } else { x[i] }).collect();
     let mut p = Quiescent {
         sys,

@@ -33,9 +33,10 @@ struct Analog<A> {
     integ: Transient,
     x: Vec<f64>,
     g: Vec<f64>,
-    /// Within this of zero, a root function's sign is undecided after a restart (the
-    /// smallest absolute tolerance): see [`Simulation::synchronise`].
-    root_band: f64,
+    /// Per root function: within this of zero, its sign is undecided after a restart (the
+    /// absolute tolerance of the quantity it compares, else of unknowns without a group):
+    /// see [`Simulation::synchronise`].
+    root_band: Vec<f64>,
     /// The quiescent point (every `x'` zero), before the integrator's consistent
     /// initialisation gives the derivatives their values at `0+`: what `vams op` reports.
     quiescent: Vec<f64>,
@@ -184,10 +185,22 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         let max_step = self
             .max_step(options)?
             .min(sys.shortest_delay().unwrap_or(f64::INFINITY));
-        let root_band = abstol.iter().copied().fold(DEFAULT_ABSTOL, f64::min);
+        let root_band = above
+            .iter()
+            .map(|&s| {
+                let own = match &design.signals[s.index()].kind {
+                    crate::design::SignalKind::Above {
+                        quantity: Expr::Quantity(q),
+                        ..
+                    } => slots[q.index()].map(|slot| abstol[slot]),
+                    _ => None,
+                };
+                own.unwrap_or(options.abstol.unwrap_or(DEFAULT_ABSTOL))
+            })
+            .collect();
         let topts = TransientOptions {
             reltol: options.reltol,
-            abstol: root_band,
+            abstol: abstol.iter().copied().fold(DEFAULT_ABSTOL, f64::min),
             abstol_per_unknown: abstol,
             max_step,
             // No unknown beyond a few tolerances, however large the system (see the norm).
@@ -384,7 +397,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             match self.step(t, target)? {
                 Advance::StepAccepted(t1) => {
                     self.refresh()?;
-                    let crossed = self.sync_above(t1, 0.0);
+                    let crossed = self.sync_above(t1, false);
                     recorder.record(t1, &self.values, &self.kernel.signals.states);
                     self.progress.tick(t1);
                     self.check_cancelled(t1)?;
@@ -394,7 +407,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                 }
                 Advance::Reached(t1) => {
                     self.refresh()?;
-                    self.sync_above(t1, 0.0);
+                    self.sync_above(t1, false);
                     recorder.record(t1, &self.values, &self.kernel.signals.states);
                     return Ok(t1);
                 }
@@ -447,8 +460,9 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
     /// Forces every `'above` signal whose value disagrees with the sign of its root function at
     /// the current state: crossings the integrator cannot see, because the function started a
     /// step at exactly zero or a break moved the quantity across its threshold. True if any.
-    /// With `band`, a function within it of zero leaves its signal as it is.
-    fn sync_above(&mut self, t: f64, band: f64) -> bool {
+    /// With `banded`, a function within its band ([`Analog::root_band`]) of zero leaves its
+    /// signal as it is.
+    fn sync_above(&mut self, t: f64, banded: bool) -> bool {
         let Some(a) = self.analog.as_mut() else {
             return false;
         };
@@ -458,9 +472,10 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         a.sys
             .roots(t, a.integ.state(), a.integ.derivative(), &mut a.g);
         let mut any = false;
-        for (&s, &g) in a.above.iter().zip(&a.g) {
+        for ((&s, &g), &band) in a.above.iter().zip(&a.g).zip(&a.root_band) {
             let now = matches!(self.kernel.value(s), Value::Boolean(true));
-            if g.abs() > band && ((g > 0.0 && !now) || (g < 0.0 && now)) {
+            let decided = !banded || g.abs() > band;
+            if decided && ((g > 0.0 && !now) || (g < 0.0 && now)) {
                 self.kernel.signals.force(s, Value::Boolean(g > 0.0));
                 any = true;
             }
@@ -502,8 +517,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         // in a feedback loop sits on its threshold (sliding), and each set of equations puts
         // the solution a rounding error on the other side (4.8 + 2e-11 with `vout == vin`,
         // 4.8 - 1e-11 limited), which would flip the `'above` and restart forever.
-        let band = self.analog.as_ref().map_or(0.0, |a| a.root_band);
-        self.sync_above(t, band);
+        self.sync_above(t, true);
         Ok(true)
     }
 

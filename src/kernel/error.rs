@@ -20,7 +20,7 @@ pub enum SimError {
 
     /// A process did something that has no value at run time, e.g. `a(11)` on a
     /// `bit_vector(0 to 7)`, or `x / 0` on integers.
-    #[error("{message} in process `{process}` at t = {time} s")]
+    #[error("{message} in process `{process}` at t = {} s", seconds(*time))]
     #[diagnostic(code(vams::sim::runtime))]
     Runtime {
         process: String,
@@ -34,7 +34,7 @@ pub enum SimError {
 
     /// `r == sqrt(y)` with `y` gone negative: a quantity is NaN or infinite at an accepted
     /// point (its value would reach the waveforms).
-    #[error("quantity `{quantity}` is {value} at t = {time} s")]
+    #[error("quantity `{quantity}` is {value} at t = {} s", seconds(*time))]
     #[diagnostic(code(vams::sim::not_finite))]
     NotFinite {
         quantity: String,
@@ -49,9 +49,7 @@ pub enum SimError {
     /// A threshold crossing that flips back whenever the analog solution restarts (a limiter
     /// in a feedback loop switching its equations at the threshold): the analog and digital
     /// parts never settle at `time`.
-    #[error(
-        "the analog and digital parts did not settle at t = {time} s: {limit} restarts, still changing {signals}"
-    )]
+    #[error("the analog and digital parts did not settle at t = {} s: {limit} restarts, still changing {signals}", seconds(*time))]
     #[diagnostic(
         code(vams::sim::settle_limit),
         help(
@@ -65,7 +63,7 @@ pub enum SimError {
     },
 
     /// The user stopped the run (Ctrl-C); what it computed up to `time` is kept.
-    #[error("interrupted at t = {time} s")]
+    #[error("interrupted at t = {} s", seconds(*time))]
     #[diagnostic(
         code(vams::sim::interrupted),
         help("the run was stopped on request; the waveforms up to this time are kept")
@@ -73,7 +71,7 @@ pub enum SimError {
     Interrupted { time: f64 },
 
     /// `process begin x := x + 1; end process;` never reaches a wait.
-    #[error("process `{process}` ran {limit} instructions at t = {time} s without waiting")]
+    #[error("process `{process}` ran {limit} instructions at t = {} s without waiting", seconds(*time))]
     #[diagnostic(
         code(vams::sim::runaway),
         help("every path through a process loop must reach a wait statement (LRM 11.3)")
@@ -87,7 +85,7 @@ pub enum SimError {
     },
 
     /// `a <= not a;` with `b <= a;` zero-delay feedback: time never advances.
-    #[error("more than {limit} delta cycles at t = {time} s (process `{process}` ran last)")]
+    #[error("more than {limit} delta cycles at t = {} s (process `{process}` ran last)", seconds(*time))]
     #[diagnostic(
         code(vams::sim::delta_limit),
         help("a zero-delay loop keeps scheduling events at the same time; add a delay (`after`)")
@@ -129,7 +127,8 @@ pub enum SimError {
 
     /// The analog solver gave up, e.g. an equation without a solution past a switch.
     #[error(
-        "analog solver failed at t = {time} s{}{}",
+        "analog solver failed at t = {} s{}{}",
+        seconds(*time),
         names_suffix(unknowns),
         equation_suffix(equation)
     )]
@@ -195,5 +194,28 @@ impl Located for SimError {
             | SimError::Interrupted { .. }
             | SimError::SettleLimit { .. } => Span::default(),
         }
+    }
+}
+
+/// A time in seconds for a message: plain decimals in the usual range, exponent notation
+/// outside it (a step that fell to 1e-323 s would print 323 digits).
+fn seconds(t: f64) -> String {
+    if t == 0.0 || (1e-4..1e15).contains(&t.abs()) {
+        format!("{t}")
+    } else {
+        format!("{t:e}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::seconds;
+
+    #[test]
+    fn times_print_short_at_any_scale() {
+        assert_eq!(seconds(0.0), "0");
+        assert_eq!(seconds(0.2915), "0.2915");
+        assert_eq!(seconds(5e-324), "5e-324");
+        assert_eq!(seconds(3.6e15), "3.6e15");
     }
 }
