@@ -89,6 +89,7 @@ pub fn elaborate_analysed(
     elab.top(options);
     if elab.errors.is_empty() {
         elab.resolve_signals();
+        elab.contribution_equations();
     }
     if elab.errors.is_empty() {
         let mut design = elab.design;
@@ -202,6 +203,13 @@ struct Elab<'a> {
     guards: Vec<SignalId>,
     /// Auxiliary quantities of `Q'dot'dot` and `Q'integ`, by the quantity they derive from.
     dot_aux: FxHashMap<QuantityId, QuantityId>,
+    /// `T'reference` quantities, one per terminal (key `'`), and `T'contribution` ones, one
+    /// per terminal and instance path.
+    terminal_attrs: FxHashMap<(crate::design::TerminalId, String), QuantityId>,
+    /// Each `T'contribution` with its terminal and the instance path it was read in: its
+    /// equation sums the through quantities at `T` declared there and below, once every
+    /// branch is known (`Elab::contribution_equations`).
+    contributions: Vec<(QuantityId, crate::design::TerminalId, String, Span)>,
     integ_aux: FxHashMap<QuantityId, QuantityId>,
     /// Hierarchical prefix of the objects being declared (`""` at the top, `dut.u_motor`).
     path: String,
@@ -284,6 +292,8 @@ impl<'a> Elab<'a> {
             delayed_signals: FxHashMap::default(),
             guards: Vec::new(),
             dot_aux: FxHashMap::default(),
+            terminal_attrs: FxHashMap::default(),
+            contributions: Vec::new(),
             integ_aux: FxHashMap::default(),
             path: String::new(),
             instance: String::new(),

@@ -198,7 +198,8 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_free_running_phase ... ok"))
         .stdout(contains("test tb_limiter_in_a_loop ... ok"))
         .stdout(contains("test tb_threshold_restart ... ok"))
-        .stdout(contains("57 passed, 0 failed"));
+        .stdout(contains("test tb_terminal_attributes ... ok"))
+        .stdout(contains("58 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

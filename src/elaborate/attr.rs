@@ -15,7 +15,7 @@ use super::scope::{Item, Scope};
 use super::types::{Sub, Ty, index_value, position};
 use super::{Elab, R, Reported};
 
-const ANALOG_UNSUPPORTED: &[&str] = &["contribution", "reference", "across", "through"];
+const ANALOG_UNSUPPORTED: &[&str] = &["across", "through"];
 const SIGNAL_UNSUPPORTED: &[&str] = &["transaction", "last_active", "driving", "driving_value"];
 
 impl<'a> Elab<'a> {
@@ -63,6 +63,12 @@ impl<'a> Elab<'a> {
                 } else {
                     Ok(Typed { e: Expr::Quantity(self.integ_quantity(q)), ty: Ty::Real })
                 }
+            }
+            "reference" | "contribution" => {
+                let (t, nature) = self.terminal(sc, prefix)?;
+                let which = if name == "reference" { "reference" } else { "contribution" };
+                let q = self.terminal_quantity(t, nature, which, span);
+                Ok(Typed { e: Expr::Quantity(q), ty: Ty::Real })
             }
             "above" => {
                 let p = self.expr(sc, prefix, None)?;
@@ -260,6 +266,109 @@ impl<'a> Elab<'a> {
                 format!("the attribute `'{name}`"),
                 "supported: 'dot 'integ 'above 'delayed 'ltf 'zoh 'ztf 'ramp 'slew 'event 'active 'last_value 'last_event 'image 'value 'tolerance 'high 'low 'left 'right 'length 'range 'pos 'val 'succ 'pred 'leftof 'rightof",
             ))),
+        }
+    }
+
+    /// The quantity of `T'reference` (the across quantity from `T` to its nature's reference
+    /// terminal) or `T'contribution` (a through quantity: the sum of the through quantities
+    /// of the branches at `T` in the region that reads it and below, those leaving `T`
+    /// positive; LRM 1076.1 14.1), one per terminal and attribute.
+    fn terminal_quantity(
+        &mut self,
+        t: crate::design::TerminalId,
+        nature: usize,
+        name: &'static str,
+        span: Span,
+    ) -> crate::design::QuantityId {
+        // A contribution depends on the region that reads it; a reference does not (its key,
+        // `'`, is no instance path).
+        let region = if name == "reference" {
+            "'".to_string()
+        } else {
+            self.instance.clone()
+        };
+        if let Some(&q) = self.terminal_attrs.get(&(t, region.clone())) {
+            return q;
+        }
+        let terminal = self.design.terminals[t.index()].name.clone();
+        let q = if name == "reference" {
+            let minus = self.reference_terminal(nature);
+            let sub = self.natures[nature].across.clone();
+            let kind = crate::design::QuantityKind::Across { plus: t, minus };
+            // Named after the terminal, wherever it is read.
+            let saved = std::mem::take(&mut self.path);
+            let q = self.new_quantity(
+                &format!("{terminal}'reference"),
+                kind,
+                &sub,
+                None,
+                None,
+                span,
+            );
+            self.path = saved;
+            q
+        } else {
+            let sub = self.natures[nature].through.clone();
+            let kind = crate::design::QuantityKind::Free;
+            let qname = match region.is_empty() {
+                true => format!("{terminal}'contribution"),
+                false => format!("{region}.{terminal}'contribution"),
+            };
+            let saved = std::mem::take(&mut self.path);
+            let q = self.new_quantity(&qname, kind, &sub, None, None, span);
+            self.path = saved;
+            self.contributions.push((q, t, region.clone(), span));
+            q
+        };
+        self.terminal_attrs.insert((t, region), q);
+        q
+    }
+
+    /// The equation of each `T'contribution`: `T'contribution == sum of the through
+    /// quantities at T` declared in its instance and below (plus where `T` is the plus
+    /// terminal, minus where it is the minus one).
+    pub(super) fn contribution_equations(&mut self) {
+        use crate::design::{BinaryOp, QuantityKind};
+        for (q, t, instance, span) in std::mem::take(&mut self.contributions) {
+            let inside = |name: &str| {
+                instance.is_empty()
+                    || name
+                        .strip_prefix(instance.as_str())
+                        .is_some_and(|rest| rest.starts_with('.'))
+            };
+            let mut sum = Expr::Quantity(q);
+            let mut terms = Vec::new();
+            for (k, quantity) in self.design.quantities.iter().enumerate() {
+                let QuantityKind::Through { plus, minus } = quantity.kind else {
+                    continue;
+                };
+                if plus == minus || !inside(&quantity.name) {
+                    continue;
+                }
+                let op = if plus == t {
+                    BinaryOp::Sub
+                } else if minus == t {
+                    BinaryOp::Add
+                } else {
+                    continue;
+                };
+                let id = crate::design::QuantityId(k as u32);
+                sum = Expr::Binary(op, Box::new(sum), Box::new(Expr::Quantity(id)));
+                terms.push(format!(
+                    "{} {}",
+                    if op == BinaryOp::Sub { "+" } else { "-" },
+                    quantity.name
+                ));
+            }
+            let name = self.design.quantities[q.index()].name.clone();
+            let rhs = if terms.is_empty() {
+                "0.0".to_string()
+            } else {
+                terms.join(" ").trim_start_matches("+ ").to_string()
+            };
+            let saved = std::mem::replace(&mut self.instance, instance);
+            self.generated_equation(sum, span, format!("{name} == {rhs}"));
+            self.instance = saved;
         }
     }
 
