@@ -387,6 +387,58 @@ pub enum Value {
     Array(Vec<Value>),
 }
 
+/// `a sll n` and the other shifts and rotations of LRM 7.2.3 on the elements of a
+/// one-dimensional array of bit or boolean, positions counted from the left: `sll` moves
+/// elements left and fills with `T'left` (`'0'`, `false`), `sla` fills with the rightmost
+/// element, `rol` rotates; a negative count is the opposite operation by `-n`. (Also what
+/// elaboration folds constant shifts with.)
+pub fn shifted(op: BinaryOp, items: &[Value], n: i64) -> Value {
+    use BinaryOp::*;
+    let len = items.len();
+    if len == 0 {
+        return Value::Array(Vec::new());
+    }
+    let (op, n) = match (op, n < 0) {
+        (op, false) => (op, n.unsigned_abs()),
+        (Sll, true) => (Srl, n.unsigned_abs()),
+        (Srl, true) => (Sll, n.unsigned_abs()),
+        (Sla, true) => (Sra, n.unsigned_abs()),
+        (Sra, true) => (Sla, n.unsigned_abs()),
+        (Rol, true) => (Ror, n.unsigned_abs()),
+        (_, true) => (Rol, n.unsigned_abs()),
+    };
+    // Counts beyond the length shift everything out (rotations wrap).
+    let k = usize::try_from(n).unwrap_or(usize::MAX).min(len);
+    let fill = |v: &Value| match v {
+        Value::Boolean(_) => Value::Boolean(false),
+        _ => Value::Enum(0),
+    };
+    let mut out = items.to_vec();
+    match op {
+        Rol => out.rotate_left((n % len as u64) as usize),
+        Ror => out.rotate_right((n % len as u64) as usize),
+        Sll | Sla => {
+            let f = if op == Sla {
+                items[len - 1].clone()
+            } else {
+                fill(&items[0])
+            };
+            out.drain(..k);
+            out.extend(std::iter::repeat_n(f, k));
+        }
+        _ => {
+            let f = if op == Sra {
+                items[0].clone()
+            } else {
+                fill(&items[0])
+            };
+            out.truncate(len - k);
+            out.splice(0..0, std::iter::repeat_n(f, k));
+        }
+    }
+    Value::Array(out)
+}
+
 /// The value of an array aggregate from its elements in index order: a [`Value::String`]
 /// for a character array (`string`), else a [`Value::Array`].
 pub fn aggregate_value(elems: Vec<Value>, string: bool) -> Value {

@@ -721,9 +721,20 @@ impl<'a> Elab<'a> {
                 | BinaryOp::Mod
                 | BinaryOp::Rem
         );
-        let hint = if arith || is_logical(bop) { want } else { None };
+        let mut hint = if arith || is_logical(bop) { want } else { None };
+        // `B"10001010" sll 3`: a literal shifted with no type from the context is a
+        // bit_vector, the one predefined shift operand a bit-string literal can be (shifts
+        // apply to one-dimensional arrays of bit and boolean, LRM 7.2.3).
+        let bits;
+        if bop.is_shift() && context_typed(l) {
+            bits = match want {
+                Some(t @ Ty::Array(_)) => Some(t.clone()),
+                _ => self.standard_type("bit_vector"),
+            };
+            hint = bits.as_ref();
+        }
         // A context-typed left operand (`now - t`, `'1' = b`) takes its type from the right.
-        let (lt, rt) = if context_typed(l) && !context_typed(r) {
+        let (lt, rt) = if context_typed(l) && !context_typed(r) && !bop.is_shift() {
             let rt = self.expr(sc, r, hint);
             let lt = self.expr(sc, l, rt.as_ref().ok().map(|t| &t.ty).or(hint));
             (lt?, rt?)
@@ -752,6 +763,11 @@ impl<'a> Elab<'a> {
         // The operator function analysis chose (an explicit `"="` of numeric_std hides the
         // predefined one, LRM 10.3); the predefined operator otherwise.
         if let Some(r) = self.user_operator(sc, vec![lt.clone(), rt.clone()], span) {
+            return r;
+        }
+        if bop == BinaryOp::Concat
+            && let Some(r) = self.element_concat(&lt, &rt, want, span)
+        {
             return r;
         }
         let ty = match result_type(bop, &lt.ty, &rt.ty) {
@@ -783,6 +799,40 @@ impl<'a> Elab<'a> {
             return self.folded(Expr::Call(Builtin::ToInteger, vec![product]), ty, span);
         }
         self.folded(Expr::Binary(bop, Box::new(lt.e), Box::new(rt.e)), ty, span)
+    }
+
+    /// `'a' & 'b'` and `'1' & '0'`: two elements joined into an array of them, the array the
+    /// context wants, else `string` of characters and `bit_vector` of bits (LRM 7.2.4; the
+    /// comparison `'a' & 'b' = "ab"` gives no other context).
+    fn element_concat(
+        &mut self,
+        lt: &Typed,
+        rt: &Typed,
+        want: Option<&Ty>,
+        span: Span,
+    ) -> Option<R<Typed>> {
+        if matches!(lt.ty, Ty::Array(_)) || matches!(rt.ty, Ty::Array(_)) || !lt.ty.same(&rt.ty) {
+            return None;
+        }
+        let array = match want {
+            Some(t @ Ty::Array(a)) if a.element.same(&lt.ty) => t.clone(),
+            _ if lt.ty.is_enum_named("character") => self.standard_type("string")?,
+            _ if lt.ty.is_enum_named("bit") => self.standard_type("bit_vector")?,
+            _ => return None,
+        };
+        let Ty::Array(a) = &array else {
+            return None;
+        };
+        let ty = a.with_bounds(None);
+        // Characters join into a string value: `"" & 'a'` is one.
+        let left = if lt.ty.is_enum_named("character") {
+            let empty = Box::new(Expr::Const(Value::String(String::new())));
+            Expr::Binary(BinaryOp::Concat, empty, Box::new(lt.e.clone()))
+        } else {
+            lt.e.clone()
+        };
+        let e = Expr::Binary(BinaryOp::Concat, Box::new(left), Box::new(rt.e.clone()));
+        Some(self.folded(e, ty, span))
     }
 
     /// A call of one of `subs` (overloads of one name).

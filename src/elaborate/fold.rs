@@ -232,6 +232,7 @@ fn binary(op: BinaryOp, a: Value, b: Value) -> Result<Value, NoFold> {
         (Integer(x), Time(y)) if op == BinaryOp::Mul => Time(x as f64 * y),
         (Boolean(x), Boolean(y)) => Boolean(logic(op, x, y)?),
         (Enum(x), Enum(y)) => Enum(u32::from(logic(op, x != 0, y != 0)?)),
+        (Array(items), Integer(n)) if op.is_shift() => crate::design::shifted(op, &items, n),
         _ => return err("operand types not supported by the operator"),
     })
 }

@@ -110,58 +110,12 @@ pub(crate) fn binary(op: BinaryOp, a: Value, b: Value) -> Result<Value, EvalErro
     }
 }
 
-/// `a sll n` and the other shifts and rotations of LRM 7.2.3, element positions counted
-/// from the left: `sll` moves elements left and fills with `T'left` (`'0'`, `false`), `sla`
-/// fills with the rightmost element, `rol` rotates; a negative count is the opposite
-/// operation by `-n`.
+/// `a sll n` and the other shifts and rotations ([`crate::design::shifted`]).
 fn shift(op: BinaryOp, a: Value, b: Value) -> Result<Value, EvalError> {
-    use BinaryOp::*;
-    let (Value::Array(items), Value::Integer(n)) = (&a, &b) else {
-        return Err(mismatch(&format!("{op:?}"), &a, &b));
-    };
-    let len = items.len();
-    if len == 0 {
-        return Ok(a);
+    match (&a, &b) {
+        (Value::Array(items), Value::Integer(n)) => Ok(crate::design::shifted(op, items, *n)),
+        _ => Err(mismatch(&format!("{op:?}"), &a, &b)),
     }
-    let (op, n) = match (op, *n < 0) {
-        (op, false) => (op, n.unsigned_abs()),
-        (Sll, true) => (Srl, n.unsigned_abs()),
-        (Srl, true) => (Sll, n.unsigned_abs()),
-        (Sla, true) => (Sra, n.unsigned_abs()),
-        (Sra, true) => (Sla, n.unsigned_abs()),
-        (Rol, true) => (Ror, n.unsigned_abs()),
-        (_, true) => (Rol, n.unsigned_abs()),
-    };
-    // Counts beyond the length shift everything out (rotations wrap).
-    let k = usize::try_from(n).unwrap_or(usize::MAX).min(len);
-    let fill = |v: &Value| match v {
-        Value::Boolean(_) => Value::Boolean(false),
-        _ => Value::Enum(0),
-    };
-    let mut out = items.clone();
-    match op {
-        Rol => out.rotate_left((n % len as u64) as usize),
-        Ror => out.rotate_right((n % len as u64) as usize),
-        Sll | Sla => {
-            let f = if op == Sla {
-                items[len - 1].clone()
-            } else {
-                fill(&items[0])
-            };
-            out.drain(..k);
-            out.extend(std::iter::repeat_n(f, k));
-        }
-        _ => {
-            let f = if op == Sra {
-                items[0].clone()
-            } else {
-                fill(&items[0])
-            };
-            out.truncate(len - k);
-            out.splice(0..0, std::iter::repeat_n(f, k));
-        }
-    }
-    Ok(Value::Array(out))
 }
 
 fn arithmetic(op: BinaryOp, a: Value, b: Value) -> Result<Value, EvalError> {
@@ -335,6 +289,8 @@ fn concat(a: Value, b: Value) -> Result<Value, EvalError> {
             y.insert(0, e);
             Array(y)
         }
+        // Two elements (`'1' & b`, a bit_vector; characters come as `"" & c & d`).
+        (a @ (Enum(_) | Boolean(_)), b @ (Enum(_) | Boolean(_))) => Array(vec![a, b]),
         (a, b) => return Err(mismatch("&", &a, &b)),
     })
 }
