@@ -243,7 +243,7 @@ impl<'a> Elab<'a> {
                 name,
                 subtype,
                 target,
-                signature,
+                signature: _,
             } => {
                 let mut items = self.lookup(sc, target)?;
                 if let Some(si) = subtype {
@@ -256,15 +256,15 @@ impl<'a> Elab<'a> {
                 }
                 let operator = matches!(&target.kind,
                     ast::ExprKind::Name(id) | ast::ExprKind::Selected(_, id) if id.name.starts_with('"'));
-                if signature.is_some()
-                    && operator
-                    && !matches!(items.first(), Some(Item::Subprogram(_)))
-                {
-                    return Err(self.error(ElabError::unsupported(
-                        name.span,
-                        "an alias of a predefined operator",
-                        "write the operator itself, or a function that applies it",
-                    )));
+                if operator && !matches!(items.first(), Some(Item::Subprogram(_))) {
+                    // A predefined operator has no subprogram to alias: the alias stands for
+                    // its symbol, which the operator applications and calls it names lower.
+                    let (ast::ExprKind::Name(id) | ast::ExprKind::Selected(_, id)) = &target.kind
+                    else {
+                        return Err(super::Reported);
+                    };
+                    let symbol = id.name.trim_matches('"');
+                    items = vec![Item::OperatorAlias(symbol.into())];
                 }
                 for item in items {
                     if !sc.declare_at(&name.name, name.span, item) {

@@ -302,15 +302,23 @@ impl<'a> Elab<'a> {
             }
             ExprKind::Aggregate(elems) => self.aggregate(sc, elems, e.span, want),
             ExprKind::Unary(op, a) => {
+                let op = self
+                    .aliased_operator(sc, e.span)
+                    .map_or(*op, |(u, _)| u.unwrap_or(*op));
                 let a = self.expr(sc, a, want)?;
                 // The operator function analysis chose (`-a` of numeric_std's signed, `not`
                 // of std_logic), else the predefined one.
                 if let Some(r) = self.user_operator(sc, vec![a.clone()], e.span) {
                     return r;
                 }
-                self.unary(*op, a, e.span)
+                self.unary(op, a, e.span)
             }
-            ExprKind::Binary(op, l, r) => self.binary(sc, *op, l, r, e.span, want),
+            ExprKind::Binary(op, l, r) => {
+                let op = self
+                    .aliased_operator(sc, e.span)
+                    .map_or(*op, |(_, b)| b.unwrap_or(*op));
+                self.binary(sc, op, l, r, e.span, want)
+            }
             ExprKind::Attribute(prefix, attr) => {
                 self.attribute(sc, prefix, attr, &[], e.span, want)
             }
@@ -402,10 +410,15 @@ impl<'a> Elab<'a> {
         let ExprKind::Name(id) = &prefix.kind else {
             return None;
         };
-        let symbol = id.name.strip_prefix('"')?.strip_suffix('"')?;
-        if matches!(self.resolved_item(sc, id), Some(Item::Subprogram(_))) {
-            return None;
-        }
+        let alias = match self.resolved_item(sc, id) {
+            Some(Item::Subprogram(_)) => return None,
+            Some(Item::OperatorAlias(symbol)) => Some(symbol),
+            _ => None,
+        };
+        let symbol = match &alias {
+            Some(symbol) => symbol,
+            None => id.name.strip_prefix('"')?.strip_suffix('"')?,
+        };
         let operand = |a: &ast::Assoc| match a {
             ast::Assoc {
                 actual: ast::Actual::Expr(x),
@@ -423,6 +436,27 @@ impl<'a> Elab<'a> {
             _ => return None,
         };
         Some(ast::Expr { kind, span })
+    }
+
+    /// The operator an application at `span` applies when analysis resolved it to an alias of
+    /// a predefined operator (`a * b` with `alias "*" is "and" [...]`): as a unary and as a
+    /// binary operator.
+    fn aliased_operator(
+        &self,
+        sc: &Scope<'a>,
+        span: Span,
+    ) -> Option<(Option<ast::UnaryOp>, Option<ast::BinaryOp>)> {
+        let decl = self.resolved.get(&span)?;
+        let Item::OperatorAlias(symbol) = sc
+            .declared(*decl)
+            .or_else(|| self.package_decls.get(decl))?
+        else {
+            return None;
+        };
+        Some((
+            ast::UnaryOp::from_symbol(symbol),
+            ast::BinaryOp::from_symbol(symbol),
+        ))
     }
 
     /// Lowers `e` and checks that its type is `ty`.

@@ -95,6 +95,9 @@ pub enum Item<'a> {
     /// unsupported construct): the reason, reported where it is used (`None`: the declaration's
     /// own error was reported already).
     Poison(Option<Rc<str>>),
+    /// An alias of a predefined operator (`alias "*" is "and" [bit, bit return bit];`): the
+    /// operator's symbol, without quotes.
+    OperatorAlias(Rc<str>),
 }
 
 /// One selection from a composite value, outermost first in a path.
@@ -176,6 +179,7 @@ impl<'a> Item<'a> {
             Item::Component(_) => "a component",
             Item::Binding(_) => "a configuration specification",
             Item::Attribute => "an attribute",
+            Item::OperatorAlias(_) => "an operator",
             Item::Poison(_) => "an unsupported declaration",
         }
     }
