@@ -1402,11 +1402,26 @@ impl<'a> Elab<'a> {
         sc: &Scope<'a>,
         target: &ast::Expr,
     ) -> R<(Expr, Option<Instr>)> {
-        let Some(&guard) = self.guards.last() else {
-            return Err(self.error(ElabError::unsupported(
+        // The guard is the signal named GUARD visible here (LRM 9.5): a guarded block's
+        // implicit one, or a boolean signal the model declares with that name (a block that
+        // drives its own `guard <= false;`).
+        let declared = || match sc.lookup("guard") {
+            Some(
+                [
+                    Item::Signal {
+                        id,
+                        ty: Ty::Boolean,
+                    },
+                    ..,
+                ],
+            ) => Some(*id),
+            _ => None,
+        };
+        let Some(guard) = self.guards.last().copied().or_else(declared) else {
+            return Err(self.error(ElabError::invalid(
                 target.span,
-                "a guarded assignment outside a guarded block",
-                "put it in a block with a guard expression: `b : block (en = '1') is begin ... end block;`",
+                "a guarded assignment needs a signal named GUARD",
+                Some("put it in a block with a guard expression, `b : block (en = '1') is begin ... end block;`, or declare `signal guard : boolean;`".into()),
             )));
         };
         let targets = match &target.kind {
