@@ -30,9 +30,13 @@ type Slots<'e> = Vec<Option<&'e ast::Expr>>;
 /// too many actuals, a parameter without actual or default).
 fn bind<'e>(sub: &Subprogram<'_>, args: &'e [ast::Assoc]) -> Option<Slots<'e>> {
     let mut slots: Slots<'e> = vec![None; sub.params.len()];
+    let mut taken = vec![false; sub.params.len()];
     for (k, a) in args.iter().enumerate() {
-        let Actual::Expr(actual) = &a.actual else {
-            return None;
+        // `open` leaves the parameter to its default (LRM 2.1.1).
+        let actual = match &a.actual {
+            Actual::Expr(actual) => Some(actual),
+            Actual::Open(_) => None,
+            _ => return None,
         };
         let slot = match &a.formal {
             Some(f) => match &f.kind {
@@ -41,10 +45,11 @@ fn bind<'e>(sub: &Subprogram<'_>, args: &'e [ast::Assoc]) -> Option<Slots<'e>> {
             },
             None => k,
         };
-        if slot >= slots.len() || slots[slot].is_some() {
+        if slot >= slots.len() || taken[slot] {
             return None;
         }
-        slots[slot] = Some(actual);
+        taken[slot] = true;
+        slots[slot] = actual;
     }
     let complete = slots
         .iter()
