@@ -147,6 +147,11 @@ impl<'a> Elab<'a> {
     /// An end of a branch: one terminal, or the elements of a terminal array with its
     /// `(left, ascending)`, and the (element) nature.
     fn branch_end(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<BranchEnd> {
+        if let Some(slice) = self.terminal_slice(sc, e) {
+            let (elements, nature) = slice?;
+            let bounds = (elements.left, elements.ascending);
+            return Ok((elements.ids.clone(), nature, Some(bounds)));
+        }
         if let ast::ExprKind::Name(id) | ast::ExprKind::Selected(_, id) = &e.kind
             && let Some(Item::TerminalArray { elements, nature }) = self.resolved_item(sc, id)
         {

@@ -405,6 +405,83 @@ impl<'a> Elab<'a> {
         self.element(elements, index, index_span)
     }
 
+    /// `n(1 to 2)` where `n` is a terminal array, with a static range in `n`'s direction:
+    /// the slice's elements and their nature. `None` when `e` is no slice of a terminal
+    /// array.
+    pub(super) fn terminal_slice(
+        &mut self,
+        sc: &Scope<'a>,
+        e: &ast::Expr,
+    ) -> Option<R<(Rc<Elements<TerminalId>>, usize)>> {
+        let ast::ExprKind::Apply(prefix, args) = &e.kind else {
+            return None;
+        };
+        let [
+            ast::Assoc {
+                formal: None,
+                actual: Actual::Range(range),
+                ..
+            },
+        ] = args.as_slice()
+        else {
+            return None;
+        };
+        let (ast::ExprKind::Name(id) | ast::ExprKind::Selected(_, id)) = &prefix.kind else {
+            return None;
+        };
+        let Some(Item::TerminalArray { elements, nature }) = self.resolved_item(sc, id) else {
+            return None;
+        };
+        Some(
+            self.slice_elements(sc, &elements, range, e.span)
+                .map(|s| (s, nature)),
+        )
+    }
+
+    /// The elements of `elements` in the static `range` (which runs in their direction).
+    fn slice_elements<T: Copy>(
+        &mut self,
+        sc: &Scope<'a>,
+        elements: &Elements<T>,
+        range: &ast::Range,
+        span: Span,
+    ) -> R<Rc<Elements<T>>> {
+        let (left, right, ascending) = self.range_bounds(sc, range)?;
+        let null = if ascending {
+            left > right
+        } else {
+            left < right
+        };
+        if !null && ascending != elements.ascending && elements.ids.len() > 1 {
+            return Err(self.error(ElabError::invalid(
+                span,
+                "this slice runs against its array's direction",
+                Some(format!(
+                    "`{}` is indexed {}",
+                    elements.name,
+                    elements.range_text()
+                )),
+            )));
+        }
+        let mut ids = Vec::new();
+        if !null {
+            // Both ends inside the array before any element is collected.
+            for end in [left, right] {
+                self.element(elements, end, span)?;
+            }
+            ids = indexes((left, right, ascending))
+                .into_iter()
+                .filter_map(|i| elements.get(i))
+                .collect();
+        }
+        Ok(Rc::new(Elements {
+            name: self.sources.snippet(span).to_string(),
+            left,
+            ascending,
+            ids,
+        }))
+    }
+
     /// A terminal port of an array nature: the actual's elements (whole-array association,
     /// matched by position), or fresh terminals when it is open.
     pub(super) fn terminal_array_port(
@@ -421,7 +498,13 @@ impl<'a> Elab<'a> {
                 nature: nature.element,
             });
         };
-        let items = self.lookup(parent, e)?;
+        let items = match self.terminal_slice(parent, e) {
+            Some(slice) => {
+                let (elements, nature) = slice?;
+                vec![Item::TerminalArray { elements, nature }]
+            }
+            None => self.lookup(parent, e)?,
+        };
         let Item::TerminalArray {
             elements: actual,
             nature: actual_nature,
