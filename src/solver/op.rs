@@ -112,13 +112,21 @@ pub fn operating_point<S: DaeSystem + ?Sized>(
         zeros: vec![0.0; n],
         gmin: 0.0,
     };
-    let mut attempt = |p: &mut OpProblem<'_, S>, x: &mut [f64], report: &mut OpReport| {
+    // One Newton solve from `x` with the given options (the damped ones but for the last
+    // stage), its totals so far in `report`.
+    let mut solve = |p: &mut OpProblem<'_, S>,
+                     x: &mut [f64],
+                     report: &mut OpReport,
+                     newton_options: &NewtonOptions| {
         newton.invalidate_jacobian();
-        let r = newton.solve(p, x, tol, &options.newton, t);
+        let r = newton.solve(p, x, tol, newton_options, t);
         let totals = newton.totals();
         report.newton_iterations = totals.iterations;
         report.factorizations = totals.factorizations;
         r.map(|_| ())
+    };
+    let mut attempt = |p: &mut OpProblem<'_, S>, x: &mut [f64], report: &mut OpReport| {
+        solve(p, x, report, &options.newton)
     };
 
     match attempt(&mut p, x, &mut report) {
@@ -208,12 +216,7 @@ pub fn operating_point<S: DaeSystem + ?Sized>(
         max_iter: 4 * options.newton.max_iter,
         ..options.newton
     };
-    newton.invalidate_jacobian();
-    let r = newton.solve(&mut p, x, tol, &full, t);
-    let totals = newton.totals();
-    report.newton_iterations = totals.iterations;
-    report.factorizations = totals.factorizations;
-    if r.is_ok() && x.iter().all(|v| v.is_finite()) {
+    if solve(&mut p, x, &mut report, &full).is_ok() && x.iter().all(|v| v.is_finite()) {
         report.strategy = OpStrategy::FullSteps;
         return Ok(report);
     }
