@@ -119,7 +119,12 @@ impl<'a> Elab<'a> {
     /// analysis could not resolve to one declaration, such as an overloaded name without
     /// context, or a declaration elaboration could not build).
     pub(super) fn resolved_item(&self, sc: &Scope<'a>, id: &ast::Ident) -> Option<Item<'a>> {
-        let decl = self.resolved.get(&id.span)?;
+        self.resolved_at(sc, id.span)
+    }
+
+    /// [`Elab::resolved_item`] of the name or operator application at `span`.
+    pub(super) fn resolved_at(&self, sc: &Scope<'a>, span: Span) -> Option<Item<'a>> {
+        let decl = self.resolved.get(&span)?;
         let item = sc
             .declared(*decl)
             .or_else(|| self.package_decls.get(decl))?;
@@ -446,16 +451,12 @@ impl<'a> Elab<'a> {
         sc: &Scope<'a>,
         span: Span,
     ) -> Option<(Option<ast::UnaryOp>, Option<ast::BinaryOp>)> {
-        let decl = self.resolved.get(&span)?;
-        let Item::OperatorAlias(symbol) = sc
-            .declared(*decl)
-            .or_else(|| self.package_decls.get(decl))?
-        else {
+        let Item::OperatorAlias(symbol) = self.resolved_at(sc, span)? else {
             return None;
         };
         Some((
-            ast::UnaryOp::from_symbol(symbol),
-            ast::BinaryOp::from_symbol(symbol),
+            ast::UnaryOp::from_symbol(&symbol),
+            ast::BinaryOp::from_symbol(&symbol),
         ))
     }
 

@@ -665,17 +665,13 @@ impl<'a> Elab<'a> {
     ) -> Option<R<Typed>> {
         // The operator function analysis chose for this application; none when it is a
         // predefined operator (whose "declaration" is its type's).
-        let decl = self.resolved.get(&span)?;
-        let sub = match sc
-            .declared(*decl)
-            .or_else(|| self.package_decls.get(decl))?
-        {
+        let sub = match self.resolved_at(sc, span)? {
             Item::Subprogram(s)
                 if s.ret.is_some()
                     && s.params.len() == operands.len()
                     && s.params.iter().all(|p| !p.is_signal) =>
             {
-                s.clone()
+                s
             }
             _ => return None,
         };
