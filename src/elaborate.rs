@@ -203,9 +203,9 @@ struct Elab<'a> {
     guards: Vec<SignalId>,
     /// Auxiliary quantities of `Q'dot'dot` and `Q'integ`, by the quantity they derive from.
     dot_aux: FxHashMap<QuantityId, QuantityId>,
-    /// `T'reference` quantities, one per terminal (key `'`), and `T'contribution` ones, one
+    /// `T'reference` quantities, one per terminal (no region), and `T'contribution` ones, one
     /// per terminal and instance path.
-    terminal_attrs: FxHashMap<(crate::design::TerminalId, String), QuantityId>,
+    terminal_attrs: FxHashMap<(crate::design::TerminalId, Option<String>), QuantityId>,
     /// Each `T'contribution` with its terminal and the instance path it was read in: its
     /// equation sums the through quantities at `T` declared there and below, once every
     /// branch is known (`Elab::contribution_equations`).

@@ -66,8 +66,7 @@ impl<'a> Elab<'a> {
             }
             "reference" | "contribution" => {
                 let (t, nature) = self.terminal(sc, prefix)?;
-                let which = if name == "reference" { "reference" } else { "contribution" };
-                let q = self.terminal_quantity(t, nature, which, span);
+                let q = self.terminal_quantity(t, nature, name == "contribution", span);
                 Ok(Typed { e: Expr::Quantity(q), ty: Ty::Real })
             }
             "above" => {
@@ -270,56 +269,45 @@ impl<'a> Elab<'a> {
     }
 
     /// The quantity of `T'reference` (the across quantity from `T` to its nature's reference
-    /// terminal) or `T'contribution` (a through quantity: the sum of the through quantities
-    /// of the branches at `T` in the region that reads it and below, those leaving `T`
-    /// positive; LRM 1076.1 14.1), one per terminal and attribute.
+    /// terminal) or, with `contribution`, of `T'contribution` (a through quantity: the sum of
+    /// the through quantities of the branches at `T` in the region that reads it and below,
+    /// those leaving `T` positive; LRM 1076.1 14.1): one per terminal, and for a contribution
+    /// per region too.
     fn terminal_quantity(
         &mut self,
         t: crate::design::TerminalId,
         nature: usize,
-        name: &'static str,
+        contribution: bool,
         span: Span,
     ) -> crate::design::QuantityId {
-        // A contribution depends on the region that reads it; a reference does not (its key,
-        // `'`, is no instance path).
-        let region = if name == "reference" {
-            "'".to_string()
-        } else {
-            self.instance.clone()
-        };
+        let region = contribution.then(|| self.instance.clone());
         if let Some(&q) = self.terminal_attrs.get(&(t, region.clone())) {
             return q;
         }
         let terminal = self.design.terminals[t.index()].name.clone();
-        let q = if name == "reference" {
-            let minus = self.reference_terminal(nature);
-            let sub = self.natures[nature].across.clone();
-            let kind = crate::design::QuantityKind::Across { plus: t, minus };
-            // Named after the terminal, wherever it is read.
-            let saved = std::mem::take(&mut self.path);
-            let q = self.new_quantity(
-                &format!("{terminal}'reference"),
-                kind,
-                &sub,
-                None,
-                None,
-                span,
-            );
-            self.path = saved;
-            q
-        } else {
-            let sub = self.natures[nature].through.clone();
-            let kind = crate::design::QuantityKind::Free;
-            let qname = match region.is_empty() {
-                true => format!("{terminal}'contribution"),
-                false => format!("{region}.{terminal}'contribution"),
-            };
-            let saved = std::mem::take(&mut self.path);
-            let q = self.new_quantity(&qname, kind, &sub, None, None, span);
-            self.path = saved;
-            self.contributions.push((q, t, region.clone(), span));
-            q
+        let (name, kind, sub) = match &region {
+            None => {
+                let minus = self.reference_terminal(nature);
+                let kind = crate::design::QuantityKind::Across { plus: t, minus };
+                let name = format!("{terminal}'reference");
+                (name, kind, self.natures[nature].across.clone())
+            }
+            Some(region) => {
+                let name = match region.is_empty() {
+                    true => format!("{terminal}'contribution"),
+                    false => format!("{region}.{terminal}'contribution"),
+                };
+                let kind = crate::design::QuantityKind::Free;
+                (name, kind, self.natures[nature].through.clone())
+            }
         };
+        // Named after the terminal (and the region), wherever it is read.
+        let saved = std::mem::take(&mut self.path);
+        let q = self.new_quantity(&name, kind, &sub, None, None, span);
+        self.path = saved;
+        if let Some(region) = &region {
+            self.contributions.push((q, t, region.clone(), span));
+        }
         self.terminal_attrs.insert((t, region), q);
         q
     }
