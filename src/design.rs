@@ -72,6 +72,83 @@ pub struct Design {
     pub subprograms: Vec<Subprogram>,
     /// `Q'delayed(T)` lines: each defines its output quantity from the input's history.
     pub delays: Vec<Delay>,
+    /// File objects (`file f : text open write_mode is "log.txt";`), by the number a
+    /// [`Value::File`] holds.
+    pub files: Vec<FileObject>,
+}
+
+/// A file object of the design: its name for messages, and the file it is opened on at the
+/// start of the simulation (LRM 4.3.1.4), if its declaration says one.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FileObject {
+    pub name: String,
+    /// The object's declaration.
+    pub span: Span,
+    pub open: Option<(String, FileMode)>,
+}
+
+/// `std.standard.file_open_kind`, by position.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FileMode {
+    Read,
+    Write,
+    Append,
+}
+
+impl FileMode {
+    /// The mode a `file_open_kind` value's position names.
+    pub fn from_position(p: u32) -> Option<FileMode> {
+        Some(match p {
+            0 => FileMode::Read,
+            1 => FileMode::Write,
+            2 => FileMode::Append,
+            _ => return None,
+        })
+    }
+}
+
+/// What a native procedure (`std.textio`'s, and the implicit ones of file and access
+/// types) does; its arguments are those of [`Instr::Native`], in parameter order.
+#[derive(Clone, Debug, PartialEq)]
+pub enum NativeProc {
+    /// `readline(f, l)`.
+    ReadLine,
+    /// `writeline(f, l)`.
+    WriteLine,
+    /// `read(l, value [, good])` of a value of type `ty`; `good` says whether the call has
+    /// the `good` parameter (without it a failed read is an error).
+    Read {
+        ty: Type,
+        good: bool,
+    },
+    /// `write(l, value, justified, field [, digits | unit])`.
+    Write {
+        ty: Type,
+    },
+    /// `hread` / `oread` (`bits` 4 or 3 a digit).
+    ReadDigits {
+        bits: u32,
+        good: bool,
+    },
+    /// `hwrite` / `owrite`.
+    WriteDigits {
+        bits: u32,
+    },
+    /// `file_open([status,] f, name, kind)`.
+    FileOpen {
+        status: bool,
+    },
+    FileClose,
+    /// `read(f, value)` of a file of `ty` (not `text`): one element per line of the file.
+    FileRead {
+        ty: Type,
+    },
+    /// `write(f, value)` of a file of `ty`.
+    FileWrite {
+        ty: Type,
+    },
+    /// `deallocate(p)`.
+    Deallocate,
 }
 
 impl Design {
@@ -357,6 +434,14 @@ pub enum Type {
         name: String,
         fields: Vec<(String, Type)>,
     },
+    /// An access type (its values are [`Value::Access`]).
+    Access {
+        name: String,
+    },
+    /// A file type (its objects are [`Value::File`]s).
+    File {
+        name: String,
+    },
 }
 
 impl Type {
@@ -385,6 +470,11 @@ pub enum Value {
     Enum(u32),
     String(String),
     Array(Vec<Value>),
+    /// An access value: the number of the object it designates on the simulation's heap,
+    /// 0 for `null`.
+    Access(u32),
+    /// A file object, by its index in [`Design::files`].
+    File(u32),
 }
 
 /// `a sll n` and the other shifts and rotations of LRM 7.2.3 on the elements of a
@@ -560,7 +650,7 @@ impl Value {
             Value::Integer(i) => Some(i as f64),
             Value::Boolean(b) => Some(if b { 1.0 } else { 0.0 }),
             Value::Enum(p) => Some(p as f64),
-            Value::String(_) | Value::Array(_) => None,
+            Value::String(_) | Value::Array(_) | Value::Access(_) | Value::File(_) => None,
         }
     }
 }
@@ -604,6 +694,12 @@ pub enum Expr {
     },
     /// A signal attribute (processes only).
     SignalAttr(SignalId, SignalAttr),
+    /// `new T'(value)`: a new object on the heap holding `value`; its access value.
+    New(Box<Expr>),
+    /// `p.all`: the object an access value designates.
+    Deref(Box<Expr>),
+    /// `endfile(f)`.
+    EndFile(Box<Expr>),
     /// A call of a user-defined function (processes only; equations get pure straight-line
     /// functions inlined): one argument per variable parameter. `signals` are the actuals of
     /// its signal parameters, kept for implicit sensitivity only.
@@ -951,6 +1047,20 @@ pub enum Instr {
     },
     /// Leave the subprogram (with the function's result).
     Return(Option<Expr>),
+    /// `p.all := value` (and `p.f := x`, as the whole object updated): the object access
+    /// value `pointer` designates gets `value`.
+    SetHeap {
+        pointer: Expr,
+        value: Expr,
+    },
+    /// A native procedure call: arguments in parameter order; on return argument `param` is
+    /// copied to variable `actual` for each of `copy_back` (the `out` and `inout` ones).
+    Native {
+        op: NativeProc,
+        args: Vec<Expr>,
+        copy_back: Vec<(usize, VarId)>,
+        span: Span,
+    },
 }
 
 impl Instr {
@@ -1001,7 +1111,11 @@ impl Instr {
                 reinit.iter().for_each(|r| f(&r.value));
                 when.iter().for_each(f);
             }
-            Instr::Call { args, .. } => args.iter().for_each(f),
+            Instr::Call { args, .. } | Instr::Native { args, .. } => args.iter().for_each(f),
+            Instr::SetHeap { pointer, value } => {
+                f(pointer);
+                f(value);
+            }
             Instr::Return(value) => value.iter().for_each(f),
             Instr::Jump(_) | Instr::Stop | Instr::Halt => {}
         }
@@ -1049,7 +1163,10 @@ impl Expr {
             | Expr::Image(..)
             | Expr::Aggregate { .. }
             | Expr::SignalAttr(..)
-            | Expr::FnCall { .. } => false,
+            | Expr::FnCall { .. }
+            | Expr::New(_)
+            | Expr::Deref(_)
+            | Expr::EndFile(_) => false,
             Expr::Unary(_, a) => a.is_analog(),
             Expr::Binary(op, a, b) => {
                 *op != BinaryOp::Concat && !op.is_shift() && a.is_analog() && b.is_analog()
@@ -1070,7 +1187,11 @@ impl Expr {
             | Expr::Var(_)
             | Expr::Now
             | Expr::SignalAttr(..) => {}
-            Expr::Unary(_, a) | Expr::Image(_, a) => a.visit(f),
+            Expr::Unary(_, a)
+            | Expr::Image(_, a)
+            | Expr::New(a)
+            | Expr::Deref(a)
+            | Expr::EndFile(a) => a.visit(f),
             Expr::Binary(_, a, b) => {
                 a.visit(f);
                 b.visit(f);
@@ -1106,6 +1227,9 @@ impl Expr {
             | Expr::Now
             | Expr::SignalAttr(..) => self.clone(),
             Expr::Unary(op, a) => Expr::Unary(*op, Box::new(f(a)?)),
+            Expr::New(a) => Expr::New(Box::new(f(a)?)),
+            Expr::Deref(a) => Expr::Deref(Box::new(f(a)?)),
+            Expr::EndFile(a) => Expr::EndFile(Box::new(f(a)?)),
             Expr::Binary(op, l, r) => Expr::Binary(*op, Box::new(f(l)?), Box::new(f(r)?)),
             Expr::Call(g, args) => Expr::Call(*g, args.iter().map(f).collect::<Result<_, _>>()?),
             Expr::FnCall { sub, args, signals } => Expr::FnCall {

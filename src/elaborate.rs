@@ -36,6 +36,7 @@ mod follow;
 mod generics;
 mod hier;
 mod inline;
+mod io;
 mod library;
 mod ltf;
 mod process;
@@ -171,6 +172,9 @@ struct Elab<'a> {
     lib: Library<'a>,
     design: Design,
     errors: Vec<ElabError>,
+    /// Incomplete type declarations (`type node;`) not completed yet: the name, the span of
+    /// its identifier, and the access types declared since that designate it.
+    incomplete: Vec<(String, Span, Vec<Rc<types::AccessTy>>)>,
     /// Packages elaborated so far, by unit index.
     packages: FxHashMap<usize, Rc<PackageScope<'a>>>,
     packages_in_progress: FxHashSet<usize>,
@@ -279,6 +283,7 @@ impl<'a> Elab<'a> {
             package_decls: FxHashMap::default(),
             design: Design::default(),
             errors: Vec::new(),
+            incomplete: Vec::new(),
             packages: FxHashMap::default(),
             packages_in_progress: FxHashSet::default(),
             unit_at: usize::MAX,

@@ -24,12 +24,14 @@ mod error;
 mod eval;
 mod events;
 mod image;
+mod io;
 mod ops;
 mod process;
 mod progress;
 mod record;
 mod signals;
 mod solve_error;
+mod textio;
 
 #[cfg(test)]
 mod tests;

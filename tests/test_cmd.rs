@@ -204,7 +204,9 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_declared_guard ... ok"))
         .stdout(contains("test tb_open_actuals ... ok"))
         .stdout(contains("test tb_terminal_slices ... ok"))
-        .stdout(contains("63 passed, 0 failed"));
+        .stdout(contains("test tb_textio_log ... ok"))
+        .stdout(contains("test tb_linked_list ... ok"))
+        .stdout(contains("65 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

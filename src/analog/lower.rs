@@ -65,6 +65,8 @@ pub fn lower(e: &Expr, slot_of: &dyn Fn(usize) -> usize) -> Result<Sym, NotAnalo
         Expr::Aggregate { .. } => return Err(NotAnalog("an aggregate of run-time values")),
         Expr::SignalAttr(..) => return Err(NotAnalog("a signal attribute")),
         Expr::FnCall { .. } => return Err(NotAnalog("a call of a user-defined function")),
+        Expr::New(_) | Expr::Deref(_) => return Err(NotAnalog("an access value")),
+        Expr::EndFile(_) => return Err(NotAnalog("a file")),
     })
 }
 

@@ -11,7 +11,7 @@ use crate::design::{Builtin, Signal, SignalId, SignalKind, Value};
 use super::arrays::NatureMark;
 use super::error::ElabError;
 use super::expr::constrain;
-use super::scope::{Item, Native, Scope};
+use super::scope::{IoNative, Item, Native, Scope};
 use super::types::{ArrayTy, EnumTy, RecordTy, Sub, Ty, position};
 use super::{Elab, R};
 
@@ -65,6 +65,14 @@ pub(super) fn native(name: &str, arity: usize, is_function: bool) -> Native {
         ("log2", 1) => return Native::Log2,
         ("log", 2) => return Native::LogBase,
         ("\"**\"", 2) => return Native::Pow,
+        ("readline", 2) if !is_function => return Native::Io(IoNative::ReadLine),
+        ("writeline", 2) if !is_function => return Native::Io(IoNative::WriteLine),
+        ("read", 2 | 3) if !is_function => return Native::Io(IoNative::Read),
+        ("write", 4 | 5) if !is_function => return Native::Io(IoNative::Write),
+        ("hread", 2 | 3) if !is_function => return Native::Io(IoNative::HRead),
+        ("oread", 2 | 3) if !is_function => return Native::Io(IoNative::ORead),
+        ("hwrite", 4) if !is_function => return Native::Io(IoNative::HWrite),
+        ("owrite", 4) if !is_function => return Native::Io(IoNative::OWrite),
         ("exp", 1) => Exp,
         ("log", 1) => Log,
         ("log10", 1) => Log10,
@@ -128,7 +136,12 @@ impl<'a> Elab<'a> {
         }
     }
 
-    fn declare(&mut self, sc: &mut Scope<'a>, name: &ast::Ident, item: Item<'a>) -> R<()> {
+    pub(super) fn declare(
+        &mut self,
+        sc: &mut Scope<'a>,
+        name: &ast::Ident,
+        item: Item<'a>,
+    ) -> R<()> {
         if sc.declare_at(&name.name, name.span, item) {
             Ok(())
         } else {
@@ -213,14 +226,31 @@ impl<'a> Elab<'a> {
                 "shared variables",
                 "declare variables inside a process",
             ))),
-            DeclKind::File { .. } => Err(self.error(ElabError::unsupported(
-                d.span,
-                "files",
-                "use `report` to print",
-            ))),
+            DeclKind::File {
+                names,
+                subtype,
+                open_kind,
+                logical_name,
+            } => self.file_decl(
+                sc,
+                names,
+                subtype,
+                open_kind.as_ref(),
+                logical_name.as_ref(),
+            ),
             DeclKind::Type { name, def } => match def {
-                None => Ok(()),
-                Some(def) => self.type_decl(sc, name, def, d),
+                // Completed by a later declaration of the same name; access types declared
+                // in between designate it (see `Elab::incomplete`).
+                None => {
+                    self.incomplete
+                        .push((name.name.clone(), name.span, Vec::new()));
+                    Ok(())
+                }
+                Some(def) => {
+                    self.type_decl(sc, name, def, d)?;
+                    self.complete(sc, name);
+                    Ok(())
+                }
             },
             DeclKind::Subtype { name, subtype } => {
                 let mut sub = (*self.subtype_indication(sc, subtype)?).clone();
@@ -547,16 +577,8 @@ impl<'a> Elab<'a> {
                 }));
                 self.declare(sc, name, Item::Type(Rc::new(Sub::of(ty, &name.name))))
             }
-            TypeDef::Access(_) => Err(self.error(ElabError::unsupported(
-                d.span,
-                "access types",
-                "use arrays or constants",
-            ))),
-            TypeDef::File(_) => Err(self.error(ElabError::unsupported(
-                d.span,
-                "file types",
-                "use `report` to print",
-            ))),
+            TypeDef::Access(designated) => self.access_type(sc, name, designated),
+            TypeDef::File(mark) => self.file_type(sc, name, mark),
         }
     }
 

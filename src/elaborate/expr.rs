@@ -10,7 +10,7 @@ use crate::source::Span;
 
 use super::error::ElabError;
 use super::fold;
-use super::scope::{Item, Native, Part, Scope, Subprogram};
+use super::scope::{IoNative, Item, Native, Part, Scope, Subprogram};
 use super::types::{ArrayTy, RecordTy, Sub, Ty, bounds_len, position};
 use super::{Elab, R};
 
@@ -131,6 +131,18 @@ impl<'a> Elab<'a> {
         (!matches!(item, Item::Poison(_))).then(|| item.clone())
     }
 
+    /// The implicit operations named `id` of the access or file type analysis resolved it
+    /// to (`deallocate`, `file_open`, ...; analysis knows them by the type's declaration).
+    fn implicit_operations(&self, sc: &Scope<'a>, id: &ast::Ident) -> Option<Vec<Item<'a>>> {
+        let decl = *self.resolved.get(&id.span)?;
+        let subs: Vec<Item<'a>> = sc
+            .lookup_overloads(&id.name)?
+            .into_iter()
+            .filter(|i| matches!(i, Item::Subprogram(s) if s.span == decl))
+            .collect();
+        (!subs.is_empty()).then_some(subs)
+    }
+
     /// Elaborates the package whose declarations include `decl`, if there is one and it was
     /// not elaborated yet; true when it was.
     fn elaborate_package_declaring(&mut self, decl: Span) -> bool {
@@ -163,6 +175,12 @@ impl<'a> Elab<'a> {
             return Err(self.error(ElabError::invalid(e.span, "expected a name", None)));
         };
         if let Some(item) = self.resolved_item(sc, id) {
+            if let Item::Type(sub) = &item
+                && matches!(sub.ty, Ty::Access(_) | Ty::File(_))
+                && let Some(subs) = self.implicit_operations(sc, id)
+            {
+                return Ok(subs);
+            }
             return Ok(vec![item]);
         }
         if let Some(&decl) = self.resolved.get(&id.span) {
@@ -284,7 +302,7 @@ impl<'a> Elab<'a> {
             ExprKind::Selected(prefix, suffix) if !self.resolved.contains_key(&suffix.span) => {
                 // Analysis resolves the suffix of every selected name but a record field's.
                 let rec = match &prefix.kind {
-                    ExprKind::Name(_) | ExprKind::Selected(..) => {
+                    ExprKind::Name(_) => {
                         let items = self.lookup(sc, prefix)?;
                         if let Some(Item::Library(_) | Item::Package(_)) = items.first() {
                             let items = self.lookup(sc, e)?;
@@ -395,11 +413,7 @@ impl<'a> Elab<'a> {
                     }
                 }
             }
-            ExprKind::New(_) => Err(self.error(ElabError::unsupported(
-                e.span,
-                "allocators (`new`)",
-                "access types are not supported",
-            ))),
+            ExprKind::New(inner) => self.allocator(sc, inner, want, e.span),
         }
     }
 
@@ -587,13 +601,19 @@ impl<'a> Elab<'a> {
             Literal::String(s) | Literal::BitString(s) => {
                 self.string_literal(s, span, want, matches!(lit, Literal::BitString(_)))?
             }
-            Literal::Null => {
-                return Err(self.error(ElabError::unsupported(
-                    span,
-                    "`null`",
-                    "access types are not supported",
-                )));
-            }
+            Literal::Null => match want {
+                Some(ty @ Ty::Access(_)) => Typed::new(Expr::Const(Value::Access(0)), ty.clone()),
+                _ => {
+                    return Err(self.error(ElabError::invalid(
+                        span,
+                        "the access type of `null` is not known here",
+                        Some(
+                            "compare or assign it with an access value: `p = null`, `p := null`"
+                                .into(),
+                        ),
+                    )));
+                }
+            },
         })
     }
 
@@ -684,6 +704,8 @@ impl<'a> Elab<'a> {
             Item::EnumLiteral { .. } => return self.enum_literal(items, want, e.span),
             // A unit alone is one of it (`ohm`, LRM 3.1.3).
             Item::Unit { ty, factor } => Typed::new(Expr::Const(Value::Integer(factor)), ty),
+            // Femtoseconds.
+            Item::TimeUnit(fs) => Typed::new(Expr::Const(Value::Time(fs * 1e-15)), Ty::Time),
             Item::Subprogram(_) => {
                 let subs = items
                     .iter()
@@ -950,7 +972,11 @@ impl<'a> Elab<'a> {
                     _ => return Err(super::Reported),
                 }
             }
-            Some(Native::Stop | Native::Finish) => {
+            Some(Native::Io(IoNative::EndFile)) => match args.into_iter().next() {
+                Some(f) => Expr::EndFile(Box::new(f)),
+                None => return Err(super::Reported),
+            },
+            Some(Native::Stop | Native::Finish | Native::Io(_)) => {
                 return Err(self.error(ElabError::invalid(
                     span,
                     format!("`{name}` is a procedure"),
@@ -1039,6 +1065,7 @@ impl<'a> Elab<'a> {
     }
 
     fn index(&mut self, sc: &Scope<'a>, array: Typed, args: &[ast::Assoc], span: Span) -> R<Typed> {
+        let array = self.deref(array, span)?;
         let Ty::Array(arr) = &array.ty else {
             return Err(self.error(ElabError::invalid(
                 span,
@@ -1380,6 +1407,10 @@ impl<'a> Elab<'a> {
 
     /// `prefix.field` of a record value.
     pub(super) fn field(&mut self, rec: Typed, suffix: &ast::Ident, span: Span) -> R<Typed> {
+        let rec = self.deref(rec, span)?;
+        if suffix.name == "all" {
+            return Ok(rec);
+        }
         let (pos, ty) = self.record_field(&rec.ty, suffix, span)?;
         let design = rec.ty.to_design();
         self.folded(

@@ -28,6 +28,10 @@ pub fn eval(e: &Expr) -> Result<Value, NoFold> {
         | Expr::SignalAttr(..)
         // User functions run in the kernel (they may read signals or recurse without bound).
         | Expr::FnCall { .. }
+        // The heap and the files exist at run time only.
+        | Expr::New(_)
+        | Expr::Deref(_)
+        | Expr::EndFile(_)
         // Images are left to the kernel so that every image has the same format.
         | Expr::Image(..) => Err(NoFold::Dynamic),
         Expr::Aggregate { elems, string } => {

@@ -543,6 +543,13 @@ impl<'a> Elab<'a> {
                     }
                     return Ok(());
                 }
+                if let Some((pointer, path, ty)) = self.heap_target(sc, target)? {
+                    let v = self.expr_of(sc, value, &ty)?;
+                    let object = Expr::Deref(Box::new(pointer.clone()));
+                    let value = updated(object, &path, v.e);
+                    p.emit(Instr::SetHeap { pointer, value });
+                    return Ok(());
+                }
                 let (id, path, ty) = self.variable_target(sc, &p.vars, target)?;
                 let v = self.expr_of(sc, value, &ty)?;
                 p.emit(match path.as_slice() {
@@ -702,8 +709,12 @@ impl<'a> Elab<'a> {
                 let mut updates = Vec::new();
                 for part in parts {
                     let tmp = p.new_var("(actual)", &part.ty, part.ty.default_value());
-                    if let Instr::Call { copy_back, .. } = &mut i {
-                        copy_back.push((part.param, tmp));
+                    match &mut i {
+                        Instr::Call { copy_back, .. } => copy_back.push((part.param, tmp)),
+                        Instr::Native { copy_back, .. } => {
+                            copy_back.push((part.param.index(), tmp));
+                        }
+                        _ => {}
                     }
                     let value = updated(Expr::Var(part.var), &part.path, Expr::Var(tmp));
                     updates.push(Instr::SetVar {
@@ -1214,6 +1225,18 @@ impl<'a> Elab<'a> {
         });
         match native {
             Some(Some(Native::Stop | Native::Finish)) => Ok((Instr::Stop, Vec::new())),
+            Some(Some(Native::Io(_))) => {
+                let subs = items
+                    .iter()
+                    .filter_map(|i| match i {
+                        Item::Subprogram(s) if matches!(s.native, Some(Native::Io(_))) => {
+                            Some(s.clone())
+                        }
+                        _ => None,
+                    })
+                    .collect();
+                self.native_procedure_call(sc, vars, subs, call)
+            }
             Some(None) => {
                 let subs = items
                     .iter()

@@ -230,7 +230,7 @@ pub struct Subprogram<'a> {
     pub instances: RefCell<Vec<Instance>>,
 }
 
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 pub struct Param<'a> {
     pub name: String,
     /// Where the parameter is declared.
@@ -279,8 +279,28 @@ pub enum Native {
     Finish,
     /// math_real's `"**"` of a real or integer base and a real exponent.
     Pow,
+    /// Text and file input and output, and `deallocate`.
+    Io(IoNative),
     /// A native subprogram vams does not implement.
     Missing,
+}
+
+/// The native procedures of `std.textio` and the implicit operations of file and access
+/// types (which overload each is comes from its parameters' types).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum IoNative {
+    ReadLine,
+    WriteLine,
+    Read,
+    Write,
+    HRead,
+    ORead,
+    HWrite,
+    OWrite,
+    FileOpen,
+    FileClose,
+    EndFile,
+    Deallocate,
 }
 
 /// The declarations of a package (and its body's deferred constants).
@@ -356,6 +376,14 @@ impl<'a> Scope<'a> {
         let region = self.regions.last_mut().expect("scope has a region");
         Rc::make_mut(&mut region.decls).insert(decl, item);
         true
+    }
+
+    /// Makes names that analysis resolved to `decl` denote `item` too (an incomplete type
+    /// declaration denotes its completion).
+    pub fn declared_also_at(&mut self, decl: Span, item: Item<'a>) {
+        // Invariant: a scope always has at least its use region.
+        let region = self.regions.last_mut().expect("scope has a region");
+        Rc::make_mut(&mut region.decls).insert(decl, item);
     }
 
     /// The item declared at `decl` (the span of its identifier) in the innermost region that

@@ -237,7 +237,7 @@ impl<'a> Elab<'a> {
     }
 
     /// The argument of a parameter: its actual, or its default.
-    fn argument(
+    pub(super) fn argument(
         &mut self,
         sc: &Scope<'a>,
         p: &Param<'a>,

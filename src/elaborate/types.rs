@@ -22,6 +22,43 @@ pub enum Ty {
     /// A physical type of the user's own (`resistance` with `ohm`, `kohm`): values are
     /// integers counting its primary unit.
     Physical(Rc<PhysicalTy>),
+    /// An access type: values designate objects of `designated` on the heap.
+    Access(Rc<AccessTy>),
+    /// A file type of `element`s (`text`: of `string`).
+    File(Rc<FileTy>),
+}
+
+/// An access type. The designated type is set once it is known: a type declared
+/// incomplete (`type node;`) is completed later, and a record may hold access values
+/// designating itself, so the cell may form a cycle (printing and comparing go by name).
+pub struct AccessTy {
+    pub name: String,
+    pub designated: std::cell::RefCell<Option<Ty>>,
+}
+
+impl AccessTy {
+    /// The designated type (`None` while it is incomplete).
+    pub fn designated(&self) -> Option<Ty> {
+        self.designated.borrow().clone()
+    }
+}
+
+impl PartialEq for AccessTy {
+    fn eq(&self, other: &Self) -> bool {
+        self.name == other.name
+    }
+}
+
+impl fmt::Debug for AccessTy {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "access {}", self.name)
+    }
+}
+
+#[derive(Debug, PartialEq)]
+pub struct FileTy {
+    pub name: String,
+    pub element: Ty,
 }
 
 /// A physical type other than `time` (LRM 3.1.3): its units and their values in the
@@ -150,6 +187,8 @@ impl Ty {
             (Ty::Array(a), Ty::Array(b)) => a.name == b.name && a.dimension == b.dimension,
             (Ty::Record(a), Ty::Record(b)) => a.name == b.name,
             (Ty::Physical(a), Ty::Physical(b)) => a.name == b.name,
+            (Ty::Access(a), Ty::Access(b)) => a.name == b.name,
+            (Ty::File(a), Ty::File(b)) => a.name == b.name,
             (a, b) => std::mem::discriminant(a) == std::mem::discriminant(b),
         }
     }
@@ -159,7 +198,7 @@ impl Ty {
     }
 
     pub fn is_scalar(&self) -> bool {
-        !matches!(self, Ty::Array(_) | Ty::Record(_))
+        !matches!(self, Ty::Array(_) | Ty::Record(_) | Ty::File(_))
     }
 
     pub fn is_string(&self) -> bool {
@@ -203,6 +242,12 @@ impl Ty {
                     .map(|(n, t)| (n.clone(), t.to_design()))
                     .collect(),
             },
+            Ty::Access(a) => Type::Access {
+                name: a.name.clone(),
+            },
+            Ty::File(t) => Type::File {
+                name: t.name.clone(),
+            },
         }
     }
 
@@ -218,6 +263,9 @@ impl Ty {
             Ty::Array(a) => Value::Array(vec![a.element.default_value(); a.len().unwrap_or(0)]),
             Ty::Record(r) => Value::Array(r.defaults.clone()),
             Ty::Physical(_) => Value::Integer(0),
+            Ty::Access(_) => Value::Access(0),
+            // A file object's value is its number, given where it is declared.
+            Ty::File(_) => Value::File(u32::MAX),
         }
     }
 
@@ -242,7 +290,7 @@ impl Ty {
                 Value::Integer(i64::from(i32::MIN)),
                 Value::Integer(i64::from(i32::MAX)),
             )),
-            Ty::Array(_) | Ty::Record(_) => None,
+            Ty::Array(_) | Ty::Record(_) | Ty::Access(_) | Ty::File(_) => None,
         }
     }
 }
@@ -258,6 +306,8 @@ impl fmt::Display for Ty {
             Ty::Array(a) => f.write_str(&a.name),
             Ty::Record(r) => f.write_str(&r.name),
             Ty::Physical(p) => f.write_str(&p.name),
+            Ty::Access(a) => f.write_str(&a.name),
+            Ty::File(t) => f.write_str(&t.name),
         }
     }
 }

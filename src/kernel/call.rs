@@ -84,6 +84,17 @@ pub(crate) fn call_function(
                 let pos = offset(ty, i, items.len())?;
                 items[pos] = v;
             }
+            Instr::SetHeap { pointer, value } => super::textio::set_heap(pointer, value, &inner)?,
+            Instr::Native {
+                op,
+                args,
+                copy_back,
+                ..
+            } => {
+                for (var, v) in super::textio::call(op, args, copy_back, &inner)? {
+                    vars[var.index()] = v;
+                }
+            }
             Instr::Jump(target) => pc = *target,
             Instr::JumpIfNot { cond, target } => {
                 if !truth(&eval(cond, &inner)?)? {

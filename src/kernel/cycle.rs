@@ -234,6 +234,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                 now: 0.0,
                 subprograms: &self.design.subprograms,
                 depth: 0,
+                io: &super::io::Io::default(),
             };
             let step = eval(&limit.max_step, &env)
                 .ok()

@@ -4,6 +4,7 @@
 use crate::design::{BinaryOp, Expr, SignalAttr, Subprogram, Type, Value};
 
 use super::image::image;
+use super::io::Io;
 pub(crate) use super::ops::EvalError;
 use super::ops::{binary, builtin, unary};
 use super::signals::SignalState;
@@ -20,6 +21,8 @@ pub(crate) struct Env<'a> {
     pub subprograms: &'a [Subprogram],
     /// Subprogram calls active around this evaluation (see `call::MAX_CALL_DEPTH`).
     pub depth: usize,
+    /// The heap and the files.
+    pub io: &'a Io,
 }
 
 pub(crate) fn eval(e: &Expr, env: &Env) -> Result<Value, EvalError> {
@@ -65,6 +68,23 @@ pub(crate) fn eval(e: &Expr, env: &Env) -> Result<Value, EvalError> {
             crate::design::aggregate_value(vals, *string)
         }
         Expr::FnCall { sub, args, .. } => super::call::call_function(*sub, args, env)?,
+        Expr::New(init) => {
+            let v = eval(init, env)?;
+            env.io.heap.borrow_mut().alloc(v)?
+        }
+        Expr::Deref(p) => {
+            let p = eval(p, env)?;
+            env.io.heap.borrow_mut().get(&p)?.clone()
+        }
+        Expr::EndFile(f) => match eval(f, env)? {
+            Value::File(f) => Value::Boolean(env.io.files.borrow_mut().at_end(f)?),
+            _ => {
+                return Err(EvalError::new(
+                    "endfile of a value that is not a file",
+                    "this is a bug in elaboration",
+                ));
+            }
+        },
         Expr::SignalAttr(s, attr) => {
             let st = &env.signals[s.index()];
             match attr {
@@ -171,6 +191,7 @@ mod tests {
             now: 2e-3,
             subprograms: &[],
             depth: 0,
+            io: &Io::default(),
         };
         eval(e, &env)
     }

@@ -5,6 +5,7 @@ use crate::design::{Design, QuantityId, SignalId, Value};
 
 use super::error::SimError;
 use super::eval::{Env, truth};
+use super::io::{Files, Io};
 use super::process::{self, Context, ProcState, Suspend};
 use super::signals::Signals;
 use super::{Outcome, Report};
@@ -36,6 +37,8 @@ pub(crate) struct EventKernel<'d> {
     pub delta_cycles: usize,
     /// Break statements executed so far.
     pub breaks_total: usize,
+    /// The heap and the files of the run.
+    pub io: Io,
 }
 
 impl<'d> EventKernel<'d> {
@@ -54,6 +57,18 @@ impl<'d> EventKernel<'d> {
             events: 0,
             delta_cycles: 0,
             breaks_total: 0,
+            io: Io {
+                heap: Default::default(),
+                files: std::cell::RefCell::new(Files::new(&design.files).map_err(|(k, e)| {
+                    SimError::Runtime {
+                        process: design.files[k].name.clone(),
+                        time: 0.0,
+                        message: e.message,
+                        span: design.files[k].span,
+                        help: e.help.to_string(),
+                    }
+                })?),
+            },
         })
     }
 
@@ -141,6 +156,7 @@ impl<'d> EventKernel<'d> {
                     now,
                     subprograms: subs,
                     depth: 0,
+                    io: &self.io,
                 };
                 let process = &self.design.processes[i];
                 let holds = super::eval::eval(cond, &env)
@@ -184,6 +200,7 @@ impl<'d> EventKernel<'d> {
                 waveform: &mut self.waveform,
                 subprograms: &self.design.subprograms,
                 design_signals: &self.design.signals,
+                io: &self.io,
             };
             match process::run(i, &self.design.processes[i], &mut self.procs[i], &mut cx)? {
                 Suspend::Wait | Suspend::Halt => {}

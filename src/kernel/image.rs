@@ -34,6 +34,9 @@ fn value_text(v: &Value) -> String {
             let parts: Vec<String> = items.iter().map(value_text).collect();
             format!("({})", parts.join(", "))
         }
+        Value::Access(0) => "null".to_string(),
+        Value::Access(h) => format!("<access {h}>"),
+        Value::File(f) => format!("<file {f}>"),
     }
 }
 
@@ -74,6 +77,37 @@ pub(crate) fn time_image(t: f64) -> String {
     let digits = 11 - n.abs().log10().floor() as i32;
     let p = 10f64.powi(digits.clamp(0, 15));
     format!("{} {unit}", (n * p).round() / p)
+}
+
+/// `t` as a multiple of `unit` (seconds), followed by the unit's name: what textio's
+/// `write` of a time writes (`1500 ps` for 1.5 ns in ps); a unit that is not one of time's
+/// is taken as ns.
+pub(crate) fn time_image_in(t: f64, unit: f64) -> String {
+    let (scale, name) = std::iter::once((1e-15, "fs"))
+        .chain(TIME_UNITS.iter().rev().copied())
+        .find(|(s, _)| (unit / s - 1.0).abs() < 1e-9)
+        .unwrap_or((1e-9, "ns"));
+    let n = t / scale;
+    // Twelve significant digits, as `time_image` rounds.
+    let digits = if n == 0.0 {
+        0
+    } else {
+        11 - n.abs().log10().floor() as i32
+    };
+    let p = 10f64.powi(digits.clamp(0, 15));
+    format!("{} {name}", (n * p).round() / p)
+}
+
+/// The seconds of a unit of time named `name` (any case).
+pub(crate) fn time_unit(name: &str) -> Option<f64> {
+    let name = name.to_ascii_lowercase();
+    if name == "fs" {
+        return Some(1e-15);
+    }
+    if name == "sec" || name == "s" {
+        return Some(1.0);
+    }
+    TIME_UNITS.iter().find(|(_, n)| *n == name).map(|(s, _)| *s)
 }
 
 #[cfg(test)]

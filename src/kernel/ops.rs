@@ -44,6 +44,8 @@ fn kind(v: &Value) -> &'static str {
         Value::Enum(_) => "an enumeration value",
         Value::String(_) => "a string",
         Value::Array(_) => "an array",
+        Value::Access(_) => "an access value",
+        Value::File(_) => "a file",
     }
 }
 

@@ -138,6 +138,8 @@ pub(crate) struct Context<'a> {
     pub subprograms: &'a [Subprogram],
     /// The design's signals (their names and integer ranges, for range checks).
     pub design_signals: &'a [crate::design::Signal],
+    /// The heap and the files.
+    pub io: &'a super::io::Io,
 }
 
 /// `v` within `range` (an integer subtype's bounds), or the run-time error VHDL requires for
@@ -190,6 +192,7 @@ pub(crate) fn run(
             now: cx.now,
             subprograms: subs,
             depth: state.stack.len(),
+            io: cx.io,
         };
         // The statement the instruction comes from, else the process.
         let span = spans.get(state.pc).copied().unwrap_or(process.span);
@@ -202,6 +205,20 @@ pub(crate) fn run(
                     in_range(&v, decl.range, "variable", &decl.name).map_err(at)?;
                 }
                 state.vars[var.index()] = v;
+            }
+            Instr::SetHeap { pointer, value } => {
+                super::textio::set_heap(pointer, value, &env).map_err(at)?;
+            }
+            Instr::Native {
+                op,
+                args,
+                copy_back,
+                ..
+            } => {
+                let back = super::textio::call(op, args, copy_back, &env).map_err(at)?;
+                for (var, v) in back {
+                    state.vars[var.index()] = v;
+                }
             }
             Instr::SetVarElement { var, index, value } => {
                 let i = integer(&eval(index, &env).map_err(at)?).map_err(at)?;

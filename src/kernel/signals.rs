@@ -588,6 +588,8 @@ impl Signals {
             now,
             subprograms: &design.subprograms,
             depth: 0,
+            // A resolution function's objects live for its call only.
+            io: &super::io::Io::default(),
         };
         super::call::call_function(function, &[Expr::Const(values)], &env)
             .map_err(|e| fail(format!("in `{}`: {}", r.name, e.message), e.help))

@@ -46,7 +46,11 @@ pub fn presentation(column: &Column) -> Presentation {
                     Presentation::Integer
                 }
             }
-            Type::String | Type::Array { .. } | Type::Record { .. } => Presentation::Other,
+            Type::String
+            | Type::Array { .. }
+            | Type::Record { .. }
+            | Type::Access { .. }
+            | Type::File { .. } => Presentation::Other,
         },
     }
 }
