@@ -823,6 +823,9 @@ pub enum Builtin {
     /// the result is a `string`): a conversion between `string` and another array of
     /// characters (`display_string(s)`), which the kernel holds as a `Value::Array`.
     Restring,
+    /// The number of elements of an array value known only at run time (`l'length` of a
+    /// textio line).
+    Length,
 }
 
 impl Builtin {
@@ -838,6 +841,7 @@ impl Builtin {
                 | Builtin::Splice
                 | Builtin::ValueOf
                 | Builtin::Restring
+                | Builtin::Length
         )
     }
 }
@@ -846,6 +850,8 @@ impl Builtin {
 /// `Err` with the reason for a result outside its type or a slice outside its array.
 pub fn value_builtin(f: Builtin, args: &[Value]) -> Result<Value, String> {
     match (f, args) {
+        (Builtin::Length, [Value::String(s)]) => Ok(Value::Integer(s.chars().count() as i64)),
+        (Builtin::Length, [Value::Array(items)]) => Ok(Value::Integer(items.len() as i64)),
         (Builtin::Slice, [a, Value::Integer(first), Value::Integer(len)]) => {
             let elements = a.elements();
             let (first, len) = (*first, *len);

@@ -642,3 +642,59 @@ fn two_drivers_of_one_unresolved_element_are_an_error_naming_it() {
         .code(1)
         .stderr(contains("signal `v(1)` has 2 drivers (p1, p2)"));
 }
+
+/// A file object whose file cannot be opened is an error at the start of the run pointing at
+/// its declaration; one that can is written in the directory vams runs in, and a failed read
+/// of a file names the file.
+#[test]
+fn files_open_where_vams_runs_and_a_missing_one_is_located() {
+    let (dir, path) = model_file(
+        "files.vhd",
+        "use std.textio.all;\n\
+         entity files is end entity;\n\
+         architecture a of files is\n\
+           file missing : text open read_mode is \"no_such_dir/data.txt\";\n\
+         begin\n\
+         end architecture;\n",
+    );
+    vams()
+        .current_dir(dir.path())
+        .args(["run", "files.vhd", "--stop", "1 ns"])
+        .assert()
+        .code(1)
+        .stderr(contains("vams::sim::file_open"))
+        .stderr(contains("cannot open \"no_such_dir/data.txt\" for reading"))
+        .stderr(contains("files.vhd:4:"));
+    std::fs::write(
+        &path,
+        "use std.textio.all;\n\
+         entity files is end entity;\n\
+         architecture a of files is\n\
+           file log : text open write_mode is \"log.txt\";\n\
+         begin\n\
+           process\n\
+             variable l : line;\n\
+             variable n : integer;\n\
+           begin\n\
+             write(l, string'(\"answer \"));\n\
+             write(l, 42);\n\
+             writeline(log, l);\n\
+             file_close(log);\n\
+             file_open(log, \"log.txt\", read_mode);\n\
+             readline(log, l);\n\
+             readline(log, l);\n\
+             wait;\n\
+           end process;\n\
+         end architecture;\n",
+    )
+    .unwrap();
+    vams()
+        .current_dir(dir.path())
+        .args(["run", "files.vhd", "--stop", "1 ns"])
+        .assert()
+        .code(1)
+        .stderr(contains("read past the end of file `log`"))
+        .stderr(contains("files.vhd:16:"));
+    let log = std::fs::read_to_string(dir.path().join("log.txt")).unwrap();
+    assert_eq!(log, "answer 42\n");
+}

@@ -620,6 +620,9 @@ impl Analyzer<'_> {
             ExprKind::New(x) => {
                 if let ExprKind::Qualified(..) = x.kind {
                     self.expr_any(x);
+                } else {
+                    // `new natural`, `new time_array(1 to 10)`: a subtype indication.
+                    self.type_mark(x);
                 }
                 UNKNOWN
             }

@@ -89,7 +89,8 @@ impl Analyzer<'_> {
             }
             TypeKind::File(element) => self.file_operations(t, element, span),
             TypeKind::Access(_) => {
-                self.subprogram("deallocate", &[(ObjectClass::Variable, t)], None, span);
+                let p = ("p", ObjectClass::Variable, t, false);
+                self.subprogram_named("deallocate", &[p], None, span);
             }
             TypeKind::Array { indexes, element } if indexes.len() == 1 => {
                 if self.types().is_discrete(element) {
@@ -170,39 +171,29 @@ impl Analyzer<'_> {
         self.scope = saved;
     }
 
-    /// The implicit subprograms of a file type (LRM 3.4.1): `file_open`, `file_close`,
-    /// `read`, `write`, `endfile`.
+    /// The implicit subprograms of a file type (LRM 3.4.1), with the LRM's formal names:
+    /// `file_open`, `file_close`, `read`, `write`, `endfile`.
     fn file_operations(&mut self, f: TypeId, element: TypeId, span: Span) {
         use ObjectClass::{Constant, File, Variable};
         let std = self.std;
         let (string, kind, status) = (std.string, self.open_kind(), self.open_status());
-        self.subprogram(
-            "file_open",
-            &[(File, f), (Constant, string), (Constant, kind)],
-            None,
-            span,
-        );
-        self.subprogram(
-            "file_open",
-            &[
-                (Variable, status),
-                (File, f),
-                (Constant, string),
-                (Constant, kind),
-            ],
-            None,
-            span,
-        );
-        self.subprogram("file_close", &[(File, f)], None, span);
-        self.subprogram("read", &[(File, f), (Variable, element)], None, span);
-        self.subprogram(
-            "read",
-            &[(File, f), (Variable, element), (Variable, std.integer)],
-            None,
-            span,
-        );
-        self.subprogram("write", &[(File, f), (Constant, element)], None, span);
-        self.subprogram("endfile", &[(File, f)], Some(std.boolean), span);
+        let open = [
+            ("f", File, f, false),
+            ("external_name", Constant, string, false),
+            ("open_kind", Constant, kind, true),
+        ];
+        self.subprogram_named("file_open", &open, None, span);
+        let mut with_status = vec![("status", Variable, status, false)];
+        with_status.extend(open);
+        self.subprogram_named("file_open", &with_status, None, span);
+        self.subprogram_named("file_close", &[("f", File, f, false)], None, span);
+        let (file, value) = (("f", File, f, false), ("value", Variable, element, false));
+        self.subprogram_named("read", &[file, value], None, span);
+        let length = ("length", Variable, std.integer, false);
+        self.subprogram_named("read", &[file, value, length], None, span);
+        let value = ("value", Constant, element, false);
+        self.subprogram_named("write", &[file, value], None, span);
+        self.subprogram_named("endfile", &[file], Some(std.boolean), span);
     }
 
     /// `std.standard`'s `file_open_kind` / `file_open_status` as visible here.
@@ -226,21 +217,20 @@ impl Analyzer<'_> {
 
     /// Declares an implicit subprogram in the current region; the first parameter of a
     /// default-less list is named `f`, the others `p1`, `p2`... (only their types matter).
-    fn subprogram(
+    fn subprogram_named(
         &mut self,
         name: &str,
-        params: &[(ObjectClass, TypeId)],
+        params: &[(&str, ObjectClass, TypeId, bool)],
         result: Option<TypeId>,
         span: Span,
     ) {
         let params = params
             .iter()
-            .enumerate()
-            .map(|(i, &(class, ty))| Param {
-                name: format!("p{i}"),
+            .map(|&(n, class, ty, has_default)| Param {
+                name: n.to_string(),
                 class,
                 ty,
-                has_default: false,
+                has_default,
             })
             .collect();
         let d = self.push_decl(

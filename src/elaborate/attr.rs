@@ -491,6 +491,44 @@ impl<'a> Elab<'a> {
 
     /// `'high`, `'low`, `'left`, `'right`, `'length`, `'ascending` of a type or an array
     /// (of its dimension `dimension`).
+    /// `'length`, `'left`, ... of an unconstrained array object on the heap (a textio line):
+    /// its bounds start at the index subtype's low end (`string`: 1) and ascend, as those of
+    /// `new string'("...")` and of a line `readline` made do.
+    fn run_time_bound(
+        &mut self,
+        object: Expr,
+        a: Rc<super::types::ArrayTy>,
+        name: &str,
+        span: Span,
+    ) -> R<Typed> {
+        use crate::design::{BinaryOp, Builtin};
+        let length = Expr::Call(Builtin::Length, vec![object]);
+        let low = Expr::Const(Value::Integer(a.index_low));
+        let high = Expr::Binary(
+            BinaryOp::Sub,
+            Box::new(Expr::Binary(
+                BinaryOp::Add,
+                Box::new(low.clone()),
+                Box::new(length.clone()),
+            )),
+            Box::new(Expr::Const(Value::Integer(1))),
+        );
+        let (e, ty) = match name {
+            "length" => (length, Ty::Integer),
+            "left" | "low" => (low, a.index.clone()),
+            "right" | "high" => (high, a.index.clone()),
+            "ascending" => (Expr::Const(Value::Boolean(true)), Ty::Boolean),
+            _ => {
+                return Err(self.error(ElabError::invalid(
+                    span,
+                    format!("`'{name}` of an object an access value designates"),
+                    None,
+                )));
+            }
+        };
+        Ok(Typed { e, ty })
+    }
+
     fn bound_attribute(
         &mut self,
         sc: &Scope<'a>,
@@ -504,7 +542,20 @@ impl<'a> Elab<'a> {
             Item::Type(sub) => (sub.ty.clone(), sub.range.clone()),
             Item::TerminalArray { elements, .. } => (elements.ty(), None),
             Item::QuantityArray(elements) => (elements.ty(), None),
-            _ => (self.expr(sc, prefix, None)?.ty, None),
+            _ => {
+                let value = self.expr(sc, prefix, None)?;
+                if let Ty::Access(_) = value.ty {
+                    let object = self.deref(value, prefix.span)?;
+                    if let Ty::Array(a) = &object.ty
+                        && a.bounds.is_none()
+                    {
+                        return self.run_time_bound(object.e, a.clone(), name, span);
+                    }
+                    (object.ty, None)
+                } else {
+                    (value.ty, None)
+                }
+            }
         };
         let ty = self.nth_dimension(ty, dimension, span)?;
         if let Ty::Array(a) = &ty {

@@ -349,9 +349,12 @@ impl<'a> Elab<'a> {
                 if let ExprKind::Attribute(p, attr) = &prefix.kind {
                     return self.attribute(sc, p, attr, args, e.span, want);
                 }
-                if let ExprKind::Apply(..) = prefix.kind {
-                    // An element of an element (`table(i)(k)`, an array of arrays), or of
-                    // what a call returns (`f(x)(k)`).
+                let field = matches!(&prefix.kind,
+                    ExprKind::Selected(_, s) if !self.resolved.contains_key(&s.span));
+                if matches!(prefix.kind, ExprKind::Apply(..)) || field {
+                    // An element of an element (`table(i)(k)`, an array of arrays), of
+                    // what a call returns (`f(x)(k)`), or of a record field or an object
+                    // an access value designates (`r.v(k)`, `p.all(k)`).
                     let array = self.expr(sc, prefix, None)?;
                     return self.index(sc, array, args, e.span);
                 }

@@ -306,7 +306,8 @@ fn call(f: Builtin, args: &[Value]) -> Result<Value, NoFold> {
         | Builtin::Slice
         | Builtin::Splice
         | Builtin::ValueOf
-        | Builtin::Restring => {
+        | Builtin::Restring
+        | Builtin::Length => {
             unreachable!("handled above")
         }
     };

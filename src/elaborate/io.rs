@@ -114,13 +114,11 @@ impl<'a> Elab<'a> {
         self.implicit(sc, "file_open", with_status, IoNative::FileOpen, at);
         self.implicit(sc, "file_close", vec![f()], IoNative::FileClose, at);
         let value = |mode| implicit_param("value", &element, mode, at);
-        self.implicit(
-            sc,
-            "read",
-            vec![f(), value(ParamMode::Out)],
-            IoNative::Read,
-            at,
-        );
+        let read = vec![f(), value(ParamMode::Out)];
+        self.implicit(sc, "read", read, IoNative::Read, at);
+        let length = implicit_param("length", &Ty::Integer, ParamMode::Out, at);
+        let read = vec![f(), value(ParamMode::Out), length];
+        self.implicit(sc, "read", read, IoNative::Read, at);
         self.implicit(
             sc,
             "write",

@@ -32,6 +32,18 @@ pub enum SimError {
         help: String,
     },
 
+    /// A file object's declaration names a file that cannot be opened (LRM 4.3.1.4: an
+    /// error at elaboration).
+    #[error("{message}")]
+    #[diagnostic(code(vams::sim::file_open))]
+    FileOpen {
+        message: String,
+        #[label("declared here")]
+        span: Span,
+        #[help]
+        help: String,
+    },
+
     /// `r == sqrt(y)` with `y` gone negative: a quantity is NaN or infinite at an accepted
     /// point (its value would reach the waveforms).
     #[error("quantity `{quantity}` is {value} at t = {} s", seconds(*time))]
@@ -180,6 +192,7 @@ impl Located for SimError {
     fn primary_span(&self) -> Span {
         match self {
             SimError::Runtime { span, .. }
+            | SimError::FileOpen { span, .. }
             | SimError::NotFinite { span, .. }
             | SimError::Runaway { span, .. }
             | SimError::DeltaLimit { span, .. }

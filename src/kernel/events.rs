@@ -60,9 +60,7 @@ impl<'d> EventKernel<'d> {
             io: Io {
                 heap: Default::default(),
                 files: std::cell::RefCell::new(Files::new(&design.files).map_err(|(k, e)| {
-                    SimError::Runtime {
-                        process: design.files[k].name.clone(),
-                        time: 0.0,
+                    SimError::FileOpen {
                         message: e.message,
                         span: design.files[k].span,
                         help: e.help.to_string(),

@@ -129,14 +129,20 @@ pub(crate) fn run(op: &NativeProc, args: &mut [Value], io: &Io) -> Result<(), Ev
         NativeProc::FileClose => io.files.borrow_mut().close(file_of(arg(0)?)?)?,
         NativeProc::FileWrite { ty } => {
             let f = file_of(arg(0)?)?;
-            let text = written(ty, arg(1)?, None)?;
+            let text = element_text(ty, arg(1)?)?;
             io.files.borrow_mut().write_line(f, &text)?;
         }
         NativeProc::FileRead { ty } => {
             let f = file_of(arg(0)?)?;
             let text = io.files.borrow_mut().read_line(f)?;
-            match parse(ty, &text, arg(1)?) {
-                Some((v, _)) => args[1] = v,
+            match element_value(ty, &text, arg(1)?) {
+                Some((v, n)) => {
+                    args[1] = v;
+                    // `read(f, value, length)`: the length of the element in the file.
+                    if let Some(length) = args.get_mut(2) {
+                        *length = Value::Integer(n as i64);
+                    }
+                }
                 None => {
                     return Err(EvalError::new(
                         format!("the file's line \"{text}\" is not a {}", type_name(ty)),
@@ -283,6 +289,58 @@ fn written(ty: &Type, v: &Value, extra: Option<&Value>) -> Result<String, EvalEr
             ));
         }
     })
+}
+
+/// One element of a file of `ty` as its line: a scalar as `write` writes it, a string as
+/// itself, another array as its elements separated by spaces.
+fn element_text(ty: &Type, v: &Value) -> Result<String, EvalError> {
+    match (ty, v) {
+        (Type::Array { element, .. }, Value::Array(items)) if !is_character(element) => {
+            let parts = items
+                .iter()
+                .map(|x| element_text(element, x))
+                .collect::<Result<Vec<_>, _>>()?;
+            Ok(parts.join(" "))
+        }
+        _ => written(ty, v, None),
+    }
+}
+
+fn is_character(ty: &Type) -> bool {
+    matches!(ty, Type::Enum { literals, .. } if literals.iter().all(|l| l.starts_with('\'')))
+}
+
+/// The element a file's line holds, into a target like `like`, with the number of elements
+/// the line has (an array longer than the target fills it and reports its own length).
+fn element_value(ty: &Type, line: &str, like: &Value) -> Option<(Value, usize)> {
+    match (ty, like) {
+        (Type::String, Value::String(s)) => {
+            let n = line.chars().count();
+            let mut text: String = line.chars().take(s.chars().count()).collect();
+            while text.chars().count() < s.chars().count() {
+                text.push(' ');
+            }
+            Some((Value::String(text), n))
+        }
+        (Type::Array { element, .. }, Value::Array(items)) => {
+            let words: Vec<&str> = if is_character(element) {
+                line.char_indices()
+                    .map(|(k, c)| &line[k..k + c.len_utf8()])
+                    .collect()
+            } else {
+                line.split_whitespace().collect()
+            };
+            let mut out = items.clone();
+            for (slot, w) in out.iter_mut().zip(&words) {
+                *slot = parse_token(element, w, slot)?.0;
+            }
+            Some((Value::Array(out), words.len()))
+        }
+        _ => {
+            let (v, used) = parse(ty, line, like)?;
+            line[used..].trim().is_empty().then_some((v, 1))
+        }
+    }
 }
 
 /// Bits as hexadecimal or octal digits (the length must be a multiple of `bits`).
