@@ -10,7 +10,13 @@ fn vams() -> Command {
 
 #[test]
 fn errors_in_units_no_top_reaches_match_their_snapshots() {
-    for name in ["unreached", "unused_package", "circular", "not_static"] {
+    for name in [
+        "unreached",
+        "unused_package",
+        "circular",
+        "not_static",
+        "ambiguous_now",
+    ] {
         let path = format!("tests/analysis/{name}.vhd");
         let output = vams().arg("check").arg(&path).output().unwrap();
         assert_eq!(output.status.code(), Some(1), "{name}");

@@ -44,6 +44,18 @@ pub enum AnalysisError {
         help: Option<String>,
     },
 
+    /// `write(l, now)` in VHDL-AMS: several declarations fit the arguments equally well.
+    #[error("ambiguous call: {count} declarations of `{name}` fit these arguments")]
+    #[diagnostic(code(vams::analysis::ambiguous))]
+    Ambiguous {
+        #[label("which `{name}`?")]
+        span: Span,
+        name: String,
+        count: usize,
+        #[help]
+        help: String,
+    },
+
     /// `generic map (rr => 1.0)` where the unit has no generic `rr`.
     #[error("`{name}` is not a {what} of `{unit}`")]
     #[diagnostic(code(vams::analysis::unknown_formal))]
@@ -106,6 +118,7 @@ impl Located for AnalysisError {
             AnalysisError::Undeclared { span, .. }
             | AnalysisError::TypeMismatch { span, .. }
             | AnalysisError::NoOverload { span, .. }
+            | AnalysisError::Ambiguous { span, .. }
             | AnalysisError::UnknownFormal { span, .. }
             | AnalysisError::MissingUnit { span, .. }
             | AnalysisError::NotStatic { span, .. }

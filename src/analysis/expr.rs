@@ -1118,6 +1118,26 @@ impl Analyzer<'_> {
                 }
             }
         } else {
+            if chosen.len() > 1 && !self.cut_here() {
+                let now = args.iter().any(|a| {
+                    matches!(&a.actual, Actual::Expr(Expr { kind: ExprKind::Name(id), .. }) if id.name == "now")
+                });
+                let help = if now {
+                    "VHDL-AMS declares `now` twice, returning `delay_length` and `real`: qualify it, `time'(now)` or `real'(now)`"
+                } else {
+                    "qualify an argument with its type (`real'(x)`, `string'(\"...\")`) so that one declaration fits"
+                };
+                let name = match &prefix.kind {
+                    ExprKind::Name(id) | ExprKind::Selected(_, id) => id.name.clone(),
+                    _ => String::new(),
+                };
+                self.error(AnalysisError::Ambiguous {
+                    span,
+                    name,
+                    count: chosen.len(),
+                    help: help.into(),
+                });
+            }
             for a in args {
                 self.assoc_any(a);
             }
