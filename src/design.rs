@@ -125,14 +125,17 @@ pub enum NativeProc {
     Write {
         ty: Type,
     },
-    /// `hread` / `oread` (`bits` 4 or 3 a digit).
+    /// `hread` / `oread` (`bits` 4 or 3 a digit) of an array of `ty` (`bit_vector`,
+    /// `std_ulogic_vector`: its `'0'` and `'1'` are the bits).
     ReadDigits {
         bits: u32,
         good: bool,
+        ty: Type,
     },
     /// `hwrite` / `owrite`.
     WriteDigits {
         bits: u32,
+        ty: Type,
     },
     /// `file_open([status,] f, name, kind)`.
     FileOpen {

@@ -206,7 +206,8 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_terminal_slices ... ok"))
         .stdout(contains("test tb_textio_log ... ok"))
         .stdout(contains("test tb_linked_list ... ok"))
-        .stdout(contains("65 passed, 0 failed"));
+        .stdout(contains("test tb_std_logic_textio ... ok"))
+        .stdout(contains("66 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

@@ -90,10 +90,10 @@ pub(crate) fn run(op: &NativeProc, args: &mut [Value], io: &Io) -> Result<(), Ev
             let text = justify(text, justified == 1, field);
             append(io, &mut args[0], &text)?;
         }
-        NativeProc::WriteDigits { bits } => {
+        NativeProc::WriteDigits { bits, ty } => {
             let justified = int(arg(2)?)?;
             let field = int(arg(3)?)?;
-            let text = digits_of(arg(1)?, *bits)?;
+            let text = digits_of(arg(1)?, *bits, &BitCode::of(ty))?;
             append(io, &mut args[0], &justify(text, justified == 1, field))?;
         }
         NativeProc::Read { ty, good } => {
@@ -101,9 +101,9 @@ pub(crate) fn run(op: &NativeProc, args: &mut [Value], io: &Io) -> Result<(), Ev
             let parsed = parse(ty, &line, arg(1)?);
             finish_read(io, args, parsed, *good, &type_name(ty))?;
         }
-        NativeProc::ReadDigits { bits, good } => {
+        NativeProc::ReadDigits { bits, good, ty } => {
             let line = line_text(io, arg(0)?)?;
-            let parsed = parse_digits(&line, arg(1)?, *bits);
+            let parsed = parse_digits(&line, arg(1)?, *bits, &BitCode::of(ty));
             let what = if *bits == 4 { "hexadecimal" } else { "octal" };
             finish_read(io, args, parsed, *good, &format!("{what} bit_vector"))?;
         }
@@ -343,8 +343,31 @@ fn element_value(ty: &Type, line: &str, like: &Value) -> Option<(Value, usize)> 
     }
 }
 
-/// Bits as hexadecimal or octal digits (the length must be a multiple of `bits`).
-fn digits_of(v: &Value, bits: u32) -> Result<String, EvalError> {
+/// The positions of `'0'` and `'1'` in the element type of a vector written as digits.
+struct BitCode {
+    zero: u32,
+    one: u32,
+}
+
+impl BitCode {
+    fn of(ty: &Type) -> BitCode {
+        let position = |literal: &str| match ty {
+            Type::Array { element, .. } => match &**element {
+                Type::Enum { literals, .. } => literals.iter().position(|l| l == literal),
+                _ => None,
+            },
+            _ => None,
+        };
+        BitCode {
+            zero: position("'0'").unwrap_or(0) as u32,
+            one: position("'1'").unwrap_or(1) as u32,
+        }
+    }
+}
+
+/// Bits as hexadecimal or octal digits (the length must be a multiple of `bits`); a digit
+/// with an element that is neither `'0'` nor `'1'` (`'U'`, `'X'` of std_logic) is `X`.
+fn digits_of(v: &Value, bits: u32, code: &BitCode) -> Result<String, EvalError> {
     let Value::Array(items) = v else {
         return Err(bug("a bit_vector that is not an array"));
     };
@@ -360,11 +383,17 @@ fn digits_of(v: &Value, bits: u32) -> Result<String, EvalError> {
     }
     let mut out = String::new();
     for chunk in items.chunks(bits as usize) {
-        let mut d = 0;
+        let mut d = Some(0);
         for b in chunk {
-            d = d * 2 + u32::from(matches!(b, Value::Enum(1)));
+            d = match b {
+                Value::Enum(p) if *p == code.one => d.map(|d| d * 2 + 1),
+                Value::Enum(p) if *p == code.zero => d.map(|d| d * 2),
+                _ => None,
+            };
         }
-        out.push(char::from_digit(d, 16).unwrap_or('?').to_ascii_uppercase());
+        out.push(d.map_or('X', |d| {
+            char::from_digit(d, 16).unwrap_or('?').to_ascii_uppercase()
+        }));
     }
     Ok(out)
 }
@@ -481,7 +510,7 @@ fn parse_token(ty: &Type, s: &str, like: &Value) -> Option<(Value, usize)> {
 }
 
 /// `hread` / `oread`: digits of `bits` bits each, as many as the target's length needs.
-fn parse_digits(line: &str, like: &Value, bits: u32) -> Option<(Value, usize)> {
+fn parse_digits(line: &str, like: &Value, bits: u32, code: &BitCode) -> Option<(Value, usize)> {
     let Value::Array(items) = like else {
         return None;
     };
@@ -501,7 +530,8 @@ fn parse_digits(line: &str, like: &Value, bits: u32) -> Option<(Value, usize)> {
         }
         let d = c.to_digit(1 << bits)?;
         for k in (0..bits).rev() {
-            out.push(Value::Enum((d >> k) & 1));
+            let bit = (d >> k) & 1 == 1;
+            out.push(Value::Enum(if bit { code.one } else { code.zero }));
         }
     }
     (out.len() == items.len()).then_some((Value::Array(out), used))
@@ -570,10 +600,30 @@ mod tests {
         assert_eq!(justify("42".into(), false, 5), "   42");
         assert_eq!(justify("42".into(), true, 5), "42   ");
         let v = Value::Array([1, 0, 1, 0, 1, 1, 1, 1].map(Value::Enum).to_vec());
-        assert_eq!(digits_of(&v, 4).unwrap(), "AF");
+        let bits = Type::Array {
+            element: Box::new(bit()),
+            left: 0,
+            right: 7,
+            ascending: true,
+        };
+        let code = BitCode::of(&bits);
+        assert_eq!(digits_of(&v, 4, &code).unwrap(), "AF");
         assert_eq!(
-            parse_digits("af", &Value::Array(vec![Value::Enum(0); 8]), 4).map(|p| p.0),
+            parse_digits("af", &Value::Array(vec![Value::Enum(0); 8]), 4, &code).map(|p| p.0),
             Some(v)
         );
+        // std_ulogic: 'U' 'X' '0' '1' ...; a digit with an unknown bit is X.
+        let logic = Type::Array {
+            element: Box::new(Type::Enum {
+                name: "std_ulogic".into(),
+                literals: ["'U'", "'X'", "'0'", "'1'"].map(String::from).to_vec(),
+            }),
+            left: 7,
+            right: 0,
+            ascending: false,
+        };
+        let code = BitCode::of(&logic);
+        let v = Value::Array([3, 2, 2, 3, 0, 3, 3, 3].map(Value::Enum).to_vec());
+        assert_eq!(digits_of(&v, 4, &code).unwrap(), "9X");
     }
 }
