@@ -230,6 +230,12 @@ pub enum DeclKind {
         /// `None` for an incomplete type declaration.
         def: Option<TypeDef>,
     },
+    /// `type t is protected body ... end protected body;`: the private variables and the
+    /// methods' bodies of protected type `t`.
+    ProtectedBody {
+        name: Ident,
+        decls: Vec<Decl>,
+    },
     Subtype {
         name: Ident,
         subtype: SubtypeIndication,
@@ -357,6 +363,8 @@ pub enum TypeDef {
     Record(Vec<RecordField>),
     Access(SubtypeIndication),
     File(Expr),
+    /// `type t is protected ... end protected;`: the methods (subprogram declarations).
+    Protected(Vec<Decl>),
 }
 
 #[derive(Clone, Debug, PartialEq)]

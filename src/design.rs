@@ -75,6 +75,10 @@ pub struct Design {
     /// File objects (`file f : text open write_mode is "log.txt";`), by the number a
     /// [`Value::File`] holds.
     pub files: Vec<FileObject>,
+    /// The initial values (records of their private variables) of the shared variables of
+    /// protected type: the kernel puts them on the heap first, in order, so that the `k`-th
+    /// is `Value::Access(k + 1)`.
+    pub shared_objects: Vec<Value>,
 }
 
 /// A file object of the design: its name for messages, and the file it is opened on at the

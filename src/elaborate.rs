@@ -19,7 +19,7 @@ use rustc_hash::{FxHashMap, FxHashSet};
 use std::rc::Rc;
 
 use crate::analysis::{Analysis, analyse};
-use crate::ast::{ContextItem, DesignFile, ExprKind};
+use crate::ast::{self, ContextItem, DesignFile, ExprKind};
 use crate::design::{Design, Expr, QuantityId, SignalId, Value};
 use crate::source::{FileId, SourceMap, Span};
 
@@ -40,6 +40,7 @@ mod io;
 mod library;
 mod ltf;
 mod process;
+mod protected;
 mod resolution;
 mod sampled;
 mod scope;
@@ -172,6 +173,9 @@ struct Elab<'a> {
     lib: Library<'a>,
     design: Design,
     errors: Vec<ElabError>,
+    /// Protected types by the span of their name: the methods' declarations and, once seen,
+    /// the body's declarations.
+    protected: FxHashMap<Span, (&'a [ast::Decl], Option<&'a [ast::Decl]>)>,
     /// Incomplete type declarations (`type node;`) not completed yet: the name, the span of
     /// its identifier, and the access types declared since that designate it.
     incomplete: Vec<(String, Span, Vec<Rc<types::AccessTy>>)>,
@@ -284,6 +288,7 @@ impl<'a> Elab<'a> {
             design: Design::default(),
             errors: Vec::new(),
             incomplete: Vec::new(),
+            protected: FxHashMap::default(),
             packages: FxHashMap::default(),
             packages_in_progress: FxHashSet::default(),
             unit_at: usize::MAX,

@@ -63,6 +63,7 @@ impl Analyzer<'_> {
                 self.declare_objects(names, ObjectClass::File, ty, Staticness::None);
             }
             AstDecl::Type { name, def } => self.type_decl(name, def.as_ref()),
+            AstDecl::ProtectedBody { name, decls } => self.protected_body(name, decls),
             AstDecl::Subtype { name, subtype } => {
                 let ty = self.subtype(subtype);
                 self.declare(&name.name, name.span, DeclKind::Type(ty));
@@ -768,6 +769,14 @@ impl Analyzer<'_> {
             }
             TypeDef::Access(s) => TypeKind::Access(self.subtype(s)),
             TypeDef::File(mark) => TypeKind::File(self.type_mark(mark)),
+            TypeDef::Protected(methods) => {
+                // The methods see the declarations around the type (and each other).
+                let region = self.new_region();
+                self.scope.push(region);
+                self.decls(methods);
+                self.scope.pop();
+                TypeKind::Protected(region)
+            }
         };
         self.out.types.complete(ty, kind);
         self.implicit_operators(ty, name.span);
@@ -896,8 +905,45 @@ impl Analyzer<'_> {
         sig
     }
 
-    /// True when `d` is declared in the package this unit is the body of.
+    /// `type t is protected body ... end protected body;`: private declarations and method
+    /// bodies in a region inside the type's methods, so that each body completes its method
+    /// and every method sees the others.
+    fn protected_body(&mut self, name: &crate::ast::Ident, decls: &[Decl]) {
+        let methods = self.lookup(&name.name).and_then(|ds| {
+            ds.into_iter().find_map(|d| match &self.out.decl(d).kind {
+                DeclKind::Type(t) => match self.types().kind(*t) {
+                    TypeKind::Protected(r) => Some((d, *r)),
+                    _ => None,
+                },
+                _ => None,
+            })
+        });
+        let Some((decl, methods)) = methods else {
+            self.undeclared(name);
+            return;
+        };
+        self.reference(name.span, decl);
+        let saved = self.protected_methods.replace(methods);
+        self.scope.push(methods);
+        let private = self.new_region();
+        self.scope.push(private);
+        self.decls(decls);
+        self.scope.pop();
+        self.scope.pop();
+        self.protected_methods = saved;
+    }
+
+    /// True when `d` is declared in the package this unit is the body of, or is a method of
+    /// the protected type whose body is being analysed.
     fn completes_package(&self, d: DeclId) -> bool {
+        if let Some(r) = self.protected_methods
+            && self.out.regions[r.0 as usize]
+                .names
+                .values()
+                .any(|ds| ds.contains(&d))
+        {
+            return true;
+        }
         self.scope.len() >= 2
             && matches!(self.out.units[self.cur].kind, super::UnitKind::PackageBody)
             && self.out.regions[self.scope[1].0 as usize]

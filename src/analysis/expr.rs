@@ -76,6 +76,14 @@ impl Analyzer<'_> {
                         }
                     }
                     DeclKind::Opaque => Named::Decls(vec![*d]),
+                    // `counter.increment`: a method of a shared variable of protected type.
+                    DeclKind::Object { ty, .. } => match self.types().kind(*ty) {
+                        TypeKind::Protected(r) => match self.lookup_in(*r, &suffix.name) {
+                            Some(ds) => Named::Decls(ds),
+                            None => Named::Missing,
+                        },
+                        _ => Named::Value,
+                    },
                     _ => Named::Value,
                 }
             }

@@ -45,6 +45,8 @@ pub enum TypeKind {
     },
     Access(TypeId),
     File(TypeId),
+    /// A protected type: its methods are declared in the region.
+    Protected(super::scope::RegionId),
 }
 
 #[derive(Clone, Debug, PartialEq)]

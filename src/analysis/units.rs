@@ -51,6 +51,8 @@ pub(super) struct Analyzer<'a> {
     /// The unit being analysed and the regions visible in it, innermost last.
     pub cur: usize,
     pub scope: Vec<RegionId>,
+    /// The methods' region of the protected type whose body is being analysed.
+    pub protected_methods: Option<RegionId>,
     /// Result type of each enclosing function (`None` in a procedure or process).
     pub returns: Vec<Option<TypeId>>,
     pub std: Standard,
@@ -133,6 +135,7 @@ impl<'a> Analyzer<'a> {
             unit_decl: FxHashMap::default(),
             cur: 0,
             scope: Vec::new(),
+            protected_methods: None,
             returns: Vec::new(),
             std: Standard::default(),
             ambiguous,

@@ -231,7 +231,7 @@ impl<'a> Elab<'a> {
                             .map(|(u, f)| Value::Array(vec![Value::String(u.clone()), Value::Integer(*f)]))
                             .collect(),
                     ),
-                    Ty::Array(_) | Ty::Record(_) | Ty::Access(_) | Ty::File(_) => {
+                    Ty::Array(_) | Ty::Record(_) | Ty::Access(_) | Ty::File(_) | Ty::Protected(_) => {
                         return Err(self.error(ElabError::invalid(span, format!("`'value` applies to scalar types, not `{ty}`"), None)));
                     }
                 };
@@ -377,7 +377,12 @@ impl<'a> Elab<'a> {
             Ty::Enum(e) => Some(e.literals.len() as i64),
             Ty::Boolean => Some(2),
             Ty::Integer | Ty::Time | Ty::Physical(_) => None,
-            Ty::Real | Ty::Array(_) | Ty::Record(_) | Ty::Access(_) | Ty::File(_) => {
+            Ty::Real
+            | Ty::Array(_)
+            | Ty::Record(_)
+            | Ty::Access(_)
+            | Ty::File(_)
+            | Ty::Protected(_) => {
                 return Err(self.error(ElabError::invalid(
                     span,
                     format!(

@@ -221,11 +221,10 @@ impl<'a> Elab<'a> {
                 }
                 Ok(())
             }
-            DeclKind::Variable { .. } => Err(self.error(ElabError::unsupported(
-                d.span,
-                "shared variables",
-                "declare variables inside a process",
-            ))),
+            DeclKind::Variable { names, subtype, .. } => {
+                self.shared_variable(sc, names, subtype, d.span)
+            }
+            DeclKind::ProtectedBody { name, decls } => self.protected_body(sc, name, decls),
             DeclKind::File {
                 names,
                 subtype,
@@ -579,6 +578,7 @@ impl<'a> Elab<'a> {
             }
             TypeDef::Access(designated) => self.access_type(sc, name, designated),
             TypeDef::File(mark) => self.file_type(sc, name, mark),
+            TypeDef::Protected(methods) => self.protected_type(sc, name, methods),
         }
     }
 

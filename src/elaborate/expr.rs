@@ -174,6 +174,11 @@ impl<'a> Elab<'a> {
             }
             return Err(self.error(ElabError::invalid(e.span, "expected a name", None)));
         };
+        if let ExprKind::Selected(prefix, suffix) = &e.kind
+            && let Some(methods) = self.methods(sc, prefix, suffix)
+        {
+            return methods;
+        }
         if let Some(item) = self.resolved_item(sc, id) {
             if let Item::Type(sub) = &item
                 && matches!(sub.ty, Ty::Access(_) | Ty::File(_))
@@ -707,6 +712,26 @@ impl<'a> Elab<'a> {
             Item::EnumLiteral { .. } => return self.enum_literal(items, want, e.span),
             // A unit alone is one of it (`ohm`, LRM 3.1.3).
             Item::Unit { ty, factor } => Typed::new(Expr::Const(Value::Integer(factor)), ty),
+            Item::SharedObject { .. } => {
+                return Err(self.error(ElabError::unsupported(
+                    e.span,
+                    "a shared variable as a value or an argument (a parameter of protected type)",
+                    "call its methods where it is visible: `v.method(...)`",
+                )));
+            }
+            Item::PrivateVariable {
+                object,
+                field,
+                record,
+                ty,
+            } => {
+                let e = Expr::Index {
+                    array: Box::new(Expr::Deref(Box::new(Expr::Const(object)))),
+                    index: Box::new(Expr::Const(Value::Integer(field as i64))),
+                    ty: record,
+                };
+                Typed::new(e, ty)
+            }
             // Femtoseconds.
             Item::TimeUnit(fs) => Typed::new(Expr::Const(Value::Time(fs * 1e-15)), Ty::Time),
             Item::Subprogram(_) => {

@@ -61,7 +61,7 @@ pub(super) fn parse_literal(
                 .unwrap_or(t);
             Some(Value::String(s.to_string()))
         }
-        Ty::Array(_) | Ty::Record(_) | Ty::Access(_) | Ty::File(_) => None,
+        Ty::Array(_) | Ty::Record(_) | Ty::Access(_) | Ty::File(_) | Ty::Protected(_) => None,
     }
 }
 

@@ -1163,7 +1163,7 @@ fn literal_help(ty: &Ty) -> String {
         ),
         Ty::Boolean => "write `true` or `false`".into(),
         Ty::Enum(e) => format!("write one of {}", list_names(&e.literals)),
-        Ty::Array(_) | Ty::Record(_) | Ty::Access(_) | Ty::File(_) => {
+        Ty::Array(_) | Ty::Record(_) | Ty::Access(_) | Ty::File(_) | Ty::Protected(_) => {
             "composite generics cannot be set from the command line".into()
         }
     }

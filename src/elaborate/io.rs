@@ -288,6 +288,20 @@ impl<'a> Elab<'a> {
         sc: &Scope<'a>,
         target: &ast::Expr,
     ) -> R<Option<(design::Expr, Vec<Part>, Ty)>> {
+        if let ast::ExprKind::Name(id) = &target.kind
+            && let Some(Item::PrivateVariable {
+                object,
+                field,
+                record,
+                ty,
+            }) = self.resolved_item(sc, id)
+        {
+            let part = Part::Element {
+                index: design::Expr::Const(Value::Integer(field as i64)),
+                container: record,
+            };
+            return Ok(Some((design::Expr::Const(object), vec![part], ty)));
+        }
         let (prefix, select): (&ast::Expr, Option<&ast::Ident>) = match &target.kind {
             ast::ExprKind::Selected(prefix, suffix)
                 if !self.resolved.contains_key(&suffix.span) =>

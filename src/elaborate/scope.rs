@@ -98,6 +98,20 @@ pub enum Item<'a> {
     /// An alias of a predefined operator (`alias "*" is "and" [bit, bit return bit];`): the
     /// operator's symbol, without quotes.
     OperatorAlias(Rc<str>),
+    /// A private variable of a shared variable of protected type, in its methods' bodies:
+    /// field `field` of the record on the heap that access value `object` designates.
+    PrivateVariable {
+        object: Value,
+        field: usize,
+        record: Type,
+        ty: Ty,
+    },
+    /// A shared variable of protected type: its methods by name (each shared variable has
+    /// its own, whose bodies reach its own private variables).
+    SharedObject {
+        ty: Ty,
+        methods: Rc<FxHashMap<String, Vec<Item<'a>>>>,
+    },
 }
 
 /// One selection from a composite value, outermost first in a path.
@@ -180,6 +194,8 @@ impl<'a> Item<'a> {
             Item::Binding(_) => "a configuration specification",
             Item::Attribute => "an attribute",
             Item::OperatorAlias(_) => "an operator",
+            Item::PrivateVariable { .. } => "a variable",
+            Item::SharedObject { .. } => "a shared variable",
             Item::Poison(_) => "an unsupported declaration",
         }
     }

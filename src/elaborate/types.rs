@@ -26,6 +26,15 @@ pub enum Ty {
     Access(Rc<AccessTy>),
     /// A file type of `element`s (`text`: of `string`).
     File(Rc<FileTy>),
+    /// A protected type, by its name and the span of its declaration's identifier (where
+    /// `Elab::protected` keeps its methods and body).
+    Protected(Rc<ProtectedTy>),
+}
+
+#[derive(Debug, PartialEq)]
+pub struct ProtectedTy {
+    pub name: String,
+    pub decl: crate::source::Span,
 }
 
 /// An access type. The designated type is set once it is known: a type declared
@@ -189,6 +198,7 @@ impl Ty {
             (Ty::Physical(a), Ty::Physical(b)) => a.name == b.name,
             (Ty::Access(a), Ty::Access(b)) => a.name == b.name,
             (Ty::File(a), Ty::File(b)) => a.name == b.name,
+            (Ty::Protected(a), Ty::Protected(b)) => a.decl == b.decl,
             (a, b) => std::mem::discriminant(a) == std::mem::discriminant(b),
         }
     }
@@ -198,7 +208,10 @@ impl Ty {
     }
 
     pub fn is_scalar(&self) -> bool {
-        !matches!(self, Ty::Array(_) | Ty::Record(_) | Ty::File(_))
+        !matches!(
+            self,
+            Ty::Array(_) | Ty::Record(_) | Ty::File(_) | Ty::Protected(_)
+        )
     }
 
     pub fn is_string(&self) -> bool {
@@ -248,6 +261,10 @@ impl Ty {
             Ty::File(t) => Type::File {
                 name: t.name.clone(),
             },
+            // A shared variable's value is the access value of its object.
+            Ty::Protected(p) => Type::Access {
+                name: p.name.clone(),
+            },
         }
     }
 
@@ -266,6 +283,7 @@ impl Ty {
             Ty::Access(_) => Value::Access(0),
             // A file object's value is its number, given where it is declared.
             Ty::File(_) => Value::File(u32::MAX),
+            Ty::Protected(_) => Value::Access(0),
         }
     }
 
@@ -290,7 +308,7 @@ impl Ty {
                 Value::Integer(i64::from(i32::MIN)),
                 Value::Integer(i64::from(i32::MAX)),
             )),
-            Ty::Array(_) | Ty::Record(_) | Ty::Access(_) | Ty::File(_) => None,
+            Ty::Array(_) | Ty::Record(_) | Ty::Access(_) | Ty::File(_) | Ty::Protected(_) => None,
         }
     }
 }
@@ -308,6 +326,7 @@ impl fmt::Display for Ty {
             Ty::Physical(p) => f.write_str(&p.name),
             Ty::Access(a) => f.write_str(&a.name),
             Ty::File(t) => f.write_str(&t.name),
+            Ty::Protected(p) => f.write_str(&p.name),
         }
     }
 }

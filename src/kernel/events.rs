@@ -5,10 +5,11 @@ use crate::design::{Design, QuantityId, SignalId, Value};
 
 use super::error::SimError;
 use super::eval::{Env, truth};
-use super::io::{Files, Io};
+use super::io::{Files, Heap, Io};
 use super::process::{self, Context, ProcState, Suspend};
 use super::signals::Signals;
 use super::{Outcome, Report};
+use std::cell::RefCell;
 
 /// Delta cycles allowed at one time point before the run counts as an endless zero-delay loop.
 pub(crate) const DELTA_LIMIT: usize = 10_000;
@@ -43,6 +44,13 @@ pub(crate) struct EventKernel<'d> {
 
 impl<'d> EventKernel<'d> {
     pub fn new(design: &'d Design) -> Result<EventKernel<'d>, SimError> {
+        let heap = RefCell::new(Heap::default());
+        // The shared variables' objects first, so that the k-th is `Access(k + 1)`.
+        for object in &design.shared_objects {
+            heap.borrow_mut()
+                .alloc(object.clone())
+                .map_err(|e| SimError::BadOption { message: e.message })?;
+        }
         Ok(EventKernel {
             design,
             signals: Signals::new(design)?,
@@ -58,7 +66,7 @@ impl<'d> EventKernel<'d> {
             delta_cycles: 0,
             breaks_total: 0,
             io: Io {
-                heap: Default::default(),
+                heap,
                 files: std::cell::RefCell::new(Files::new(&design.files).map_err(|(k, e)| {
                     SimError::FileOpen {
                         message: e.message,
