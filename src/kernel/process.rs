@@ -154,6 +154,27 @@ fn in_range(v: &Value, range: Option<(i64, i64)>, what: &str, name: &str) -> Res
     }
 }
 
+/// `d` seconds after `now`, on the femtosecond grid VHDL's time lives on (LRM 3.1.3.1: time
+/// is an integer number of its resolution limit), never before `now` (which an analog
+/// threshold crossing puts between grid points). Sums of delays in seconds drift off the
+/// grid (13 000 clock periods of 25 us end 16 fs before 0.324975 s), and two processes
+/// reaching the same instant by different sums would schedule two time points 16 fs apart,
+/// a step no integrator can take; on the grid they are one. `d = 0` is the next delta cycle
+/// at `now` itself. Beyond 2^53 fs (about 9000 s) the nearest double is kept.
+pub(crate) fn later(now: f64, d: f64) -> f64 {
+    const FS: f64 = 1e15;
+    if d == 0.0 {
+        return now;
+    }
+    let t = now + d;
+    let n = (t * FS).round();
+    if n.abs() < 9.0e15 {
+        (n / FS).max(now)
+    } else {
+        t
+    }
+}
+
 /// Runs process `index` until it suspends.
 pub(crate) fn run(
     index: usize,
@@ -259,7 +280,7 @@ pub(crate) fn run(
                         None => None,
                     };
                     let d = seconds(&eval(delay, &env).map_err(at)?).map_err(at)?;
-                    let t = cx.now + d;
+                    let t = later(cx.now, d);
                     if d < 0.0 || t < last {
                         return Err(at(EvalError::new(
                             format!("waveform delay {d} s is negative or out of order"),
@@ -353,7 +374,7 @@ pub(crate) fn run(
                                 "the timeout of a wait must not be negative (LRM 10.2)",
                             )));
                         }
-                        Some(cx.now + d)
+                        Some(later(cx.now, d))
                     }
                     None => None,
                 };
@@ -510,5 +531,27 @@ fn seconds(v: &Value) -> Result<f64, EvalError> {
             "a delay is not a time",
             "delays and timeouts must be of type time",
         )),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::later;
+
+    #[test]
+    fn times_stay_on_the_femtosecond_grid_whatever_the_sum() {
+        let (mut fast, mut slow) = (0.0, 0.0);
+        for _ in 0..64995 {
+            fast = later(fast, 5e-6);
+        }
+        for _ in 0..4333 {
+            slow = later(slow, 75e-6);
+        }
+        assert_eq!(fast, slow);
+        assert_eq!(fast, later(0.0, 0.324975));
+        // A delta cycle stays at `now`, even between grid points (an analog crossing).
+        let crossing = 0.006875000500000004;
+        assert_eq!(later(crossing, 0.0), crossing);
+        assert!(later(crossing, 1e-16) >= crossing);
     }
 }
