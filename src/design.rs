@@ -377,6 +377,9 @@ pub enum SignalKind {
         first: usize,
         len: Option<usize>,
     },
+    /// `S'transaction` (LRM 14.1): a `bit` that toggles in each simulation cycle in which
+    /// `source` is active; the kernel updates it, nothing drives it.
+    Transaction { source: SignalId },
 }
 
 /// A process (explicit, or the equivalent process of a concurrent statement: signal
@@ -724,6 +727,12 @@ pub enum SignalAttr {
     LastValue,
     /// Seconds since the last event.
     LastEvent,
+    /// Seconds since the signal was last active.
+    LastActive,
+    /// Whether the evaluating process's driver of the signal is connected.
+    Driving,
+    /// The current value of the evaluating process's driver of the signal.
+    DrivingValue,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

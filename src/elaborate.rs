@@ -204,6 +204,8 @@ struct Elab<'a> {
     resolved_signals: Vec<(SignalId, usize)>,
     /// The implicit signals of `s'delayed(t)`, by signal and delay (its bits).
     delayed_signals: FxHashMap<(SignalId, u64), SignalId>,
+    /// `S'transaction` signals by `S`.
+    transaction_signals: FxHashMap<SignalId, SignalId>,
     /// Disconnection delays of guarded signals in seconds (`disconnect s : t after 3 ns;`).
     disconnect_delays: FxHashMap<SignalId, f64>,
     /// The `GUARD` signals of the guarded blocks being elaborated, innermost last: the guard
@@ -300,6 +302,7 @@ impl<'a> Elab<'a> {
             resolved_signals: Vec::new(),
             disconnect_delays: FxHashMap::default(),
             delayed_signals: FxHashMap::default(),
+            transaction_signals: FxHashMap::default(),
             guards: Vec::new(),
             dot_aux: FxHashMap::default(),
             terminal_attrs: FxHashMap::default(),

@@ -16,7 +16,6 @@ use super::types::{Sub, Ty, index_value, position};
 use super::{Elab, R, Reported};
 
 const ANALOG_UNSUPPORTED: &[&str] = &["across", "through"];
-const SIGNAL_UNSUPPORTED: &[&str] = &["transaction", "last_active", "driving", "driving_value"];
 
 impl<'a> Elab<'a> {
     pub(super) fn type_mark(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<Rc<Sub>> {
@@ -161,7 +160,8 @@ impl<'a> Elab<'a> {
                 };
                 Ok(Typed { e, ty: Ty::Boolean })
             }
-            "event" | "active" | "last_value" | "last_event" => {
+            "event" | "active" | "last_value" | "last_event" | "last_active" | "driving"
+            | "driving_value" => {
                 let p = self.signal_expr(sc, prefix)?;
                 let Expr::Signal(s) = p.e else {
                     return Err(self.wrong_class(prefix, &p, "a signal", name));
@@ -170,9 +170,21 @@ impl<'a> Elab<'a> {
                     "event" => (SignalAttr::Event, Ty::Boolean),
                     "active" => (SignalAttr::Active, Ty::Boolean),
                     "last_value" => (SignalAttr::LastValue, p.ty),
+                    "last_active" => (SignalAttr::LastActive, Ty::Time),
+                    "driving" => (SignalAttr::Driving, Ty::Boolean),
+                    "driving_value" => (SignalAttr::DrivingValue, p.ty),
                     _ => (SignalAttr::LastEvent, Ty::Time),
                 };
                 Ok(Typed { e: Expr::SignalAttr(s, a), ty })
+            }
+            "transaction" => {
+                let p = self.signal_expr(sc, prefix)?;
+                let Expr::Signal(s) = p.e else {
+                    return Err(self.wrong_class(prefix, &p, "a signal", name));
+                };
+                let bit = self.standard_type("bit").unwrap_or(Ty::Boolean);
+                let t = self.transaction_signal(s, &bit, span);
+                Ok(Typed { e: Expr::Signal(t), ty: bit })
             }
             "image" => {
                 let ty = self.type_mark(sc, prefix)?.ty.clone();
@@ -252,18 +264,18 @@ impl<'a> Elab<'a> {
                 };
                 self.position_attribute(sc, prefix, name, x, span)
             }
-            _ if ANALOG_UNSUPPORTED.contains(&name) || SIGNAL_UNSUPPORTED.contains(&name) => {
+            _ if ANALOG_UNSUPPORTED.contains(&name) => {
                 let _ = want;
                 Err(self.error(ElabError::unsupported(
                     attr.span,
                     format!("the attribute `'{name}`"),
-                    "vams supports 'dot, 'integ, 'above, 'delayed, 'slew, 'ltf, 'zoh and 'ztf on quantities and 'event, 'active, 'last_value, 'last_event, 'delayed, 'stable, 'quiet, 'ramp and 'slew on signals",
+                    "vams supports 'dot, 'integ, 'above, 'delayed, 'slew, 'ltf, 'zoh and 'ztf on quantities and 'event, 'active, 'last_value, 'last_event, 'last_active, 'transaction, 'driving, 'driving_value, 'delayed, 'stable, 'quiet, 'ramp and 'slew on signals",
                 )))
             }
             _ => Err(self.error(ElabError::unsupported(
                 attr.span,
                 format!("the attribute `'{name}`"),
-                "supported: 'dot 'integ 'above 'delayed 'ltf 'zoh 'ztf 'ramp 'slew 'event 'active 'last_value 'last_event 'image 'value 'tolerance 'high 'low 'left 'right 'length 'range 'pos 'val 'succ 'pred 'leftof 'rightof",
+                "supported: 'dot 'integ 'above 'delayed 'ltf 'zoh 'ztf 'ramp 'slew 'event 'active 'last_value 'last_event 'last_active 'transaction 'driving 'driving_value 'image 'value 'tolerance 'high 'low 'left 'right 'length 'range 'pos 'val 'succ 'pred 'leftof 'rightof",
             ))),
         }
     }

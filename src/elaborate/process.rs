@@ -1347,6 +1347,28 @@ impl<'a> Elab<'a> {
 
     /// `s'delayed(t)` (LRM 14.1): an implicit signal following `s` by a transport delay of
     /// `t` seconds (0: one delta cycle), kept by the LRM's equivalent process
+    /// `s'transaction`: a `bit` signal the kernel toggles whenever `s` is active. One per
+    /// signal.
+    pub(super) fn transaction_signal(&mut self, s: SignalId, bit: &Ty, span: Span) -> SignalId {
+        if let Some(&t) = self.transaction_signals.get(&s) {
+            return t;
+        }
+        let id = SignalId(self.design.signals.len() as u32);
+        let signal = crate::design::Signal {
+            name: self.hier_name(self.sources.snippet(span)),
+            ty: bit.to_design(),
+            init: Value::Enum(0),
+            kind: crate::design::SignalKind::Transaction { source: s },
+            span,
+            range: None,
+            resolution: None,
+            guarded: None,
+        };
+        self.design.signals.push(signal);
+        self.transaction_signals.insert(s, id);
+        id
+    }
+
     /// `process (s) begin d <= transport s after t; end process;`. One per signal and delay.
     pub(super) fn delayed_signal(&mut self, s: SignalId, t: f64, span: Span) -> SignalId {
         if let Some(&d) = self.delayed_signals.get(&(s, t.to_bits())) {

@@ -235,6 +235,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                 subprograms: &self.design.subprograms,
                 depth: 0,
                 io: &super::io::Io::default(),
+                drivers: None,
             };
             let step = eval(&limit.max_step, &env)
                 .ok()

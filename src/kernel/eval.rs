@@ -23,6 +23,9 @@ pub(crate) struct Env<'a> {
     pub depth: usize,
     /// The heap and the files.
     pub io: &'a Io,
+    /// The signals' drivers and the evaluating process, for `'driving` and `'driving_value`
+    /// (`None` outside a process).
+    pub drivers: Option<(&'a super::signals::Signals, usize)>,
 }
 
 pub(crate) fn eval(e: &Expr, env: &Env) -> Result<Value, EvalError> {
@@ -96,6 +99,23 @@ pub(crate) fn eval(e: &Expr, env: &Env) -> Result<Value, EvalError> {
                     Some(t) => env.now - t,
                     None => f64::MAX,
                 }),
+                SignalAttr::LastActive => Value::Time(match st.last_active {
+                    Some(t) => env.now - t,
+                    None => f64::MAX,
+                }),
+                SignalAttr::Driving | SignalAttr::DrivingValue => {
+                    let driving = env.drivers.and_then(|(d, p)| d.driving(p, *s));
+                    let Some((connected, value)) = driving else {
+                        return Err(EvalError::new(
+                            "`'driving` or `'driving_value` of a signal this process does not drive",
+                            "the prefix must be a signal the process assigns (LRM 14.1)",
+                        ));
+                    };
+                    match attr {
+                        SignalAttr::Driving => Value::Boolean(connected),
+                        _ => value,
+                    }
+                }
             }
         }
     })
@@ -192,6 +212,7 @@ mod tests {
             subprograms: &[],
             depth: 0,
             io: &Io::default(),
+            drivers: None,
         };
         eval(e, &env)
     }

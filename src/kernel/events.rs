@@ -163,6 +163,7 @@ impl<'d> EventKernel<'d> {
                     subprograms: subs,
                     depth: 0,
                     io: &self.io,
+                    drivers: Some((&self.signals, i)),
                 };
                 let process = &self.design.processes[i];
                 let holds = super::eval::eval(cond, &env)

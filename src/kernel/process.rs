@@ -214,6 +214,7 @@ pub(crate) fn run(
             subprograms: subs,
             depth: state.stack.len(),
             io: cx.io,
+            drivers: Some((&*cx.signals, index)),
         };
         // The statement the instruction comes from, else the process.
         let span = spans.get(state.pc).copied().unwrap_or(process.span);

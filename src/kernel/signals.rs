@@ -22,6 +22,8 @@ pub(crate) struct SignalState {
     pub last_value: Value,
     /// Time of the last event; `None` before the first.
     pub last_event: Option<f64>,
+    /// Time the signal was last active; `None` before the first transaction.
+    pub last_active: Option<f64>,
     /// An event (value change) in the current simulation cycle.
     pub event: bool,
     /// A transaction (with or without a change) in the current simulation cycle.
@@ -78,6 +80,8 @@ pub(crate) struct Signals {
     view_of: Vec<Option<(SignalId, usize, Option<usize>)>>,
     /// The view signals, in increasing order.
     views: Vec<SignalId>,
+    /// `(S'transaction, S)` pairs ([`SignalKind::Transaction`]).
+    transactions: Vec<(SignalId, SignalId)>,
     /// `'above` values to apply in the next update phase.
     forced: Vec<(SignalId, Value)>,
     /// Signals with an event in the last update phase.
@@ -124,6 +128,7 @@ impl Signals {
                 value: s.init.clone(),
                 last_value: s.init.clone(),
                 last_event: None,
+                last_active: None,
                 event: false,
                 active: false,
             })
@@ -308,6 +313,15 @@ impl Signals {
                 .map(|s| SignalId(s as u32))
                 .collect(),
             view_of,
+            transactions: design
+                .signals
+                .iter()
+                .enumerate()
+                .filter_map(|(k, s)| match s.kind {
+                    SignalKind::Transaction { source } => Some((SignalId(k as u32), source)),
+                    _ => None,
+                })
+                .collect(),
             forced: Vec::new(),
             events: Vec::new(),
             changed: vec![false; n],
@@ -357,6 +371,25 @@ impl Signals {
             _ => (process, signal, element),
         };
         self.index.get(&key).copied()
+    }
+
+    /// `S'driving` and `S'driving_value` for `process` (LRM 14.1): whether its driver of
+    /// `signal` is connected and the driver's current value (of a signal driven element by
+    /// element, the array of its element drivers'); `None` when the process has no driver.
+    pub fn driving(&self, process: usize, signal: SignalId) -> Option<(bool, Value)> {
+        if let (None, Some(n)) = (self.view_of[signal.index()], self.split[signal.index()]) {
+            let mut connected = true;
+            let mut values = Vec::with_capacity(n);
+            for k in 0..n {
+                let d = &self.drivers[self.driver(process, signal, Some(k))?];
+                connected &= d.connected;
+                values.push(d.current.clone());
+            }
+            let string = matches!(self.states[signal.index()].value, Value::String(_));
+            return Some((connected, crate::design::aggregate_value(values, string)));
+        }
+        let d = &self.drivers[self.driver(process, signal, None)?];
+        Some((d.connected, d.current.clone()))
     }
 
     /// The number of elements of a signal driven element by element; `None` for a signal
@@ -477,6 +510,24 @@ impl Signals {
                 self.set(v, value, now);
             }
         }
+        // `S'transaction` toggles whenever `S` is active; in signal order, so the transaction
+        // signal of a transaction signal follows its source.
+        for k in 0..self.transactions.len() {
+            let (t, source) = self.transactions[k];
+            if self.states[source.index()].active {
+                let toggled = match self.states[t.index()].value {
+                    Value::Enum(b) => Value::Enum(1 - b.min(1)),
+                    _ => Value::Enum(1),
+                };
+                self.states[t.index()].active = true;
+                self.set(t, toggled, now);
+            }
+        }
+        for st in &mut self.states {
+            if st.active {
+                st.last_active = Some(now);
+            }
+        }
         Ok(())
     }
 
@@ -590,6 +641,7 @@ impl Signals {
             depth: 0,
             // A resolution function's objects live for its call only.
             io: &super::io::Io::default(),
+            drivers: None,
         };
         super::call::call_function(function, &[Expr::Const(values)], &env)
             .map_err(|e| fail(format!("in `{}`: {}", r.name, e.message), e.help))

@@ -1,7 +1,10 @@
 entity t is end;
 architecture a of t is
   signal s : real := 0.0;
-  quantity y : real;
 begin
-  y == s'driving_value;
+  process
+  begin
+    report s'path_name;
+    wait;
+  end process;
 end;
