@@ -177,6 +177,33 @@ impl<'a> Elab<'a> {
                 };
                 Ok(Typed { e: Expr::SignalAttr(s, a), ty })
             }
+            // The name of a named entity (LRM 14.1), as declared (lower case), and its path
+            // from the top: `:tb:dut:s` (process labels are not part of vams's paths).
+            "simple_name" | "path_name" => {
+                let (ast::ExprKind::Name(id) | ast::ExprKind::Selected(_, id)) = &prefix.kind else {
+                    return Err(self.error(ElabError::invalid(
+                        prefix.span,
+                        format!("`'{name}` needs a name as its prefix"),
+                        None,
+                    )));
+                };
+                let text = if name == "simple_name" {
+                    id.name.clone()
+                } else {
+                    let mut path = format!(":{}", self.design.top);
+                    for part in self.path.split('.').filter(|p| !p.is_empty()) {
+                        path.push(':');
+                        path.push_str(part);
+                    }
+                    if id.name != self.design.top {
+                        path.push(':');
+                        path.push_str(&id.name);
+                    }
+                    path
+                };
+                let string = self.standard_type("string").unwrap_or(Ty::Integer);
+                Ok(Typed { e: Expr::Const(Value::String(text)), ty: string })
+            }
             "transaction" => {
                 let p = self.signal_expr(sc, prefix)?;
                 let Expr::Signal(s) = p.e else {

@@ -4,7 +4,7 @@ architecture a of t is
 begin
   process
   begin
-    report s'path_name;
+    report s'instance_name;
     wait;
   end process;
 end;
