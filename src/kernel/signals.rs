@@ -476,7 +476,9 @@ impl Signals {
                 due = true;
             }
             if due {
-                self.states[driver.signal.index()].active = true;
+                let st = &mut self.states[driver.signal.index()];
+                st.active = true;
+                st.last_active = Some(now);
             }
         }
         for s in 0..self.states.len() {
@@ -490,6 +492,7 @@ impl Signals {
         let forced = std::mem::take(&mut self.forced);
         for (s, value) in &forced {
             self.states[s.index()].active = true;
+            self.states[s.index()].last_active = Some(now);
             self.set(*s, value.clone(), now);
         }
         self.forced = forced;
@@ -507,6 +510,7 @@ impl Signals {
             // Elaboration placed the view within its parent's bounds.
             if let Some(value) = p.value.view(first, len) {
                 self.states[v.index()].active = true;
+                self.states[v.index()].last_active = Some(now);
                 self.set(v, value, now);
             }
         }
@@ -520,12 +524,8 @@ impl Signals {
                     _ => Value::Enum(1),
                 };
                 self.states[t.index()].active = true;
+                self.states[t.index()].last_active = Some(now);
                 self.set(t, toggled, now);
-            }
-        }
-        for st in &mut self.states {
-            if st.active {
-                st.last_active = Some(now);
             }
         }
         Ok(())
