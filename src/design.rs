@@ -145,6 +145,11 @@ pub enum NativeProc {
     FileOpen {
         status: bool,
     },
+    /// The opening of a file object declared in a subprogram or process with a name known
+    /// only at run time (`file f : text open read_mode is name_parameter;`): arguments the
+    /// file, the name and the `file_open_kind`; a file still open from an earlier call is
+    /// closed first, so each call reads from the start (LRM 4.3.1.4).
+    FileDeclare,
     FileClose,
     /// `read(f, value)` of a file of `ty` (not `text`): one element per line of the file.
     FileRead {

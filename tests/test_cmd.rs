@@ -211,7 +211,8 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_exact_time ... ok"))
         .stdout(contains("test tb_driver_attributes ... ok"))
         .stdout(contains("test tb_name_attributes ... ok"))
-        .stdout(contains("70 passed, 0 failed"));
+        .stdout(contains("test tb_file_in_function ... ok"))
+        .stdout(contains("71 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

@@ -217,6 +217,69 @@ impl<'a> Elab<'a> {
         Ok(())
     }
 
+    /// A file declaration in a process or subprogram whose file name is not static (a
+    /// parameter): the file object, opened by an instruction where the declaration is
+    /// elaborated at run time. `None` when the name is static (the design opens it at the
+    /// start, [`Elab::file_decl`]).
+    pub(super) fn dynamic_file_decl(
+        &mut self,
+        sc: &mut Scope<'a>,
+        p: &mut super::process::Proc,
+        names: &[ast::Ident],
+        subtype: &ast::SubtypeIndication,
+        open_kind: Option<&ast::Expr>,
+        name: &ast::Expr,
+    ) -> Option<R<()>> {
+        let string = self.standard_type("string").unwrap_or(Ty::Integer);
+        let quiet = self.errors.len();
+        let logical = match self.expr_of(sc, name, &string) {
+            Ok(t) if !matches!(t.e, design::Expr::Const(_)) => t.e,
+            Ok(_) => return None,
+            Err(_) => {
+                // Reported again, once, by the static path.
+                self.errors.truncate(quiet);
+                return None;
+            }
+        };
+        Some((|| {
+            let sub = self.subtype_indication(sc, subtype)?;
+            if !matches!(sub.ty, Ty::File(_)) {
+                return self.file_decl(sc, names, subtype, open_kind, Some(name));
+            }
+            let kind = match open_kind {
+                None => Value::Enum(0),
+                Some(k) => {
+                    let kind = self.standard_type("file_open_kind").unwrap_or(Ty::Integer);
+                    self.static_value(sc, k, &kind, "a file_open_kind")?
+                }
+            };
+            for n in names {
+                let id = self.design.files.len() as u32;
+                self.design.files.push(FileObject {
+                    name: n.name.clone(),
+                    span: n.span,
+                    open: None,
+                });
+                p.emit(Instr::Native {
+                    op: NativeProc::FileDeclare,
+                    args: vec![
+                        design::Expr::Const(Value::File(id)),
+                        logical.clone(),
+                        design::Expr::Const(kind.clone()),
+                    ],
+                    copy_back: Vec::new(),
+                    span: n.span,
+                });
+                let item = Item::Constant {
+                    value: Value::File(id),
+                    ty: sub.ty.clone(),
+                };
+                self.declare(sc, n, item)?;
+            }
+            Ok(())
+        })())
+    }
+
     /// `new t` or `new t'(value)` of the access type `want`.
     pub(super) fn allocator(
         &mut self,

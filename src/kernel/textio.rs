@@ -126,6 +126,27 @@ pub(crate) fn run(op: &NativeProc, args: &mut [Value], io: &Io) -> Result<(), Ev
                 ));
             }
         }
+        NativeProc::FileDeclare => {
+            let f = file_of(arg(0)?)?;
+            io.files.borrow_mut().close(f)?;
+            let mut open = [
+                Value::Enum(0),
+                args[0].clone(),
+                args[1].clone(),
+                args[2].clone(),
+            ];
+            run(&NativeProc::FileOpen { status: true }, &mut open, io)?;
+            if open[0] != Value::Enum(OpenStatus::Ok as u32) {
+                let name = match &args[1] {
+                    Value::String(s) => s.clone(),
+                    _ => String::new(),
+                };
+                return Err(EvalError::new(
+                    format!("cannot open the file \"{name}\" of a file declaration"),
+                    "check the path (relative paths start in the directory vams runs in) and its permissions",
+                ));
+            }
+        }
         NativeProc::FileClose => io.files.borrow_mut().close(file_of(arg(0)?)?)?,
         NativeProc::FileWrite { ty } => {
             let f = file_of(arg(0)?)?;
