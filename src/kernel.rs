@@ -36,6 +36,7 @@ mod textio;
 #[cfg(test)]
 mod tests;
 
+pub use call::{DEEP_CALL_DEPTH, DEEP_STACK, set_call_depth_limit};
 pub use cancel::Cancel;
 pub use error::SimError;
 pub use progress::ProgressHook;

@@ -448,11 +448,17 @@ impl<'a> Elab<'a> {
                 }
             }
         }
-        // The enclosing process's variables: in, and back on return.
-        for outer in self.captured(sc, sub, span)? {
-            copy_back.push((VarId(args.len() as u32), outer));
+        // The enclosing process's variables: in, and back on return, before the `out` and
+        // `inout` parameters are, so that `acc` of `p(5, total)` lands in `total` even though
+        // the body could also reach `total` itself (and left the copy it got unchanged).
+        let captured = self.captured(sc, sub, span)?;
+        let mut back = Vec::with_capacity(captured.len() + copy_back.len());
+        for outer in captured {
+            back.push((VarId(args.len() as u32), outer));
             args.push(Expr::Var(outer));
         }
+        back.append(&mut copy_back);
+        let copy_back = back;
         let id = self.instance(sub, &signals, &bounds, span)?;
         let call = Instr::Call {
             sub: id,

@@ -12,19 +12,44 @@ use super::eval::{Env, EvalError, eval, integer, offset, truth};
 use super::process::INSTRUCTION_LIMIT;
 
 /// The deepest chain of subprogram calls (function calls nested in expressions plus procedure
-/// frames of one process). A nested function call recurses in the interpreter: measured about
-/// 1.7 KB of stack per level in a release build and 15 KB in a debug build (`return f(n + 1) +
-/// 1;`), so 100 levels stay inside the 2 MiB of a test or worker thread either way.
+/// frames of one process) on a thread that did not set its own limit. A nested function call
+/// recurses in the interpreter: measured about 1.7 KB of stack per level in a release build
+/// and 15 KB in a debug build (`return f(n + 1) + 1;`), so 100 levels stay inside the 2 MiB
+/// of an ordinary thread either way.
 pub(crate) const MAX_CALL_DEPTH: usize = 100;
 
-const DEPTH_HELP: &str = "a recursive subprogram must reach a case that does not call itself; \
-                          vams allows 100 nested calls";
+/// The deepest chain on a thread with [`DEEP_STACK`] bytes of stack, as the command line's
+/// threads have: ordinary recursion (a factorial of 1000, a walk down a long list) fits, at
+/// 150 MB of stack in a debug build.
+pub const DEEP_CALL_DEPTH: usize = 10_000;
+
+/// The stack of a thread that runs simulations with [`DEEP_CALL_DEPTH`] (address space only:
+/// the pages a run does not touch cost nothing).
+pub const DEEP_STACK: usize = 1 << 30;
+
+thread_local! {
+    static CALL_DEPTH: std::cell::Cell<usize> = const { std::cell::Cell::new(MAX_CALL_DEPTH) };
+}
+
+/// Lets simulations on this thread nest `depth` calls; the thread's stack must hold them (see
+/// [`DEEP_STACK`]).
+pub fn set_call_depth_limit(depth: usize) {
+    CALL_DEPTH.with(|c| c.set(depth));
+}
+
+/// The call depth allowed on this thread.
+pub(crate) fn call_depth_limit() -> usize {
+    CALL_DEPTH.with(|c| c.get())
+}
 
 /// The error for a call one level too deep.
 pub(crate) fn too_deep(name: &str) -> EvalError {
+    let limit = call_depth_limit();
     EvalError::new(
-        format!("more than {MAX_CALL_DEPTH} nested subprogram calls (calling `{name}`)"),
-        DEPTH_HELP,
+        format!("more than {limit} nested subprogram calls (calling `{name}`)"),
+        "a recursive subprogram must reach a case that does not call itself (the command line \
+         allows 10 000 nested calls, a program calling the library 100 unless its thread sets \
+         more)",
     )
 }
 
@@ -47,7 +72,7 @@ pub(crate) fn call_function(
             "this is a bug in elaboration",
         ));
     };
-    if env.depth >= MAX_CALL_DEPTH {
+    if env.depth >= call_depth_limit() {
         return Err(too_deep(&sub.name));
     }
     let values = args

@@ -6,7 +6,7 @@ use crate::design::{
 };
 use crate::source::Span;
 
-use super::call::{MAX_CALL_DEPTH, frame, too_deep};
+use super::call::{call_depth_limit, frame, too_deep};
 use super::error::SimError;
 use super::eval::{Env, EvalError, eval, integer, offset, truth};
 use super::signals::{Delay, Signals};
@@ -474,7 +474,7 @@ pub(crate) fn run(
                         "this is a bug in elaboration",
                     )));
                 };
-                if state.stack.len() + 1 >= MAX_CALL_DEPTH {
+                if state.stack.len() + 1 >= call_depth_limit() {
                     return Err(at(too_deep(&callee.name)));
                 }
                 let values = args

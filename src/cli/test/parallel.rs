@@ -31,7 +31,9 @@ pub fn run_in_order<T: Sync, R: Send>(
         for _ in 0..jobs.clamp(1, items.len().max(1)) {
             let send = send.clone();
             let (next, work) = (&next, &work);
-            scope.spawn(move || {
+            let worker = move || {
+                // Each testbench allows ordinary recursion, as `vams run` does.
+                crate::kernel::set_call_depth_limit(crate::kernel::DEEP_CALL_DEPTH);
                 loop {
                     let k = next.fetch_add(1, Ordering::Relaxed);
                     let Some(item) = items.get(k) else { break };
@@ -41,7 +43,12 @@ pub fn run_in_order<T: Sync, R: Send>(
                         break; // The receiver is gone: nobody wants more results.
                     }
                 }
-            });
+            };
+            let deep = std::thread::Builder::new().stack_size(crate::kernel::DEEP_STACK);
+            // Invariant: spawning fails only without address space for the stack, which a
+            // 64-bit process has.
+            deep.spawn_scoped(scope, worker)
+                .expect("a worker thread with a deep stack");
         }
         drop(send);
         let mut pending: Vec<Option<Result<R, String>>> = (0..items.len()).map(|_| None).collect();
