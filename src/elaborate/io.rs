@@ -188,33 +188,48 @@ impl<'a> Elab<'a> {
                 let Value::String(file) = self.static_value(sc, n, &string, "a file name")? else {
                     return Err(super::Reported);
                 };
-                let mode = match open_kind {
-                    None => FileMode::Read,
-                    Some(k) => {
-                        let kind = self.standard_type("file_open_kind").unwrap_or(Ty::Integer);
-                        match self.static_value(sc, k, &kind, "a file_open_kind")? {
-                            Value::Enum(p) => FileMode::from_position(p).unwrap_or(FileMode::Read),
-                            _ => FileMode::Read,
-                        }
-                    }
-                };
+                let mode = self.open_mode(sc, open_kind)?;
                 Some((file, mode))
             }
         };
         for n in names {
-            let id = self.design.files.len() as u32;
-            self.design.files.push(FileObject {
-                name: n.name.clone(),
-                span: n.span,
-                open: open.clone(),
-            });
-            let item = Item::Constant {
-                value: Value::File(id),
-                ty: sub.ty.clone(),
-            };
-            self.declare(sc, n, item)?;
+            self.file_object(sc, n, &sub.ty, open.clone())?;
         }
         Ok(())
+    }
+
+    /// The `file_open_kind` of a file declaration as a mode (`read_mode` without one).
+    fn open_mode(&mut self, sc: &Scope<'a>, open_kind: Option<&ast::Expr>) -> R<FileMode> {
+        let Some(k) = open_kind else {
+            return Ok(FileMode::Read);
+        };
+        let kind = self.standard_type("file_open_kind").unwrap_or(Ty::Integer);
+        Ok(match self.static_value(sc, k, &kind, "a file_open_kind")? {
+            Value::Enum(p) => FileMode::from_position(p).unwrap_or(FileMode::Read),
+            _ => FileMode::Read,
+        })
+    }
+
+    /// A file object of the design named `n`, declared as the constant `Value::File` it is.
+    fn file_object(
+        &mut self,
+        sc: &mut Scope<'a>,
+        n: &ast::Ident,
+        ty: &Ty,
+        open: Option<(String, FileMode)>,
+    ) -> R<u32> {
+        let id = self.design.files.len() as u32;
+        self.design.files.push(FileObject {
+            name: n.name.clone(),
+            span: n.span,
+            open,
+        });
+        let item = Item::Constant {
+            value: Value::File(id),
+            ty: ty.clone(),
+        };
+        self.declare(sc, n, item)?;
+        Ok(id)
     }
 
     /// A file declaration in a process or subprogram whose file name is not static (a
@@ -246,20 +261,9 @@ impl<'a> Elab<'a> {
             if !matches!(sub.ty, Ty::File(_)) {
                 return self.file_decl(sc, names, subtype, open_kind, Some(name));
             }
-            let kind = match open_kind {
-                None => Value::Enum(0),
-                Some(k) => {
-                    let kind = self.standard_type("file_open_kind").unwrap_or(Ty::Integer);
-                    self.static_value(sc, k, &kind, "a file_open_kind")?
-                }
-            };
+            let kind = Value::Enum(self.open_mode(sc, open_kind)? as u32);
             for n in names {
-                let id = self.design.files.len() as u32;
-                self.design.files.push(FileObject {
-                    name: n.name.clone(),
-                    span: n.span,
-                    open: None,
-                });
+                let id = self.file_object(sc, n, &sub.ty, None)?;
                 p.emit(Instr::Native {
                     op: NativeProc::FileDeclare,
                     args: vec![
@@ -270,11 +274,6 @@ impl<'a> Elab<'a> {
                     copy_back: Vec::new(),
                     span: n.span,
                 });
-                let item = Item::Constant {
-                    value: Value::File(id),
-                    ty: sub.ty.clone(),
-                };
-                self.declare(sc, n, item)?;
             }
             Ok(())
         })())
@@ -490,14 +489,7 @@ impl<'a> Elab<'a> {
                 )));
             };
             let (id, path, ty) = self.variable_target(sc, vars, actual)?;
-            if !ty.same(&p.ty) {
-                return Err(self.error(ElabError::TypeMismatch {
-                    span: actual.span,
-                    expected: p.ty.to_string(),
-                    found: ty.to_string(),
-                    help: None,
-                }));
-            }
+            self.actual_of_type(actual, &ty, p)?;
             // Passed in even when `out`: a read of a string or bit vector takes the target's
             // length.
             let value = path

@@ -388,14 +388,7 @@ impl<'a> Elab<'a> {
                     // value, and written back into the variable after the call.
                     if let Some(part) = self.variable_part_actual(sc, vars, actual)? {
                         let (id, path, ty) = part;
-                        if !ty.same(&p.ty) {
-                            return Err(self.error(ElabError::TypeMismatch {
-                                span: actual.span,
-                                expected: p.ty.to_string(),
-                                found: ty.to_string(),
-                                help: None,
-                            }));
-                        }
+                        self.actual_of_type(actual, &ty, p)?;
                         let value = path.iter().fold(Expr::Var(id), |e, part| part.of(e));
                         bounds.push(actual_bounds(&p.ty, &ty, &value));
                         args.push(if p.mode == ParamMode::Out {
@@ -431,14 +424,8 @@ impl<'a> Elab<'a> {
                         }));
                     };
                     bounds.push(actual_bounds(&p.ty, ty, &Expr::Var(*id)));
-                    if !ty.same(&p.ty) {
-                        self.error(ElabError::TypeMismatch {
-                            span: actual.span,
-                            expected: p.ty.to_string(),
-                            found: ty.to_string(),
-                            help: None,
-                        });
-                    }
+                    // Reported; the call is still lowered.
+                    let _ = self.actual_of_type(actual, ty, p);
                     args.push(if p.mode == ParamMode::Out {
                         Expr::Const(p.ty.default_value())
                     } else {
@@ -468,6 +455,19 @@ impl<'a> Elab<'a> {
             span,
         };
         Ok((call, parts))
+    }
+
+    /// The error for an `out` or `inout` actual of type `ty` whose parameter `p` has another.
+    pub(super) fn actual_of_type(&mut self, actual: &ast::Expr, ty: &Ty, p: &Param<'a>) -> R<()> {
+        if ty.same(&p.ty) {
+            return Ok(());
+        }
+        Err(self.error(ElabError::TypeMismatch {
+            span: actual.span,
+            expected: p.ty.to_string(),
+            found: ty.to_string(),
+            help: None,
+        }))
     }
 
     /// An `out` or `inout` actual naming a part of a variable (a field, an element, a
