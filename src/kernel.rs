@@ -37,6 +37,8 @@ mod textio;
 mod tests;
 
 pub use call::{DEEP_CALL_DEPTH, DEEP_STACK, set_call_depth_limit};
+/// The call depth of a thread that did not set one.
+pub const DEFAULT_CALL_DEPTH: usize = call::MAX_CALL_DEPTH;
 pub use cancel::Cancel;
 pub use error::SimError;
 pub use progress::ProgressHook;

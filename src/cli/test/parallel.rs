@@ -29,26 +29,29 @@ pub fn run_in_order<T: Sync, R: Send>(
     let (send, receive) = mpsc::channel::<(usize, Result<R, String>)>();
     std::thread::scope(|scope| {
         for _ in 0..jobs.clamp(1, items.len().max(1)) {
-            let send = send.clone();
             let (next, work) = (&next, &work);
-            let worker = move || {
-                // Each testbench allows ordinary recursion, as `vams run` does.
-                crate::kernel::set_call_depth_limit(crate::kernel::DEEP_CALL_DEPTH);
-                loop {
-                    let k = next.fetch_add(1, Ordering::Relaxed);
-                    let Some(item) = items.get(k) else { break };
-                    let result = catch_unwind(AssertUnwindSafe(|| work(item)))
-                        .map_err(|p| panic_message(p.as_ref()));
-                    if send.send((k, result)).is_err() {
-                        break; // The receiver is gone: nobody wants more results.
+            // `depth`: the call depth the worker's stack holds.
+            let worker = |send: mpsc::Sender<_>, depth: usize| {
+                move || {
+                    crate::kernel::set_call_depth_limit(depth);
+                    loop {
+                        let k = next.fetch_add(1, Ordering::Relaxed);
+                        let Some(item) = items.get(k) else { break };
+                        let result = catch_unwind(AssertUnwindSafe(|| work(item)))
+                            .map_err(|p| panic_message(p.as_ref()));
+                        if send.send((k, result)).is_err() {
+                            break; // The receiver is gone: nobody wants more results.
+                        }
                     }
                 }
             };
+            // Each testbench allows ordinary recursion, as `vams run` does; a machine without
+            // the address space for the deep stack gets an ordinary thread and depth.
             let deep = std::thread::Builder::new().stack_size(crate::kernel::DEEP_STACK);
-            // Invariant: spawning fails only without address space for the stack, which a
-            // 64-bit process has.
-            deep.spawn_scoped(scope, worker)
-                .expect("a worker thread with a deep stack");
+            let deep_worker = worker(send.clone(), crate::kernel::DEEP_CALL_DEPTH);
+            if deep.spawn_scoped(scope, deep_worker).is_err() {
+                scope.spawn(worker(send.clone(), crate::kernel::DEFAULT_CALL_DEPTH));
+            }
         }
         drop(send);
         let mut pending: Vec<Option<Result<R, String>>> = (0..items.len()).map(|_| None).collect();
