@@ -342,6 +342,38 @@ impl<'a> Elab<'a> {
         Ok(Typed::new(design::Expr::Deref(Box::new(p.e)), ty))
     }
 
+    /// Whether an assignment target may reach into the heap: its root is a private variable
+    /// of a protected type, or a variable whose type holds access values, or it names `.all`.
+    /// Only then is it elaborated as an expression by [`Elab::heap_target`].
+    pub(super) fn may_reach_heap(&self, sc: &Scope<'a>, target: &ast::Expr) -> bool {
+        fn holds_access(ty: &Ty) -> bool {
+            match ty {
+                Ty::Access(_) => true,
+                Ty::Record(r) => r.fields.iter().any(|(_, t)| holds_access(t)),
+                Ty::Array(a) => holds_access(&a.element),
+                _ => false,
+            }
+        }
+        let mut e = target;
+        loop {
+            match &e.kind {
+                ast::ExprKind::Selected(_, s) if s.name == "all" => return true,
+                ast::ExprKind::Selected(prefix, s) if !self.resolved.contains_key(&s.span) => {
+                    e = prefix
+                }
+                ast::ExprKind::Apply(prefix, _) => e = prefix,
+                ast::ExprKind::Name(id) | ast::ExprKind::Selected(_, id) => {
+                    return match self.resolved_item(sc, id) {
+                        Some(Item::PrivateVariable { .. }) => true,
+                        Some(Item::Variable { ty, .. }) => holds_access(&ty),
+                        _ => false,
+                    };
+                }
+                _ => return false,
+            }
+        }
+    }
+
     /// An assignment target that reaches into the heap (`p.all`, `p.f`, `p(i)`,
     /// `r.next.value`): the access value whose object is updated, the path in that object,
     /// and the target's type. `None` for a target that does not dereference.

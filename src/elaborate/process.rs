@@ -494,7 +494,9 @@ impl<'a> Elab<'a> {
             SeqKind::SignalAssign { .. } => Some("assign signals"),
             // The native I/O procedures (`readline`, `read`, ...) change nothing but their
             // arguments and files: a function loading a table from a file may call them.
-            SeqKind::ProcedureCall(c) if !self.calls_native_io(sc, c) => Some("call procedures"),
+            SeqKind::ProcedureCall(c) if in_function && !self.calls_native_io(sc, c) => {
+                Some("call procedures")
+            }
             SeqKind::Break(_) => Some("execute `break`"),
             _ => None,
         };
@@ -574,7 +576,9 @@ impl<'a> Elab<'a> {
                     }
                     return Ok(());
                 }
-                if let Some((pointer, path, ty)) = self.heap_target(sc, target)? {
+                if self.may_reach_heap(sc, target)
+                    && let Some((pointer, path, ty)) = self.heap_target(sc, target)?
+                {
                     let v = self.expr_of(sc, value, &ty)?;
                     let object = Expr::Deref(Box::new(pointer.clone()));
                     let value = updated(object, &path, v.e);

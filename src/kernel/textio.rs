@@ -108,14 +108,7 @@ pub(crate) fn run(op: &NativeProc, args: &mut [Value], io: &Io) -> Result<(), Ev
             finish_read(io, args, parsed, *good, &format!("{what} bit_vector"))?;
         }
         NativeProc::FileOpen { status } => {
-            let k = usize::from(*status);
-            let f = file_of(arg(k)?)?;
-            let name = match arg(k + 1)? {
-                Value::String(s) => s.clone(),
-                _ => return Err(bug("a file name that is not a string")),
-            };
-            let mode = FileMode::from_position(int(arg(k + 2)?)? as u32)
-                .ok_or_else(|| bug("an unknown file_open_kind"))?;
+            let (f, name, mode) = open_arguments(&args[usize::from(*status)..])?;
             let result = io.files.borrow_mut().open(f, &name, mode);
             if *status {
                 args[0] = Value::Enum(result as u32);
@@ -127,20 +120,10 @@ pub(crate) fn run(op: &NativeProc, args: &mut [Value], io: &Io) -> Result<(), Ev
             }
         }
         NativeProc::FileDeclare => {
-            let f = file_of(arg(0)?)?;
-            io.files.borrow_mut().close(f)?;
-            let mut open = [
-                Value::Enum(0),
-                args[0].clone(),
-                args[1].clone(),
-                args[2].clone(),
-            ];
-            run(&NativeProc::FileOpen { status: true }, &mut open, io)?;
-            if open[0] != Value::Enum(OpenStatus::Ok as u32) {
-                let name = match &args[1] {
-                    Value::String(s) => s.clone(),
-                    _ => String::new(),
-                };
+            let (f, name, mode) = open_arguments(args)?;
+            let mut files = io.files.borrow_mut();
+            files.close(f)?;
+            if files.open(f, &name, mode) != OpenStatus::Ok {
                 return Err(EvalError::new(
                     format!("cannot open the file \"{name}\" of a file declaration"),
                     "check the path (relative paths start in the directory vams runs in) and its permissions",
@@ -178,6 +161,19 @@ pub(crate) fn run(op: &NativeProc, args: &mut [Value], io: &Io) -> Result<(), Ev
         }
     }
     Ok(())
+}
+
+/// The file, name and mode at the front of `args` (`file_open`'s after its status).
+fn open_arguments(args: &[Value]) -> Result<(u32, String, FileMode), EvalError> {
+    let [f, name, kind, ..] = args else {
+        return Err(bug("too few arguments"));
+    };
+    let Value::String(name) = name else {
+        return Err(bug("a file name that is not a string"));
+    };
+    let mode = FileMode::from_position(int(kind)? as u32)
+        .ok_or_else(|| bug("an unknown file_open_kind"))?;
+    Ok((file_of(f)?, name.clone(), mode))
 }
 
 /// The text a `line` designates (`null`: none).
