@@ -836,6 +836,9 @@ pub enum ExprKind {
     Binary(BinaryOp, Box<Expr>, Box<Expr>),
     /// `new subtype` or `new qualified_expression`.
     New(Box<Expr>),
+    /// A name with a signature saying which overload it denotes (`inc [integer return
+    /// integer]`): the prefix of an attribute name, or a name in an attribute specification.
+    Signed(Box<Expr>, Box<Signature>),
 }
 
 /// An association in a call, index, generic or port map: `[formal =>] actual`.

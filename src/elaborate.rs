@@ -225,6 +225,12 @@ struct Elab<'a> {
     path: String,
     /// Instance path of the architecture being elaborated (no block or generate labels).
     instance: String,
+    /// The label of the process being elaborated, for `'path_name` (`None` outside a
+    /// process, and in an unlabelled one).
+    process_label: Option<String>,
+    /// `entity(architecture)` of each design entity elaborated, by its instance path (`""`
+    /// for the top), for `'instance_name`.
+    instance_units: FxHashMap<String, String>,
     /// Unlabelled processes so far, per path (for `_pN` names): the current path and the
     /// paths enclosing it, outermost first.
     unlabelled: Vec<(String, usize)>,
@@ -298,6 +304,8 @@ impl<'a> Elab<'a> {
             above: Vec::new(),
             views: FxHashMap::default(),
             port_defaults: Vec::new(),
+            instance_units: FxHashMap::default(),
+            process_label: None,
             resolvers: Vec::new(),
             resolved_signals: Vec::new(),
             disconnect_delays: FxHashMap::default(),

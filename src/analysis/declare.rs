@@ -188,10 +188,16 @@ impl Analyzer<'_> {
                 if let crate::ast::EntityNames::List(names) = entities {
                     let region = *self.scope.last().expect("a unit always has a region");
                     for n in names {
-                        if let ExprKind::Name(id) = &n.kind
-                            && let Some([d]) = self.lookup_in(region, &id.name).as_deref()
-                        {
-                            self.reference(id.span, *d);
+                        match &n.kind {
+                            ExprKind::Name(id) => {
+                                if let Some([d]) = self.lookup_in(region, &id.name).as_deref() {
+                                    self.reference(id.span, *d);
+                                }
+                            }
+                            ExprKind::Signed(name, signature) => {
+                                self.signed_name(name, signature);
+                            }
+                            _ => {}
                         }
                     }
                 }

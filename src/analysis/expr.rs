@@ -215,6 +215,8 @@ impl Analyzer<'_> {
             },
             ExprKind::Apply(prefix, args) => self.infer_apply(prefix, args),
             ExprKind::Attribute(prefix, attr) => vec![self.attribute_type(prefix, attr)],
+            // Only the prefix of an attribute name.
+            ExprKind::Signed(..) => vec![UNKNOWN],
             ExprKind::Qualified(mark, _) => vec![self.peek_type_mark(mark)],
             ExprKind::Aggregate(_) => vec![AGGREGATE],
             ExprKind::Paren(inner) => self.infer(inner),
@@ -579,6 +581,10 @@ impl Analyzer<'_> {
                 let t = self.attribute_type(prefix, attr);
                 self.choose(e.span, &[t], expected)
             }
+            ExprKind::Signed(name, signature) => {
+                self.signed_name(name, signature);
+                UNKNOWN
+            }
             ExprKind::Qualified(mark, inner) => {
                 let t = self.type_mark(mark);
                 self.expr(inner, t);
@@ -644,9 +650,59 @@ impl Analyzer<'_> {
             ExprKind::Name(_) | ExprKind::Selected(..) => {
                 self.resolve_name(p);
             }
+            ExprKind::Signed(name, signature) => {
+                self.signed_name(name, signature);
+            }
             _ => {
                 self.expr_any(p);
             }
+        }
+    }
+
+    /// The declaration that a name with a signature denotes (`inc [integer return integer]`,
+    /// `idle [return state]`): the one overload whose parameter and result types are the
+    /// signature's (LRM 2.3.2). Its type marks are resolved either way.
+    pub fn signed_name(
+        &mut self,
+        name: &Expr,
+        signature: &crate::ast::Signature,
+    ) -> Option<DeclId> {
+        let params: Vec<TypeId> = signature.params.iter().map(|t| self.type_mark(t)).collect();
+        let result = signature.result.as_ref().map(|t| self.type_mark(t));
+        let Named::Decls(ds) = self.named(name) else {
+            self.resolve_name(name);
+            return None;
+        };
+        let same = |a: TypeId, b: TypeId| a == b || a == UNKNOWN || b == UNKNOWN;
+        let matching: Vec<DeclId> = ds
+            .into_iter()
+            .filter(|&d| match &self.out.decl(d).kind {
+                DeclKind::EnumLiteral(t) => params.is_empty() && result.is_none_or(|r| same(r, *t)),
+                DeclKind::Subprogram(sig) => {
+                    sig.params.len() == params.len()
+                        && sig.params.iter().zip(&params).all(|(p, &t)| same(p.ty, t))
+                        && match (sig.result, result) {
+                            (Some(a), Some(b)) => same(a, b),
+                            (None, None) => true,
+                            _ => false,
+                        }
+                }
+                _ => true,
+            })
+            .collect();
+        let span = match &name.kind {
+            ExprKind::Name(id) | ExprKind::Selected(_, id) => id.span,
+            _ => name.span,
+        };
+        if let ExprKind::Selected(p, _) = &name.kind {
+            self.resolve_name(p);
+        }
+        match matching.as_slice() {
+            [d] => {
+                self.reference(span, *d);
+                Some(*d)
+            }
+            _ => None,
         }
     }
 

@@ -34,6 +34,8 @@ impl Analyzer<'_> {
             }
             ExprKind::Apply(prefix, args) => self.apply_staticness(prefix, args),
             ExprKind::Attribute(prefix, _) => self.attribute_staticness(prefix),
+            // A literal or subprogram named with its signature.
+            ExprKind::Signed(..) => Staticness::Local,
             // An aggregate of globally static elements is globally static (LRM 7.4.2 (h)).
             ExprKind::Aggregate(elements) => elements
                 .iter()
@@ -171,7 +173,10 @@ impl Analyzer<'_> {
                 elements.iter().find_map(|el| self.dynamic_name(&el.value))
             }
             // An attribute's prefix is not read (`s'length` of a signal is static).
-            ExprKind::Attribute(..) | ExprKind::Literal(_) | ExprKind::New(_) => None,
+            ExprKind::Attribute(..)
+            | ExprKind::Signed(..)
+            | ExprKind::Literal(_)
+            | ExprKind::New(_) => None,
         }
     }
 }

@@ -447,6 +447,11 @@ impl<'a> Analyzer<'a> {
                     // errors of their own.
                     self.cut.push(u);
                 }
+                // Its own name, for attribute specifications of the architecture (`attribute
+                // cell_name of std_cell : architecture is ...`); any declaration of that name
+                // inside wins.
+                let d = self.push_decl(&a.name.name, a.name.span, DeclKind::Opaque);
+                self.out.regions[own.0 as usize].add_behind(&a.name.name, d);
                 self.decls(&a.decls);
                 self.conc_stmts(&a.stmts);
             }

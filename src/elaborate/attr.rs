@@ -42,6 +42,9 @@ impl<'a> Elab<'a> {
         want: Option<&Ty>,
     ) -> R<Typed> {
         let name = attr.name.as_str();
+        if let Some(Item::Attribute(_)) = sc.lookup(name).and_then(|items| items.first()) {
+            return self.user_attribute(sc, prefix, attr, span);
+        }
         let arg = |i: usize| match args.get(i) {
             Some(ast::Assoc {
                 actual: Actual::Expr(e),
@@ -178,8 +181,9 @@ impl<'a> Elab<'a> {
                 Ok(Typed { e: Expr::SignalAttr(s, a), ty })
             }
             // The name of a named entity (LRM 14.1), as declared (lower case), and its path
-            // from the top: `:tb:dut:s` (process labels are not part of vams's paths).
-            "simple_name" | "path_name" => {
+            // from the top: `:tb:dut:s`, or with the design entities `:tb(test):dut@dff(rtl):s`;
+            // the path of a region (the top, a process) ends in `:`.
+            "simple_name" | "path_name" | "instance_name" => {
                 let (ast::ExprKind::Name(id) | ast::ExprKind::Selected(_, id)) = &prefix.kind else {
                     return Err(self.error(ElabError::invalid(
                         prefix.span,
@@ -190,16 +194,7 @@ impl<'a> Elab<'a> {
                 let text = if name == "simple_name" {
                     id.name.clone()
                 } else {
-                    let mut path = format!(":{}", self.design.top);
-                    for part in self.path.split('.').filter(|p| !p.is_empty()) {
-                        path.push(':');
-                        path.push_str(part);
-                    }
-                    if id.name != self.design.top {
-                        path.push(':');
-                        path.push_str(&id.name);
-                    }
-                    path
+                    self.path_name(sc, id, name == "instance_name")
                 };
                 let string = self.standard_type("string").unwrap_or(Ty::Integer);
                 Ok(Typed { e: Expr::Const(Value::String(text)), ty: string })
@@ -303,6 +298,142 @@ impl<'a> Elab<'a> {
                 attr.span,
                 format!("the attribute `'{name}`"),
                 "supported: 'dot 'integ 'above 'delayed 'ltf 'zoh 'ztf 'ramp 'slew 'event 'active 'last_value 'last_event 'last_active 'transaction 'driving 'driving_value 'image 'value 'tolerance 'high 'low 'left 'right 'length 'range 'pos 'val 'succ 'pred 'leftof 'rightof",
+            ))),
+        }
+    }
+
+    /// `id'path_name`, or with `instance` `id'instance_name` (LRM 14.1), named where the
+    /// elaboration stands.
+    fn path_name(&self, sc: &Scope<'a>, id: &Ident, instance: bool) -> String {
+        let top = match self.instance_units.get("") {
+            Some(unit) if instance => unit.clone(),
+            _ => self.design.top.clone(),
+        };
+        let mut path = format!(":{top}");
+        let mut at = String::new();
+        for part in self.path.split('.').filter(|p| !p.is_empty()) {
+            if !at.is_empty() {
+                at.push('.');
+            }
+            at.push_str(part);
+            path.push(':');
+            path.push_str(part);
+            if let Some(unit) = self.instance_units.get(&at).filter(|_| instance) {
+                path.push('@');
+                path.push_str(unit);
+            }
+        }
+        path.push(':');
+        if self.path.is_empty() && id.name == self.design.top {
+            return path;
+        }
+        if let Some(label) = &self.process_label {
+            let local = matches!(
+                sc.lookup(&id.name).and_then(|items| items.first()),
+                Some(Item::Variable { .. })
+            );
+            if *label == id.name || local {
+                path.push_str(label);
+                path.push(':');
+            }
+            if *label == id.name {
+                return path;
+            }
+        }
+        path.push_str(&id.name);
+        path
+    }
+
+    /// An attribute specification (LRM 5.1): the value of attribute `attribute` of each named
+    /// entity, declared in the current region under keys no identifier can clash with (see
+    /// [`attribute_keys`]), where the entities' attribute names find it. A value computed at
+    /// run time is reported where it is read, not here.
+    pub(super) fn attribute_specification(
+        &mut self,
+        sc: &mut Scope<'a>,
+        attribute: &str,
+        entities: &ast::EntityNames,
+        class: &str,
+        value: &ast::Expr,
+    ) {
+        let Some(Item::Attribute(sub)) = sc.lookup(attribute).and_then(|i| i.first()).cloned()
+        else {
+            return;
+        };
+        let before = self.errors.len();
+        let item = match self.static_value(sc, value, &sub.ty, "an attribute value") {
+            Ok(value) => Item::Constant {
+                value,
+                ty: sub.ty.clone(),
+            },
+            Err(_) => {
+                let reason = self.errors.get(before).map(|e| e.to_string());
+                self.errors.truncate(before);
+                Item::Poison(Some(reason.unwrap_or_else(|| "its value".into()).into()))
+            }
+        };
+        let keys = match entities {
+            ast::EntityNames::List(names) => names
+                .iter()
+                .flat_map(|n| attribute_keys(&self.resolved, n, attribute, false))
+                .collect(),
+            // Every entity of the class declared in this region (`all`), or every one not
+            // named by an earlier specification of the attribute (`others`).
+            all_or_others => {
+                let others = matches!(all_or_others, ast::EntityNames::Others);
+                let region = sc
+                    .regions
+                    .last()
+                    .map(|r| r.items.clone())
+                    .unwrap_or_default();
+                region
+                    .iter()
+                    .filter(|(_, items)| items.iter().any(|i| of_class(i, class)))
+                    .map(|(name, _)| format!("'{attribute} of {name}"))
+                    .filter(|key| !others || !region.contains_key(key))
+                    .collect::<Vec<_>>()
+            }
+        };
+        for key in keys {
+            sc.declare(&key, item.clone());
+        }
+    }
+
+    /// The value of a user-defined attribute of a named entity (LRM 6.6), as the attribute
+    /// specification in the entity's declarative region gave it.
+    fn user_attribute(
+        &mut self,
+        sc: &Scope<'a>,
+        prefix: &ast::Expr,
+        attr: &Ident,
+        span: Span,
+    ) -> R<Typed> {
+        let found = attribute_keys(&self.resolved, prefix, &attr.name, true)
+            .into_iter()
+            .find_map(|key| sc.lookup(&key).and_then(|items| items.first()).cloned());
+        match found {
+            Some(Item::Constant { value, ty }) => Ok(Typed {
+                e: Expr::Const(value),
+                ty,
+            }),
+            Some(Item::Poison(Some(reason))) => Err(self.error(ElabError::unsupported(
+                span,
+                format!("the value of `'{}` here: {reason}", attr.name),
+                "give the attribute specification a value known before the run (literals, constants and generics)",
+            ))),
+            Some(Item::Poison(None)) => Err(super::Reported),
+            _ => Err(self.error(ElabError::invalid(
+                span,
+                format!(
+                    "no attribute specification gives `{}` a value of `'{}`",
+                    self.text(prefix.span),
+                    attr.name
+                ),
+                Some(format!(
+                    "add `attribute {} of {} : <class> is <value>;` where it is declared (LRM 5.1)",
+                    attr.name,
+                    self.text(prefix.span)
+                )),
             ))),
         }
     }
@@ -835,5 +966,51 @@ impl<'a> Elab<'a> {
                 }
             },
         }
+    }
+}
+
+/// The keys under which the value of `entity'attribute` is declared (by a specification) or
+/// looked up (by an attribute name, `use`), the most specific first: by the declaration the
+/// name denotes, as analysis resolved it (an overload named with its signature), then by the
+/// name (the entities of an `all` or `others` specification, every overload of a name
+/// specified without a signature, and a statement label, which a specification names before
+/// the statement declares it). A specification with a signature decorates its overload only.
+fn attribute_keys(
+    resolved: &rustc_hash::FxHashMap<Span, Span>,
+    entity: &ast::Expr,
+    attribute: &str,
+    use_: bool,
+) -> Vec<String> {
+    let (name, signed) = match &entity.kind {
+        ast::ExprKind::Signed(name, _) => (name.as_ref(), true),
+        _ => (entity, false),
+    };
+    let id = match &name.kind {
+        ast::ExprKind::Name(id) | ast::ExprKind::Selected(_, id) => id,
+        _ => return Vec::new(),
+    };
+    let by_decl = resolved
+        .get(&id.span)
+        .map(|decl| format!("'{attribute} of {decl:?}"));
+    let by_name =
+        (use_ || !signed || by_decl.is_none()).then(|| format!("'{attribute} of {}", id.name));
+    by_decl.into_iter().chain(by_name).collect()
+}
+
+/// Whether `item` is a named entity of entity class `class` (LRM 5.1).
+fn of_class(item: &Item, class: &str) -> bool {
+    match class {
+        "signal" => matches!(item, Item::Signal { .. }),
+        "constant" => matches!(item, Item::Constant { .. }),
+        "variable" => matches!(item, Item::Variable { .. }),
+        "quantity" => matches!(item, Item::Quantity(_) | Item::QuantityArray(_)),
+        "terminal" => matches!(item, Item::Terminal { .. } | Item::TerminalArray { .. }),
+        "type" | "subtype" => matches!(item, Item::Type(_)),
+        "nature" | "subnature" => matches!(item, Item::Nature(_) | Item::ArrayNature(_)),
+        "function" | "procedure" => matches!(item, Item::Subprogram(_)),
+        "literal" => matches!(item, Item::EnumLiteral { .. }),
+        "component" => matches!(item, Item::Component(_)),
+        "units" => matches!(item, Item::Unit { .. } | Item::TimeUnit(_)),
+        _ => false,
     }
 }

@@ -305,7 +305,10 @@ impl<'a> Elab<'a> {
                 }
                 Ok(())
             }
-            DeclKind::Attribute { name, .. } => self.declare(sc, name, Item::Attribute),
+            DeclKind::Attribute { name, type_mark } => {
+                let sub = self.type_mark(sc, type_mark)?;
+                self.declare(sc, name, Item::Attribute(sub))
+            }
             // Groups only carry user attributes, which the simulator does not read.
             DeclKind::Group { .. } => Ok(()),
             DeclKind::Disconnect {
@@ -365,16 +368,17 @@ impl<'a> Elab<'a> {
             DeclKind::AttributeSpec {
                 attribute,
                 entities,
+                class,
                 value,
-                ..
             } => {
-                // Only `symbol` of a subtype matters to the simulator (`Quantity::unit`).
-                if attribute.name != "symbol" {
-                    return Ok(());
-                }
+                self.attribute_specification(sc, &attribute.name, entities, &class.name, value);
                 let EntityNames::List(names) = entities else {
                     return Ok(());
                 };
+                // `symbol` of a subtype is also the unit of its quantities (`Quantity::unit`).
+                if attribute.name != "symbol" {
+                    return Ok(());
+                }
                 let Some(string) = self.standard_type("string") else {
                     return Ok(());
                 };

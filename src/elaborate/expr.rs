@@ -422,6 +422,11 @@ impl<'a> Elab<'a> {
                 }
             }
             ExprKind::New(inner) => self.allocator(sc, inner, want, e.span),
+            ExprKind::Signed(..) => Err(self.error(ElabError::invalid(
+                e.span,
+                "a name with a signature is no value",
+                Some("a signature selects an overload only as the prefix of an attribute name (`f [integer return integer]'attr`)".into()),
+            ))),
         }
     }
 

@@ -324,8 +324,44 @@ pub fn fold(e: Expr) -> Result<Expr, String> {
     }
     match eval(&e) {
         Ok(v) => Ok(Expr::Const(v)),
-        Err(NoFold::Dynamic) => Ok(e),
+        Err(NoFold::Dynamic) => Ok(element_of_aggregate(e)),
         Err(NoFold::Error(m)) => Err(m),
+    }
+}
+
+/// `(a, b, c)(i)` at a static `i` is that element, though the others are run-time values (a
+/// quantity array read in a loop of a procedural).
+fn element_of_aggregate(e: Expr) -> Expr {
+    let Expr::Index { array, index, ty } = e else {
+        return e;
+    };
+    match (*array, &*index) {
+        (
+            Expr::Aggregate {
+                mut elems,
+                string: false,
+            },
+            Expr::Const(Value::Integer(i)),
+        ) => {
+            let (left, ascending) = ty.index_origin();
+            let offset = if ascending { i - left } else { left - i };
+            match usize::try_from(offset) {
+                Ok(at) if at < elems.len() => elems.swap_remove(at),
+                _ => Expr::Index {
+                    array: Box::new(Expr::Aggregate {
+                        elems,
+                        string: false,
+                    }),
+                    index,
+                    ty,
+                },
+            }
+        }
+        (array, _) => Expr::Index {
+            array: Box::new(array),
+            index,
+            ty,
+        },
     }
 }
 

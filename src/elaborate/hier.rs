@@ -247,6 +247,10 @@ impl<'a> Elab<'a> {
         depth: usize,
     ) -> R<()> {
         let ent = entity.unit;
+        self.instance_units.insert(
+            self.path.clone(),
+            format!("{}({})", ent.name.name, arch.unit.name.name),
+        );
         let mut sc = self.unit_scope(&entity.library, &[entity.context, arch.context]);
         sc.push();
         let generics = flatten(&ent.generics);

@@ -363,7 +363,8 @@ fn refuse(f: &Subprogram, reason: &str) -> NotInlinable {
     }
 }
 
-/// `array(index) := value` on a local array whose value is static, with its type's bounds.
+/// `array(index) := value` at a static index, with the array type's bounds: on a local array
+/// whose value is static, or one that holds run-time values (a procedural's quantity array).
 fn set_element(
     array: &mut Expr,
     ty: Option<&Type>,
@@ -371,26 +372,42 @@ fn set_element(
     value: Expr,
 ) -> Result<(), &'static str> {
     let (
-        Expr::Const(Value::Array(elements)),
         Some(Type::Array {
             left, ascending, ..
         }),
         Expr::Const(Value::Integer(i)),
-        Expr::Const(v),
-    ) = (array, ty, index, value)
+    ) = (ty, index)
     else {
-        return Err(
-            "it assigns an element of an array at an index, or a value, that depends on a quantity",
-        );
+        return Err("it assigns an element of an array at an index that depends on a quantity");
     };
     let pos = if *ascending { i - left } else { left - i };
-    match usize::try_from(pos).ok().and_then(|p| elements.get_mut(p)) {
-        Some(slot) => {
-            *slot = v;
-            Ok(())
+    let out_of_bounds = "it assigns an array element outside the array's bounds";
+    let pos = usize::try_from(pos).map_err(|_| out_of_bounds)?;
+    match (array, value) {
+        (Expr::Const(Value::Array(elements)), Expr::Const(v)) => {
+            *elements.get_mut(pos).ok_or(out_of_bounds)? = v;
         }
-        None => Err("it assigns an array element outside the array's bounds"),
+        (array @ Expr::Const(Value::Array(_)), value) => {
+            let Expr::Const(Value::Array(elements)) = std::mem::replace(array, Expr::Now) else {
+                unreachable!("matched above");
+            };
+            let mut elems: Vec<Expr> = elements.into_iter().map(Expr::Const).collect();
+            *elems.get_mut(pos).ok_or(out_of_bounds)? = value;
+            *array = Expr::Aggregate {
+                elems,
+                string: false,
+            };
+        }
+        (Expr::Aggregate { elems, .. }, value) => {
+            *elems.get_mut(pos).ok_or(out_of_bounds)? = value;
+        }
+        _ => {
+            return Err(
+                "it assigns an element of an array whose value is not known element by element",
+            );
+        }
     }
+    Ok(())
 }
 
 /// `e` with each `Var(v)` replaced by `frame[v]`.

@@ -225,6 +225,10 @@ impl<'a> Elab<'a> {
     ) {
         let mut p = Proc::default();
         sc.push();
+        let outer = std::mem::replace(
+            &mut self.process_label,
+            stmt.label.as_ref().map(|l| l.name.clone()),
+        );
         let ok = self.process_decls(sc, &mut p, decls).is_ok();
         // The body loops back past the initial values the declarations assign.
         let body = p.here();
@@ -240,6 +244,7 @@ impl<'a> Elab<'a> {
         }
         self.seq(sc, &mut p, stmts);
         sc.pop();
+        self.process_label = outer;
         if sensitivity.is_some() {
             if stmts.iter().any(contains_wait) {
                 self.error(ElabError::invalid(

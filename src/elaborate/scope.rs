@@ -89,8 +89,8 @@ pub enum Item<'a> {
     /// declaration, declared under ` for LABEL`, ` for all COMPONENT` or ` for others
     /// COMPONENT` (names no identifier can clash with).
     Binding(BindingRef<'a>),
-    /// A user-declared attribute (`attribute symbol : string;`).
-    Attribute,
+    /// A user-declared attribute (`attribute symbol : string;`), with its type.
+    Attribute(Rc<Sub>),
     /// Declared, but its declaration could not be elaborated (a stdlib declaration using an
     /// unsupported construct): the reason, reported where it is used (`None`: the declaration's
     /// own error was reported already).
@@ -192,7 +192,7 @@ impl<'a> Item<'a> {
             Item::Package(_) => "a package",
             Item::Component(_) => "a component",
             Item::Binding(_) => "a configuration specification",
-            Item::Attribute => "an attribute",
+            Item::Attribute(_) => "an attribute",
             Item::OperatorAlias(_) => "an operator",
             Item::PrivateVariable { .. } => "a variable",
             Item::SharedObject { .. } => "a shared variable",

@@ -143,28 +143,40 @@ impl<'a> Elab<'a> {
             ret: None,
             returned: Vec::new(),
         });
-        let mut outputs: Vec<(QuantityId, VarId)> = Vec::new();
+        // Each assigned quantity, or quantity array, with the variable standing for it.
+        let mut outputs: Vec<(Vec<QuantityId>, VarId)> = Vec::new();
+        let mut frame_of: Vec<(VarId, Expr)> = Vec::new();
         for id in targets {
-            let (Some(decl), Some(Item::Quantity(q))) = (
-                self.resolved.get(&id.span).copied(),
-                self.resolved_item(sc, id),
-            ) else {
+            let Some(decl) = self.resolved.get(&id.span).copied() else {
                 continue;
             };
-            if outputs.iter().any(|(o, _)| *o == q) {
+            let (quantities, ty, start) = match self.resolved_item(sc, id) {
+                Some(Item::Quantity(q)) => (vec![q], Ty::Real, Expr::Quantity(q)),
+                Some(Item::QuantityArray(elements)) => {
+                    let start = Expr::Aggregate {
+                        elems: elements.ids.iter().map(|&q| Expr::Quantity(q)).collect(),
+                        string: false,
+                    };
+                    (elements.ids.clone(), elements.ty(), start)
+                }
+                _ => continue,
+            };
+            if outputs.iter().any(|(o, _)| *o == quantities) {
                 continue;
             }
-            let var = p.new_var(&id.name, &Ty::Real, Value::Real(0.0));
+            let init = ty.default_value();
+            let var = p.new_var(&id.name, &ty, init);
             let item = Item::Variable {
                 id: var,
-                ty: Ty::Real,
+                ty,
                 readonly: false,
                 path: std::rc::Rc::from([]),
             };
             // Declared at the quantity's own declaration, so that the names analysis resolved
             // to the quantity find the variable inside the body.
             inner.declare_at(&id.name, decl, item);
-            outputs.push((q, var));
+            outputs.push((quantities, var));
+            frame_of.push((var, start));
         }
         if outputs.is_empty() {
             return Err(self.error(ElabError::invalid(
@@ -182,8 +194,8 @@ impl<'a> Elab<'a> {
         }
         let (vars, code, spans) = p.into_parts();
         let mut frame: Vec<Expr> = vars.iter().map(|v| Expr::Const(v.init.clone())).collect();
-        for &(q, var) in &outputs {
-            frame[var.index()] = Expr::Quantity(q);
+        for (var, start) in frame_of {
+            frame[var.index()] = start;
         }
         let body = Subprogram {
             name: "procedural".into(),
@@ -207,22 +219,28 @@ impl<'a> Elab<'a> {
         };
         let text = self.text(stmt.span);
         let mut eqns = Vec::new();
-        for ((q, _), value) in outputs.into_iter().zip(values) {
-            if !value.is_analog() {
+        for ((quantities, _), value) in outputs.into_iter().zip(values) {
+            let parts = match quantities.len() {
+                1 if !is_array_value(&value) => Some(vec![value]),
+                n => array_elements(value, n),
+            };
+            let Some(parts) = parts.filter(|p| p.iter().all(Expr::is_analog)) else {
                 return Err(self.error(ElabError::invalid(
                     stmt.span,
                     "this procedural computes a value an equation cannot hold",
                     Some("equations read quantities, signals, constants and `now`".into()),
                 )));
+            };
+            for (q, value) in quantities.into_iter().zip(parts) {
+                let residual =
+                    Expr::Binary(BinaryOp::Sub, Box::new(Expr::Quantity(q)), Box::new(value));
+                let residual = self.folded(residual, Ty::Real, stmt.span)?.e;
+                eqns.push(Eqn {
+                    residual,
+                    span: stmt.span,
+                    text: format!("{} := ... in {text}", self.qname(q)),
+                });
             }
-            let residual =
-                Expr::Binary(BinaryOp::Sub, Box::new(Expr::Quantity(q)), Box::new(value));
-            let residual = self.folded(residual, Ty::Real, stmt.span)?.e;
-            eqns.push(Eqn {
-                residual,
-                span: stmt.span,
-                text: format!("{} := ... in {text}", self.qname(q)),
-            });
         }
         Ok(eqns)
     }
@@ -378,13 +396,46 @@ fn choice_span(c: &Choice) -> Span {
 }
 
 /// The simple names assigned with `:=` anywhere in `stmts` (nested statements included).
+/// Whether `e` is the value of a whole array (of a procedural's quantity array).
+fn is_array_value(e: &Expr) -> bool {
+    match e {
+        Expr::Aggregate { .. } | Expr::Const(Value::Array(_)) => true,
+        Expr::If(_, a, _) => is_array_value(a),
+        _ => false,
+    }
+}
+
+/// The `n` elements of an array value a procedural leaves in a quantity array: an aggregate,
+/// a constant, or a choice between such values on a quantity's condition (one conditional
+/// expression per element).
+fn array_elements(e: Expr, n: usize) -> Option<Vec<Expr>> {
+    let elems = match e {
+        Expr::Aggregate { elems, .. } => elems,
+        Expr::Const(Value::Array(elems)) => elems.into_iter().map(Expr::Const).collect(),
+        Expr::If(c, a, b) => {
+            let (a, b) = (array_elements(*a, n)?, array_elements(*b, n)?);
+            a.into_iter()
+                .zip(b)
+                .map(|(a, b)| Expr::If(c.clone(), Box::new(a), Box::new(b)))
+                .collect()
+        }
+        _ => return None,
+    };
+    (elems.len() == n).then_some(elems)
+}
+
 fn assigned_names<'s>(stmts: &'s [ast::SeqStmt], out: &mut Vec<&'s ast::Ident>) {
     for s in stmts {
         s.walk(&mut |s| {
-            if let ast::SeqKind::VariableAssign { target, .. } = &s.kind
-                && let ast::ExprKind::Name(id) = &target.kind
-            {
-                out.push(id);
+            if let ast::SeqKind::VariableAssign { target, .. } = &s.kind {
+                // `q := ...`, `q(i) := ...`, `q(1 to 2) := ...`: the quantity named at the root.
+                let mut e = target;
+                while let ast::ExprKind::Apply(prefix, _) = &e.kind {
+                    e = prefix;
+                }
+                if let ast::ExprKind::Name(id) = &e.kind {
+                    out.push(id);
+                }
             }
         });
     }

@@ -1,10 +1,13 @@
+library ieee_proposed; use ieee_proposed.electrical_systems.all;
 entity t is end;
 architecture a of t is
-  signal s : real := 0.0;
+  terminal n : electrical;
+  quantity v across i through n;
 begin
+  v == 1.0;
   process
   begin
-    report s'instance_name;
+    report real'image(v'across);
     wait;
   end process;
 end;
