@@ -79,6 +79,20 @@ pub struct Design {
     /// protected type: the kernel puts them on the heap first, in order, so that the `k`-th
     /// is `Value::Access(k + 1)`.
     pub shared_objects: Vec<Value>,
+    /// Component instances that no entity binds: elaborated as nothing (LRM 5.2.2), and
+    /// reported as warnings.
+    pub unbound: Vec<UnboundInstance>,
+}
+
+/// A component instance whose default binding found no entity of the component's name.
+#[derive(Clone, Debug, PartialEq)]
+pub struct UnboundInstance {
+    /// The instance's label.
+    pub label: String,
+    pub component: String,
+    pub library: String,
+    /// The component name in the instantiation.
+    pub span: Span,
 }
 
 /// A file object of the design: its name for messages, and the file it is opened on at the

@@ -54,7 +54,7 @@ mod types;
 mod views;
 
 pub use candidates::TopCandidate;
-pub use error::ElabError;
+pub use error::{ElabError, ElabWarning};
 
 use library::{Library, Unit, canonical_library};
 use scope::{Item, PackageScope, Scope};

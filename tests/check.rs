@@ -218,3 +218,21 @@ fn bad_input_of_every_kind_exits_1() {
         .stderr(predicates::str::contains("cannot read"));
     vams().arg("check").assert().code(2);
 }
+
+/// A component instance that no entity binds is legal (LRM 5.2.2): `vams check` warns at the
+/// instance and succeeds.
+#[test]
+fn an_unbound_component_instance_is_a_warning() {
+    let out = vams()
+        .args(["check", "tests/conformance/binding_indications.vhd"])
+        .output()
+        .expect("vams runs");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    assert!(
+        stderr.contains("component instance `unused` is unbound")
+            && stderr.contains("binding_indications.vhd:48:22"),
+        "{stderr}"
+    );
+    assert!(stderr.contains(": no errors"), "{stderr}");
+}

@@ -216,7 +216,8 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_inout_of_a_visible_variable ... ok"))
         .stdout(contains("test tb_procedural_array ... ok"))
         .stdout(contains("test tb_user_attributes ... ok"))
-        .stdout(contains("75 passed, 0 failed"));
+        .stdout(contains("test tb_binding_indications ... ok"))
+        .stdout(contains("76 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

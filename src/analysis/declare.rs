@@ -264,12 +264,15 @@ impl Analyzer<'_> {
             AstDecl::Configuration {
                 component, binding, ..
             } => {
-                // The component must be visible here, and the entity it is bound to exist;
-                // the maps are checked where the instance is elaborated.
-                self.resolve_name(component);
-                if let Some(crate::ast::InstantiatedUnit::Entity { name, .. }) = &binding.unit {
-                    self.resolve_name(name);
-                }
+                // The component must be visible here, and the entity it is bound to exist.
+                let region = match self.resolve_name(component).as_deref() {
+                    Some([d]) => match self.out.decl(*d).kind {
+                        DeclKind::Component(r) => Some(r),
+                        _ => None,
+                    },
+                    _ => None,
+                };
+                self.binding_maps(binding, region);
             }
             AstDecl::Disconnect {
                 signals,

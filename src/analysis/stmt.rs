@@ -461,6 +461,20 @@ impl Analyzer<'_> {
             }
             InstantiatedUnit::Configuration(_) => (None, String::new()),
         };
+        self.associations(region, &name, variants, generics, ports);
+    }
+
+    /// The generic and port maps of an instance or binding indication: each formal found in
+    /// the interface `region` of `name` (a component or entity; not checked when it has
+    /// `variants` in several files), each actual analysed with the formal's type.
+    fn associations(
+        &mut self,
+        region: Option<RegionId>,
+        name: &str,
+        variants: bool,
+        generics: &[Assoc],
+        ports: &[Assoc],
+    ) {
         for (assocs, what) in [(generics, "generic"), (ports, "port")] {
             for a in assocs {
                 let formal_ty = match (&a.formal, region) {
@@ -485,7 +499,7 @@ impl Analyzer<'_> {
                                 span: id.span,
                                 name: id.name.clone(),
                                 what,
-                                unit: name.clone(),
+                                unit: name.to_string(),
                                 help: None,
                             });
                             None
@@ -504,5 +518,51 @@ impl Analyzer<'_> {
                 }
             }
         }
+    }
+
+    /// The maps of a binding indication (`use entity work.reg(rtl) generic map (t_pd =>
+    /// 150 ps, width => width)`): formals of the entity, actuals read where the component
+    /// `component` (its interface region) is instantiated, so that its local generics and
+    /// ports are visible. Returns the unit of the entity bound.
+    pub fn binding_maps(
+        &mut self,
+        binding: &crate::ast::Binding,
+        component: Option<RegionId>,
+    ) -> Option<usize> {
+        let mut variants = false;
+        let mut unit = None;
+        let (region, name) = match &binding.unit {
+            Some(InstantiatedUnit::Entity { name: n, .. }) => {
+                let n: &Expr = n;
+                let found = self.resolve_name(n);
+                let region = match found.as_deref() {
+                    Some([d]) => match self.out.decl(*d).kind {
+                        DeclKind::Entity(r) => {
+                            variants = self.declared_twice(d);
+                            unit = self.unit_declaring(*d);
+                            Some(r)
+                        }
+                        _ => None,
+                    },
+                    _ => None,
+                };
+                (region, super::simple_name(n).to_string())
+            }
+            _ => (None, String::new()),
+        };
+        if let Some(c) = component {
+            self.scope.push(c);
+        }
+        self.associations(
+            region,
+            &name,
+            variants,
+            &binding.generic_map,
+            &binding.port_map,
+        );
+        if component.is_some() {
+            self.scope.pop();
+        }
+        unit
     }
 }

@@ -480,15 +480,93 @@ impl<'a> Analyzer<'a> {
                     self.missing_unit(c.entity.span, "entity", &name, library);
                     self.cut.push(u);
                 }
-                // The components are declared in the architecture (not visible here); the
-                // entities they are bound to must exist.
-                for name in configured_entities(&c.block) {
-                    self.resolve_name(name);
+                // The entities the components are bound to must exist, and the bindings'
+                // maps are read where the architecture declares the components.
+                match primary {
+                    Some(e) => self.block_configuration(&c.block, e),
+                    None => {
+                        for name in configured_entities(&c.block) {
+                            self.resolve_name(name);
+                        }
+                    }
                 }
             }
         }
         self.analysed[u] = true;
         self.out.units[u].incomplete = self.cut.contains(&u);
+    }
+
+    /// The block configuration `block` of an architecture of entity unit `entity`: each
+    /// component configuration's binding analysed in the architecture's scope (its
+    /// components, signals and context), the nested block configurations of the entities
+    /// bound likewise. An architecture not analysed is left alone (its absence is reported
+    /// where the configuration is elaborated).
+    fn block_configuration(&mut self, block: &crate::ast::BlockConfig, entity: usize) {
+        let name = super::simple_name(&block.spec);
+        let arch = (0..self.src.len()).find(|&a| {
+            let unit = &self.out.units[a];
+            unit.primary == Some(entity)
+                && matches!(unit.kind, UnitKind::Architecture { .. })
+                && unit.name == name
+                && self.state_done(a)
+        });
+        let Some(arch) = arch else {
+            for name in configured_entities(block) {
+                self.resolve_name(name);
+            }
+            return;
+        };
+        let unit = &self.out.units[arch];
+        let Some(scope) = unit
+            .scopes
+            .iter()
+            .find(|(span, _)| *span == unit.span)
+            .map(|(_, scope)| scope.clone())
+        else {
+            return;
+        };
+        // The architecture's names within the configuration's (whose context clause may
+        // name the libraries of the entities bound).
+        let mut inner = self.scope.clone();
+        inner.extend(scope);
+        let outer = std::mem::replace(&mut self.scope, inner);
+        self.configuration_items(&block.items);
+        self.scope = outer;
+    }
+
+    fn configuration_items(&mut self, items: &[crate::ast::ConfigItem]) {
+        for item in items {
+            match item {
+                // A block or generate statement of the architecture.
+                crate::ast::ConfigItem::Block(b) => self.configuration_items(&b.items),
+                crate::ast::ConfigItem::Component(c) => {
+                    let component = match self.peek_name(&c.component).as_deref() {
+                        Some([d]) => match self.out.decl(*d).kind {
+                            DeclKind::Component(r) => {
+                                self.reference(simple_span(&c.component), *d);
+                                Some(r)
+                            }
+                            _ => None,
+                        },
+                        _ => None,
+                    };
+                    let bound = c
+                        .binding
+                        .as_ref()
+                        .and_then(|b| self.binding_maps(b, component));
+                    if let Some(block) = &c.block {
+                        match bound {
+                            Some(e) => self.block_configuration(block, e),
+                            None => {
+                                for name in configured_entities(block) {
+                                    self.resolve_name(name);
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
     }
 
     /// True when unit `u` has been analysed (its region and declarations exist).
@@ -888,6 +966,14 @@ impl<'a> Analyzer<'a> {
 
     /// True when the unit declaration `d` (an entity's or package's) has namesakes in its
     /// library.
+    /// The design unit whose own declaration (an entity's, a package's) `d` is.
+    pub fn unit_declaring(&self, d: DeclId) -> Option<usize> {
+        self.unit_decl
+            .iter()
+            .find(|&(_, &ud)| ud == d)
+            .map(|(&u, _)| u)
+    }
+
     pub fn declared_twice(&self, d: &DeclId) -> bool {
         self.unit_decl.iter().any(|(&u, ud)| {
             ud == d && {
@@ -1060,4 +1146,12 @@ fn primary_of(primaries: &UnitMap, lib: &str, name: &str, before: usize) -> Opti
         .find(|&&p| p < before)
         .or(all.last())
         .copied()
+}
+
+/// The span of the identifier a (selected) name ends in.
+fn simple_span(e: &Expr) -> Span {
+    match &e.kind {
+        crate::ast::ExprKind::Name(id) | crate::ast::ExprKind::Selected(_, id) => id.span,
+        _ => e.span,
+    }
 }

@@ -21,7 +21,9 @@ use miette::Report;
 use crate::analog::AnalogSystem;
 use crate::analysis::{Analysis, analyse};
 use crate::diagnostics::Located;
-use crate::elaborate::{ElabOptions, TopCandidate, elaborate_analysed, top_candidates};
+use crate::elaborate::{
+    ElabOptions, ElabWarning, TopCandidate, elaborate_analysed, top_candidates,
+};
 use crate::source::Span;
 
 use super::error::CliError;
@@ -142,8 +144,28 @@ fn check_top(
         );
         return;
     }
+    // An entity that configuration declarations configure is elaborated through them.
+    let names = match top.configurations.as_slice() {
+        [] => std::slice::from_ref(&top.name),
+        configurations => configurations,
+    };
+    for name in names {
+        check_elaborated(name, top, analysis, loaded, max, tally);
+    }
+}
+
+/// Elaborates the top `name` (an entity, or a configuration of `top`) and builds its analog
+/// system.
+fn check_elaborated(
+    name: &str,
+    top: &TopCandidate,
+    analysis: &Analysis,
+    loaded: &Loaded,
+    max: usize,
+    tally: &mut Tally,
+) {
     let options = ElabOptions {
-        top: top.name.clone(),
+        top: name.to_string(),
         generics: Vec::new(),
     };
     tally.elaborated += 1;
@@ -154,6 +176,9 @@ fn check_top(
             return;
         }
     };
+    // Warnings are not errors: printed once, not counted.
+    let warnings: Vec<ElabWarning> = design.unbound.iter().map(ElabWarning::from).collect();
+    tally.print(&warnings, loaded, max);
     if !top.is_closed() {
         eprintln!(
             "note: the analog system of `{}` is not checked alone: port(s) {} would be open",

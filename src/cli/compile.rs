@@ -9,7 +9,7 @@ use miette::Report;
 
 use crate::analysis::analyse;
 use crate::design::Design;
-use crate::elaborate::{ElabOptions, elaborate_analysed, find_tops};
+use crate::elaborate::{ElabOptions, ElabWarning, elaborate_analysed, find_tops};
 
 use super::error::CliError;
 use super::load::{Loaded, load};
@@ -98,6 +98,9 @@ pub fn compile(args: &DesignArgs) -> Result<Compiled, Report> {
             }
         },
     )?;
+    for u in &design.unbound {
+        eprint!("{}", render_located(&ElabWarning::from(u), &loaded.sources));
+    }
     Ok(Compiled { loaded, design })
 }
 

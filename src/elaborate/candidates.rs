@@ -3,7 +3,7 @@
 //! quantity ports (open at the top, so the analog system would float or lack equations).
 //! `vams check` elaborates every candidate it can and says why it skips the others.
 
-use crate::ast::{InterfaceDecl, ObjectClass};
+use crate::ast::{ExprKind, InterfaceDecl, ObjectClass};
 use crate::source::Span;
 
 use super::library::Library;
@@ -19,6 +19,9 @@ pub struct TopCandidate {
     pub generics_without_default: Vec<String>,
     /// Terminal and quantity ports, in declaration order.
     pub analog_ports: Vec<String>,
+    /// The configuration declarations of library `work` that configure it, sorted: the
+    /// designer's ways of elaborating it.
+    pub configurations: Vec<String>,
 }
 
 impl TopCandidate {
@@ -50,7 +53,19 @@ pub fn candidates(lib: &Library) -> Vec<TopCandidate> {
             let entity = lib
                 .entity(&("work".to_string(), name.clone()), usize::MAX)?
                 .unit;
+            let mut configurations: Vec<String> = lib
+                .configurations
+                .iter()
+                .filter(|((library, _), c)| {
+                    library == "work"
+                        && matches!(&c.unit.entity.kind,
+                            ExprKind::Name(e) | ExprKind::Selected(_, e) if e.name == name)
+                })
+                .map(|((_, cfg), _)| cfg.clone())
+                .collect();
+            configurations.sort();
             Some(TopCandidate {
+                configurations,
                 span: entity.name.span,
                 generics_without_default: names_where(&entity.generics, |d| d.default.is_none()),
                 analog_ports: names_where(&entity.ports, |d| {

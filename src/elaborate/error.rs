@@ -264,3 +264,45 @@ impl ElabError {
         }
     }
 }
+
+/// What is legal but probably not meant; elaboration goes on.
+#[derive(Clone, Debug, Error, Diagnostic, PartialEq)]
+pub enum ElabWarning {
+    /// `u : component fpu` where no entity `fpu` is visible and nothing configures `u`.
+    #[error(
+        "component instance `{label}` is unbound: library `{library}` has no entity `{component}`"
+    )]
+    #[diagnostic(
+        code(vams::elab::unbound),
+        severity(Warning),
+        help(
+            "it is elaborated as nothing (LRM 5.2.2); pass the file that declares entity `{component}`, or bind the instance with `for {label} : {component} use entity lib.e(arch);`"
+        )
+    )]
+    Unbound {
+        #[label("no entity binds this component")]
+        span: Span,
+        label: String,
+        component: String,
+        library: String,
+    },
+}
+
+impl From<&crate::design::UnboundInstance> for ElabWarning {
+    fn from(u: &crate::design::UnboundInstance) -> ElabWarning {
+        ElabWarning::Unbound {
+            span: u.span,
+            label: u.label.clone(),
+            component: u.component.clone(),
+            library: u.library.clone(),
+        }
+    }
+}
+
+impl Located for ElabWarning {
+    fn primary_span(&self) -> Span {
+        match self {
+            ElabWarning::Unbound { span, .. } => *span,
+        }
+    }
+}

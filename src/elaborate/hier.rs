@@ -848,6 +848,8 @@ impl<'a> Elab<'a> {
         depth: usize,
     ) -> R<()> {
         let mut config = None;
+        // A component instance bound by default (LRM 5.2.2) to the entity of its name.
+        let mut by_default = false;
         // The entity's maps when a binding indication has its own (composed with the
         // instance's); the instance's otherwise.
         let (mut entity_generics, mut entity_ports) = (None, None);
@@ -890,11 +892,17 @@ impl<'a> Elab<'a> {
                         };
                         let mut target = match entity_aspect {
                             Some(binding) => match self.bound_entity(sc, binding)? {
-                                Some(target) => target,
+                                Some((target, block)) => {
+                                    config = block;
+                                    target
+                                }
                                 // `use open`: the instance stays unbound.
                                 None => return Ok(()),
                             },
-                            None => default,
+                            None => {
+                                by_default = true;
+                                default
+                            }
                         };
                         if let (
                             Some(binding),
@@ -933,36 +941,43 @@ impl<'a> Elab<'a> {
                         }
                         target
                     }
-                    None => default,
+                    None => {
+                        by_default = true;
+                        default
+                    }
                 }
             }
             // `u : configuration work.cfg port map (...)`: the configuration's entity, with
             // the architecture and the bindings it gives.
             InstantiatedUnit::Configuration(n) => {
-                let (lib, cfg_name, _, span) = self.entity_aspect(sc, n, None)?;
-                let Some(cfg) = self
-                    .lib
-                    .configurations
-                    .get(&(lib.clone(), cfg_name.clone()))
-                else {
-                    return Err(self.error(ElabError::invalid(
-                        n.span,
-                        format!("no configuration `{cfg_name}` in library `{lib}`"),
-                        Some("give vams the file that declares it".into()),
-                    )));
-                };
-                let (entity, arch, block) = configured(cfg);
-                let Some(entity) = entity else {
-                    return Err(self.error(ElabError::invalid(
-                        cfg.unit.entity.span,
-                        "expected an entity name",
-                        None,
-                    )));
-                };
+                let (target, block) = self.configuration_target(sc, n)?;
                 config = Some(block);
-                (cfg.library.clone(), entity.name.clone(), arch, span)
+                target
             }
         };
+        if by_default
+            && self
+                .lib
+                .entity_with(
+                    &(canonical_library(&lib).to_string(), name.clone()),
+                    self.unit_at,
+                    None,
+                )
+                .is_none()
+        {
+            // No entity of the component's name: the instance is unbound (LRM 5.2.2), and
+            // elaborates as nothing.
+            self.design.unbound.push(crate::design::UnboundInstance {
+                label: s
+                    .label
+                    .as_ref()
+                    .map_or_else(String::new, |l| l.name.clone()),
+                component: name,
+                library: lib,
+                span: name_span,
+            });
+            return Ok(());
+        }
         let target = (lib, name, arch_name, name_span);
         let maps = (
             entity_generics.as_deref().unwrap_or(generics),
@@ -1012,24 +1027,67 @@ impl<'a> Elab<'a> {
         first
     }
 
-    /// The entity and architecture a binding indication names; `None` for `use open`.
+    /// The entity and architecture a binding indication names, with the block configuration
+    /// of a configuration it names; `None` for `use open`.
     #[allow(clippy::type_complexity)]
     fn bound_entity(
         &mut self,
         sc: &Scope<'a>,
         binding: &'a ast::Binding,
-    ) -> R<Option<(String, String, Option<&'a ast::Ident>, Span)>> {
+    ) -> R<
+        Option<(
+            (String, String, Option<&'a ast::Ident>, Span),
+            Option<&'a ast::BlockConfig>,
+        )>,
+    > {
         match &binding.unit {
-            Some(InstantiatedUnit::Entity { name, architecture }) => self
-                .entity_aspect(sc, name, architecture.as_ref())
-                .map(Some),
-            Some(InstantiatedUnit::Configuration(n)) => Err(self.error(ElabError::unsupported(
-                n.span,
-                "binding to a configuration",
-                "bind the entity: `use entity work.e(arch);`",
+            Some(InstantiatedUnit::Entity { name, architecture }) => Ok(Some((
+                self.entity_aspect(sc, name, architecture.as_ref())?,
+                None,
             ))),
+            Some(InstantiatedUnit::Configuration(n)) => {
+                let (target, block) = self.configuration_target(sc, n)?;
+                Ok(Some((target, Some(block))))
+            }
             Some(InstantiatedUnit::Component(_)) | None => Ok(None),
         }
+    }
+
+    /// `configuration lib.cfg`: the entity and architecture the configuration declaration
+    /// names, and its block configuration.
+    #[allow(clippy::type_complexity)]
+    fn configuration_target(
+        &mut self,
+        sc: &Scope<'a>,
+        n: &'a ast::Expr,
+    ) -> R<(
+        (String, String, Option<&'a ast::Ident>, Span),
+        &'a ast::BlockConfig,
+    )> {
+        let (lib, cfg_name, _, span) = self.entity_aspect(sc, n, None)?;
+        let Some(cfg) = self
+            .lib
+            .configurations
+            .get(&(lib.clone(), cfg_name.clone()))
+        else {
+            return Err(self.error(ElabError::invalid(
+                n.span,
+                format!("no configuration `{cfg_name}` in library `{lib}`"),
+                Some("give vams the file that declares it".into()),
+            )));
+        };
+        let (entity, arch, block) = configured(cfg);
+        let Some(entity) = entity else {
+            return Err(self.error(ElabError::invalid(
+                cfg.unit.entity.span,
+                "expected an entity name",
+                None,
+            )));
+        };
+        Ok((
+            (cfg.library.clone(), entity.name.clone(), arch, span),
+            block,
+        ))
     }
 
     /// `entity lib.e(arch)`: the library, the entity's name, the architecture named.
