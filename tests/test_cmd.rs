@@ -217,7 +217,8 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_procedural_array ... ok"))
         .stdout(contains("test tb_user_attributes ... ok"))
         .stdout(contains("test tb_binding_indications ... ok"))
-        .stdout(contains("76 passed, 0 failed"));
+        .stdout(contains("test tb_parameter_bounds ... ok"))
+        .stdout(contains("77 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it
@@ -248,4 +249,40 @@ fn a_testbench_reaching_a_unit_with_an_analysis_error_fails_with_it() {
         .stdout(contains("test tb_alone ... ok"))
         .stdout(contains("test tb_uses ... FAILED"))
         .stdout(contains("`vmaxx` is not declared"));
+}
+
+/// Units of a resource library (`library util;`) come from `--lib util=DIR`; without it the
+/// design fails with the missing package named.
+#[test]
+fn a_resource_library_is_given_with_lib() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("out.csv");
+    vams()
+        .args([
+            "run",
+            "tests/libraries/uses_util.vhd",
+            "--lib",
+            "util=tests/libraries/util",
+        ])
+        .arg("-o")
+        .arg(&csv)
+        .assert()
+        .success();
+    vams()
+        .args(["check", "tests/libraries/uses_util.vhd"])
+        .assert()
+        .code(1)
+        .stderr(contains("no package `stimulus` in library `util`"));
+    vams()
+        .args([
+            "check",
+            "tests/libraries/uses_util.vhd",
+            "--lib",
+            "work=tests",
+        ])
+        .assert()
+        .code(2)
+        .stderr(contains(
+            "library `work` is where the files given without --lib go",
+        ));
 }

@@ -27,7 +27,7 @@ use crate::elaborate::{
 use crate::source::Span;
 
 use super::error::CliError;
-use super::load::{Loaded, load};
+use super::load::{Loaded, load_with_libraries};
 use super::render::render_located;
 
 /// Arguments of `vams check`.
@@ -36,6 +36,10 @@ pub struct CheckArgs {
     /// Source files or directories.
     #[arg(required = true)]
     pub paths: Vec<PathBuf>,
+    /// Analyse the sources under PATH into library NAME (repeatable): `--lib util=../util`
+    /// for files that say `library util;`.
+    #[arg(long = "lib", value_name = "NAME=PATH", value_parser = super::load::parse_library)]
+    pub libraries: Vec<super::load::LibrarySources>,
     /// Show at most this many diagnostics per file (syntax) or per top entity.
     #[arg(long, default_value_t = 20)]
     pub max_errors: usize,
@@ -101,7 +105,7 @@ impl Tally {
 
 /// Runs the check; every diagnostic goes to stderr.
 pub fn run(args: &CheckArgs) -> Result<(), Report> {
-    let loaded = load(&args.paths)?;
+    let loaded = load_with_libraries(&args.paths, &args.libraries)?;
     loaded.print_syntax_errors(args.max_errors);
     let mut tally = Tally {
         syntax: loaded.error_count(),

@@ -12,7 +12,7 @@ use crate::design::Design;
 use crate::elaborate::{ElabOptions, ElabWarning, elaborate_analysed, find_tops};
 
 use super::error::CliError;
-use super::load::{Loaded, load};
+use super::load::{Loaded, load_with_libraries};
 use super::params::{merge_generics, parse_generic, read_params};
 use super::render::render_located;
 
@@ -22,6 +22,10 @@ pub struct DesignArgs {
     /// Source files or directories (directories are searched for .vhd, .vhdl and .ams files).
     #[arg(required = true, value_name = "FILES|DIRS")]
     pub paths: Vec<PathBuf>,
+    /// Analyse the sources under PATH into library NAME (repeatable): `--lib util=../util`
+    /// for files that say `library util;`.
+    #[arg(long = "lib", value_name = "NAME=PATH", value_parser = super::load::parse_library)]
+    pub libraries: Vec<super::load::LibrarySources>,
     /// The entity to elaborate; default: the only entity that nothing instantiates.
     #[arg(long, value_name = "ENTITY")]
     pub top: Option<String>,
@@ -59,7 +63,7 @@ pub fn compile(args: &DesignArgs) -> Result<Compiled, Report> {
         None => Vec::new(),
     };
     let generics = merge_generics(from_file, &args.generics);
-    let loaded = load(&args.paths)?;
+    let loaded = load_with_libraries(&args.paths, &args.libraries)?;
     if !loaded.syntax_errors.is_empty() {
         loaded.print_syntax_errors(20);
         return Err(CliError::Syntax {

@@ -121,15 +121,70 @@ fn read_text(file: &Path) -> Result<String, InputError> {
         .unwrap_or_else(|e| e.into_bytes().iter().map(|&b| b as char).collect()))
 }
 
-/// Loads the sources under `paths` and the bundled standard packages they need
+/// `--lib NAME=PATH`: the sources under PATH, analysed into library NAME (what `library
+/// util; use util.stimulus_generators.all;` names) instead of `work`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LibrarySources {
+    pub name: String,
+    pub path: PathBuf,
+}
+
+/// Parses `NAME=PATH` for `--lib`.
+pub fn parse_library(text: &str) -> Result<LibrarySources, String> {
+    let Some((name, path)) = text.split_once('=') else {
+        return Err(format!(
+            "`{text}`: expected NAME=PATH, e.g. --lib util=../util"
+        ));
+    };
+    let name = name.trim().to_ascii_lowercase();
+    let identifier = name.starts_with(|c: char| c.is_ascii_alphabetic())
+        && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+    if !identifier {
+        return Err(format!(
+            "`{name}` is not a VHDL identifier (a library name)"
+        ));
+    }
+    if matches!(name.as_str(), "std" | "ieee" | "ieee_proposed" | "work") {
+        return Err(format!(
+            "library `{name}` is {}; choose another name",
+            if name == "work" {
+                "where the files given without --lib go"
+            } else {
+                "bundled with vams"
+            }
+        ));
+    }
+    if path.trim().is_empty() {
+        return Err(format!("`{text}`: the path after `=` is missing"));
+    }
+    Ok(LibrarySources {
+        name,
+        path: PathBuf::from(path.trim()),
+    })
+}
+
+/// Loads the sources under `paths` (library `work`) and `libraries`, and the bundled
+/// standard packages they need
 /// (`std.standard`, and the packages their units name, transitively), and parses every file.
 /// Only the packages a design names are parsed and analysed: the stdlib grows (numeric_std,
 /// the arithmetic packages) without slowing down designs that do not use it.
 pub fn load(paths: &[PathBuf]) -> Result<Loaded, InputError> {
+    load_with_libraries(paths, &[])
+}
+
+/// [`load`], with the sources of `libraries` analysed into their own libraries.
+pub fn load_with_libraries(
+    paths: &[PathBuf],
+    libraries: &[LibrarySources],
+) -> Result<Loaded, InputError> {
     let mut sources = SourceMap::new();
     let mut ids = Vec::new();
     let mut seen: Vec<PathBuf> = Vec::new();
-    for path in paths {
+    let named = paths
+        .iter()
+        .map(|p| ("work", p))
+        .chain(libraries.iter().map(|l| (l.name.as_str(), &l.path)));
+    for (library, path) in named {
         for file in source_files(path)? {
             let key = std::fs::canonicalize(&file).unwrap_or_else(|_| file.clone());
             if seen.contains(&key) {
@@ -140,7 +195,7 @@ pub fn load(paths: &[PathBuf]) -> Result<Loaded, InputError> {
             if stdlib::FILES.iter().any(|(_, _, t)| *t == text) {
                 continue; // The bundled copy of this file is already loaded.
             }
-            ids.push(sources.add(file.display().to_string(), "work", text));
+            ids.push(sources.add(file.display().to_string(), library, text));
         }
     }
     let mut user = Vec::with_capacity(ids.len());

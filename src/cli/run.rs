@@ -444,6 +444,7 @@ mod tests {
         RunArgs {
             design: DesignArgs {
                 paths: vec![],
+                libraries: vec![],
                 top: None,
                 generics: vec![],
                 params: None,

@@ -21,7 +21,7 @@ use crate::output::atomic::write_atomically;
 use crate::source::{FileId, SourceMap};
 
 use super::error::CliError;
-use super::load::{Loaded, load};
+use super::load::{Loaded, load_with_libraries};
 use super::render::{format_report, render, render_located, render_sim_error};
 use super::stop::stop_comment;
 use super::time::parse_positive_time;
@@ -43,6 +43,10 @@ pub struct TestArgs {
     /// Files or directories to search; default: tests/ and models/ (those that exist).
     #[arg(value_name = "PATHS")]
     pub paths: Vec<PathBuf>,
+    /// Analyse the sources under PATH into library NAME (repeatable): `--lib util=../util`
+    /// for files that say `library util;`.
+    #[arg(long = "lib", value_name = "NAME=PATH", value_parser = super::load::parse_library)]
+    pub libraries: Vec<super::load::LibrarySources>,
     /// Run only the testbenches whose name contains TEXT.
     #[arg(long, value_name = "TEXT")]
     pub filter: Option<String>,
@@ -183,7 +187,7 @@ pub fn run(args: &TestArgs) -> Result<(), Report> {
     let started = Instant::now();
     let root = std::env::current_dir().unwrap_or_else(|_| PathBuf::from("."));
     let paths = default_paths(&args.paths, &root);
-    let loaded = load(&paths)?;
+    let loaded = load_with_libraries(&paths, &args.libraries)?;
     let benches = discover(&loaded, args.filter.as_deref());
     // Files that do not parse are left out of the compilation; their testbenches fail.
     for (id, errors) in &loaded.syntax_errors {

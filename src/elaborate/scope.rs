@@ -224,6 +224,10 @@ pub type Bounds = (i64, i64, bool);
 pub struct Instance {
     pub signals: Vec<SignalId>,
     pub bounds: Vec<Option<Bounds>>,
+    /// The static actuals of the parameters that bound the body's declarations
+    /// (`variable result : bit_vector(0 to length - 1)`), one per parameter; empty when
+    /// there are none.
+    pub constants: Vec<Option<Value>>,
     pub id: SubprogramId,
     /// The static bounds of the function's result, when every `return` of this instance
     /// returns a value with the same ones.

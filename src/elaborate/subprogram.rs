@@ -338,7 +338,7 @@ impl<'a> Elab<'a> {
         bounds: &[Option<Bounds>],
         span: Span,
     ) -> R<Expr> {
-        let id = self.instance(sub, &signals, bounds, span)?;
+        let id = self.instance(sub, &signals, bounds, &args, span)?;
         Ok(Expr::FnCall {
             sub: id,
             args,
@@ -446,7 +446,7 @@ impl<'a> Elab<'a> {
         }
         back.append(&mut copy_back);
         let copy_back = back;
-        let id = self.instance(sub, &signals, &bounds, span)?;
+        let id = self.instance(sub, &signals, &bounds, &args, span)?;
         let call = Instr::Call {
             sub: id,
             args,
@@ -536,11 +536,13 @@ impl<'a> Elab<'a> {
         sub: &Rc<Subprogram<'a>>,
         signals: &[SignalId],
         bounds: &[Option<Bounds>],
+        args: &[Expr],
         span: Span,
     ) -> R<SubprogramId> {
-        if let Some(i) = (sub.instances.borrow().iter())
-            .find(|i| i.signals == signals && i.bounds.as_slice() == bounds)
-        {
+        let constants = self.bounding_constants(sub, args);
+        if let Some(i) = (sub.instances.borrow().iter()).find(|i| {
+            i.signals == signals && i.bounds.as_slice() == bounds && i.constants == constants
+        }) {
             return Ok(i.id);
         }
         let Some(body) = sub.body.borrow().clone() else {
@@ -569,6 +571,7 @@ impl<'a> Elab<'a> {
         sub.instances.borrow_mut().push(Instance {
             signals: signals.to_vec(),
             bounds: bounds.to_vec(),
+            constants: constants.clone(),
             id,
             result: None,
         });
@@ -588,10 +591,21 @@ impl<'a> Elab<'a> {
                 let Some(s) = signals.next() else {
                     return Err(super::Reported);
                 };
-                Item::Signal {
-                    id: *s,
-                    ty: param.ty.clone(),
-                }
+                // An unconstrained parameter takes the bounds of its actual, which this
+                // instance of the body is lowered for.
+                let ty = match (&param.ty, &self.design.signals[s.index()].ty) {
+                    (
+                        Ty::Array(a),
+                        design::Type::Array {
+                            left,
+                            right,
+                            ascending,
+                            ..
+                        },
+                    ) if a.bounds.is_none() => a.with_bounds(Some((*left, *right, *ascending))),
+                    (ty, _) => ty.clone(),
+                };
+                Item::Signal { id: *s, ty }
             } else {
                 params.push(param.mode);
                 let ty = match (&param.ty, bounds.get(i).copied().flatten()) {
@@ -599,11 +613,15 @@ impl<'a> Elab<'a> {
                     (ty, _) => ty.clone(),
                 };
                 let var = p.new_var(&param.name, &ty, ty.default_value());
-                Item::Variable {
-                    id: var,
-                    ty,
-                    readonly: param.mode == ParamMode::In,
-                    path: Rc::from([]),
+                match constants.get(i).cloned().flatten() {
+                    // It bounds a declaration: this instance has it as a constant.
+                    Some(value) => Item::Constant { value, ty },
+                    None => Item::Variable {
+                        id: var,
+                        ty,
+                        readonly: param.mode == ParamMode::In,
+                        path: Rc::from([]),
+                    },
                 }
             };
             sc.declare_at(&param.name, at, item);
@@ -702,6 +720,57 @@ impl<'a> Elab<'a> {
                     Typed { e, ty }
                 }),
         )
+    }
+}
+
+impl<'a> Elab<'a> {
+    /// The static actuals among `args` (the actuals of the parameters that are not
+    /// signals, in order) of the `in` parameters of `sub` that name the bounds of its body's
+    /// declarations (`variable result : bit_vector(0 to length - 1)`): one entry per
+    /// parameter, or none at all when no such actual is static. An instance of the body is
+    /// lowered for each such set, with those parameters constants, so that the bounds are
+    /// static there (vams has no arrays whose bounds are known only at run time).
+    fn bounding_constants(&self, sub: &Subprogram<'a>, args: &[Expr]) -> Vec<Option<Value>> {
+        let Some(body) = sub.body.borrow().clone() else {
+            return Vec::new();
+        };
+        let mut words: Vec<String> = Vec::new();
+        for d in body.decls {
+            let span = match &d.kind {
+                ast::DeclKind::Constant { subtype, .. }
+                | ast::DeclKind::Variable { subtype, .. }
+                | ast::DeclKind::Subtype { subtype, .. } => subtype.span,
+                ast::DeclKind::Type { .. } => d.span,
+                _ => continue,
+            };
+            let text = self.sources.snippet(span).to_ascii_lowercase();
+            words.extend(
+                text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+                    .filter(|w| !w.is_empty())
+                    .map(str::to_string),
+            );
+        }
+        let mut args = args.iter();
+        let constants: Vec<Option<Value>> = sub
+            .params
+            .iter()
+            .map(|p| {
+                if p.is_signal {
+                    return None;
+                }
+                let arg = args.next()?;
+                let bounding = p.mode == ParamMode::In && words.contains(&p.name);
+                match arg {
+                    Expr::Const(v) if bounding => Some(v.clone()),
+                    _ => None,
+                }
+            })
+            .collect();
+        if constants.iter().all(Option::is_none) {
+            Vec::new()
+        } else {
+            constants
+        }
     }
 }
 
