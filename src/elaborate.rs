@@ -41,6 +41,7 @@ mod library;
 mod ltf;
 mod process;
 mod protected;
+mod record_natures;
 mod resolution;
 mod sampled;
 mod scope;

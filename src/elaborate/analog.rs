@@ -20,7 +20,10 @@ use super::{Elab, NatureInfo, R};
 
 /// The terminals of one end of a branch, their nature, and `(left, ascending)` of a
 /// terminal array's index.
-type BranchEnd = (Vec<TerminalId>, usize, Option<(i64, bool)>);
+pub(super) type BranchEnd = (Vec<TerminalId>, usize, Option<(i64, bool)>);
+
+/// The minus end of a branch whose nature the plus end gave: its terminals and index origin.
+type MinusEnd = (Vec<TerminalId>, Option<(i64, bool)>);
 
 impl<'a> Elab<'a> {
     pub(super) fn nature_decl(
@@ -39,12 +42,8 @@ impl<'a> Elab<'a> {
             NatureDef::Array { indexes, element } => {
                 return self.array_nature_decl(sc, name, indexes, element, span);
             }
-            NatureDef::Record(_) => {
-                return Err(self.error(ElabError::unsupported(
-                    span,
-                    "record natures",
-                    "declare scalar terminals, one per field",
-                )));
+            NatureDef::Record(fields) => {
+                return self.record_nature_decl(sc, name, fields);
             }
         };
         let across = self.type_mark(sc, across)?;
@@ -130,6 +129,13 @@ impl<'a> Elab<'a> {
                 }
                 return Ok(());
             }
+            NatureMark::Record(record) => {
+                for name in names {
+                    let item = self.new_record_terminal(&name.name, &record, name.span)?;
+                    self.declare(sc, name, item)?;
+                }
+                return Ok(());
+            }
         };
         for name in names {
             let id = self.new_terminal(&name.name, n, name.span);
@@ -147,6 +153,11 @@ impl<'a> Elab<'a> {
     /// An end of a branch: one terminal, or the elements of a terminal array with its
     /// `(left, ascending)`, and the (element) nature.
     fn branch_end(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<BranchEnd> {
+        if let Some(item) = self.record_part(sc, e)
+            && let Some(end) = super::record_natures::field_terminals(&item)
+        {
+            return Ok(end);
+        }
         if let Some(slice) = self.terminal_slice(sc, e) {
             let (elements, nature) = slice?;
             let bounds = (elements.left, elements.ascending);
@@ -178,6 +189,101 @@ impl<'a> Elab<'a> {
                 help: Some("branch quantities are declared between terminals: `quantity v across i through p to n;`".into()),
             })),
         }
+    }
+
+    /// What a branch end names as a whole (a terminal of a record nature, for one).
+    fn whole_terminal(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> Option<Item<'a>> {
+        if let Some(item) = self.record_part(sc, e) {
+            return Some(item);
+        }
+        match &e.kind {
+            ast::ExprKind::Name(id) => self.resolved_item(sc, id),
+            _ => None,
+        }
+    }
+
+    /// The across and through quantities of one branch (between two terminals, or element by
+    /// element between terminal arrays, LRM 1076.1 4.3.1.6), one object per name in
+    /// declaration order; `field` names them as a record field's (`v.strobe`). A missing
+    /// minus end is the nature's reference terminal.
+    #[allow(clippy::too_many_arguments)]
+    fn branch_objects(
+        &mut self,
+        sc: &Scope<'a>,
+        (ps, nature, plus_bounds): BranchEnd,
+        minus: Option<MinusEnd>,
+        across: &[ast::BranchName],
+        through: &[ast::BranchName],
+        field: Option<&str>,
+        span: Span,
+    ) -> R<Vec<Item<'a>>> {
+        let (ms, minus_bounds) = match minus {
+            Some(m) => m,
+            None => (vec![self.reference_terminal(nature)], None),
+        };
+        let n = ps.len().max(ms.len());
+        if ps.len() != n && ps.len() != 1 || ms.len() != n && ms.len() != 1 {
+            return Err(self.error(ElabError::invalid(
+                span,
+                format!(
+                    "the ends of this branch have {} and {} terminals",
+                    ps.len(),
+                    ms.len()
+                ),
+                Some(
+                    "an array branch joins arrays of the same length, or an array and one terminal"
+                        .into(),
+                ),
+            )));
+        }
+        let bounds = plus_bounds.or(minus_bounds);
+        let across_sub = self.natures[nature].across.clone();
+        let through_sub = self.natures[nature].through.clone();
+        let mut items = Vec::new();
+        for (names, sub, through) in [(across, across_sub, false), (through, through_sub, true)] {
+            for b in names {
+                let (tol, init) =
+                    self.tolerance_and_init(sc, b.tolerance.as_ref(), b.value.as_ref())?;
+                for nm in &b.names {
+                    let base = match field {
+                        Some(f) => format!("{}.{f}", nm.name),
+                        None => nm.name.clone(),
+                    };
+                    let mut ids = Vec::with_capacity(n);
+                    for k in 0..n {
+                        let (plus, minus) = (ps[k.min(ps.len() - 1)], ms[k.min(ms.len() - 1)]);
+                        let kind = match through {
+                            false => QuantityKind::Across { plus, minus },
+                            true => QuantityKind::Through { plus, minus },
+                        };
+                        let name = match bounds {
+                            Some((left, asc)) => {
+                                let i = if asc {
+                                    left + k as i64
+                                } else {
+                                    left - k as i64
+                                };
+                                format!("{base}({i})")
+                            }
+                            None => base.clone(),
+                        };
+                        ids.push(self.new_quantity(&name, kind, &sub, tol.clone(), init, nm.span));
+                    }
+                    items.push(match bounds {
+                        Some((left, ascending)) => {
+                            Item::QuantityArray(Rc::new(super::arrays::Elements {
+                                name: base,
+                                left,
+                                ascending,
+                                ids,
+                            }))
+                        }
+                        None => Item::Quantity(ids[0]),
+                    });
+                }
+            }
+        }
+        Ok(items)
     }
 
     pub(super) fn new_quantity(
@@ -245,11 +351,18 @@ impl<'a> Elab<'a> {
                 if matches!(&sub.ty, Ty::Array(arr) if arr.element == Ty::Real) {
                     return self.quantity_array_decl(sc, names, subtype, &sub, value.as_ref());
                 }
+                if matches!(sub.ty, Ty::Record(_)) {
+                    for n in names {
+                        let item = self.record_quantity(&n.name, &sub.ty, &sub, n.span)?;
+                        self.declare(sc, n, item)?;
+                    }
+                    return Ok(());
+                }
                 if sub.ty != Ty::Real {
                     return Err(self.error(ElabError::unsupported(
                         subtype.span,
                         format!("quantities of type {}", sub.ty),
-                        "quantities are scalar reals in vams (vector quantities are not supported yet)",
+                        "quantities are reals, arrays of reals and records of them",
                     )));
                 }
                 let (tol, init) =
@@ -285,8 +398,75 @@ impl<'a> Elab<'a> {
                         None,
                     )));
                 };
-                let (ps, nature, plus_bounds) = self.branch_end(sc, plus)?;
-                let (ms, minus_bounds) = match minus {
+                let names: Vec<&Ident> = across
+                    .iter()
+                    .chain(through)
+                    .flat_map(|b| &b.names)
+                    .collect();
+                // Between terminals of a record nature: field by field.
+                if let Some(Item::TerminalRecord(p)) = self.whole_terminal(sc, plus) {
+                    let m = match minus {
+                        Some(minus) => {
+                            match self.whole_terminal(sc, minus) {
+                                Some(m @ Item::TerminalRecord(_)) => Some(m),
+                                Some(Item::RefTerminal { nature }) => Some(Item::Terminal {
+                                    id: self.reference_terminal(nature),
+                                    nature,
+                                }),
+                                Some(m @ Item::Terminal { .. }) => Some(m),
+                                _ => {
+                                    return Err(self.error(ElabError::TypeMismatch {
+                                    span: minus.span,
+                                    expected: "a terminal of the same record nature, or a scalar terminal".into(),
+                                    found: "another object".into(),
+                                    help: Some(
+                                        "both ends of a branch must have the same nature".into(),
+                                    ),
+                                }));
+                                }
+                            }
+                        }
+                        None => None,
+                    };
+                    let mut make = |elab: &mut Self,
+                                    field: &str,
+                                    p: &Item<'a>,
+                                    m: Option<&Item<'a>>|
+                     -> R<Vec<Item<'a>>> {
+                        // Fields of the same record nature: terminals or terminal arrays.
+                        let Some(plus_end) = super::record_natures::field_terminals(p) else {
+                            return Err(super::Reported);
+                        };
+                        let minus_end = match m.map(super::record_natures::field_terminals) {
+                            Some(Some((ts, n, b))) if n == plus_end.1 => Some((ts, b)),
+                            Some(_) => {
+                                return Err(elab.error(ElabError::invalid(
+                                    span,
+                                    format!("the ends of field `{field}` of this branch have different natures"),
+                                    Some("both ends of a branch must have the same nature".into()),
+                                )));
+                            }
+                            None => None,
+                        };
+                        elab.branch_objects(
+                            sc,
+                            plus_end,
+                            minus_end,
+                            across,
+                            through,
+                            Some(field),
+                            span,
+                        )
+                    };
+                    let items = self.record_branch(&p, m.as_ref(), &names, span, &mut make)?;
+                    for (name, item) in names.iter().zip(items) {
+                        self.declare(sc, name, item)?;
+                    }
+                    return Ok(());
+                }
+                let plus_end = self.branch_end(sc, plus)?;
+                let nature = plus_end.1;
+                let minus_end = match minus {
                     Some(minus) => {
                         let (ms, mn, bounds) = self.branch_end(sc, minus)?;
                         if mn != nature {
@@ -303,81 +483,14 @@ impl<'a> Elab<'a> {
                                 ),
                             }));
                         }
-                        (ms, bounds)
+                        Some((ms, bounds))
                     }
-                    None => (vec![self.reference_terminal(nature)], None),
+                    None => None,
                 };
-                // Between terminal arrays (or an array and one terminal), element by element:
-                // the quantities are arrays of branch quantities (LRM 1076.1 4.3.1.6).
-                let n = ps.len().max(ms.len());
-                if ps.len() != n && ps.len() != 1 || ms.len() != n && ms.len() != 1 {
-                    return Err(self.error(ElabError::invalid(
-                        span,
-                        format!(
-                            "the ends of this branch have {} and {} terminals",
-                            ps.len(),
-                            ms.len()
-                        ),
-                        Some("an array branch joins arrays of the same length, or an array and one terminal".into()),
-                    )));
-                }
-                let bounds = plus_bounds.or(minus_bounds);
-                let across_sub = self.natures[nature].across.clone();
-                let through_sub = self.natures[nature].through.clone();
-                for (names, sub, through) in
-                    [(across, across_sub, false), (through, through_sub, true)]
-                {
-                    for b in names {
-                        let (tol, init) =
-                            self.tolerance_and_init(sc, b.tolerance.as_ref(), b.value.as_ref())?;
-                        for nm in &b.names {
-                            let mut ids = Vec::with_capacity(n);
-                            for k in 0..n {
-                                let (plus, minus) =
-                                    (ps[k.min(ps.len() - 1)], ms[k.min(ms.len() - 1)]);
-                                let kind = match through {
-                                    false => QuantityKind::Across { plus, minus },
-                                    true => QuantityKind::Through { plus, minus },
-                                };
-                                let name = match bounds {
-                                    Some((left, asc)) => {
-                                        let i = if asc {
-                                            left + k as i64
-                                        } else {
-                                            left - k as i64
-                                        };
-                                        format!("{}({i})", nm.name)
-                                    }
-                                    None => nm.name.clone(),
-                                };
-                                ids.push(self.new_quantity(
-                                    &name,
-                                    kind,
-                                    &sub,
-                                    tol.clone(),
-                                    init,
-                                    nm.span,
-                                ));
-                            }
-                            let item = match bounds {
-                                Some((left, ascending)) => {
-                                    Item::QuantityArray(Rc::new(super::arrays::Elements {
-                                        name: nm.name.clone(),
-                                        left,
-                                        ascending,
-                                        ids,
-                                    }))
-                                }
-                                None => Item::Quantity(ids[0]),
-                            };
-                            if !sc.declare_at(&nm.name, nm.span, item) {
-                                return Err(self.error(ElabError::Redeclared {
-                                    span: nm.span,
-                                    name: nm.name.clone(),
-                                }));
-                            }
-                        }
-                    }
+                let items =
+                    self.branch_objects(sc, plus_end, minus_end, across, through, None, span)?;
+                for (name, item) in names.iter().zip(items) {
+                    self.declare(sc, name, item)?;
                 }
                 Ok(())
             }

@@ -76,13 +76,15 @@ impl<T: Copy> Elements<T> {
 }
 
 /// What a nature indication denotes.
+#[derive(Clone, Debug)]
 pub enum NatureMark {
     Scalar(usize),
     Array(Rc<ArrayNature>),
+    Record(Rc<super::record_natures::RecordNature>),
 }
 
 /// The indexes of a range, left to right (empty for a null range).
-fn indexes((left, right, ascending): (i64, i64, bool)) -> Vec<i64> {
+pub(super) fn indexes((left, right, ascending): (i64, i64, bool)) -> Vec<i64> {
     if ascending {
         (left..=right).collect()
     } else {
@@ -155,6 +157,9 @@ impl<'a> Elab<'a> {
         let items = self.lookup(sc, mark)?;
         let nature = match &items[0] {
             Item::Nature(n) if constraint.is_none() => return Ok(NatureMark::Scalar(*n)),
+            Item::RecordNature(r) if constraint.is_none() => {
+                return Ok(NatureMark::Record(r.clone()));
+            }
             Item::ArrayNature(a) => a.clone(),
             other => {
                 let (found, help) = match other {
@@ -309,6 +314,20 @@ impl<'a> Elab<'a> {
                 name: name.name.clone(),
             }))
         }
+    }
+
+    /// New terminals for a terminal array of the (constrained) array nature `nature`.
+    pub(super) fn new_terminal_array_item(
+        &mut self,
+        name: &str,
+        nature: &ArrayNature,
+        span: Span,
+    ) -> R<Item<'a>> {
+        let bounds = self.object_bounds(nature, span)?;
+        Ok(Item::TerminalArray {
+            elements: self.new_terminal_array(name, nature.element, bounds, span),
+            nature: nature.element,
+        })
     }
 
     fn new_terminal_array(

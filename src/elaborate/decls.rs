@@ -263,6 +263,7 @@ impl<'a> Elab<'a> {
                 let item = match self.nature_indication(sc, nature)? {
                     NatureMark::Scalar(n) => Item::Nature(n),
                     NatureMark::Array(a) => Item::ArrayNature(a),
+                    NatureMark::Record(r) => Item::RecordNature(r),
                 };
                 self.declare(sc, name, item)
             }

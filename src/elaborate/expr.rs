@@ -179,6 +179,9 @@ impl<'a> Elab<'a> {
         {
             return methods;
         }
+        if let Some(field) = self.record_part(sc, e) {
+            return Ok(vec![field]);
+        }
         if let Some(item) = self.resolved_item(sc, id) {
             if let Item::Type(sub) = &item
                 && matches!(sub.ty, Ty::Access(_) | Ty::File(_))
@@ -305,6 +308,10 @@ impl<'a> Elab<'a> {
         match &e.kind {
             ExprKind::Literal(lit) => self.literal(sc, lit, e.span, want),
             ExprKind::Selected(prefix, suffix) if !self.resolved.contains_key(&suffix.span) => {
+                // A field of a record quantity or terminal: its object.
+                if let Some(field) = self.record_part(sc, e) {
+                    return self.object(sc, &[field], e, want);
+                }
                 // Analysis resolves the suffix of every selected name but a record field's.
                 let rec = match &prefix.kind {
                     ExprKind::Name(_) => {
@@ -355,7 +362,8 @@ impl<'a> Elab<'a> {
                     return self.attribute(sc, p, attr, args, e.span, want);
                 }
                 let field = matches!(&prefix.kind,
-                    ExprKind::Selected(_, s) if !self.resolved.contains_key(&s.span));
+                    ExprKind::Selected(_, s) if !self.resolved.contains_key(&s.span))
+                    && self.record_part(sc, prefix).is_none();
                 if matches!(prefix.kind, ExprKind::Apply(..)) || field {
                     // An element of an element (`table(i)(k)`, an array of arrays), of
                     // what a call returns (`f(x)(k)`), or of a record field or an object

@@ -470,6 +470,29 @@ impl<'a> Elab<'a> {
                         sc.declare_at(&name.name, name.span, item);
                         return Ok(());
                     }
+                    // A port of a record nature is the whole record terminal it is associated
+                    // with, or new terminals when it is open.
+                    NatureMark::Record(record) => {
+                        let item = match actual_expr {
+                            Some((e, p)) => match self.lookup(p, e)?.first() {
+                                Some(Item::TerminalRecord(r)) if r.is_of(&record) => {
+                                    Item::TerminalRecord(r.clone())
+                                }
+                                Some(other) => {
+                                    return Err(port_class_error(
+                                        self,
+                                        e,
+                                        other.class(),
+                                        &format!("terminal of nature {}", record.name),
+                                    ));
+                                }
+                                None => return Err(super::Reported),
+                            },
+                            None => self.new_record_terminal(&name.name, &record, name.span)?,
+                        };
+                        sc.declare_at(&name.name, name.span, item);
+                        return Ok(());
+                    }
                 };
                 match actual_expr {
                     Some((e, p)) => {

@@ -52,6 +52,10 @@ pub enum Item<'a> {
     },
     /// A quantity array (`real_vector(1 to 3)`), expanded into scalar quantities.
     QuantityArray(Rc<Elements<QuantityId>>),
+    /// A record nature, a terminal of one and a record quantity (expanded field by field).
+    RecordNature(Rc<super::record_natures::RecordNature>),
+    TerminalRecord(Rc<super::record_natures::RecordObject<'a>>),
+    QuantityRecord(Rc<super::record_natures::RecordObject<'a>>),
     /// A nature's reference terminal, created in the design on first use.
     RefTerminal {
         nature: usize,
@@ -178,6 +182,9 @@ impl<'a> Item<'a> {
             Item::Signal { .. } => "a signal",
             Item::Quantity(_) => "a quantity",
             Item::QuantityArray(_) => "a quantity array",
+            Item::RecordNature(_) => "a record nature",
+            Item::TerminalRecord(_) => "a terminal of a record nature",
+            Item::QuantityRecord(_) => "a record quantity",
             Item::TerminalArray { .. } => "a terminal array",
             Item::ArrayNature(_) => "an array nature",
             Item::Terminal { .. } | Item::RefTerminal { .. } => "a terminal",
