@@ -458,7 +458,7 @@ impl<'a> Elab<'a> {
     }
 
     /// The elements of `elements` in the static `range` (which runs in their direction).
-    fn slice_elements<T: Copy>(
+    pub(super) fn slice_elements<T: Copy>(
         &mut self,
         sc: &Scope<'a>,
         elements: &Elements<T>,

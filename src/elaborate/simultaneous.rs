@@ -41,16 +41,183 @@ impl<'a> Elab<'a> {
 
     fn analog(&mut self, sc: &Scope<'a>, e: &ast::Expr, ty: &Ty) -> R<Expr> {
         let t = self.expr_of(sc, e, ty)?;
-        let inlined = self.inline_calls(t.e, e.span)?;
-        let t = self.folded(inlined, t.ty, e.span)?;
+        self.analog_value(t.e, t.ty, e.span)
+    }
+
+    /// `e` of type `ty` (the expression at `span`) as an equation reads it: calls inlined,
+    /// folded, and checked to read only what an equation may.
+    fn analog_value(&mut self, e: Expr, ty: Ty, span: Span) -> R<Expr> {
+        let inlined = self.inline_calls(e, span)?;
+        let t = self.folded(inlined, ty, span)?;
         if !t.e.is_analog() {
             return Err(self.error(ElabError::invalid(
-                e.span,
+                span,
                 "this expression cannot appear in a simultaneous statement",
                 Some("equations read quantities, signals, constants and `now`; not variables, array elements of signals, images or signal attributes".into()),
             )));
         }
         Ok(t.e)
+    }
+
+    /// The scalar subelements, in order, of one side of a simple simultaneous statement of a
+    /// composite type: a quantity array or a slice of one, a record quantity, an aggregate
+    /// (`others` takes its length from `len`, the other side's), a constant array, a call of
+    /// a function returning an array, `'dot` of any of the quantity forms. `None` when the
+    /// side is scalar.
+    fn composite_side(
+        &mut self,
+        sc: &Scope<'a>,
+        e: &'a ast::Expr,
+        len: Option<usize>,
+    ) -> R<Option<Vec<Expr>>> {
+        use ast::ExprKind;
+        match &e.kind {
+            ExprKind::Paren(inner) => self.composite_side(sc, inner, len),
+            ExprKind::Aggregate(elems) => {
+                let mut out = Vec::new();
+                let mut others = None;
+                for el in elems {
+                    match el.choices.as_slice() {
+                        [] => out.push(self.analog(sc, &el.value, &Ty::Real)?),
+                        [Choice::Others(_)] => others = Some(&el.value),
+                        _ => {
+                            return Err(self.error(ElabError::unsupported(
+                                el.span,
+                                "named choices in an aggregate of an equation",
+                                "write the elements in order, with `others` last",
+                            )));
+                        }
+                    }
+                }
+                if let Some(o) = others {
+                    let Some(n) = len else {
+                        return Err(self.error(ElabError::invalid(
+                            e.span,
+                            "the length of this aggregate is not known here",
+                            Some(
+                                "put the quantity array on the left: `v == (others => 0.0);`"
+                                    .into(),
+                            ),
+                        )));
+                    };
+                    let v = self.analog(sc, o, &Ty::Real)?;
+                    while out.len() < n {
+                        out.push(v.clone());
+                    }
+                }
+                Ok(Some(out))
+            }
+            ExprKind::Attribute(prefix, attr) if attr.name == "dot" => {
+                let Some(inner) = self.composite_side(sc, prefix, len)? else {
+                    return Ok(None);
+                };
+                inner
+                    .into_iter()
+                    .map(|x| match x {
+                        Expr::Quantity(q) => Ok(Expr::Dot(q)),
+                        Expr::Dot(q) => Ok(Expr::Dot(self.dot_quantity(q))),
+                        _ => Err(self.error(ElabError::invalid(
+                            prefix.span,
+                            "`'dot` applies to quantities",
+                            None,
+                        ))),
+                    })
+                    .collect::<R<Vec<_>>>()
+                    .map(Some)
+            }
+            ExprKind::Name(_) | ExprKind::Selected(..) => {
+                let items = self.lookup(sc, e)?;
+                Ok(composite_item(&items[0]))
+            }
+            ExprKind::Apply(prefix, args) => {
+                let is_object = matches!(prefix.kind, ExprKind::Name(_) | ExprKind::Selected(..));
+                let items = if is_object {
+                    self.lookup(sc, prefix)?
+                } else {
+                    Vec::new()
+                };
+                match items.first() {
+                    Some(Item::QuantityArray(_))
+                        if matches!(
+                            args.as_slice(),
+                            [ast::Assoc {
+                                actual: ast::Actual::Range(_),
+                                ..
+                            }]
+                        ) =>
+                    {
+                        let item = self.element_item(sc, e, prefix, args)?;
+                        Ok(composite_item(&item))
+                    }
+                    // A call of a function returning an array of reals.
+                    Some(Item::Subprogram(_)) => {
+                        let t = self.expr(sc, e, None)?;
+                        let Ty::Array(a) = &t.ty else {
+                            return Ok(None);
+                        };
+                        let Some(bounds) = a.bounds.filter(|_| a.element == Ty::Real) else {
+                            return Ok(None);
+                        };
+                        let ty = t.ty.to_design();
+                        Ok(Some(
+                            super::arrays::indexes(bounds)
+                                .into_iter()
+                                .map(|i| Expr::Index {
+                                    array: Box::new(t.e.clone()),
+                                    index: Box::new(Expr::Const(Value::Integer(i))),
+                                    ty: ty.clone(),
+                                })
+                                .collect(),
+                        ))
+                    }
+                    _ => Ok(None),
+                }
+            }
+            _ => Ok(None),
+        }
+    }
+
+    /// The equations of a composite simple simultaneous statement, element by element.
+    fn composite_equations(
+        &mut self,
+        stmt: &'a ConcStmt,
+        lhs: &'a ast::Expr,
+        rhs: &'a ast::Expr,
+        l: Option<Vec<Expr>>,
+        r: Option<Vec<Expr>>,
+    ) -> R<Vec<Eqn>> {
+        let (Some(l), Some(r)) = (l, r) else {
+            return Err(self.error(ElabError::invalid(
+                stmt.span,
+                "one side of this equation is composite (an array or a record), the other scalar",
+                Some("give both sides the same type: index the array, `v(1) == 0.0`, or write an aggregate, `v == (others => 0.0)`".into()),
+            )));
+        };
+        if l.len() != r.len() {
+            return Err(self.error(ElabError::invalid(
+                stmt.span,
+                format!(
+                    "the sides of this equation have {} and {} elements",
+                    l.len(),
+                    r.len()
+                ),
+                Some("equate arrays of the same length".into()),
+            )));
+        }
+        let text = self.text(stmt.span);
+        let mut eqns = Vec::with_capacity(l.len());
+        for (k, (a, b)) in l.into_iter().zip(r).enumerate() {
+            let a = self.analog_value(a, Ty::Real, lhs.span)?;
+            let b = self.analog_value(b, Ty::Real, rhs.span)?;
+            let residual = Expr::Binary(BinaryOp::Sub, Box::new(a), Box::new(b));
+            let residual = self.folded(residual, Ty::Real, stmt.span)?.e;
+            eqns.push(Eqn {
+                residual,
+                span: stmt.span,
+                text: format!("{text} (element {})", k + 1),
+            });
+        }
+        Ok(eqns)
     }
 
     fn sim_equations(
@@ -61,6 +228,13 @@ impl<'a> Elab<'a> {
     ) -> R<Vec<Eqn>> {
         match kind {
             SimKind::Simple { lhs, rhs, .. } => {
+                // A composite statement (`v == (1.0, 2.0, 3.0)`, `w == v(2 to 3)`): one
+                // equation per scalar subelement (LRM 1076.1 15.1).
+                let l = self.composite_side(sc, lhs, None)?;
+                let r = self.composite_side(sc, rhs, l.as_ref().map(Vec::len))?;
+                if l.is_some() || r.is_some() {
+                    return self.composite_equations(stmt, lhs, rhs, l, r);
+                }
                 let l = self.analog(sc, lhs, &Ty::Real);
                 let r = self.analog(sc, rhs, &Ty::Real);
                 let residual = Expr::Binary(BinaryOp::Sub, Box::new(l?), Box::new(r?));
@@ -438,5 +612,31 @@ fn assigned_names<'s>(stmts: &'s [ast::SeqStmt], out: &mut Vec<&'s ast::Ident>) 
                 }
             }
         });
+    }
+}
+
+/// The scalar quantities of a composite object, in order (a record's fields in declaration
+/// order, nested records flattened), or the elements of a constant array of reals; `None` for
+/// anything else.
+fn composite_item(item: &Item) -> Option<Vec<Expr>> {
+    match item {
+        Item::QuantityArray(elements) => {
+            Some(elements.ids.iter().map(|&q| Expr::Quantity(q)).collect())
+        }
+        Item::QuantityRecord(record) => {
+            let mut out = Vec::new();
+            for (_, field) in &record.fields {
+                match field {
+                    Item::Quantity(q) => out.push(Expr::Quantity(*q)),
+                    other => out.extend(composite_item(other)?),
+                }
+            }
+            Some(out)
+        }
+        Item::Constant {
+            value: Value::Array(values),
+            ty: Ty::Array(a),
+        } if a.element == Ty::Real => Some(values.iter().cloned().map(Expr::Const).collect()),
+        _ => None,
     }
 }

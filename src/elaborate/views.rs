@@ -31,6 +31,30 @@ impl<'a> Elab<'a> {
         args: &[ast::Assoc],
     ) -> R<Item<'a>> {
         let items = self.lookup(sc, prefix)?;
+        // A slice of a terminal or quantity array (`n(1 to 2)`, `v(2 to 3)`): the array of
+        // its elements.
+        if let [
+            ast::Assoc {
+                formal: None,
+                actual: Actual::Range(range),
+                ..
+            },
+        ] = args
+        {
+            match &items[0] {
+                Item::TerminalArray { elements, nature } => {
+                    let (elements, nature) = (elements.clone(), *nature);
+                    let elements = self.slice_elements(sc, &elements, range, e.span)?;
+                    return Ok(Item::TerminalArray { elements, nature });
+                }
+                Item::QuantityArray(elements) => {
+                    let elements = elements.clone();
+                    let elements = self.slice_elements(sc, &elements, range, e.span)?;
+                    return Ok(Item::QuantityArray(elements));
+                }
+                _ => {}
+            }
+        }
         match &items[0] {
             Item::TerminalArray { nature, .. } => {
                 let nature = *nature;
