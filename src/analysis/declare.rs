@@ -255,8 +255,15 @@ impl Analyzer<'_> {
                 self.scope.pop();
             }
             AstDecl::Limit {
-                type_mark, value, ..
+                quantities,
+                type_mark,
+                value,
             } => {
+                if let crate::ast::EntityNames::List(names) = quantities {
+                    for n in names {
+                        self.resolve_name(n);
+                    }
+                }
                 self.type_mark(type_mark);
                 let real = self.std.real;
                 self.expr(value, real);

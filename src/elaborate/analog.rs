@@ -532,29 +532,58 @@ impl<'a> Elab<'a> {
         names: &EntityNames,
         _type_mark: &ast::Expr,
         value: &ast::Expr,
-        span: Span,
     ) -> R<()> {
-        let EntityNames::List(names) = names else {
-            return Err(self.error(ElabError::unsupported(
-                span,
-                "`limit all` and `limit others`",
-                "list the quantities: `limit q1, q2 : real with 1.0e-3;`",
-            )));
-        };
         let mut quantities = Vec::new();
-        for n in names {
-            let t = self.expr(sc, n, None)?;
-            match t.e {
-                Expr::Quantity(q) => quantities.push(q),
-                _ => {
-                    return Err(self.error(ElabError::WrongClass {
-                        span: n.span,
-                        name: self.sources.snippet(n.span).into(),
-                        found: "not a quantity".into(),
-                        expected: "a quantity".into(),
-                        help: None,
-                    }));
+        match names {
+            EntityNames::List(names) => {
+                for n in names {
+                    match self.lookup(sc, n)?.first() {
+                        Some(Item::Quantity(q)) => quantities.push(*q),
+                        Some(Item::QuantityArray(elements)) => {
+                            quantities.extend(elements.ids.iter().copied());
+                        }
+                        _ => {
+                            return Err(self.error(ElabError::WrongClass {
+                                span: n.span,
+                                name: self.sources.snippet(n.span).into(),
+                                found: "not a quantity".into(),
+                                expected: "a quantity".into(),
+                                help: None,
+                            }));
+                        }
+                    }
                 }
+            }
+            // Every quantity declared in this region (`all`), or every one no earlier
+            // limit specification names (`others`), LRM 1076.1 5.4.
+            all_or_others => {
+                let limited: Vec<QuantityId> = match all_or_others {
+                    EntityNames::Others => self
+                        .design
+                        .limits
+                        .iter()
+                        .flat_map(|l| l.quantities.clone())
+                        .collect(),
+                    _ => Vec::new(),
+                };
+                let region = sc
+                    .regions
+                    .last()
+                    .map(|r| r.items.clone())
+                    .unwrap_or_default();
+                let mut here: Vec<QuantityId> = region
+                    .values()
+                    .flatten()
+                    .flat_map(|item| match item {
+                        Item::Quantity(q) => vec![*q],
+                        Item::QuantityArray(elements) => elements.ids.clone(),
+                        _ => Vec::new(),
+                    })
+                    .filter(|q| !limited.contains(q))
+                    .collect();
+                here.sort_by_key(|q| q.index());
+                here.dedup();
+                quantities = here;
             }
         }
         let max_step = self.expr_of(sc, value, &Ty::Real)?;

@@ -410,7 +410,7 @@ impl<'a> Elab<'a> {
                 quantities,
                 type_mark,
                 value,
-            } => self.limit(sc, quantities, type_mark, value, d.span),
+            } => self.limit(sc, quantities, type_mark, value),
             DeclKind::Use(names) => {
                 for n in names {
                     self.use_clause(sc, n)?;
