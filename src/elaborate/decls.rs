@@ -221,9 +221,12 @@ impl<'a> Elab<'a> {
                 }
                 Ok(())
             }
-            DeclKind::Variable { names, subtype, .. } => {
-                self.shared_variable(sc, names, subtype, d.span)
-            }
+            DeclKind::Variable {
+                names,
+                subtype,
+                value,
+                ..
+            } => self.shared_variable(sc, names, subtype, value.as_ref(), d.span),
             DeclKind::ProtectedBody { name, decls } => self.protected_body(sc, name, decls),
             DeclKind::File {
                 names,

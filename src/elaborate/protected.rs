@@ -61,21 +61,54 @@ impl<'a> Elab<'a> {
         Ok(())
     }
 
-    /// `shared variable v : t;` of a protected type: its object and its methods.
+    /// A shared variable of a type that is not protected: a record of one field on the heap
+    /// (so that it is read and written as a protected type's private variable is), with the
+    /// declaration's initial value.
+    fn plain_shared_variable(
+        &mut self,
+        sc: &mut Scope<'a>,
+        names: &[ast::Ident],
+        sub: &super::types::Sub,
+        value: Option<&ast::Expr>,
+    ) -> R<()> {
+        let init = match value {
+            Some(e) => self.static_value(sc, e, &sub.ty, "a shared variable's initial value")?,
+            None => super::decls::default_value(sub),
+        };
+        for n in names {
+            let object = Value::Access(self.design.shared_objects.len() as u32 + 1);
+            self.design
+                .shared_objects
+                .push(Value::Array(vec![init.clone()]));
+            let record = Type::Record {
+                name: n.name.clone(),
+                fields: vec![(n.name.clone(), sub.ty.to_design())],
+            };
+            let item = Item::PrivateVariable {
+                object,
+                field: 0,
+                record,
+                ty: sub.ty.clone(),
+            };
+            self.declare(sc, n, item)?;
+        }
+        Ok(())
+    }
+
+    /// `shared variable v : t;` of a protected type: its object and its methods. Of any
+    /// other type (VHDL-93's shared variables, which VHDL-2002 reserves to protected types
+    /// and textbooks still use): one object on the heap that every process reads and writes.
     pub(super) fn shared_variable(
         &mut self,
         sc: &mut Scope<'a>,
         names: &[ast::Ident],
         subtype: &ast::SubtypeIndication,
+        value: Option<&ast::Expr>,
         span: crate::source::Span,
     ) -> R<()> {
         let sub = self.subtype_indication(sc, subtype)?;
         let Ty::Protected(p) = &sub.ty else {
-            return Err(self.error(ElabError::unsupported(
-                span,
-                "shared variables of a type that is not protected",
-                "declare a protected type for it (VHDL-2002), or a variable inside the process",
-            )));
+            return self.plain_shared_variable(sc, names, &sub, value);
         };
         let Some(&(methods, body)) = self.protected.get(&p.decl) else {
             return Err(super::Reported);
