@@ -200,7 +200,21 @@ impl<'a> Elab<'a> {
                 (k, None, a.element.clone(), ie.span)
             }
             Actual::Range(r) => {
-                let (l, rr, dir) = self.range_bounds(sc, r)?;
+                let before = self.errors.len();
+                let (l, rr, dir) = match self.range_bounds(sc, r) {
+                    Ok(bounds) => bounds,
+                    Err(e) => {
+                        if !matches!(self.errors.get(before), Some(ElabError::NotStatic { .. })) {
+                            return Err(e);
+                        }
+                        self.errors.truncate(before);
+                        return Err(self.error(ElabError::unsupported(
+                            arg.span,
+                            format!("a slice `{name}` of a signal whose bounds are known only at run time"),
+                            "assign or read the elements in a loop: `for k in lo to hi loop s(k) <= v(k); end loop;`",
+                        )));
+                    }
+                };
                 let n = bounds_len(l, rr, dir);
                 let (Some(k), Some(_)) = (position(l), position(rr)) else {
                     return Err(self.error(ElabError::invalid(
