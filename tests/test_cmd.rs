@@ -222,7 +222,8 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_math_complex ... ok"))
         .stdout(contains("test tb_composite_equations ... ok"))
         .stdout(contains("test tb_shared_variables ... ok"))
-        .stdout(contains("81 passed, 0 failed"));
+        .stdout(contains("test tb_protected_parameters ... ok"))
+        .stdout(contains("82 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

@@ -725,11 +725,12 @@ impl<'a> Elab<'a> {
             Item::EnumLiteral { .. } => return self.enum_literal(items, want, e.span),
             // A unit alone is one of it (`ohm`, LRM 3.1.3).
             Item::Unit { ty, factor } => Typed::new(Expr::Const(Value::Integer(factor)), ty),
+            // A protected type has no values (LRM 3.5): no assignment, no comparison.
             Item::SharedObject { .. } => {
-                return Err(self.error(ElabError::unsupported(
+                return Err(self.error(ElabError::invalid(
                     e.span,
-                    "a shared variable as a value or an argument (a parameter of protected type)",
-                    "call its methods where it is visible: `v.method(...)`",
+                    "a shared variable of a protected type has no value",
+                    Some("call its methods, `v.method(...)`, or pass it to a parameter of its type".into()),
                 )));
             }
             Item::PrivateVariable {

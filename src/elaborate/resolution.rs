@@ -42,7 +42,7 @@ impl<'a> Elab<'a> {
             let mut by_count = Vec::new();
             for n in 0..=counts[signal.index()] {
                 let bounds = (low, low + n as i64 - 1, true);
-                match self.instance(&f, &[], &[Some(bounds)], &[], span) {
+                match self.instance(&f, &[], &[Some(bounds)], &[], &[], span) {
                     Ok(id) => by_count.push(id),
                     Err(_) => return,
                 }

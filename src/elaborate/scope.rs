@@ -235,6 +235,9 @@ pub struct Instance {
     /// (`variable result : bit_vector(0 to length - 1)`), one per parameter; empty when
     /// there are none.
     pub constants: Vec<Option<Value>>,
+    /// The shared variables bound to its parameters of protected type (by the identity of
+    /// their methods), one per such parameter.
+    pub objects: Vec<usize>,
     pub id: SubprogramId,
     /// The static bounds of the function's result, when every `return` of this instance
     /// returns a value with the same ones.

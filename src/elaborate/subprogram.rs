@@ -296,9 +296,13 @@ impl<'a> Elab<'a> {
         let mut args = Vec::new();
         let mut signals = Vec::new();
         let mut bounds = Vec::new();
+        let mut objects = Vec::new();
         for (p, actual) in sub.params.iter().zip(slots) {
             if p.is_signal {
                 signals.push(self.signal_actual(sc, p, *actual, span)?);
+                bounds.push(None);
+            } else if matches!(p.ty, Ty::Protected(_)) {
+                objects.push(self.shared_actual(sc, p, *actual, span)?);
                 bounds.push(None);
             } else {
                 let t = self.argument(sc, p, *actual, span)?;
@@ -307,7 +311,41 @@ impl<'a> Elab<'a> {
             }
         }
         args.extend(self.captured(sc, sub, span)?.into_iter().map(Expr::Var));
-        self.function_expr(sub, args, signals, &bounds, span)
+        let id = self.instance(sub, &signals, &bounds, &args, &objects, span)?;
+        Ok(Expr::FnCall {
+            sub: id,
+            args,
+            signals,
+        })
+    }
+
+    /// The actual of a parameter of protected type: a shared variable, whose object the
+    /// instance of the body is lowered for (its methods are that variable's).
+    fn shared_actual(
+        &mut self,
+        sc: &Scope<'a>,
+        p: &Param<'a>,
+        actual: Option<&ast::Expr>,
+        span: Span,
+    ) -> R<Item<'a>> {
+        let Some(actual) = actual else {
+            return Err(self.error(ElabError::invalid(
+                span,
+                format!("no argument for the parameter `{}`", p.name),
+                Some("pass a shared variable of its protected type".into()),
+            )));
+        };
+        match self.lookup(sc, actual)?.first() {
+            Some(item @ Item::SharedObject { ty, .. }) if ty.same(&p.ty) => Ok(item.clone()),
+            _ => Err(self.error(ElabError::invalid(
+                actual.span,
+                format!(
+                    "the parameter `{}` is of protected type {}: its actual must be a shared variable of that type",
+                    p.name, p.ty
+                ),
+                None,
+            ))),
+        }
     }
 
     /// The result type of `call`, a call of `sub`: its declared type, constrained to the
@@ -338,7 +376,7 @@ impl<'a> Elab<'a> {
         bounds: &[Option<Bounds>],
         span: Span,
     ) -> R<Expr> {
-        let id = self.instance(sub, &signals, bounds, &args, span)?;
+        let id = self.instance(sub, &signals, bounds, &args, &[], span)?;
         Ok(Expr::FnCall {
             sub: id,
             args,
@@ -363,9 +401,15 @@ impl<'a> Elab<'a> {
         let mut copy_back = Vec::new();
         let mut parts = Vec::new();
         let mut bounds = Vec::new();
+        let mut objects = Vec::new();
         for (p, actual) in sub.params.iter().zip(slots) {
             if p.is_signal {
                 signals.push(self.signal_actual(sc, p, *actual, span)?);
+                bounds.push(None);
+                continue;
+            }
+            if matches!(p.ty, Ty::Protected(_)) {
+                objects.push(self.shared_actual(sc, p, *actual, span)?);
                 bounds.push(None);
                 continue;
             }
@@ -446,7 +490,7 @@ impl<'a> Elab<'a> {
         }
         back.append(&mut copy_back);
         let copy_back = back;
-        let id = self.instance(sub, &signals, &bounds, &args, span)?;
+        let id = self.instance(sub, &signals, &bounds, &args, &objects, span)?;
         let call = Instr::Call {
             sub: id,
             args,
@@ -537,11 +581,23 @@ impl<'a> Elab<'a> {
         signals: &[SignalId],
         bounds: &[Option<Bounds>],
         args: &[Expr],
+        objects: &[Item<'a>],
         span: Span,
     ) -> R<SubprogramId> {
         let constants = self.bounding_constants(sub, args);
+        // The shared variables of the protected parameters, by identity.
+        let object_keys: Vec<usize> = objects
+            .iter()
+            .map(|o| match o {
+                Item::SharedObject { methods, .. } => Rc::as_ptr(methods) as usize,
+                _ => 0,
+            })
+            .collect();
         if let Some(i) = (sub.instances.borrow().iter()).find(|i| {
-            i.signals == signals && i.bounds.as_slice() == bounds && i.constants == constants
+            i.signals == signals
+                && i.bounds.as_slice() == bounds
+                && i.constants == constants
+                && i.objects == object_keys
         }) {
             return Ok(i.id);
         }
@@ -572,6 +628,7 @@ impl<'a> Elab<'a> {
             signals: signals.to_vec(),
             bounds: bounds.to_vec(),
             constants: constants.clone(),
+            objects: object_keys,
             id,
             result: None,
         });
@@ -584,10 +641,16 @@ impl<'a> Elab<'a> {
         });
         let mut params = Vec::new();
         let mut signals = signals.iter();
+        let mut objects = objects.iter();
         for (i, param) in sub.params.iter().enumerate() {
             // Same length by `same_signature`; the declaration's span otherwise.
             let at = body.params.get(i).copied().unwrap_or(param.span);
-            let item = if param.is_signal {
+            let item = if matches!(param.ty, Ty::Protected(_)) {
+                let Some(object) = objects.next() else {
+                    return Err(super::Reported);
+                };
+                object.clone()
+            } else if param.is_signal {
                 let Some(s) = signals.next() else {
                     return Err(super::Reported);
                 };
@@ -755,7 +818,7 @@ impl<'a> Elab<'a> {
             .params
             .iter()
             .map(|p| {
-                if p.is_signal {
+                if p.is_signal || matches!(p.ty, Ty::Protected(_)) {
                     return None;
                 }
                 let arg = args.next()?;
