@@ -217,6 +217,7 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_procedural_array ... ok"))
         .stdout(contains("test tb_user_attributes ... ok"))
         .stdout(contains("test tb_binding_indications ... ok"))
+        .stdout(contains("component instance `unused` is unbound"))
         .stdout(contains("test tb_parameter_bounds ... ok"))
         .stdout(contains("test tb_record_natures ... ok"))
         .stdout(contains("test tb_math_complex ... ok"))

@@ -15,7 +15,7 @@ use miette::Report;
 
 use crate::analysis::{Analysis, UnitKind, analyse};
 use crate::ast::DesignFile;
-use crate::elaborate::{ElabOptions, elaborate_analysed};
+use crate::elaborate::{ElabOptions, ElabWarning, elaborate_analysed};
 use crate::kernel::{Severity, SimError, SimOptions, SimResult, simulate};
 use crate::output::atomic::write_atomically;
 use crate::source::{FileId, SourceMap};
@@ -67,6 +67,8 @@ pub struct Verdict {
     pub seconds: f64,
     /// `None` when it passed; else the kind and the text (report lines or diagnostics).
     pub problem: Option<(Problem, String)>,
+    /// Elaboration warnings (an unbound component instance), shown under the verdict line.
+    pub warnings: String,
 }
 
 /// The search paths: those given, or those of `tests/` and `models/` that exist.
@@ -88,6 +90,7 @@ fn run_bench(
     (analysis, files): (&Analysis, &[(FileId, DesignFile)]),
     bench: &Testbench,
     default_stop: Option<f64>,
+    warnings: &mut String,
 ) -> Option<(Problem, String)> {
     let sources = &loaded.sources;
     if let Some((_, errors)) = loaded.syntax_errors.iter().find(|(f, _)| *f == bench.file) {
@@ -131,6 +134,9 @@ fn run_bench(
             return Some((Problem::Error, text));
         }
     };
+    for u in &design.unbound {
+        warnings.push_str(&render_located(&ElabWarning::from(u), sources));
+    }
     let sim = SimOptions {
         stop,
         ..SimOptions::default()
@@ -166,20 +172,24 @@ pub fn headline(text: &str) -> String {
         .unwrap_or_default()
 }
 
-/// The line for one testbench and its indented failure text.
+/// The line for one testbench, its indented warnings, and its indented failure text.
 pub fn verdict_lines(name: &str, verdict: &Verdict) -> String {
-    match &verdict.problem {
-        None => format!("test {name} ... ok ({:.2} s)\n", verdict.seconds),
-        Some((_, text)) => {
-            let mut out = format!("test {name} ... FAILED ({:.2} s)\n", verdict.seconds);
-            for line in text.lines() {
-                out.push_str("    ");
-                out.push_str(line);
-                out.push('\n');
-            }
-            out
-        }
+    let (mut out, text) = match &verdict.problem {
+        None => (
+            format!("test {name} ... ok ({:.2} s)\n", verdict.seconds),
+            "",
+        ),
+        Some((_, text)) => (
+            format!("test {name} ... FAILED ({:.2} s)\n", verdict.seconds),
+            text.as_str(),
+        ),
+    };
+    for line in verdict.warnings.lines().chain(text.lines()) {
+        out.push_str("    ");
+        out.push_str(line);
+        out.push('\n');
     }
+    out
 }
 
 /// Runs `vams test`.
@@ -235,10 +245,18 @@ pub fn run(args: &TestArgs) -> Result<(), Report> {
         jobs,
         |bench| {
             let start = Instant::now();
-            let problem = run_bench(&loaded, (&analysis, &files), bench, args.stop);
+            let mut warnings = String::new();
+            let problem = run_bench(
+                &loaded,
+                (&analysis, &files),
+                bench,
+                args.stop,
+                &mut warnings,
+            );
             Verdict {
                 seconds: start.elapsed().as_secs_f64(),
                 problem,
+                warnings,
             }
         },
         |k, result| {
@@ -249,6 +267,7 @@ pub fn run(args: &TestArgs) -> Result<(), Report> {
                     Problem::Error,
                     format!("internal error: vams panicked: {panic}"),
                 )),
+                warnings: String::new(),
             });
             print!("{}", verdict_lines(&bench.name, &verdict));
             cases.push(Case {
@@ -296,6 +315,7 @@ mod tests {
         let ok = Verdict {
             seconds: 0.081,
             problem: None,
+            warnings: String::new(),
         };
         assert_eq!(
             verdict_lines("tb_tracking", &ok),
@@ -304,6 +324,7 @@ mod tests {
         let bad = Verdict {
             seconds: 0.1,
             problem: Some((Problem::Failure, "600 ms: error: a\n2 s: error: b".into())),
+            warnings: String::new(),
         };
         assert_eq!(
             verdict_lines("tb_x", &bad),

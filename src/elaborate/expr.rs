@@ -730,7 +730,10 @@ impl<'a> Elab<'a> {
                 return Err(self.error(ElabError::invalid(
                     e.span,
                     "a shared variable of a protected type has no value",
-                    Some("call its methods, `v.method(...)`, or pass it to a parameter of its type".into()),
+                    Some(
+                        "call its methods, `v.method(...)`, or pass it to a parameter of its type"
+                            .into(),
+                    ),
                 )));
             }
             Item::PrivateVariable {
