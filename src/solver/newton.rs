@@ -124,6 +124,16 @@ pub trait NonlinearProblem {
     fn step_limit(&mut self, _x: &[f64], _dx: &[f64]) -> f64 {
         1.0
     }
+    /// Rescales `units` (what a significant change of each unknown is, see
+    /// [`LinearSolver::factor_scaled`]) for a second factorisation when the first found the
+    /// matrix numerically singular; `false` when the problem has no other scaling to offer.
+    /// The transient corrector measures its differential unknowns by their derivative
+    /// there: its matrix `dF/dx + c0 dF/dx'` tends to `c0 dF/dx'` in those columns as the
+    /// step shrinks, and rows that hold both a derivative and an algebraic unknown then
+    /// carry the algebraic entry below rounding (a condition of 1e16 at a 1e-15 s step).
+    fn rescale_units(&self, _units: &mut [f64]) -> bool {
+        false
+    }
 }
 
 /// Newton's knobs. The defaults suit an operating point; the transient corrector uses
@@ -249,9 +259,18 @@ impl Newton {
         for ((u, &x), &a) in self.units.iter_mut().zip(x).zip(&tol.abstol) {
             *u = tol.reltol * x.abs() + a;
         }
-        self.lin
-            .factor_scaled(&self.jac, p.diagonal_shift(), Some(&self.units))
-            .map_err(|e| e.at(t))?;
+        let factored = self
+            .lin
+            .factor_scaled(&self.jac, p.diagonal_shift(), Some(&self.units));
+        match factored {
+            Err(SolveError::SingularJacobian {
+                structural: false, ..
+            }) if p.rescale_units(&mut self.units) => self
+                .lin
+                .factor_scaled(&self.jac, p.diagonal_shift(), Some(&self.units))
+                .map_err(|e| e.at(t))?,
+            other => other.map_err(|e| e.at(t))?,
+        }
         rep.factorizations += 1;
         self.jac_valid = true;
         Ok(())

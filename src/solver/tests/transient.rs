@@ -39,6 +39,48 @@ pub(super) fn max_error(points: &[(f64, Vec<f64>)], i: usize, exact: impl Fn(f64
         .fold(0.0, f64::max)
 }
 
+/// An index-1 DAE whose Newton matrix `dF/dx + c0 dF/dx'` at a tiny step carries its
+/// algebraic entries below rounding beside `c0` when unknowns are measured by their
+/// tolerances: `400 x' = v` (a lead-lag's output), `w = v` (a limiter passing it),
+/// `x' + x + 1e-4 w = 1` (a summing node that reads both). At a 1e-12 s step the last pivot
+/// fell below the singularity threshold, and every cut of the step made it smaller: the run
+/// stopped with a singular Jacobian (a servo loop at the end of a switch's 10 us resistance
+/// ramp, where the error test wants steps of 1e-13 s). Measured by its derivative, the
+/// differential column stays regular at any step.
+#[test]
+fn tiny_steps_keep_an_index_one_matrix_regular() {
+    let m = vec![
+        vec![400.0, 0.0, 0.0],
+        vec![0.0, 0.0, 0.0],
+        vec![1.0, 0.0, 0.0],
+    ];
+    let k = vec![
+        vec![0.0, -1.0, 0.0],
+        vec![0.0, -1.0, 1.0],
+        vec![1.0, 0.0, 1e-4],
+    ];
+    let mut sys = LinearDae::new(m, k, vec![0.0, 0.0, 1.0]);
+    let mut o = opts(1e-6, 1e-9);
+    // A state measured in millivolts beside microvolts, as a filter's state beside the
+    // voltages it drives.
+    o.abstol_per_unknown = vec![1e-3, 1e-6, 1e-6];
+    o.initial_step = Some(1e-12);
+    let mut tr = Transient::new(&mut sys, 0.0, &[0.0; 3], o).expect("consistent start");
+    let t = match tr
+        .advance(&mut sys, 1.0)
+        .expect("a step of 1e-12 s or less")
+    {
+        Advance::StepAccepted(t) => t,
+        other => panic!("unexpected {other:?}"),
+    };
+    assert!(t > 0.0 && t <= 1e-12, "t = {t}");
+    // x' = v / 400 and v = w, so x' (1 + 1e-4 * 400) = 1 - x: the state stays on it.
+    let x = tr.state();
+    let v = (1.0 - x[0]) / (1.0 / 400.0 + 1e-4);
+    assert!((x[1] - v).abs() <= 1e-6 * v, "v = {} != {v}", x[1]);
+    assert!((x[2] - x[1]).abs() <= 1e-6 * v);
+}
+
 /// RC step response x = 1 - exp(-t/tau) over 10 tau: max error over all accepted points
 /// <= 5e-5 at reltol 1e-6 (measured 2.7e-5; the global error of per-step error control at
 /// order <= 2 grows like reltol^(2/3): 1.2e-4 at 1e-5, 5.9e-6 at 1e-7, 5.1e-7 at 1e-9).

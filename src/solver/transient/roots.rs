@@ -145,6 +145,12 @@ impl Transient {
         self.g_prev.copy_from_slice(&self.g_new);
         self.order = 1;
         self.nhist = 1;
+        // The rewound point is an interpolant, not a solution: an algebraic unknown there is
+        // off its equations by the interpolation error (an opamp's output, 1e5 times its
+        // state), which the next step's error test would measure at every step size (err 1.54
+        // as h fell from 1e-10 to 5e-14 s, until the matrix turned singular). As after a
+        // restart, algebraic unknowns sit the first step's error test out.
+        self.xdot_alg_known = false;
         self.pending.pop()
     }
 

@@ -23,6 +23,7 @@ pub(super) enum Attempt {
 /// `G(x) = F(t, x, c0 x + beta)`, Jacobian `dF/dx + c0 dF/dx'`.
 struct Corrector<'a, S: ?Sized> {
     sys: &'a mut S,
+    diff: &'a [bool],
     t: f64,
     c0: f64,
     beta: &'a [f64],
@@ -52,6 +53,20 @@ impl<S: DaeSystem + ?Sized> NonlinearProblem for Corrector<'_, S> {
     }
     fn residual_scale(&self, out: &mut [f64]) -> bool {
         self.sys.residual_scale(out)
+    }
+    /// A differential unknown's change measured as the change of its derivative, `c0` times
+    /// larger: the columns then tend to `dF/dx'` as the step shrinks, which an index-1
+    /// system keeps regular however small the step.
+    fn rescale_units(&self, units: &mut [f64]) -> bool {
+        if self.c0 <= 1.0 {
+            return false;
+        }
+        for (u, &d) in units.iter_mut().zip(self.diff) {
+            if d {
+                *u /= self.c0;
+            }
+        }
+        true
     }
 }
 
@@ -146,6 +161,7 @@ impl Transient {
         self.x_new.copy_from_slice(&self.x_pred);
         let mut corr = Corrector {
             sys,
+            diff: &self.diff,
             t: t_new,
             c0,
             beta: &self.beta,
