@@ -287,6 +287,10 @@ pub struct Body<'a> {
     /// 2.1.1.1): passed to each call after the parameters and, for a procedure, copied back
     /// on return, as `inout` parameters would be. Each with the span of its declaration.
     pub captured: Vec<(Span, VarId, Ty)>,
+    /// Per parameter: whether it is an `in` parameter that bounds a declaration of the body
+    /// (`variable result : bit_vector(0 to length - 1)`), so calls with a static actual for it
+    /// get an instance of their own.
+    pub bounding: Vec<bool>,
 }
 
 impl std::fmt::Debug for Body<'_> {

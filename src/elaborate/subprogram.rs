@@ -158,6 +158,7 @@ impl<'a> Elab<'a> {
                     scope,
                     params: params.iter().map(|p| p.span).collect(),
                     captured,
+                    bounding: self.bounding_params(decls, &s.params),
                 }));
                 return Ok(());
             }
@@ -187,6 +188,7 @@ impl<'a> Elab<'a> {
                 scope,
                 params: sub.params.iter().map(|p| p.span).collect(),
                 captured,
+                bounding: self.bounding_params(decls, &sub.params),
             }));
         }
         Ok(())
@@ -311,12 +313,7 @@ impl<'a> Elab<'a> {
             }
         }
         args.extend(self.captured(sc, sub, span)?.into_iter().map(Expr::Var));
-        let id = self.instance(sub, &signals, &bounds, &args, &objects, span)?;
-        Ok(Expr::FnCall {
-            sub: id,
-            args,
-            signals,
-        })
+        self.function_expr(sub, args, signals, &bounds, &objects, span)
     }
 
     /// The actual of a parameter of protected type: a shared variable, whose object the
@@ -367,16 +364,18 @@ impl<'a> Elab<'a> {
         })
     }
 
-    /// `FnCall` of the instance of `sub` for `signals` and the actuals' `bounds`.
+    /// `FnCall` of the instance of `sub` for `signals`, the actuals' `bounds` and the shared
+    /// variables `objects` of its protected parameters.
     pub(super) fn function_expr(
         &mut self,
         sub: &Rc<Subprogram<'a>>,
         args: Vec<Expr>,
         signals: Vec<SignalId>,
         bounds: &[Option<Bounds>],
+        objects: &[Item<'a>],
         span: Span,
     ) -> R<Expr> {
-        let id = self.instance(sub, &signals, bounds, &args, &[], span)?;
+        let id = self.instance(sub, &signals, bounds, &args, objects, span)?;
         Ok(Expr::FnCall {
             sub: id,
             args,
@@ -777,7 +776,7 @@ impl<'a> Elab<'a> {
             .collect();
         let args = operands.into_iter().map(|t| t.e).collect();
         Some(
-            self.function_expr(&sub, args, Vec::new(), &bounds, span)
+            self.function_expr(&sub, args, Vec::new(), &bounds, &[], span)
                 .map(|e| {
                     let ty = self.call_result(&sub, &e).unwrap_or(Ty::Real);
                     Typed { e, ty }
@@ -797,8 +796,34 @@ impl<'a> Elab<'a> {
         let Some(body) = sub.body.borrow().clone() else {
             return Vec::new();
         };
+        let mut args = args.iter();
+        let constants: Vec<Option<Value>> = sub
+            .params
+            .iter()
+            .zip(&body.bounding)
+            .map(|(p, &bounding)| {
+                if p.is_signal || matches!(p.ty, Ty::Protected(_)) {
+                    return None;
+                }
+                match args.next()? {
+                    Expr::Const(v) if bounding => Some(v.clone()),
+                    _ => None,
+                }
+            })
+            .collect();
+        if constants.iter().all(Option::is_none) {
+            Vec::new()
+        } else {
+            constants
+        }
+    }
+
+    /// For each of `params`, whether it is an `in` parameter that the bounds of the body's
+    /// declarations `decls` name (see [`Elab::bounding_constants`]); found once per body, by
+    /// the words of those declarations' subtype indications.
+    fn bounding_params(&self, decls: &[ast::Decl], params: &[Param<'a>]) -> Vec<bool> {
         let mut words: Vec<String> = Vec::new();
-        for d in body.decls {
+        for d in decls {
             let span = match &d.kind {
                 ast::DeclKind::Constant { subtype, .. }
                 | ast::DeclKind::Variable { subtype, .. }
@@ -813,27 +838,10 @@ impl<'a> Elab<'a> {
                     .map(str::to_string),
             );
         }
-        let mut args = args.iter();
-        let constants: Vec<Option<Value>> = sub
-            .params
+        params
             .iter()
-            .map(|p| {
-                if p.is_signal || matches!(p.ty, Ty::Protected(_)) {
-                    return None;
-                }
-                let arg = args.next()?;
-                let bounding = p.mode == ParamMode::In && words.contains(&p.name);
-                match arg {
-                    Expr::Const(v) if bounding => Some(v.clone()),
-                    _ => None,
-                }
-            })
-            .collect();
-        if constants.iter().all(Option::is_none) {
-            Vec::new()
-        } else {
-            constants
-        }
+            .map(|p| p.mode == ParamMode::In && words.contains(&p.name))
+            .collect()
     }
 }
 
