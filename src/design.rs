@@ -79,9 +79,30 @@ pub struct Design {
     /// protected type: the kernel puts them on the heap first, in order, so that the `k`-th
     /// is `Value::Access(k + 1)`.
     pub shared_objects: Vec<Value>,
-    /// Component instances that no entity binds: elaborated as nothing (LRM 5.2.2), and
-    /// reported as warnings.
-    pub unbound: Vec<UnboundInstance>,
+    /// Across quantities declared without a through quantity (`quantity vs across t1;`):
+    /// no flow of their own balances an equation that sets them (the count rule's
+    /// diagnostic names them).
+    pub lone_across: Vec<QuantityId>,
+    /// What elaboration accepted but a user should hear about (an unbound component
+    /// instance, a bodiless function standing in for a built-in one).
+    pub warnings: Vec<DesignWarning>,
+}
+
+/// Something elaboration accepted with a warning.
+#[derive(Clone, Debug, PartialEq)]
+pub enum DesignWarning {
+    /// Elaborated as nothing (LRM 5.2.2).
+    Unbound(UnboundInstance),
+    /// A function of the user's that has no body anywhere, whose name and profile are those
+    /// of an elementary function of `ieee.math_real` (`function exp (x : real) return real;`
+    /// in a package without body, as the University of Cincinnati's SEAMS test suite
+    /// declares them): calls compute the built-in function.
+    BuiltinStandIn {
+        /// The function's name as declared.
+        name: String,
+        /// Its declaration.
+        span: Span,
+    },
 }
 
 /// A component instance whose default binding found no entity of the component's name.
@@ -584,7 +605,7 @@ pub fn scalar_attribute(f: Builtin, args: &[Value]) -> Result<Value, String> {
         (Builtin::Pos, [Value::Enum(p)]) => Ok(Value::Integer(i64::from(*p))),
         (Builtin::Pos, [Value::Boolean(b)]) => Ok(Value::Integer(i64::from(*b))),
         (Builtin::Pos, [Value::Integer(i)]) => Ok(Value::Integer(*i)),
-        (Builtin::Pos, [Value::Time(t)]) => {
+        (Builtin::TimePos | Builtin::Pos, [Value::Time(t)]) => {
             let fs = (t * 1e15).round();
             if fs.abs() < 9.2e18 {
                 Ok(Value::Integer(fs as i64))
@@ -836,9 +857,10 @@ pub enum Builtin {
     ToReal,
     /// Type conversion `integer(x)` (round to nearest).
     ToInteger,
-    /// `T'pos(x)` of an enumeration, boolean or time value: its position (for time, the
-    /// number of femtoseconds).
+    /// `T'pos(x)` of an enumeration, boolean or integer value: its position.
     Pos,
+    /// `time'pos(t)`: the number of femtoseconds in `t`.
+    TimePos,
     /// `T'val(i)` of an enumeration type: arguments `i`, the number of literals, and whether
     /// the type is `boolean` (1) or not (0); an error outside the type.
     EnumVal,
@@ -870,6 +892,7 @@ impl Builtin {
         matches!(
             self,
             Builtin::Pos
+                | Builtin::TimePos
                 | Builtin::EnumVal
                 | Builtin::TimeVal
                 | Builtin::Slice

@@ -224,7 +224,11 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_composite_equations ... ok"))
         .stdout(contains("test tb_shared_variables ... ok"))
         .stdout(contains("test tb_protected_parameters ... ok"))
-        .stdout(contains("82 passed, 0 failed"));
+        .stdout(contains("test tb_seams_idioms ... ok"))
+        .stdout(contains(
+            "the function `sin` has no body: its calls compute the built-in `sin`",
+        ))
+        .stdout(contains("83 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

@@ -33,19 +33,15 @@ pub enum AnalogError {
     ///
     /// Example: `x == 1.0; x == 2.0;` while `y` appears in no equation.
     #[error("over-determined: {count} equations ({equations}) for the quantities {quantities}")]
-    #[diagnostic(
-        code(vams::analog::overdetermined),
-        help(
-            "these equations leave no room for each other: remove or rewrite one so that it \
-             determines another quantity (LRM 1076.1 12.6.6: one equation per quantity)"
-        )
-    )]
+    #[diagnostic(code(vams::analog::overdetermined))]
     Overdetermined {
         #[label("one of the over-determining equations")]
         span: Span,
         count: usize,
         equations: String,
         quantities: String,
+        #[help]
+        help: String,
     },
 
     /// Some quantities appear in fewer equations than they are.

@@ -109,9 +109,12 @@ fn lower_call(
         Builtin::Realmax => two(Bin::Max),
         Builtin::Realmin => two(Bin::Min),
         Builtin::ToReal => arg(0),
-        Builtin::Pos | Builtin::EnumVal | Builtin::TimeVal => {
-            Err(NotAnalog("the 'pos and 'val attributes"))
-        }
+        // Equations hold enumeration values and booleans as their positions, and time in
+        // seconds: `time'pos(now)` (femtoseconds) is a common time-to-number idiom.
+        Builtin::Pos => arg(0),
+        Builtin::TimePos => Ok(Sym::bin(Bin::Mul, arg(0)?, Sym::Const(1e15))),
+        Builtin::TimeVal => Ok(Sym::bin(Bin::Mul, arg(0)?, Sym::Const(1e-15))),
+        Builtin::EnumVal => Err(NotAnalog("the 'val attribute of an enumeration type")),
         Builtin::Slice | Builtin::Splice => Err(NotAnalog("a slice")),
         Builtin::ValueOf => Err(NotAnalog("the 'value attribute")),
         Builtin::Restring => Err(NotAnalog("a character array")),

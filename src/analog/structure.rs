@@ -10,7 +10,7 @@ use std::collections::VecDeque;
 
 use super::build::{Origin, Unknown};
 use super::error::AnalogError;
-use crate::design::Design;
+use crate::design::{Design, QuantityId};
 
 /// The incidence of equations (rows) and unknowns (columns), both ways in compressed form
 /// (offsets into one index array each: two allocations, not one per equation and unknown).
@@ -225,13 +225,37 @@ pub fn check(inc: &Incidence, names: &Names<'_>) -> Result<(), Vec<AnalogError>>
     let (ne, nu) = (inc.n_rows(), inc.n_cols());
     if ne != nu {
         let unused: Vec<usize> = (0..nu).filter(|&c| inc.col(c).is_empty()).collect();
-        let (span, label) = match (unused.first(), names.origins.first()) {
-            (Some(&c), _) => (
+        // Too many equations: the over-determined part of a maximum matching says which
+        // equations compete for too few quantities.
+        let over = if ne > nu {
+            let m = maximum_matching(inc);
+            alternating_reach(inc, &m, false)
+        } else {
+            (Vec::new(), Vec::new())
+        };
+        let source = across_only(names, &over.1);
+        // The equation to show: one that sets an across-only quantity, else the first of the
+        // user's among the over-determined ones.
+        let user = |r: &&usize| matches!(names.origins[**r], Origin::User(_));
+        let first_over = (source
+            .and_then(|(_, c)| (over.0.iter()).find(|r| user(r) && inc.row(**r).contains(&c))))
+        .or_else(|| over.0.iter().find(user))
+        .or(over.0.first());
+        let (span, label) = match (unused.first(), first_over, names.origins.first()) {
+            (Some(&c), _, _) => (
                 names.unknowns[c].span(names.design),
                 "appears in no equation",
             ),
-            (None, Some(o)) => (o.span(names.design), "the first equation"),
-            (None, None) => (Default::default(), "in this design"),
+            (None, Some(&r), _) => (
+                names.origins[r].span(names.design),
+                if source.is_some() {
+                    "this sets an across quantity that has no through quantity"
+                } else {
+                    "one equation too many is among these"
+                },
+            ),
+            (None, None, Some(o)) => (o.span(names.design), "the first equation"),
+            (None, None, None) => (Default::default(), "in this design"),
         };
         let help = if ne < nu && !unused.is_empty() {
             format!(
@@ -248,6 +272,19 @@ pub fn check(inc: &Incidence, names: &Names<'_>) -> Result<(), Vec<AnalogError>>
             "too few equations: add a simultaneous statement for each quantity that is only \
              read (LRM 1076.1 12.6.6)"
                 .to_string()
+        } else if let Some((q, _)) = source {
+            lone_across_help(names.design, q)
+        } else if !over.0.is_empty() {
+            format!(
+                "too many equations: {} determine only {}; remove one, or declare the \
+                 quantity it determines (LRM 1076.1 12.6.6)",
+                names.equations(&over.0),
+                if over.1.is_empty() {
+                    "nothing".to_string()
+                } else {
+                    names.unknowns(&over.1)
+                }
+            )
         } else {
             "too many equations: remove redundant simultaneous statements, or declare the \
              quantity they determine (LRM 1076.1 12.6.6)"
@@ -268,7 +305,22 @@ pub fn check(inc: &Incidence, names: &Names<'_>) -> Result<(), Vec<AnalogError>>
     let mut errors = Vec::new();
     let (rows, cols) = alternating_reach(inc, &m, false);
     if let Some(&first) = rows.first() {
+        let source = across_only(names, &cols);
+        // Shown: the user's equation that sets a lone across quantity, if one does.
+        let first = (source.and_then(|(_, c)| {
+            (rows.iter())
+                .find(|&&r| matches!(names.origins[r], Origin::User(_)) && inc.row(r).contains(&c))
+        }))
+        .map_or(first, |&r| r);
+        let help = match source {
+            Some((q, _)) => lone_across_help(names.design, q),
+            None => "these equations leave no room for each other: remove or rewrite one so \
+                     that it determines another quantity (LRM 1076.1 12.6.6: one equation per \
+                     quantity)"
+                .to_string(),
+        };
         errors.push(AnalogError::Overdetermined {
+            help,
             span: names.origins[first].span(names.design),
             count: rows.len(),
             equations: names.equations(&rows),
@@ -293,6 +345,26 @@ pub fn check(inc: &Incidence, names: &Names<'_>) -> Result<(), Vec<AnalogError>>
         });
     }
     Err(errors)
+}
+
+/// Why an equation that sets the lone across quantity `q` cannot hold, and the fix.
+fn lone_across_help(design: &Design, q: QuantityId) -> String {
+    let name = &design.quantities[q.index()].name;
+    format!(
+        "`{name}` is an across quantity declared without a through quantity: no flow can make \
+         an equation that sets it hold (LRM 1076.1 12.6.6 asks one equation per through and \
+         free quantity). For a source, give its declaration one: `quantity {name} across \
+         i_{name} through ...;`"
+    )
+}
+
+/// An across quantity among `cols` declared without a through quantity (`quantity vs
+/// across t1; vs == 5.0;`, written as a voltage source), and its column.
+fn across_only(names: &Names<'_>, cols: &[usize]) -> Option<(QuantityId, usize)> {
+    cols.iter().find_map(|&c| match names.unknowns[c] {
+        Unknown::Quantity(q) if names.design.lone_across.contains(&q) => Some((q, c)),
+        _ => None,
+    })
 }
 
 /// The algebraic unknowns of higher index: those that the equations determine only through

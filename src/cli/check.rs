@@ -181,7 +181,7 @@ fn check_elaborated(
         }
     };
     // Warnings are not errors: printed once, not counted.
-    let warnings: Vec<ElabWarning> = design.unbound.iter().map(ElabWarning::from).collect();
+    let warnings: Vec<ElabWarning> = design.warnings.iter().map(ElabWarning::from).collect();
     tally.print(&warnings, loaded, max);
     if !top.is_closed() {
         eprintln!(

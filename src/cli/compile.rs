@@ -102,7 +102,7 @@ pub fn compile(args: &DesignArgs) -> Result<Compiled, Report> {
             }
         },
     )?;
-    for u in &design.unbound {
+    for u in &design.warnings {
         eprint!("{}", render_located(&ElabWarning::from(u), &loaded.sources));
     }
     Ok(Compiled { loaded, design })

@@ -134,7 +134,7 @@ fn run_bench(
             return Some((Problem::Error, text));
         }
     };
-    for u in &design.unbound {
+    for u in &design.warnings {
         warnings.push_str(&render_located(&ElabWarning::from(u), sources));
     }
     let sim = SimOptions {

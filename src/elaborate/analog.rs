@@ -240,6 +240,7 @@ impl<'a> Elab<'a> {
         let across_sub = self.natures[nature].across.clone();
         let through_sub = self.natures[nature].through.clone();
         let mut items = Vec::new();
+        let lone_across = through.is_empty();
         for (names, sub, through) in [(across, across_sub, false), (through, through_sub, true)] {
             for b in names {
                 let (tol, init) =
@@ -267,7 +268,11 @@ impl<'a> Elab<'a> {
                             }
                             None => base.clone(),
                         };
-                        ids.push(self.new_quantity(&name, kind, &sub, tol.clone(), init, nm.span));
+                        let id = self.new_quantity(&name, kind, &sub, tol.clone(), init, nm.span);
+                        if lone_across && !through {
+                            self.design.lone_across.push(id);
+                        }
+                        ids.push(id);
                     }
                     items.push(match bounds {
                         Some((left, ascending)) => {

@@ -25,6 +25,22 @@ pub struct ArrayNature {
     pub bounds: Option<(i64, i64, bool)>,
 }
 
+impl ArrayNature {
+    /// The array type whose bounds a constrained array (sub)nature has, for `'left`,
+    /// `'range`, ... of the nature itself; `None` when unconstrained.
+    pub fn bounds_ty(&self) -> Option<Ty> {
+        let (left, right, ascending) = self.bounds?;
+        Some(Ty::Array(Rc::new(ArrayTy {
+            name: self.name.clone(),
+            element: Ty::Real,
+            bounds: Some((left, right, ascending)),
+            index_low: left.min(right),
+            index: Ty::Integer,
+            dimension: 0,
+        })))
+    }
+}
+
 /// The scalar design objects of an expanded array, from left to right.
 #[derive(Debug)]
 pub struct Elements<T> {

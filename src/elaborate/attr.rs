@@ -565,6 +565,7 @@ impl<'a> Elab<'a> {
         let int = |i: i64| Expr::Const(Value::Integer(i));
         let pos = |e: Expr| match ty {
             Ty::Integer => e,
+            Ty::Time => Expr::Call(Builtin::TimePos, vec![e]),
             _ => Expr::Call(Builtin::Pos, vec![e]),
         };
         let val = |i: Expr| match (&ty, literals) {
@@ -717,6 +718,7 @@ impl<'a> Elab<'a> {
             Item::Type(sub) => (sub.ty.clone(), sub.range.clone()),
             Item::TerminalArray { elements, .. } => (elements.ty(), None),
             Item::QuantityArray(elements) => (elements.ty(), None),
+            Item::ArrayNature(nature) if let Some(ty) = nature.bounds_ty() => (ty, None),
             _ => {
                 let value = self.expr(sc, prefix, None)?;
                 if let Ty::Access(_) = value.ty {

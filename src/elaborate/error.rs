@@ -286,15 +286,37 @@ pub enum ElabWarning {
         component: String,
         library: String,
     },
+    /// `function exp (x : real) return real;` with no body anywhere.
+    #[error("the function `{name}` has no body: its calls compute the built-in `{name}`")]
+    #[diagnostic(
+        code(vams::elab::builtin_stand_in),
+        severity(Warning),
+        help(
+            "VHDL requires a body (in the package body); `use ieee.math_real.all;` declares the standard elementary functions (and `x ** y` for a power) instead"
+        )
+    )]
+    BuiltinStandIn {
+        #[label("declared without a body")]
+        span: Span,
+        name: String,
+    },
 }
 
-impl From<&crate::design::UnboundInstance> for ElabWarning {
-    fn from(u: &crate::design::UnboundInstance) -> ElabWarning {
-        ElabWarning::Unbound {
-            span: u.span,
-            label: u.label.clone(),
-            component: u.component.clone(),
-            library: u.library.clone(),
+impl From<&crate::design::DesignWarning> for ElabWarning {
+    fn from(w: &crate::design::DesignWarning) -> ElabWarning {
+        match w {
+            crate::design::DesignWarning::Unbound(u) => ElabWarning::Unbound {
+                span: u.span,
+                label: u.label.clone(),
+                component: u.component.clone(),
+                library: u.library.clone(),
+            },
+            crate::design::DesignWarning::BuiltinStandIn { name, span } => {
+                ElabWarning::BuiltinStandIn {
+                    span: *span,
+                    name: name.clone(),
+                }
+            }
         }
     }
 }
@@ -302,7 +324,7 @@ impl From<&crate::design::UnboundInstance> for ElabWarning {
 impl Located for ElabWarning {
     fn primary_span(&self) -> Span {
         match self {
-            ElabWarning::Unbound { span, .. } => *span,
+            ElabWarning::Unbound { span, .. } | ElabWarning::BuiltinStandIn { span, .. } => *span,
         }
     }
 }

@@ -172,6 +172,15 @@ impl<'a> Elab<'a> {
                 let base = Sub::of(sub.ty.clone(), &sub.ty.to_string());
                 return Ok(vec![Item::Type(Rc::new(base))]);
             }
+            // `electrical'reference`: the nature's reference terminal. Not in 1076.1 (issue
+            // report IR1.99.05 asks for it), but SEAMS and the University of Cincinnati's
+            // test suite write it, and it can mean nothing else.
+            if let ExprKind::Attribute(prefix, attr) = &e.kind
+                && attr.name == "reference"
+                && let Some(&Item::Nature(nature)) = self.lookup(sc, prefix)?.first()
+            {
+                return Ok(vec![Item::RefTerminal { nature }]);
+            }
             return Err(self.error(ElabError::invalid(e.span, "expected a name", None)));
         };
         if let ExprKind::Selected(prefix, suffix) = &e.kind
@@ -535,11 +544,25 @@ impl<'a> Elab<'a> {
         let t = self.expr_of(sc, e, ty)?;
         match t.e {
             Expr::Const(v) => Ok(v),
-            e if let Some(v) = super::inline::static_call_value(&self.design, &e) => Ok(v),
-            _ => Err(self.error(ElabError::NotStatic {
-                span: e.span,
-                what: what.to_string(),
-            })),
+            call => match super::inline::static_call(&self.design, &call) {
+                Ok(v) => Ok(v),
+                Err(Some(refusal)) => {
+                    let at = refusal.failed_assertion.unwrap_or(e.span);
+                    let (line, col) = self.sources.line_col(at);
+                    let file = &self.sources.file(at.file).name;
+                    Err(self.error(ElabError::invalid(
+                        e.span,
+                        format!("computing {what}: `{}`: {}", refusal.name, refusal.reason),
+                        Some(format!(
+                            "the assertion at {file}:{line}:{col} fails for the arguments given here: change them (the defaults of generics?)"
+                        )),
+                    )))
+                }
+                Err(None) => Err(self.error(ElabError::NotStatic {
+                    span: e.span,
+                    what: what.to_string(),
+                })),
+            },
         }
     }
 
@@ -948,11 +971,11 @@ impl<'a> Elab<'a> {
     ) -> R<Typed> {
         let (sub, slots) = self.resolve_call(subs, args, true, span, name_span)?;
         let ret = sub.ret.clone().unwrap_or(Ty::Real);
-        if sub.native.is_none() {
+        let Some(native) = self.native_of(&sub) else {
             let e = self.user_function_call(sc, &sub, &slots, span)?;
             let ty = self.call_result(&sub, &e).unwrap_or(ret);
             return Ok(Typed::new(e, ty));
-        }
+        };
         let mut args = Vec::new();
         for (p, slot) in sub.params.iter().zip(&slots) {
             match slot {
@@ -966,29 +989,30 @@ impl<'a> Elab<'a> {
                 }
             }
         }
-        let e = self.native_call(&sub, args, span, name_span)?;
+        let e = self.native_call(&sub, native, args, span, name_span)?;
         self.folded(e, ret, span)
     }
 
-    /// The expression of a call of the native (bodiless stdlib) subprogram `sub` on `args`,
-    /// one per parameter.
+    /// The expression of a call of the native (bodiless stdlib) subprogram `sub`, computed
+    /// as `native`, on `args`, one per parameter.
     pub(super) fn native_call(
         &mut self,
         sub: &Subprogram<'a>,
+        native: Native,
         args: Vec<Expr>,
         span: Span,
         name_span: Span,
     ) -> R<Expr> {
         let name = &sub.name;
         let ret = sub.ret.clone().unwrap_or(Ty::Real);
-        Ok(match sub.native {
-            Some(Native::Builtin(b)) => Expr::Call(b, args),
-            Some(Native::Log2) => Expr::Binary(
+        Ok(match native {
+            Native::Builtin(b) => Expr::Call(b, args),
+            Native::Log2 => Expr::Binary(
                 BinaryOp::Div,
                 Box::new(Expr::Call(Builtin::Log, args)),
                 Box::new(Expr::real(std::f64::consts::LN_2)),
             ),
-            Some(Native::LogBase) => {
+            Native::LogBase => {
                 let mut it = args.into_iter();
                 let (x, b) = (it.next(), it.next());
                 match (x, b) {
@@ -1001,10 +1025,10 @@ impl<'a> Elab<'a> {
                 }
             }
             // VHDL-AMS's `now return real` (seconds) beside `now return delay_length`.
-            Some(Native::Now) if ret == Ty::Real => super::synth::now_seconds(),
-            Some(Native::Now) => Expr::Now,
+            Native::Now if ret == Ty::Real => super::synth::now_seconds(),
+            Native::Now => Expr::Now,
             // `"**"(x, y)` called by name.
-            Some(Native::Pow) => {
+            Native::Pow => {
                 let mut it = args.into_iter();
                 match (it.next(), it.next()) {
                     (Some(x), Some(y)) => {
@@ -1017,26 +1041,24 @@ impl<'a> Elab<'a> {
                     _ => return Err(super::Reported),
                 }
             }
-            Some(Native::Io(IoNative::EndFile)) => match args.into_iter().next() {
+            Native::Io(IoNative::EndFile) => match args.into_iter().next() {
                 Some(f) => Expr::EndFile(Box::new(f)),
                 None => return Err(super::Reported),
             },
-            Some(Native::Stop | Native::Finish | Native::Io(_)) => {
+            Native::Stop | Native::Finish | Native::Io(_) => {
                 return Err(self.error(ElabError::invalid(
                     span,
                     format!("`{name}` is a procedure"),
                     None,
                 )));
             }
-            Some(Native::Missing) => {
+            Native::Missing => {
                 return Err(self.error(ElabError::unsupported(
                     name_span,
                     format!("the standard function `{name}`"),
                     "vams implements exp, log, log2, log10, sqrt, the trigonometric and hyperbolic functions, floor, ceil, round, trunc, sign, realmax and realmin",
                 )));
             }
-            // Not native: lowered as a user subprogram by the caller.
-            None => return Err(super::Reported),
         })
     }
 

@@ -301,6 +301,7 @@ fn call(f: Builtin, args: &[Value]) -> Result<Value, NoFold> {
         Builtin::ToReal
         | Builtin::ToInteger
         | Builtin::Pos
+        | Builtin::TimePos
         | Builtin::EnumVal
         | Builtin::TimeVal
         | Builtin::Slice

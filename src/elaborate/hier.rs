@@ -990,15 +990,19 @@ impl<'a> Elab<'a> {
         {
             // No entity of the component's name: the instance is unbound (LRM 5.2.2), and
             // elaborates as nothing.
-            self.design.unbound.push(crate::design::UnboundInstance {
-                label: s
-                    .label
-                    .as_ref()
-                    .map_or_else(String::new, |l| l.name.clone()),
-                component: name,
-                library: lib,
-                span: name_span,
-            });
+            self.design
+                .warnings
+                .push(crate::design::DesignWarning::Unbound(
+                    crate::design::UnboundInstance {
+                        label: s
+                            .label
+                            .as_ref()
+                            .map_or_else(String::new, |l| l.name.clone()),
+                        component: name,
+                        library: lib,
+                        span: name_span,
+                    },
+                ));
             return Ok(());
         }
         let target = (lib, name, arch_name, name_span);

@@ -35,6 +35,9 @@ const MAX_OPEN_BRANCHES: usize = 64;
 pub(super) struct NotInlinable {
     pub name: String,
     pub reason: String,
+    /// The assertion of severity error or failure that fails for the call's arguments, if
+    /// that is the reason: then no evaluation at any time could give a value.
+    pub failed_assertion: Option<Span>,
 }
 
 /// `e` with every `FnCall` replaced by what its function computes.
@@ -60,9 +63,16 @@ const PROCEDURAL: usize = 0;
 /// The value of `e` when its user function calls, executed for their arguments, leave it
 /// static (a constant initialised by a pure function of constants: `time2real(t_step)`).
 pub(super) fn static_call_value(design: &Design, e: &Expr) -> Option<Value> {
-    match inline(design, e, 0).ok().map(|e| fold_parts(&e)) {
-        Some(Ok(Expr::Const(v))) => Some(v),
-        _ => None,
+    static_call(design, e).ok()
+}
+
+/// [`static_call_value`], or why not: `Some` when an assertion of the function fails for
+/// these arguments (an error of the model, not a limit of vams).
+pub(super) fn static_call(design: &Design, e: &Expr) -> Result<Value, Option<NotInlinable>> {
+    match inline(design, e, 0).map(|e| fold_parts(&e)) {
+        Ok(Ok(Expr::Const(v))) => Ok(v),
+        Err(refusal) if refusal.failed_assertion.is_some() => Err(Some(refusal)),
+        _ => Err(None),
     }
 }
 
@@ -190,6 +200,7 @@ impl Expander<'_> {
             return Err(NotInlinable {
                 name: String::new(),
                 reason: "it is not in the design".into(),
+                failed_assertion: None,
             });
         };
         if depth >= MAX_INLINE_DEPTH {
@@ -219,10 +230,7 @@ impl Expander<'_> {
         depth: usize,
     ) -> Result<Expr, NotInlinable> {
         let e = self.expr(&substitute(e, frame), depth)?;
-        fold_parts(&e).map_err(|m| NotInlinable {
-            name: f.name.clone(),
-            reason: m,
-        })
+        fold_parts(&e).map_err(|m| refuse(f, &m))
     }
 
     /// [`Expander::run`] on one way of a forked condition, knowing `fact` there.
@@ -304,16 +312,35 @@ impl Expander<'_> {
                         }
                     }
                 },
-                Instr::Assert { cond, .. } => {
+                Instr::Assert {
+                    cond,
+                    report,
+                    severity,
+                    span,
+                } => {
                     // An assertion that holds statically costs nothing; one that depends on
-                    // the operands is not checked in an equation (see the README).
+                    // the operands is not checked in an equation (see the README). A note or
+                    // a warning that fails does not stop a simulation either.
                     if let Some(c) = cond {
                         let c = self.value(f, c, &frame, depth)?;
-                        if c == Expr::Const(Value::Boolean(false)) {
-                            return Err(refuse(
+                        let severe = !matches!(
+                            self.value(f, severity, &frame, depth),
+                            Ok(Expr::Const(Value::Enum(0 | 1)))
+                        );
+                        if c == Expr::Const(Value::Boolean(false)) && severe {
+                            let message = match report {
+                                Some(r) => match self.value(f, r, &frame, depth) {
+                                    Ok(Expr::Const(Value::String(m))) => format!(": \"{m}\""),
+                                    _ => String::new(),
+                                },
+                                None => String::new(),
+                            };
+                            let mut refusal = refuse(
                                 f,
-                                "one of its assertions fails for these arguments",
-                            ));
+                                &format!("its assertion fails for these arguments{message}"),
+                            );
+                            refusal.failed_assertion = Some(*span);
+                            return Err(refusal);
                         }
                     }
                     pc += 1;
@@ -360,6 +387,7 @@ fn refuse(f: &Subprogram, reason: &str) -> NotInlinable {
     NotInlinable {
         name: f.name.clone(),
         reason: reason.into(),
+        failed_assertion: None,
     }
 }
 
@@ -433,7 +461,7 @@ impl Elab<'_> {
         }
         match inline(&self.design, &e, 0) {
             Ok(e) => Ok(e),
-            Err(NotInlinable { name, reason }) => Err(self.error(ElabError::invalid(
+            Err(NotInlinable { name, reason, .. }) => Err(self.error(ElabError::invalid(
                 span,
                 format!("the function `{name}` cannot be used in a simultaneous statement: {reason}"),
                 Some("equations expand a function's body for its arguments: variable assignments, `if`, `case`, loops and `return`, with arrays indexed and loops bounded by what is known before the run or reached through a few branches; compute anything else in a process".into()),

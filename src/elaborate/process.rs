@@ -1335,6 +1335,13 @@ impl<'a> Elab<'a> {
     }
 
     fn quantity_name(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<crate::design::QuantityId> {
+        // `break x => 0.0, x'dot => 0.1;`: the initial slope of a second-order equation.
+        if let ast::ExprKind::Attribute(prefix, attr) = &e.kind
+            && attr.name == "dot"
+        {
+            let q = self.quantity_name(sc, prefix)?;
+            return Ok(self.dot_quantity(q));
+        }
         let (name, index) = match &e.kind {
             ast::ExprKind::Apply(prefix, args) => (&**prefix, Some(args)),
             _ => (e, None),

@@ -19,7 +19,7 @@ use super::decls::{designator, native};
 use super::error::ElabError;
 use super::expr::Typed;
 use super::process::{Proc, SubContext};
-use super::scope::{Body, Bounds, Instance, Item, Param, Part, Scope, Subprogram};
+use super::scope::{Body, Bounds, Instance, Item, Native, Param, Part, Scope, Subprogram};
 use super::types::Ty;
 use super::{Elab, R};
 
@@ -285,6 +285,38 @@ impl<'a> Elab<'a> {
                 None,
             ))),
         }
+    }
+
+    /// How a call of `sub` is computed natively: a stdlib subprogram's own native, or, for a
+    /// function of the user's with no body anywhere whose name and profile are those of an
+    /// elementary function of math_real (`function exp (x : real) return real;`, as the
+    /// SEAMS test suite declares them), that function, with a warning once per declaration.
+    /// Calls happen after every package body is elaborated, so a missing body stays missing.
+    pub(super) fn native_of(&mut self, sub: &Subprogram<'a>) -> Option<Native> {
+        if sub.native.is_some() || sub.body.borrow().is_some() {
+            return sub.native;
+        }
+        let reals = sub.ret == Some(Ty::Real)
+            && (sub.params.iter()).all(|p| p.ty == Ty::Real && !p.is_signal && !p.has_default);
+        if !reals {
+            return None;
+        }
+        let name = sub.name.to_ascii_lowercase();
+        let stand_in = match (name.as_str(), sub.params.len()) {
+            ("pow", 2) => Native::Pow,
+            (n, arity) => match native(n, arity, true) {
+                b @ Native::Builtin(_) => b,
+                _ => return None,
+            },
+        };
+        let warning = crate::design::DesignWarning::BuiltinStandIn {
+            name: sub.name.clone(),
+            span: sub.span,
+        };
+        if !self.design.warnings.contains(&warning) {
+            self.design.warnings.push(warning);
+        }
+        Some(stand_in)
     }
 
     /// A call of the user-defined function `sub` with bound actuals.
@@ -762,12 +794,12 @@ impl<'a> Elab<'a> {
             _ => return None,
         };
         sub.ret.as_ref()?;
-        if sub.native.is_some() {
+        if let Some(native) = self.native_of(&sub) {
             // math_real's `x ** y`, the stdlib's one native operator.
             let ret = sub.ret.clone().unwrap_or(Ty::Real);
             let args = operands.into_iter().map(|t| t.e).collect();
             return Some(
-                self.native_call(&sub, args, span, span)
+                self.native_call(&sub, native, args, span, span)
                     .and_then(|e| self.folded(e, ret, span)),
             );
         }

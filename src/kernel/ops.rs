@@ -421,7 +421,9 @@ pub(crate) fn real_builtin(f: Builtin, x: f64, y: f64) -> f64 {
         ToReal => x,
         ToInteger => x.round(),
         // Not real-valued: `builtin` handles them before it reaches here; NaN otherwise.
-        Pos | EnumVal | TimeVal | Slice | Splice | ValueOf | Restring | Length => f64::NAN,
+        Pos | TimePos | EnumVal | TimeVal | Slice | Splice | ValueOf | Restring | Length => {
+            f64::NAN
+        }
     }
 }
 
