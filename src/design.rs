@@ -83,9 +83,21 @@ pub struct Design {
     /// no flow of their own balances an equation that sets them (the count rule's
     /// diagnostic names them).
     pub lone_across: Vec<QuantityId>,
+    /// Simultaneous ifs without `else` whose branches give the same equations: at every
+    /// accepted point one of their conditions must hold (the kernel checks).
+    pub branch_covers: Vec<BranchCover>,
     /// What elaboration accepted but a user should hear about (an unbound component
     /// instance, a bodiless function standing in for a built-in one).
     pub warnings: Vec<DesignWarning>,
+}
+
+/// `if c1 use ... elsif c2 use ... end use;` without `else`: its equations exist only while
+/// `condition` (`c1 or c2 ...`) holds; between accepted points the last branch stands in.
+#[derive(Clone, Debug)]
+pub struct BranchCover {
+    pub condition: Expr,
+    /// The simultaneous if.
+    pub span: Span,
 }
 
 /// Something elaboration accepted with a warning.

@@ -492,7 +492,7 @@ fn a_quantity_that_is_not_a_number_stops_the_run() {
         .code(1)
         .stderr(contains("quantity `r` is not a number at t ="))
         .stderr(contains("not_finite.vhd:12:15"))
-        .stderr(contains("`r == sqrt(y);`"))
+        .stderr(contains("sqrt(y);`"))
         .stderr(contains("wrote the waveforms up to t ="));
     // What the run computed before the error is written, and none of it is NaN.
     let text = std::fs::read_to_string(&csv).unwrap();
@@ -506,6 +506,36 @@ fn a_quantity_that_is_not_a_number_stops_the_run() {
     // Before y turns negative the run is fine.
     vams()
         .args(["run", "tests/run/not_finite.vhd", "--stop", "0.9 s"])
+        .assert()
+        .success();
+}
+
+#[test]
+fn a_simultaneous_if_without_else_that_no_condition_covers_stops_the_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("partial.csv");
+    vams()
+        .args(["run", "tests/run/no_branch.vhd", "--stop", "2 s", "-o"])
+        .arg(&csv)
+        .assert()
+        .code(1)
+        .stderr(contains(
+            "no condition of this simultaneous if holds at t =",
+        ))
+        .stderr(contains("no_branch.vhd:10:3"))
+        .stderr(contains("add an `else` branch"));
+    // Up to the error both branches ran: y is continuous, 2x then x + 1/2.
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let y = csv_column(&text, "y");
+    assert!(y.iter().any(|(t, _)| *t > 0.6), "{text}");
+    for (t, v) in y {
+        let x = 1.0 - t;
+        let expected = if x > 0.5 { 2.0 * x } else { x + 0.5 };
+        assert!(t < 1.0 && (v - expected).abs() < 1e-9, "{t}: {v}");
+    }
+    // While x stays positive the run is fine.
+    vams()
+        .args(["run", "tests/run/no_branch.vhd", "--stop", "0.9 s"])
         .assert()
         .success();
 }

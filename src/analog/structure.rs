@@ -211,6 +211,15 @@ impl Names<'_> {
         list.join(", ")
     }
 
+    /// [`Names::equations`] of at most `max` rows, then how many more.
+    fn some_equations(&self, rows: &[usize], max: usize) -> String {
+        let shown = self.equations(&rows[..rows.len().min(max)]);
+        match rows.len().saturating_sub(max) {
+            0 => shown,
+            more => format!("{shown} and {more} more"),
+        }
+    }
+
     fn unknowns(&self, cols: &[usize]) -> String {
         let list: Vec<String> = cols
             .iter()
@@ -275,15 +284,17 @@ pub fn check(inc: &Incidence, names: &Names<'_>) -> Result<(), Vec<AnalogError>>
         } else if let Some((q, _)) = source {
             lone_across_help(names.design, q)
         } else if !over.0.is_empty() {
+            let determined = match over.1.len() {
+                0 => "nothing".to_string(),
+                1..=8 => names.unknowns(&over.1),
+                n => format!("{n} quantities"),
+            };
             format!(
-                "too many equations: {} determine only {}; remove one, or declare the \
-                 quantity it determines (LRM 1076.1 12.6.6)",
-                names.equations(&over.0),
-                if over.1.is_empty() {
-                    "nothing".to_string()
-                } else {
-                    names.unknowns(&over.1)
-                }
+                "too many equations: {} equations ({}) determine only {determined}; remove \
+                 one (a conservation law the terminals already give, written out?), or \
+                 declare the quantity it determines (LRM 1076.1 12.6.6)",
+                over.0.len(),
+                names.some_equations(&over.0, 4),
             )
         } else {
             "too many equations: remove redundant simultaneous statements, or declare the \

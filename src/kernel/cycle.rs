@@ -263,6 +263,32 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             if let Some(q) = self.values.iter().position(|v| !v.is_finite()) {
                 return Err(not_finite(self.design, q, self.values[q], t));
             }
+            self.check_branch_covers(t)?;
+        }
+        Ok(())
+    }
+
+    /// A simultaneous if without `else` none of whose conditions holds at the accepted
+    /// point `t` gives no equations there: the run stops, naming it.
+    fn check_branch_covers(&self, t: f64) -> Result<(), SimError> {
+        for cover in &self.design.branch_covers {
+            let env = Env {
+                signals: &self.kernel.signals.states,
+                vars: &[],
+                quantities: &self.values,
+                derivatives: &self.derivatives,
+                now: t,
+                subprograms: &self.design.subprograms,
+                depth: 0,
+                io: &super::io::Io::default(),
+                drivers: None,
+            };
+            if let Ok(Value::Boolean(false)) = eval(&cover.condition, &env) {
+                return Err(SimError::NoBranch {
+                    time: t,
+                    span: cover.span,
+                });
+            }
         }
         Ok(())
     }
@@ -559,7 +585,8 @@ fn not_finite(design: &Design, q: usize, value: f64, t: f64) -> SimError {
             equations.push(format!("`{}`", e.text));
         }
     }
-    let mut help = "an equation computes it outside its domain: the square root or logarithm                     of a negative number, a division by zero, an exponential that overflows"
+    let mut help = "an equation computes it outside its domain: the square root or logarithm \
+                    of a negative number, a division by zero, an exponential that overflows"
         .to_string();
     if !equations.is_empty() {
         help.push_str("; the equations that name it: ");

@@ -58,6 +58,19 @@ pub enum SimError {
         help: String,
     },
 
+    /// A simultaneous if without `else`, none of whose conditions holds at an accepted
+    /// point: it gives no equations there (LRM 1076.1 12.6.6).
+    #[error("no condition of this simultaneous if holds at t = {} s, so it gives no equations", seconds(*time))]
+    #[diagnostic(
+        code(vams::sim::no_branch),
+        help("add an `else` branch, or widen the conditions so that one always holds")
+    )]
+    NoBranch {
+        time: f64,
+        #[label("none of its conditions holds")]
+        span: Span,
+    },
+
     /// A threshold crossing that flips back whenever the analog solution restarts (a limiter
     /// in a feedback loop switching its equations at the threshold): the analog and digital
     /// parts never settle at `time`.
@@ -194,6 +207,7 @@ impl Located for SimError {
             SimError::Runtime { span, .. }
             | SimError::FileOpen { span, .. }
             | SimError::NotFinite { span, .. }
+            | SimError::NoBranch { span, .. }
             | SimError::Runaway { span, .. }
             | SimError::DeltaLimit { span, .. }
             | SimError::MultipleDrivers { span, .. } => *span,
