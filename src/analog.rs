@@ -35,6 +35,12 @@ pub use build::{Origin, Unknown};
 pub use error::AnalogError;
 pub use tolerance::TOLERANCE_GROUPS;
 
+/// The absolute tolerance of quantity `q` from its tolerance group (its own, else its
+/// branch's), eliminated or not; `None` where no known group applies.
+pub fn quantity_abstol(design: &Design, q: QuantityId) -> Option<f64> {
+    tolerance::per_unknown(design, &[Unknown::Quantity(q)])[0]
+}
+
 use deriv::{Var, derivative};
 use lower::lower;
 use sym::{Bin, Sym};

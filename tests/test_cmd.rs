@@ -229,7 +229,8 @@ fn the_repository_testbenches_pass_by_default() {
             "the function `sin` has no body: its calls compute the built-in `sin`",
         ))
         .stdout(contains("test tb_simultaneous_if_without_else ... ok"))
-        .stdout(contains("84 passed, 0 failed"));
+        .stdout(contains("test tb_above_tolerance ... ok"))
+        .stdout(contains("85 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

@@ -33,10 +33,14 @@ struct Analog<A> {
     integ: Transient,
     x: Vec<f64>,
     g: Vec<f64>,
-    /// Per root function: within this of zero, its sign is undecided after a restart (the
-    /// absolute tolerance of the quantity it compares, else of unknowns without a group):
-    /// see [`Simulation::synchronise`].
+    /// Per root function: how far past its level a quantity must go before its `'above`
+    /// changes (the absolute tolerance of the quantity it compares, else of unknowns without
+    /// a group): see [`hysteresis`] and [`Simulation::synchronise`].
     root_band: Vec<f64>,
+    /// Per root function: when its `'above` last changed, and the factor its band is widened
+    /// by while it chatters (see [`Analog::flipped`]).
+    last_flip: Vec<f64>,
+    widen: Vec<f64>,
     /// The quiescent point (every `x'` zero), before the integrator's consistent
     /// initialisation gives the derivatives their values at `0+`: what `vams op` reports.
     quiescent: Vec<f64>,
@@ -192,12 +196,17 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                     crate::design::SignalKind::Above {
                         quantity: Expr::Quantity(q),
                         ..
-                    } => slots[q.index()].map(|slot| abstol[slot]),
+                    } => match (options.abstol, slots[q.index()]) {
+                        (None, Some(slot)) => Some(abstol[slot]),
+                        // Eliminated: its own group's tolerance, as if it were solved for.
+                        (None, None) => crate::analog::quantity_abstol(design, *q),
+                        (Some(a), _) => Some(a),
+                    },
                     _ => None,
                 };
                 own.unwrap_or(options.abstol.unwrap_or(DEFAULT_ABSTOL))
             })
-            .collect();
+            .collect::<Vec<f64>>();
         let topts = TransientOptions {
             reltol: options.reltol,
             abstol: abstol.iter().copied().fold(DEFAULT_ABSTOL, f64::min),
@@ -208,13 +217,20 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             ..TransientOptions::default()
         };
         let integ = Transient::new(&mut sys, 0.0, &x, topts);
-        let integ = integ.map_err(|e| solve_error(e, 0.0, &sys, &slots, design))?;
+        let mut integ = integ.map_err(|e| solve_error(e, 0.0, &sys, &slots, design))?;
+        for (i, (&s, &band)) in above.iter().zip(&root_band).enumerate() {
+            let now = matches!(self.kernel.value(s), Value::Boolean(true));
+            integ.set_root_offset(i, hysteresis(now, band));
+        }
+        let m = above.len();
         Ok(Analog {
             sys,
             slots,
             above,
             integ,
             root_band,
+            last_flip: vec![f64::NEG_INFINITY; m],
+            widen: vec![1.0; m],
             x: vec![0.0; n],
             g,
             quiescent: x,
@@ -425,7 +441,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             match self.step(t, target)? {
                 Advance::StepAccepted(t1) => {
                     self.refresh()?;
-                    let crossed = self.sync_above(t1, false);
+                    let crossed = self.sync_above(t1);
                     recorder.record(t1, &self.values, &self.kernel.signals.states);
                     self.progress.tick(t1);
                     self.check_cancelled(t1)?;
@@ -435,7 +451,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                 }
                 Advance::Reached(t1) => {
                     self.refresh()?;
-                    self.sync_above(t1, false);
+                    self.sync_above(t1);
                     recorder.record(t1, &self.values, &self.kernel.signals.states);
                     return Ok(t1);
                 }
@@ -444,10 +460,10 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                     index,
                     rising,
                 } => {
-                    self.force_above(index, rising);
+                    self.force_above(tr, index, rising);
                     // Further crossings at the same instant come one call each.
                     while let Advance::Root { index, rising, .. } = self.step(tr, tr)? {
-                        self.force_above(index, rising);
+                        self.force_above(tr, index, rising);
                     }
                     self.refresh()?;
                     recorder.record(tr, &self.values, &self.kernel.signals.states);
@@ -477,20 +493,23 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
     }
 
     /// Schedules the new value of the `'above` signal of root function `index`.
-    fn force_above(&mut self, index: usize, rising: bool) {
-        if let Some(&s) = self.analog.as_ref().and_then(|a| a.above.get(index)) {
-            if *self.kernel.value(s) != Value::Boolean(rising) {
-                self.kernel.signals.force(s, Value::Boolean(rising));
-            }
+    fn force_above(&mut self, t: f64, index: usize, rising: bool) {
+        let Some(a) = self.analog.as_mut() else {
+            return;
+        };
+        if let Some(&s) = a.above.get(index)
+            && *self.kernel.value(s) != Value::Boolean(rising)
+        {
+            self.kernel.signals.force(s, Value::Boolean(rising));
+            a.flipped(t, index, rising);
         }
     }
 
-    /// Forces every `'above` signal whose value disagrees with the sign of its root function at
-    /// the current state: crossings the integrator cannot see, because the function started a
-    /// step at exactly zero or a break moved the quantity across its threshold. True if any.
-    /// With `banded`, a function within its band ([`Analog::root_band`]) of zero leaves its
-    /// signal as it is.
-    fn sync_above(&mut self, t: f64, banded: bool) -> bool {
+    /// Forces every `'above` signal whose value disagrees with its root function at the
+    /// current state, by more than the function's band ([`Analog::root_band`]): crossings the
+    /// integrator cannot see, because the function started a step within its band or a break
+    /// moved the quantity across its threshold. True if any.
+    fn sync_above(&mut self, t: f64) -> bool {
         let Some(a) = self.analog.as_mut() else {
             return false;
         };
@@ -500,11 +519,13 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         a.sys
             .roots(t, a.integ.state(), a.integ.derivative(), &mut a.g);
         let mut any = false;
-        for ((&s, &g), &band) in a.above.iter().zip(&a.g).zip(&a.root_band) {
+        for i in 0..a.above.len() {
+            let s = a.above[i];
             let now = matches!(self.kernel.value(s), Value::Boolean(true));
-            let decided = !banded || g.abs() > band;
-            if decided && ((g > 0.0 && !now) || (g < 0.0 && now)) {
-                self.kernel.signals.force(s, Value::Boolean(g > 0.0));
+            let beyond = a.g[i] + hysteresis(now, a.root_band[i] * a.widen[i]);
+            if (beyond > 0.0 && !now) || (beyond < 0.0 && now) {
+                self.kernel.signals.force(s, Value::Boolean(!now));
+                a.flipped(t, i, !now);
                 any = true;
             }
         }
@@ -545,7 +566,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         // in a feedback loop sits on its threshold (sliding), and each set of equations puts
         // the solution a rounding error on the other side (4.8 + 2e-11 with `vout == vin`,
         // 4.8 - 1e-11 limited), which would flip the `'above` and restart forever.
-        self.sync_above(t, true);
+        self.sync_above(t);
         Ok(true)
     }
 
@@ -568,6 +589,36 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             breaks: self.kernel.breaks_total,
         }
     }
+}
+
+impl<A> Analog<A> {
+    /// Root function `i`'s `'above` changed to `above` at `t`: its hysteresis follows. A
+    /// change back within a hair of time of the last one is chattering (a diode at its knee
+    /// with an inductor's current through it: each state's solution lands a solver tolerance
+    /// on the other side, and the signal would flip at every step of a few femtoseconds):
+    /// the band widens tenfold each time, up to 10^4 times the quantity's tolerance, until a
+    /// change comes after a real interval again.
+    fn flipped(&mut self, t: f64, i: usize, above: bool) {
+        const MAX_WIDEN: f64 = 1e4;
+        let chattering = t - self.last_flip[i] <= 1e-12 * t.abs().max(1e-6);
+        self.widen[i] = match chattering {
+            true => (self.widen[i] * 10.0).min(MAX_WIDEN),
+            false => 1.0,
+        };
+        self.last_flip[i] = t;
+        let band = self.root_band[i] * self.widen[i];
+        self.integ.set_root_offset(i, hysteresis(above, band));
+    }
+}
+
+/// The offset of an `'above` root function in state `above` (true: the quantity is above
+/// its level) with band `band`: the integrator locates the next crossing where the quantity
+/// is `band` past the level on the other side, so that a quantity sitting on its threshold
+/// (a limiter in a feedback loop, a diode at its knee held by an inductor: each state's
+/// equations put it a hair on the other side) does not flip the signal at every step, and a
+/// crossing is located to within the quantity's own tolerance.
+fn hysteresis(above: bool, band: f64) -> f64 {
+    if above { band } else { -band }
 }
 
 /// A signal's value as the equations see it (booleans and enumerations as positions).

@@ -82,6 +82,9 @@ pub struct Transient {
     g_prev: Vec<f64>,
     g_new: Vec<f64>,
     g_tmp: Vec<f64>,
+    /// Per root function, a constant added to the system's value before any sign test: the
+    /// caller's hysteresis (see [`Transient::set_root_offset`]).
+    root_offsets: Vec<f64>,
     /// Scratch: `x'` of the dense output where root functions are evaluated.
     xdot_tmp: Vec<f64>,
     /// `x'` just before a restart, where the implicit-Euler fallback of the consistent
@@ -205,6 +208,7 @@ impl Transient {
             g_prev: vec![0.0; m],
             g_new: vec![0.0; m],
             g_tmp: vec![0.0; m],
+            root_offsets: vec![0.0; m],
             xdot_tmp: vec![0.0; n],
             xdot_held: vec![0.0; n],
             pending: Vec::with_capacity(m),
@@ -229,6 +233,35 @@ impl Transient {
 
     pub fn time(&self) -> f64 {
         self.t
+    }
+
+    /// Adds `offset` to root function `i` from now on (replacing the previous one): the
+    /// integrator then locates the zeros of `g_i + offset`. A caller that reports a crossing
+    /// only once its function is a band past zero, on the side away from the current state,
+    /// gets hysteresis (see `kernel::cycle`).
+    pub fn set_root_offset(&mut self, i: usize, offset: f64) {
+        if let (Some(o), Some(g)) = (self.root_offsets.get_mut(i), self.g_prev.get_mut(i)) {
+            *g += offset - *o;
+            *o = offset;
+        }
+    }
+
+    /// The offset of root function `i` ([`Transient::set_root_offset`]), 0 by default.
+    pub fn root_offset(&self, i: usize) -> f64 {
+        self.root_offsets.get(i).copied().unwrap_or(0.0)
+    }
+
+    /// The system's root functions at `(t, x, x')` with their offsets, into `out`.
+    pub(super) fn eval_roots<S: DaeSystem + ?Sized>(
+        sys: &mut S,
+        offsets: &[f64],
+        (t, x, xdot): (f64, &[f64], &[f64]),
+        out: &mut [f64],
+    ) {
+        sys.roots(t, x, xdot, out);
+        for (g, o) in out.iter_mut().zip(offsets) {
+            *g += o;
+        }
     }
 
     /// The state `x` at [`Self::time`].

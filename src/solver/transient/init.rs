@@ -271,7 +271,8 @@ impl Transient {
         self.int_valid = false;
         self.xdot_alg_known = false;
         if !self.g_prev.is_empty() {
-            sys.roots(t, &self.hist_x[0], &self.xdot, &mut self.g_prev);
+            let at = (t, self.hist_x[0].as_slice(), self.xdot.as_slice());
+            Self::eval_roots(sys, &self.root_offsets, at, &mut self.g_prev);
             self.stats.root_evals += 1;
         }
         Ok(())

@@ -100,7 +100,8 @@ impl Transient {
         if m == 0 {
             return None;
         }
-        sys.roots(self.t, &self.hist_x[0], &self.xdot, &mut self.g_new);
+        let at = (self.t, self.hist_x[0].as_slice(), self.xdot.as_slice());
+        Self::eval_roots(sys, &self.root_offsets, at, &mut self.g_new);
         self.stats.root_evals += 1;
         let crossed =
             |a: f64, b: f64| a != 0.0 && (b == 0.0 || a.signum() != b.signum() || b.is_nan());
@@ -132,7 +133,8 @@ impl Transient {
             }
             self.x_new = x;
             self.xdot_new = xd;
-            sys.roots(self.t, &self.hist_x[0], &self.xdot, &mut self.g_new);
+            let at = (self.t, self.hist_x[0].as_slice(), self.xdot.as_slice());
+            Self::eval_roots(sys, &self.root_offsets, at, &mut self.g_new);
             self.stats.root_evals += 1;
         }
         // Report every function that has crossed by t_root, lowest index first.
@@ -181,7 +183,7 @@ impl Transient {
             if self.interpolate_both(c, &mut x, Some(&mut xd)).is_err() {
                 break;
             }
-            sys.roots(c, &x, &xd, &mut self.g_tmp);
+            Self::eval_roots(sys, &self.root_offsets, (c, &x, &xd), &mut self.g_tmp);
             self.stats.root_evals += 1;
             let fc = self.g_tmp[i];
             if fc == 0.0 {
