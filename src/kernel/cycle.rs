@@ -242,18 +242,8 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
     fn max_step(&self, options: &SimOptions) -> Result<f64, SimError> {
         let mut h = options.max_step.unwrap_or(f64::INFINITY);
         for limit in &self.design.limits {
-            let env = Env {
-                signals: &self.kernel.signals.states,
-                vars: &[],
-                quantities: &self.values,
-                derivatives: &self.derivatives,
-                now: 0.0,
-                subprograms: &self.design.subprograms,
-                depth: 0,
-                io: &super::io::Io::default(),
-                drivers: None,
-            };
-            let step = eval(&limit.max_step, &env)
+            let step = self
+                .eval_at(&limit.max_step, 0.0)
                 .ok()
                 .and_then(|v| v.as_f64())
                 .filter(|s| *s > 0.0)
@@ -263,6 +253,22 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             h = h.min(step);
         }
         Ok(h)
+    }
+
+    /// `e` (of signals, quantities and `now`, outside any process) at time `now`.
+    fn eval_at(&self, e: &Expr, now: f64) -> Result<Value, super::eval::EvalError> {
+        let env = Env {
+            signals: &self.kernel.signals.states,
+            vars: &[],
+            quantities: &self.values,
+            derivatives: &self.derivatives,
+            now,
+            subprograms: &self.design.subprograms,
+            depth: 0,
+            io: &super::io::Io::default(),
+            drivers: None,
+        };
+        eval(e, &env)
     }
 
     /// Copies the integrator's state into the per-quantity values processes read, and into
@@ -288,18 +294,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
     /// point `t` gives no equations there: the run stops, naming it.
     fn check_branch_covers(&self, t: f64) -> Result<(), SimError> {
         for cover in &self.design.branch_covers {
-            let env = Env {
-                signals: &self.kernel.signals.states,
-                vars: &[],
-                quantities: &self.values,
-                derivatives: &self.derivatives,
-                now: t,
-                subprograms: &self.design.subprograms,
-                depth: 0,
-                io: &super::io::Io::default(),
-                drivers: None,
-            };
-            if let Ok(Value::Boolean(false)) = eval(&cover.condition, &env) {
+            if let Ok(Value::Boolean(false)) = self.eval_at(&cover.condition, t) {
                 return Err(SimError::NoBranch {
                     time: t,
                     span: cover.span,
