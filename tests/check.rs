@@ -236,3 +236,31 @@ fn an_unbound_component_instance_is_a_warning() {
     );
     assert!(stderr.contains(": no errors"), "{stderr}");
 }
+
+/// An entity declaration alone is legal VHDL (books show interfaces before their bodies):
+/// `check` notes that it has nothing to elaborate instead of failing.
+#[test]
+fn an_entity_without_architecture_is_a_note() {
+    let dir = tempfile::tempdir().expect("temporary directory");
+    let path = dir.path().join("interface.vhd");
+    std::fs::write(
+        &path,
+        "entity small_adder is\n  port ( a, b : in integer; s : out integer );\nend entity small_adder;\n",
+    )
+    .expect("writable");
+    let out = vams().arg("check").arg(&path).output().expect("vams runs");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    assert!(
+        stderr.contains("note: `small_adder` is not elaborated: it has no architecture"),
+        "{stderr}"
+    );
+    // Run, which must elaborate it, still says what is missing.
+    let out = vams()
+        .args(["run", "--stop", "1 ns"])
+        .arg(&path)
+        .output()
+        .expect("vams runs");
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("has no architecture"));
+}

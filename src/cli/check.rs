@@ -139,6 +139,14 @@ fn check_top(
     max: usize,
     tally: &mut Tally,
 ) {
+    if !top.has_architecture && top.configurations.is_empty() {
+        eprintln!(
+            "note: `{}` is not elaborated: it has no architecture (an entity declaration alone \
+             is legal; `vams run` needs one)",
+            top.name
+        );
+        return;
+    }
     if !top.can_elaborate() {
         eprintln!(
             "note: `{}` is not elaborated: no default for generic(s) {}; it is analysed, and \

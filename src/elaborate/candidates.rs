@@ -22,6 +22,9 @@ pub struct TopCandidate {
     /// The configuration declarations of library `work` that configure it, sorted: the
     /// designer's ways of elaborating it.
     pub configurations: Vec<String>,
+    /// Whether any architecture of it was given: an entity declaration alone (an interface
+    /// a book shows before its bodies) is legal, but there is nothing to elaborate.
+    pub has_architecture: bool,
 }
 
 impl TopCandidate {
@@ -50,9 +53,12 @@ pub fn candidates(lib: &Library) -> Vec<TopCandidate> {
     lib.tops()
         .into_iter()
         .filter_map(|name| {
-            let entity = lib
-                .entity(&("work".to_string(), name.clone()), usize::MAX)?
-                .unit;
+            let unit = lib.entity(&("work".to_string(), name.clone()), usize::MAX)?;
+            let has_architecture = lib
+                .architectures
+                .get(&unit.index)
+                .is_some_and(|a| !a.is_empty());
+            let entity = unit.unit;
             let mut configurations: Vec<String> = lib
                 .configurations
                 .iter()
@@ -66,6 +72,7 @@ pub fn candidates(lib: &Library) -> Vec<TopCandidate> {
             configurations.sort();
             Some(TopCandidate {
                 configurations,
+                has_architecture,
                 span: entity.name.span,
                 generics_without_default: names_where(&entity.generics, |d| d.default.is_none()),
                 analog_ports: names_where(&entity.ports, |d| {
