@@ -166,6 +166,10 @@ pub struct NewtonOptions {
     /// a full step with a Jacobian factored in this call, without diagonal shift, is the
     /// solution, and ends the iteration without a second one to confirm it.
     pub linear: bool,
+    /// With [`NewtonOptions::reuse_jacobian`], an update within `tol` computed on a matrix
+    /// factored at another point ends the iteration only when the contraction rate is at
+    /// most this (1: whenever it contracts); otherwise the matrix is refreshed there first.
+    pub stale_rate: f64,
 }
 
 impl Default for NewtonOptions {
@@ -181,6 +185,7 @@ impl Default for NewtonOptions {
             stale_scale: 1.0,
             check_residual: true,
             linear: false,
+            stale_rate: 1.0,
         }
     }
 }
@@ -193,9 +198,18 @@ pub struct NewtonReport {
     pub residual_evals: usize,
 }
 
+/// A factorisation set aside, with the Jacobian it was computed from: see
+/// [`Newton::exchange`].
+pub struct Factorization {
+    lin: LinearSolver,
+    jac: Vec<f64>,
+    valid: bool,
+}
+
 /// Newton's workspace: the linear solver and every vector it needs, allocated once.
 pub struct Newton {
     lin: LinearSolver,
+    linear_options: LinearOptions,
     /// The pattern: row and column of each Jacobian entry.
     pattern: Vec<(usize, usize)>,
     jac: Vec<f64>,
@@ -220,6 +234,7 @@ impl Newton {
     ) -> Result<Self, SolveError> {
         Ok(Self {
             lin: LinearSolver::new(n, pattern, linear)?,
+            linear_options: linear,
             pattern: pattern.to_vec(),
             jac: vec![0.0; pattern.len()],
             row_tol: vec![0.0; n],
@@ -237,6 +252,39 @@ impl Newton {
     /// Forces a fresh Jacobian at the next iteration.
     pub fn invalidate_jacobian(&mut self) {
         self.jac_valid = false;
+    }
+}
+
+impl Factorization {
+    /// Forgets the factorisation (the slot keeps its solver and pivot orders).
+    pub fn invalidate(&mut self) {
+        self.valid = false;
+    }
+
+    /// Pivot searches of factorisations made while this slot was Newton's.
+    pub fn pivot_searches(&self) -> usize {
+        self.lin.pivot_counts().searched
+    }
+}
+
+impl Newton {
+    /// A factorisation slot for [`Newton::exchange`], holding none yet.
+    pub fn spare(&self) -> Result<Factorization, SolveError> {
+        Ok(Factorization {
+            lin: LinearSolver::new(self.r.len(), &self.pattern, self.linear_options)?,
+            jac: vec![0.0; self.pattern.len()],
+            valid: false,
+        })
+    }
+
+    /// Exchanges the current factorisation (and the Jacobian it came from) with `other`: a
+    /// problem that comes back to a few matrices in turn (the consistent initialisations of
+    /// a switching circuit's modes) keeps one per matrix, and the solver it swaps out keeps
+    /// its own factorisation and pivot orders for when it comes back.
+    pub fn exchange(&mut self, other: &mut Factorization) {
+        std::mem::swap(&mut self.lin, &mut other.lin);
+        std::mem::swap(&mut self.jac, &mut other.jac);
+        std::mem::swap(&mut self.jac_valid, &mut other.valid);
     }
 
     /// The residual at the last point Newton evaluated.
@@ -432,7 +480,18 @@ impl Newton {
             let rate = norm / prev_norm;
             let short = norm * rate.powi((opts.max_iter - iter) as i32) > opts.tol;
             let moved = stale || (factored_at != iter && !opts.linear);
-            if moved && (rate > opts.max_rate || short) {
+            // An update that stops halving looks like the rounding floor (`stall_tol` below),
+            // but on a matrix from another point it is only linear convergence: judge the
+            // floor with a fresh matrix.
+            let slow = opts
+                .stall_tol
+                .is_some_and(|bound| norm <= bound && norm > 0.5 * prev_norm);
+            // Within tolerance on a matrix from another point, the error left is about
+            // `rate / (1 - rate)` times the update: more than `stale_rate` (or unknown, in
+            // the first iteration) and the update is redone on a fresh matrix.
+            let known_rate = if prev_norm.is_finite() { rate } else { 1.0 };
+            let loose = norm <= opts.tol && known_rate > opts.stale_rate;
+            if moved && (rate > opts.max_rate || short || slow || loose) {
                 self.refactor(p, x, tol, t, rep)?;
                 factored_at = iter;
                 norm = self.step(x, tol, t, 1.0)?;

@@ -94,9 +94,9 @@ pub struct Transient {
     pending: Vec<(usize, bool)>,
     /// Breakpoints ahead, sorted descending (the next one is last).
     breakpoints: Vec<f64>,
-    /// The last consistent point (Newton's unknowns of the initialisation) of each of the
-    /// last few modes ([`DaeSystem::mode`]), replaced round-robin from `mode_next`.
-    modes: Vec<(u64, Vec<f64>)>,
+    /// The last consistent point of each of the last few modes ([`DaeSystem::mode`]) and
+    /// the factorisation there, replaced round-robin from `mode_next`.
+    modes: Vec<init::Mode>,
     mode_next: usize,
     /// Scratch: residuals of the two starting points a restart compares.
     r_start: Vec<f64>,
@@ -178,6 +178,7 @@ impl Transient {
                 stale_scale: 1.0,
                 check_residual: true,
                 linear: sys.is_linear(),
+                stale_rate: 1.0,
             },
             newton,
             diff: sys.differential().to_vec(),
@@ -289,7 +290,12 @@ impl Transient {
         Stats {
             newton_iterations: newton.iterations,
             factorizations: newton.factorizations,
-            pivot_searches: self.newton.pivot_searches(),
+            pivot_searches: self.newton.pivot_searches()
+                + self
+                    .modes
+                    .iter()
+                    .map(|m| m.lu_pivot_searches())
+                    .sum::<usize>(),
             residual_evals: newton.residual_evals + self.stats.residual_evals,
             ..self.stats
         }

@@ -21,11 +21,30 @@
 //! there, to `t + h`, which is not kept.
 
 use super::Transient;
-use crate::solver::newton::{NewtonOptions, NonlinearProblem, norm2};
+use crate::solver::newton::{Factorization, NewtonOptions, NonlinearProblem, norm2};
 use crate::solver::{DaeSystem, SolveError};
 
 /// Newton's bound on the weighted update of the consistent initialisation.
 const INIT_TOL: f64 = 0.01 * 0.33;
+
+/// The largest contraction rate at which an update within [`INIT_TOL`] on a matrix from
+/// another point ends the iteration (what is left is then about this fraction of the update;
+/// a fresh matrix's quadratic convergence leaves less).
+const INIT_STALE_RATE: f64 = 1e-3;
+
+/// A mode's last consistent point (Newton's unknowns of the initialisation) and its
+/// initialisation's factorisation there.
+pub(super) struct Mode {
+    key: u64,
+    z: Vec<f64>,
+    lu: Factorization,
+}
+
+impl Mode {
+    pub(super) fn lu_pivot_searches(&self) -> usize {
+        self.lu.pivot_searches()
+    }
+}
 
 /// The fallback's implicit-Euler step, relative to `max(1, |t|)` seconds.
 const FALLBACK_STEP: f64 = 1e-8;
@@ -199,10 +218,11 @@ impl Transient {
         // later): that mode's last consistent point is usually much nearer than the held
         // state, whose algebraic unknowns belong to the mode just left (a diode that must
         // now conduct starts from reverse bias). Start from whichever fits better.
-        let cached = mode.and_then(|m| self.modes.iter().find(|(k, _)| *k == m));
-        if let Some((_, z)) = cached {
+        let cached = mode.and_then(|m| self.modes.iter().position(|s| s.key == m));
+        if let Some(k) = cached {
             p.residual(&self.scratch, &mut self.r_start);
             let held = norm2(&self.r_start);
+            let z = &self.modes[k].z;
             p.residual(z, &mut self.r_start);
             let remembered = norm2(&self.r_start);
             self.stats.residual_evals += 2;
@@ -217,20 +237,34 @@ impl Transient {
         // the divided differences of the first steps, whose points are nanoseconds apart.
         // Where rounding keeps the update above the bound (`x'` of a quantity at rest beside
         // volts), the iteration stops when it stops contracting.
+        //
+        // A mode seen before also left its matrix, factored at its last consistent point:
+        // Newton starts on it and refreshes it only where it converges too slowly, or
+        // converges at a rate that leaves more than a thousandth of the update as error (a
+        // PWM bridge's restarts then factor once where they factored twice, or not at all).
         let opts = NewtonOptions {
             tol: INIT_TOL,
             stall_tol: Some(1.0),
+            reuse_jacobian: true,
+            stale_rate: INIT_STALE_RATE,
             linear: self.newton_opts.linear,
             ..NewtonOptions::default()
         };
-        self.newton.invalidate_jacobian();
-        match self
+        match cached {
+            Some(k) => self.newton.exchange(&mut self.modes[k].lu),
+            None => self.newton.invalidate_jacobian(),
+        }
+        let solved = self
             .newton
-            .solve(&mut p, &mut self.scratch, &self.newton_tol, &opts, t)
-        {
+            .solve(&mut p, &mut self.scratch, &self.newton_tol, &opts, t);
+        if let Some(k) = cached {
+            // The integrator's own factorisation back; the mode's stays with the mode.
+            self.newton.exchange(&mut self.modes[k].lu);
+        }
+        match solved {
             Ok(_) => {
                 if let Some(m) = mode {
-                    self.remember_mode(m);
+                    self.remember_mode(m, cached.is_some())?;
                 }
                 // Spread the converged z (the last residual may have been at an earlier
                 // iterate).
@@ -264,6 +298,9 @@ impl Transient {
             }
             Err(e) => return Err(e),
         }
+        if let (Some(k), false) = (cached, solved.is_ok()) {
+            self.modes[k].lu.invalidate();
+        }
         self.newton.invalidate_jacobian();
         self.c0_factored = 0.0;
         self.order = 1;
@@ -279,19 +316,33 @@ impl Transient {
     }
 
     /// Keeps the consistent point in `scratch` as mode `m`'s (a few modes, round-robin; a
-    /// slot's vector is allocated once).
-    fn remember_mode(&mut self, m: u64) {
+    /// slot's vectors are allocated once). Unless the mode's own factorisation was used
+    /// (`exchanged`), the one Newton just made moves into the slot, and Newton takes the
+    /// slot's previous one (or a new, empty one) in its place.
+    fn remember_mode(&mut self, m: u64, exchanged: bool) -> Result<(), SolveError> {
         const MODES: usize = 8;
-        if let Some((_, z)) = self.modes.iter_mut().find(|(k, _)| *k == m) {
-            z.copy_from_slice(&self.scratch);
-        } else if self.modes.len() < MODES {
-            self.modes.push((m, self.scratch.clone()));
-        } else {
-            let slot = &mut self.modes[self.mode_next];
-            slot.0 = m;
-            slot.1.copy_from_slice(&self.scratch);
-            self.mode_next = (self.mode_next + 1) % MODES;
+        let k = match self.modes.iter().position(|s| s.key == m) {
+            Some(k) => k,
+            None if self.modes.len() < MODES => {
+                self.modes.push(Mode {
+                    key: m,
+                    z: self.scratch.clone(),
+                    lu: self.newton.spare()?,
+                });
+                self.modes.len() - 1
+            }
+            None => {
+                let k = self.mode_next;
+                self.modes[k].key = m;
+                self.mode_next = (self.mode_next + 1) % MODES;
+                k
+            }
+        };
+        self.modes[k].z.copy_from_slice(&self.scratch);
+        if !exchanged {
+            self.newton.exchange(&mut self.modes[k].lu);
         }
+        Ok(())
     }
 
     /// The implicit-Euler fallback of the module documentation, in two steps: the first
