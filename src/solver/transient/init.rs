@@ -258,13 +258,21 @@ impl Transient {
             .newton
             .solve(&mut p, &mut self.scratch, &self.newton_tol, &opts, t);
         if let Some(k) = cached {
-            // The integrator's own factorisation back; the mode's stays with the mode.
+            // The integrator's own factorisation back; the mode's stays with the mode. One
+            // that took more than two iterations without a refresh has drifted from where
+            // the mode's restarts now land (a motor speeding up): the next one refactors.
             self.newton.exchange(&mut self.modes[k].lu);
+            if solved
+                .as_ref()
+                .is_ok_and(|r| r.factorizations == 0 && r.iterations > 2)
+            {
+                self.modes[k].lu.invalidate();
+            }
         }
         match solved {
             Ok(_) => {
                 if let Some(m) = mode {
-                    self.remember_mode(m, cached.is_some())?;
+                    self.remember_mode(m)?;
                 }
                 // Spread the converged z (the last residual may have been at an earlier
                 // iterate).
@@ -316,10 +324,11 @@ impl Transient {
     }
 
     /// Keeps the consistent point in `scratch` as mode `m`'s (a few modes, round-robin; a
-    /// slot's vectors are allocated once). Unless the mode's own factorisation was used
-    /// (`exchanged`), the one Newton just made moves into the slot, and Newton takes the
-    /// slot's previous one (or a new, empty one) in its place.
-    fn remember_mode(&mut self, m: u64, exchanged: bool) -> Result<(), SolveError> {
+    /// slot's vectors and solver are allocated once). A new mode's slot has no factorisation
+    /// yet: its next initialisation makes one in the slot's solver, so the integrator's
+    /// solver, with the pivot orders it compiled for the corrector's matrices, stays the
+    /// integrator's (handing it to the slot cost the headlight tracking run 4 %).
+    fn remember_mode(&mut self, m: u64) -> Result<(), SolveError> {
         const MODES: usize = 8;
         let k = match self.modes.iter().position(|s| s.key == m) {
             Some(k) => k,
@@ -334,14 +343,12 @@ impl Transient {
             None => {
                 let k = self.mode_next;
                 self.modes[k].key = m;
+                self.modes[k].lu.invalidate();
                 self.mode_next = (self.mode_next + 1) % MODES;
                 k
             }
         };
         self.modes[k].z.copy_from_slice(&self.scratch);
-        if !exchanged {
-            self.newton.exchange(&mut self.modes[k].lu);
-        }
         Ok(())
     }
 
