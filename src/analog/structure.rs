@@ -245,17 +245,15 @@ pub fn check(inc: &Incidence, names: &Names<'_>) -> Result<(), Vec<AnalogError>>
         let source = across_only(names, &over.1);
         // The equation to show: one that sets an across-only quantity, else the first of the
         // user's among the over-determined ones.
-        let user = |r: &&usize| matches!(names.origins[**r], Origin::User(_));
-        let first_over = (source
-            .and_then(|(_, c)| (over.0.iter()).find(|r| user(r) && inc.row(**r).contains(&c))))
-        .or_else(|| over.0.iter().find(user))
-        .or(over.0.first());
+        let first_over = (source.and_then(|(_, c)| setting_row(inc, names, &over.0, c)))
+            .or_else(|| (over.0.iter().copied()).find(|&r| is_user(names, r)))
+            .or(over.0.first().copied());
         let (span, label) = match (unused.first(), first_over, names.origins.first()) {
             (Some(&c), _, _) => (
                 names.unknowns[c].span(names.design),
                 "appears in no equation",
             ),
-            (None, Some(&r), _) => (
+            (None, Some(r), _) => (
                 names.origins[r].span(names.design),
                 if source.is_some() {
                     "this sets an across quantity that has no through quantity"
@@ -318,11 +316,7 @@ pub fn check(inc: &Incidence, names: &Names<'_>) -> Result<(), Vec<AnalogError>>
     if let Some(&first) = rows.first() {
         let source = across_only(names, &cols);
         // Shown: the user's equation that sets a lone across quantity, if one does.
-        let first = (source.and_then(|(_, c)| {
-            (rows.iter())
-                .find(|&&r| matches!(names.origins[r], Origin::User(_)) && inc.row(r).contains(&c))
-        }))
-        .map_or(first, |&r| r);
+        let first = (source.and_then(|(_, c)| setting_row(inc, names, &rows, c))).unwrap_or(first);
         let help = match source {
             Some((q, _)) => lone_across_help(names.design, q),
             None => "these equations leave no room for each other: remove or rewrite one so \
@@ -356,6 +350,18 @@ pub fn check(inc: &Incidence, names: &Names<'_>) -> Result<(), Vec<AnalogError>>
         });
     }
     Err(errors)
+}
+
+/// Whether row `r` is one of the model's own equations (not a conservation law or an
+/// across quantity's definition).
+fn is_user(names: &Names<'_>, r: usize) -> bool {
+    matches!(names.origins[r], Origin::User(_))
+}
+
+/// The first of the user's equations among `rows` that names column `c`: the one to show
+/// for a lone across quantity it sets.
+fn setting_row(inc: &Incidence, names: &Names<'_>, rows: &[usize], c: usize) -> Option<usize> {
+    (rows.iter().copied()).find(|&r| is_user(names, r) && inc.row(r).contains(&c))
 }
 
 /// Why an equation that sets the lone across quantity `q` cannot hold, and the fix.

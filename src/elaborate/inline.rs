@@ -321,27 +321,26 @@ impl Expander<'_> {
                     // An assertion that holds statically costs nothing; one that depends on
                     // the operands is not checked in an equation (see the README). A note or
                     // a warning that fails does not stop a simulation either.
-                    if let Some(c) = cond {
-                        let c = self.value(f, c, &frame, depth)?;
-                        let severe = !matches!(
+                    if let Some(c) = cond
+                        && self.value(f, c, &frame, depth)? == Expr::Const(Value::Boolean(false))
+                        && !matches!(
                             self.value(f, severity, &frame, depth),
                             Ok(Expr::Const(Value::Enum(0 | 1)))
+                        )
+                    {
+                        let message = match report {
+                            Some(r) => match self.value(f, r, &frame, depth) {
+                                Ok(Expr::Const(Value::String(m))) => format!(": \"{m}\""),
+                                _ => String::new(),
+                            },
+                            None => String::new(),
+                        };
+                        let mut refusal = refuse(
+                            f,
+                            &format!("its assertion fails for these arguments{message}"),
                         );
-                        if c == Expr::Const(Value::Boolean(false)) && severe {
-                            let message = match report {
-                                Some(r) => match self.value(f, r, &frame, depth) {
-                                    Ok(Expr::Const(Value::String(m))) => format!(": \"{m}\""),
-                                    _ => String::new(),
-                                },
-                                None => String::new(),
-                            };
-                            let mut refusal = refuse(
-                                f,
-                                &format!("its assertion fails for these arguments{message}"),
-                            );
-                            refusal.failed_assertion = Some(*span);
-                            return Err(refusal);
-                        }
+                        refusal.failed_assertion = Some(*span);
+                        return Err(refusal);
                     }
                     pc += 1;
                 }

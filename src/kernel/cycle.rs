@@ -517,7 +517,8 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         for i in 0..a.above.len() {
             let s = a.above[i];
             let now = matches!(self.kernel.value(s), Value::Boolean(true));
-            let beyond = a.g[i] + hysteresis(now, a.root_band[i] * a.widen[i]);
+            // The integrator holds the signal's hysteresis (set where it last changed).
+            let beyond = a.g[i] + a.integ.root_offset(i);
             if (beyond > 0.0 && !now) || (beyond < 0.0 && now) {
                 self.kernel.signals.force(s, Value::Boolean(!now));
                 a.flipped(t, i, !now);
