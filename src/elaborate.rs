@@ -590,9 +590,17 @@ impl<'a> Elab<'a> {
             // Deferred constants get their values from the body.
             let mut body_sc = sc.clone();
             for item in body.context {
-                if let ContextItem::Use(names, _) = item {
-                    for n in names {
-                        let _ = self.use_clause(&mut body_sc, n);
+                match item {
+                    ContextItem::Library(names, _) => {
+                        for n in names {
+                            let lib = Item::Library(canonical_library(&n.name).into());
+                            body_sc.import(&n.name, lib);
+                        }
+                    }
+                    ContextItem::Use(names, _) => {
+                        for n in names {
+                            let _ = self.use_clause(&mut body_sc, n);
+                        }
                     }
                 }
             }

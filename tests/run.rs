@@ -728,3 +728,23 @@ fn files_open_where_vams_runs_and_a_missing_one_is_located() {
     let log = std::fs::read_to_string(dir.path().join("log.txt")).unwrap();
     assert_eq!(log, "answer 42\n");
 }
+
+#[test]
+fn a_function_reports_in_order_and_the_run_goes_on() {
+    let out = vams()
+        .args(["run", "tests/run/function_report.vhd", "--stop", "2ms"])
+        .assert()
+        .success()
+        .get_output()
+        .stderr
+        .clone();
+    let text = String::from_utf8(out).unwrap();
+    let at = |s: &str| {
+        text.find(s)
+            .unwrap_or_else(|| panic!("{s} missing from {text}"))
+    };
+    assert!(at("0 s: note: halving 7") < at("0 s: warning: odd value"));
+    assert!(at("0 s: warning: odd value") < at("0 s: note: half of 7 is 3"));
+    assert!(at("function_report.vhd:10:") < at("function_report.vhd:11:"));
+    assert!(at("1 ms: note: done") > at("half of 7 is 3"));
+}

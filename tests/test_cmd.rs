@@ -230,7 +230,12 @@ fn the_repository_testbenches_pass_by_default() {
         ))
         .stdout(contains("test tb_simultaneous_if_without_else ... ok"))
         .stdout(contains("test tb_above_tolerance ... ok"))
-        .stdout(contains("85 passed, 0 failed"));
+        .stdout(contains("test tb_operator_calls ... ok"))
+        .stdout(contains("test tb_operator_overloads ... ok"))
+        .stdout(contains("test tb_math_real_uniform ... ok"))
+        .stdout(contains("test tb_quantity_port_expressions ... ok"))
+        .stdout(contains("test tb_package_body_context ... ok"))
+        .stdout(contains("90 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

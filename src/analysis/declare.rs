@@ -970,7 +970,7 @@ impl Analyzer<'_> {
 }
 
 /// Two signatures that declare the same subprogram (homographs).
-fn same_profile(a: &Signature, b: &Signature) -> bool {
+pub(super) fn same_profile(a: &Signature, b: &Signature) -> bool {
     a.result == b.result
         && a.params.len() == b.params.len()
         && a.params.iter().zip(&b.params).all(|(x, y)| x.ty == y.ty)

@@ -935,14 +935,26 @@ impl<'a> Analyzer<'a> {
                 }
                 break;
             }
-            found.extend(
-                ds.iter()
-                    .filter(|d| !found.contains(d))
-                    .copied()
-                    .collect::<Vec<_>>(),
-            );
+            // A subprogram declared in an inner region hides its homographs outside it (LRM
+            // 10.3): an architecture's `"<"` on bit_vector, not std.standard's.
+            let inner = found.len();
+            for &d in ds {
+                if !found.contains(&d) && !self.hidden_by(d, &found[..inner]) {
+                    found.push(d);
+                }
+            }
         }
         (!found.is_empty()).then_some(found)
+    }
+
+    /// True when `d` is a subprogram with the profile of one of `inner`'s.
+    fn hidden_by(&self, d: DeclId, inner: &[DeclId]) -> bool {
+        let DeclKind::Subprogram(sig) = &self.out.decl(d).kind else {
+            return false;
+        };
+        inner.iter().any(|&i| {
+            matches!(&self.out.decl(i).kind, DeclKind::Subprogram(s) if super::declare::same_profile(s, sig))
+        })
     }
 
     /// The declarations of `name` in `region` only (a selected name `pkg.name`).

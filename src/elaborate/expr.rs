@@ -456,7 +456,10 @@ impl<'a> Elab<'a> {
         args: &[ast::Assoc],
         span: Span,
     ) -> Option<ast::Expr> {
-        let ExprKind::Name(id) = &prefix.kind else {
+        // `"+"(a, b)`, or by expanded name `std.standard."<"(a, b)`, `work.p."="(x, y)`:
+        // analysis resolves a predefined operator to its type's declaration, never to a
+        // subprogram.
+        let (ExprKind::Name(id) | ExprKind::Selected(_, id)) = &prefix.kind else {
             return None;
         };
         let alias = match self.resolved_item(sc, id) {

@@ -8,7 +8,7 @@ use crate::ast::{
     self, Actual, Architecture, Assoc, ConcKind, ConcStmt, Entity, InstantiatedUnit, InterfaceDecl,
     ObjectClass,
 };
-use crate::design::{QuantityKind, Value};
+use crate::design::{self, QuantityKind, Value};
 use crate::source::Span;
 
 use super::arrays::NatureMark;
@@ -545,22 +545,63 @@ impl<'a> Elab<'a> {
                         "declare one scalar quantity port per element",
                     )));
                 }
-                match actual_expr {
-                    Some((e, p)) => {
-                        let items = self.lookup(p, e)?;
-                        match items[0] {
-                            Item::Quantity(q) => Item::Quantity(q),
+                // The quantity a name actual denotes; `None` for an expression, a constant or
+                // a signal.
+                let named = match actual_expr {
+                    Some((e, p))
+                        if matches!(
+                            e.kind,
+                            ast::ExprKind::Name(_) | ast::ExprKind::Selected(..)
+                        ) =>
+                    {
+                        match self.lookup(p, e)?[0] {
+                            Item::Quantity(q) => Some(q),
                             Item::Constant { .. } | Item::Signal { .. } | Item::Variable { .. } => {
-                                return Err(self.error(ElabError::unsupported(
-                                    e.span,
-                                    "an expression as the actual of a quantity port",
-                                    "declare a quantity `q == expr;` in the instantiating architecture and connect it",
-                                )));
+                                None
                             }
                             ref other => {
                                 return Err(port_class_error(self, e, other.class(), "quantity"));
                             }
                         }
+                    }
+                    _ => None,
+                };
+                match actual_expr {
+                    Some(_) if named.is_some() => Item::Quantity(named.expect("tested")),
+                    Some((e, p)) if matches!(decl.mode, None | Some(ast::Mode::In)) => {
+                        let value = self.expr_of(p, e, &Ty::Real)?;
+                        let value = self.analog_value(value.e, value.ty, e.span)?;
+                        let q = self.new_quantity(
+                            &name.name,
+                            QuantityKind::Free,
+                            &sub,
+                            None,
+                            None,
+                            name.span,
+                        );
+                        let text = format!("{} => {}", name.name, self.text(e.span));
+                        self.design.equations.push(design::Equation {
+                            residual: design::Expr::Binary(
+                                design::BinaryOp::Sub,
+                                Box::new(design::Expr::Quantity(q)),
+                                Box::new(value),
+                            ),
+                            span: e.span,
+                            instance: self.instance.clone(),
+                            text,
+                        });
+                        Item::Quantity(q)
+                    }
+                    Some((e, _)) => {
+                        return Err(self.error(ElabError::invalid(
+                            e.span,
+                            format!(
+                                "the actual of `{}`, a quantity port of mode {}, must name a quantity",
+                                name.name,
+                                if decl.mode == Some(ast::Mode::Out) { "out" } else { "inout" }
+                            ),
+                            Some("an expression is an actual only for a port of mode in".into()),
+                        )));
                     }
                     None => Item::Quantity(self.new_quantity(
                         &name.name,

@@ -46,7 +46,7 @@ impl<'a> Elab<'a> {
 
     /// `e` of type `ty` (the expression at `span`) as an equation reads it: calls inlined,
     /// folded, and checked to read only what an equation may.
-    fn analog_value(&mut self, e: Expr, ty: Ty, span: Span) -> R<Expr> {
+    pub(super) fn analog_value(&mut self, e: Expr, ty: Ty, span: Span) -> R<Expr> {
         let inlined = self.inline_calls(e, span)?;
         let t = self.folded(inlined, ty, span)?;
         if !t.e.is_analog() {

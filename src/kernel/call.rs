@@ -8,7 +8,9 @@
 
 use crate::design::{Expr, Instr, Subprogram, SubprogramId, Value};
 
+use super::Severity;
 use super::eval::{Env, EvalError, eval, integer, offset, truth};
+use super::io::FunctionReport;
 use super::process::INSTRUCTION_LIMIT;
 
 /// The deepest chain of subprogram calls (function calls nested in expressions plus procedure
@@ -132,7 +134,7 @@ pub(crate) fn call_function(
                 cond,
                 report,
                 severity,
-                ..
+                span,
             } => {
                 if let Some(c) = cond {
                     if truth(&eval(c, &inner)?)? {
@@ -146,16 +148,23 @@ pub(crate) fn call_function(
                     },
                     None => "Assertion violation.".to_string(),
                 };
-                let level = match eval(severity, &inner)? {
-                    Value::Enum(0) => "note",
-                    Value::Enum(1) => "warning",
-                    Value::Enum(2) => "error",
-                    _ => "failure",
+                let severity = match eval(severity, &inner)? {
+                    Value::Enum(0) => Severity::Note,
+                    Value::Enum(1) => Severity::Warning,
+                    Value::Enum(2) => Severity::Error,
+                    _ => {
+                        return Err(EvalError::new(
+                            format!("failure reported in function `{}`: {message}", sub.name),
+                            "an assertion of severity failure stops the simulation",
+                        ));
+                    }
                 };
-                return Err(EvalError::new(
-                    format!("{level} reported in function `{}`: {message}", sub.name),
-                    "a report or failed assertion inside a function stops the simulation in vams",
-                ));
+                // Told by the process that evaluated the call, in order with its own reports.
+                (env.io.function_reports.borrow_mut()).push(FunctionReport {
+                    severity,
+                    message,
+                    span: *span,
+                });
             }
             Instr::Call { .. }
             | Instr::Assign { .. }

@@ -66,6 +66,7 @@ impl<'d> EventKernel<'d> {
             delta_cycles: 0,
             breaks_total: 0,
             io: Io {
+                function_reports: std::cell::RefCell::default(),
                 heap,
                 files: std::cell::RefCell::new(Files::new(&design.files).map_err(|(k, e)| {
                     SimError::FileOpen {
@@ -209,7 +210,10 @@ impl<'d> EventKernel<'d> {
                 design_signals: &self.design.signals,
                 io: &self.io,
             };
-            match process::run(i, &self.design.processes[i], &mut self.procs[i], &mut cx)? {
+            let suspend = process::run(i, &self.design.processes[i], &mut self.procs[i], &mut cx);
+            // What the instruction the process suspended at (`wait until f(x)`) reported.
+            process::emit_function_reports(&mut cx, &self.design.processes[i].name);
+            match suspend? {
                 Suspend::Wait | Suspend::Halt => {}
                 Suspend::Stop => {
                     outcome = Some(Outcome::Stopped { time: now });

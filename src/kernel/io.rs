@@ -16,6 +16,17 @@ use super::ops::EvalError;
 pub(crate) struct Io {
     pub heap: RefCell<Heap>,
     pub files: RefCell<Files>,
+    /// Reports of functions (`report` and failed assertions of severity below failure),
+    /// made inside an expression and told by the process that evaluated it.
+    pub function_reports: RefCell<Vec<FunctionReport>>,
+}
+
+/// A report a function made: the process that called it emits it with its own name.
+#[derive(Debug)]
+pub(crate) struct FunctionReport {
+    pub severity: super::Severity,
+    pub message: String,
+    pub span: crate::source::Span,
 }
 
 /// Objects designated by access values: `Value::Access(h)` is `cells[h - 1]` (0 is

@@ -176,6 +176,24 @@ pub(crate) fn later(now: f64, d: f64) -> f64 {
 }
 
 /// Runs process `index` until it suspends.
+/// Tells the reports that functions made while `process` evaluated their calls.
+pub(crate) fn emit_function_reports(cx: &mut Context, process: &str) {
+    if cx.io.function_reports.borrow().is_empty() {
+        return;
+    }
+    for r in cx.io.function_reports.take() {
+        let report = Report {
+            time: cx.now,
+            severity: r.severity,
+            message: r.message,
+            process: process.to_string(),
+            span: r.span,
+        };
+        (cx.on_report)(&report);
+        cx.reports.push(report);
+    }
+}
+
 pub(crate) fn run(
     index: usize,
     process: &Process,
@@ -194,6 +212,7 @@ pub(crate) fn run(
     state.timeout_at = None;
     let subs = cx.subprograms;
     for _ in 0..INSTRUCTION_LIMIT {
+        emit_function_reports(cx, &process.name);
         let (code, decls, spans) = code_of(process, subs, state.running);
         let Some(instr) = code.get(state.pc) else {
             // Elaboration guarantees every path ends in a wait; stop here rather than panic.
@@ -435,6 +454,8 @@ pub(crate) fn run(
                     Value::Enum(2) => Severity::Error,
                     _ => Severity::Failure,
                 };
+                // The reports of the functions the message called come first.
+                emit_function_reports(cx, &process.name);
                 let report = Report {
                     time: cx.now,
                     severity,

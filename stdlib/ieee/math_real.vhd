@@ -135,3 +135,39 @@ package math_real is
   function arctanh (x : in real) return real;
 
 end package math_real;
+
+-- The body holds what is written in VHDL; every subprogram declared above without a body
+-- here is computed natively by vams.
+package body math_real is
+
+  procedure uniform (variable seed1, seed2 : inout positive; variable x : out real) is
+    -- The products stay below 2**31 (40014 * 53668 < 2**31 - 1): no overflow.
+    variable s1, s2, k, z : integer;
+  begin
+    if seed1 > 2147483562 or seed2 > 2147483398 then
+      assert false
+        report "uniform: seed1 must be in 1 to 2147483562 and seed2 in 1 to 2147483398"
+        severity error;
+      x := 0.0;
+      return;
+    end if;
+    k := seed1 / 53668;
+    s1 := 40014 * (seed1 - k * 53668) - k * 12211;
+    if s1 < 0 then
+      s1 := s1 + 2147483563;
+    end if;
+    k := seed2 / 52774;
+    s2 := 40692 * (seed2 - k * 52774) - k * 3791;
+    if s2 < 0 then
+      s2 := s2 + 2147483399;
+    end if;
+    seed1 := s1;
+    seed2 := s2;
+    z := s1 - s2;
+    if z < 1 then
+      z := z + 2147483562;
+    end if;
+    x := real(z) * 4.656613e-10;
+  end procedure uniform;
+
+end package body math_real;
