@@ -193,6 +193,9 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_numeric_std_arith ... ok"))
         .stdout(contains("test tb_std_logic_arith_packages ... ok"))
         .stdout(contains("test tb_numeric_std_operators ... ok"))
+        .stdout(contains("test tb_numeric_bit_arith ... ok"))
+        .stdout(contains("test tb_numeric_bit_shifts_compare ... ok"))
+        .stdout(contains("test tb_numeric_bit_counter ... ok"))
         .stdout(contains("test tb_real_now_and_power ... ok"))
         .stdout(contains("test tb_type_aliases ... ok"))
         .stdout(contains("test tb_free_running_phase ... ok"))
@@ -235,7 +238,7 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_math_real_uniform ... ok"))
         .stdout(contains("test tb_quantity_port_expressions ... ok"))
         .stdout(contains("test tb_package_body_context ... ok"))
-        .stdout(contains("90 passed, 0 failed"));
+        .stdout(contains("93 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

@@ -426,6 +426,24 @@ fn std_logic_arith_and_unsigned_resolve() {
     assert_eq!(messages(&[text]), Vec::<String>::new());
 }
 
+/// numeric_bit resolves: its explicit operators on `unsigned` (an array of bit) hide the
+/// predefined ones of the same profile (`and`, `sll`, `=`, `<`), and its `rising_edge` on bit
+/// sits beside std_logic_1164's on std_ulogic.
+#[test]
+fn numeric_bit_resolves_beside_std_logic_1164() {
+    let text = "library ieee;\nuse ieee.std_logic_1164.all;\nuse ieee.numeric_bit.all;\n\
+                entity e is end entity e;\narchitecture a of e is\n\
+                signal clk : bit;\nsignal sclk : std_logic;\n\
+                signal u : unsigned(3 downto 0);\nsignal s : signed(3 downto 0);\n\
+                begin\n  p : process (clk, sclk)\n    variable n : integer;\n  begin\n\
+                if rising_edge(clk) and falling_edge(sclk) then\n\
+                u <= (u and \"0110\") sll 1;\n      s <= -s + to_signed(n, 4);\n\
+                n := to_integer(u) + to_integer(s);\n    end if;\n\
+                if u = \"0110\" or u < 3 or s >= -2 then\n      u <= resize(u, 4);\n    end if;\n\
+                end process p;\nend architecture a;\n";
+    assert_eq!(messages(&[text]), Vec::<String>::new());
+}
+
 #[test]
 fn an_element_of_a_terminal_array_resolves_to_the_array() {
     let cell = "library ieee;\nuse ieee.electrical_systems.all;\n\
