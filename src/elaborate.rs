@@ -447,6 +447,11 @@ impl<'a> Elab<'a> {
             )));
         };
         if let ExprKind::Name(lib) = &prefix.kind {
+            // `use lib.all;` makes the library's units visible by their names: analysis
+            // resolved them, and elaboration builds a package when a name first reaches it.
+            if suffix.name == "all" {
+                return self.library_name(sc, lib).map(|_| ());
+            }
             // `use lib.pkg;`
             let lib_name = self.library_name(sc, lib)?;
             let pkg = self.package(&lib_name, &suffix.name, Some(suffix.span))?;

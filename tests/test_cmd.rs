@@ -238,7 +238,11 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_math_real_uniform ... ok"))
         .stdout(contains("test tb_quantity_port_expressions ... ok"))
         .stdout(contains("test tb_package_body_context ... ok"))
-        .stdout(contains("93 passed, 0 failed"));
+        .stdout(contains("test tb_array_quantity_attributes ... ok"))
+        .stdout(contains("test tb_break_integral ... ok"))
+        .stdout(contains("test tb_quantity_array_ports ... ok"))
+        .stdout(contains("test tb_terminal_port_slices ... ok"))
+        .stdout(contains("97 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

@@ -23,9 +23,20 @@ enum Named {
     Value,
 }
 
+/// The formal part of a named association, as overload resolution reads it.
+#[derive(Clone, Copy, Debug)]
+pub enum Formal<'e> {
+    /// `x => ...`
+    Whole(&'e str),
+    /// An element or a slice of the parameter: `bv(0) => ...`, `bv(1 to 2) => ...`.
+    Part(&'e str),
+    /// A conversion function or another form analysis does not model.
+    Other,
+}
+
 /// One argument of a call or operator: its formal name if named, and its expression.
 struct Arg<'e> {
-    formal: Option<&'e str>,
+    formal: Option<Formal<'e>>,
     expr: Option<&'e Expr>,
     types: Vec<TypeId>,
 }
@@ -264,7 +275,7 @@ impl Analyzer<'_> {
         Some(out)
     }
 
-    fn arg<'e>(&self, formal: Option<&'e str>, expr: Option<&'e Expr>) -> Arg<'e> {
+    fn arg<'e>(&self, formal: Option<Formal<'e>>, expr: Option<&'e Expr>) -> Arg<'e> {
         let types = match expr {
             Some(Expr {
                 kind: ExprKind::Literal(Literal::Char(c)),
@@ -377,15 +388,36 @@ impl Analyzer<'_> {
     }
 
     /// The parameter each argument goes to, if `args` fit `sig`.
+    /// Empty when an argument associates a part of its parameter (no argument then takes a
+    /// parameter's type as its own).
     fn matches(&self, sig: &Signature, args: &[Arg]) -> Option<Vec<usize>> {
         let mut used = vec![false; sig.params.len()];
         let mut to = Vec::with_capacity(args.len());
+        let mut parts = false;
         for (i, a) in args.iter().enumerate() {
             let p = match a.formal {
                 None => i,
                 // A formal part analysis does not model: accept without checking.
-                Some("") => return Some(Vec::new()),
-                Some(name) => sig.params.iter().position(|p| p.name == name)?,
+                Some(Formal::Other) => return Some(Vec::new()),
+                Some(Formal::Whole(name)) => sig.params.iter().position(|p| p.name == name)?,
+                // Elements and slices of one parameter, each associated once (not checked
+                // here): the actual is of the parameter's element type or of its type.
+                Some(Formal::Part(name)) => {
+                    // Else a conversion function (`to_bit(q) => s`): not modelled.
+                    let Some(p) = sig.params.iter().position(|p| p.name == name) else {
+                        return Some(Vec::new());
+                    };
+                    let ty = sig.params[p].ty;
+                    let element = self.types().element(ty);
+                    let fits =
+                        |&t: &TypeId| self.types().fits(t, ty) || self.types().fits(t, element);
+                    if !a.types.iter().any(fits) {
+                        return None;
+                    }
+                    used[p] = true;
+                    parts = true;
+                    continue;
+                }
             };
             if p >= sig.params.len() || used[p] {
                 return None;
@@ -402,6 +434,9 @@ impl Analyzer<'_> {
             .iter()
             .zip(&used)
             .all(|(p, &u)| u || p.has_default);
+        if parts {
+            to.clear();
+        }
         complete.then_some(to)
     }
 
@@ -899,7 +934,7 @@ impl Analyzer<'_> {
                 if let ExprKind::Selected(p, _) = &prefix.kind {
                     self.resolve_name(p);
                 }
-                let list: Vec<(Option<&str>, Option<&Expr>)> =
+                let list: Vec<(Option<Formal>, Option<&Expr>)> =
                     args.iter().map(formal_and_actual).collect();
                 let functions: Vec<DeclId> = ds
                     .iter()
@@ -972,7 +1007,7 @@ impl Analyzer<'_> {
         &mut self,
         op: &str,
         span: Span,
-        args: &[(Option<&str>, Option<&Expr>)],
+        args: &[(Option<Formal>, Option<&Expr>)],
         expected: TypeId,
     ) -> TypeId {
         let name = format!("\"{op}\"");
@@ -994,7 +1029,7 @@ impl Analyzer<'_> {
         name: &str,
         name_span: Span,
         cands: Vec<DeclId>,
-        args: &[(Option<&str>, Option<&Expr>)],
+        args: &[(Option<Formal>, Option<&Expr>)],
         expected: TypeId,
         span: Span,
     ) -> TypeId {
@@ -1209,17 +1244,16 @@ impl Analyzer<'_> {
     }
 }
 
-/// An association's formal name (`Some("")` for a formal part analysis does not model, such
-/// as a conversion or an element) and its actual expression (`None` for `open` or a range).
-fn formal_and_actual(a: &Assoc) -> (Option<&str>, Option<&Expr>) {
-    let formal = match &a.formal {
-        Some(Expr {
-            kind: ExprKind::Name(id),
-            ..
-        }) => Some(id.name.as_str()),
-        Some(_) => Some(""),
-        None => None,
-    };
+/// An association's formal part and its actual expression (`None` for `open` or a range).
+fn formal_and_actual(a: &Assoc) -> (Option<Formal<'_>>, Option<&Expr>) {
+    let formal = a.formal.as_ref().map(|f| match &f.kind {
+        ExprKind::Name(id) => Formal::Whole(&id.name),
+        ExprKind::Apply(p, _) => match &p.kind {
+            ExprKind::Name(id) => Formal::Part(&id.name),
+            _ => Formal::Other,
+        },
+        _ => Formal::Other,
+    });
     let actual = match &a.actual {
         Actual::Expr(x) => Some(x),
         _ => None,

@@ -649,6 +649,58 @@ impl<'a> Elab<'a> {
             let ExprKind::Apply(_, args) = &formal.kind else {
                 return Err(Reported);
             };
+            // A slice of the port, `t(4 to 7) => n(2 to 5)`: element by element.
+            if let [
+                ast::Assoc {
+                    actual: Actual::Range(r),
+                    ..
+                },
+            ] = args.as_slice()
+            {
+                let (l, r2, asc) = self.range_bounds(parent, r)?;
+                let mut at = Vec::new();
+                for i in indexes((l, r2, asc)) {
+                    at.push(self.element(&positions, i, formal.span)?);
+                }
+                let items = self.lookup(parent, actual)?;
+                let Item::TerminalArray {
+                    elements,
+                    nature: n,
+                } = &items[0]
+                else {
+                    return Err(self.error(ElabError::invalid(
+                        actual.span,
+                        format!("a slice of port `{}` needs a terminal array", name.name),
+                        None,
+                    )));
+                };
+                if *n != nature.element || elements.ids.len() != at.len() {
+                    return Err(self.error(ElabError::invalid(
+                        actual.span,
+                        format!(
+                            "the slice has {} elements of nature {}, `{}` {} of nature {}",
+                            at.len(),
+                            self.natures[nature.element].name,
+                            elements.name,
+                            elements.ids.len(),
+                            self.natures[*n].name
+                        ),
+                        Some(
+                            "associate a terminal array slice of the same length and nature".into(),
+                        ),
+                    )));
+                }
+                for (pos, id) in at.into_iter().zip(elements.ids.iter().copied()) {
+                    if ids[pos].replace(id).is_some() {
+                        return Err(self.error(ElabError::invalid(
+                            formal.span,
+                            format!("an element of port `{}` is associated twice", name.name),
+                            Some("associate each element of the port once".into()),
+                        )));
+                    }
+                }
+                continue;
+            }
             let (index, index_span) = self.static_index(parent, args, &name.name, formal.span)?;
             let pos = self.element(&positions, index, index_span)?;
             let (id, actual_nature) = self.terminal(parent, actual)?;
@@ -704,6 +756,195 @@ impl<'a> Elab<'a> {
             }),
             nature: nature.element,
         })
+    }
+
+    /// A quantity port of an array type (`quantity y : out real_vector(1 to 7)`): the
+    /// elements of the quantity array associated with it (whole or a slice; its length must
+    /// be the port's), or new free quantities when it is open.
+    pub(super) fn quantity_array_port(
+        &mut self,
+        sc: &mut Scope<'a>,
+        name: &Ident,
+        decl: &ast::InterfaceDecl,
+        sub: &Sub,
+        actual: Option<(&ast::Expr, &Scope<'a>)>,
+    ) -> R<()> {
+        let bounds = match &sub.ty {
+            Ty::Array(arr) => arr.bounds,
+            _ => None,
+        };
+        let Some((e, parent)) = actual else {
+            return self.quantity_array_decl(
+                sc,
+                std::slice::from_ref(name),
+                &decl.subtype,
+                sub,
+                None,
+            );
+        };
+        let Item::QuantityArray(actual) = self.lookup(parent, e)?.swap_remove(0) else {
+            return Err(self.error(ElabError::invalid(
+                e.span,
+                format!(
+                    "port `{}` is a quantity array: connect a quantity array",
+                    name.name
+                ),
+                Some(
+                    "associate a quantity array of the port's length, or its elements one by one"
+                        .into(),
+                ),
+            )));
+        };
+        let (left, ascending) = match bounds {
+            None => (actual.left, actual.ascending),
+            Some(b) => {
+                let len = indexes(b).len();
+                if len != actual.ids.len() {
+                    return Err(self.error(ElabError::invalid(
+                        e.span,
+                        format!(
+                            "port `{}` has {len} elements, but `{}` has {} ({})",
+                            name.name,
+                            actual.name,
+                            actual.ids.len(),
+                            actual.range_text()
+                        ),
+                        Some("connect an array of the same length".into()),
+                    )));
+                }
+                (b.0, b.2)
+            }
+        };
+        let item = Item::QuantityArray(Rc::new(Elements {
+            name: name.name.clone(),
+            left,
+            ascending,
+            ids: actual.ids.clone(),
+        }));
+        sc.declare_at(&name.name, name.span, item);
+        Ok(())
+    }
+
+    /// A quantity port of a constrained array type associated element by element,
+    /// `port map (y(1) => a, y(2 to 3) => b(0 to 1))`: each element exactly once.
+    pub(super) fn quantity_port_elements(
+        &mut self,
+        sc: &Scope<'a>,
+        parent: &Scope<'a>,
+        name: &Ident,
+        decl: &ast::InterfaceDecl,
+        assocs: &[&ast::Assoc],
+    ) -> R<Item<'a>> {
+        let first = assocs.first().map_or(name.span, |a| a.span);
+        let sub = self.subtype_indication(sc, &decl.subtype)?;
+        let bounds = match &sub.ty {
+            Ty::Array(arr) if arr.element == Ty::Real => arr.bounds,
+            _ => None,
+        };
+        let Some(bounds) = bounds else {
+            return Err(self.error(ElabError::unsupported(
+                first,
+                format!("element associations of port `{}`", name.name),
+                "a quantity port associated element by element needs an array of reals with an index range; associate the whole port",
+            )));
+        };
+        let count = indexes(bounds).len();
+        let positions = Elements {
+            name: name.name.clone(),
+            left: bounds.0,
+            ascending: bounds.2,
+            ids: (0..count).collect(),
+        };
+        let mut ids: Vec<Option<QuantityId>> = vec![None; count];
+        for a in assocs {
+            let (Some(formal), Actual::Expr(actual)) = (&a.formal, &a.actual) else {
+                return Err(self.error(ElabError::invalid(
+                    a.span,
+                    format!("an element of port `{}` needs a quantity", name.name),
+                    Some("connect a quantity to each element: `q(1) => x`".into()),
+                )));
+            };
+            let ExprKind::Apply(_, args) = &formal.kind else {
+                return Err(Reported);
+            };
+            // The formal's positions, and the actual's quantities for them.
+            let (at, quantities) = match args.as_slice() {
+                [
+                    ast::Assoc {
+                        actual: Actual::Range(r),
+                        ..
+                    },
+                ] => {
+                    let (l, r2, asc) = self.range_bounds(parent, r)?;
+                    let mut at = Vec::new();
+                    for i in indexes((l, r2, asc)) {
+                        at.push(self.element(&positions, i, formal.span)?);
+                    }
+                    let Item::QuantityArray(q) = self.lookup(parent, actual)?.swap_remove(0) else {
+                        return Err(self.error(ElabError::invalid(
+                            actual.span,
+                            format!("a slice of port `{}` needs a quantity array", name.name),
+                            None,
+                        )));
+                    };
+                    if q.ids.len() != at.len() {
+                        return Err(self.error(ElabError::invalid(
+                            actual.span,
+                            format!(
+                                "the slice has {} elements, `{}` {}",
+                                at.len(),
+                                q.name,
+                                q.ids.len()
+                            ),
+                            Some("associate a slice of the same length".into()),
+                        )));
+                    }
+                    (at, q.ids.clone())
+                }
+                _ => {
+                    let (index, index_span) =
+                        self.static_index(parent, args, &name.name, formal.span)?;
+                    let pos = self.element(&positions, index, index_span)?;
+                    (vec![pos], vec![self.quantity_name(parent, actual)?])
+                }
+            };
+            for (pos, q) in at.into_iter().zip(quantities) {
+                if ids[pos].replace(q).is_some() {
+                    return Err(self.error(ElabError::invalid(
+                        formal.span,
+                        format!("an element of port `{}` is associated twice", name.name),
+                        Some("associate each element of the port once".into()),
+                    )));
+                }
+            }
+        }
+        let mut complete = Vec::with_capacity(count);
+        for (pos, id) in ids.into_iter().enumerate() {
+            let Some(id) = id else {
+                let index = match bounds.2 {
+                    true => bounds.0 + pos as i64,
+                    false => bounds.0 - pos as i64,
+                };
+                return Err(self.error(ElabError::invalid(
+                    first,
+                    format!(
+                        "element `{}({index})` of port `{}` is not associated",
+                        name.name, name.name
+                    ),
+                    Some(format!(
+                        "associate every element of `{}`, or the whole port: `{} => q`",
+                        name.name, name.name
+                    )),
+                )));
+            };
+            complete.push(id);
+        }
+        Ok(Item::QuantityArray(Rc::new(Elements {
+            name: name.name.clone(),
+            left: bounds.0,
+            ascending: bounds.2,
+            ids: complete,
+        })))
     }
 
     /// `quantity q : real_vector(1 to 3) := (others => 0.5);`: the scalar free quantities

@@ -418,7 +418,11 @@ impl<'a> Elab<'a> {
         let actual = match (actual, parent) {
             (PortActual::Whole(a), _) => a,
             (PortActual::Elements(elements), Some(parent)) => {
-                let item = self.terminal_port_elements(sc, parent, name, decl, elements)?;
+                let item = if decl.class == Some(ObjectClass::Quantity) {
+                    self.quantity_port_elements(sc, parent, name, decl, elements)?
+                } else {
+                    self.terminal_port_elements(sc, parent, name, decl, elements)?
+                };
                 sc.declare_at(&name.name, name.span, item);
                 return Ok(());
             }
@@ -538,6 +542,12 @@ impl<'a> Elab<'a> {
             }
             ObjectClass::Quantity => {
                 let sub = self.subtype_indication(sc, &decl.subtype)?;
+                if let Ty::Array(arr) = &sub.ty
+                    && arr.element == Ty::Real
+                    && arr.dimensions() == 1
+                {
+                    return self.quantity_array_port(sc, name, decl, &sub, actual_expr);
+                }
                 if sub.ty != Ty::Real {
                     return Err(self.error(ElabError::unsupported(
                         decl.subtype.span,

@@ -1334,13 +1334,24 @@ impl<'a> Elab<'a> {
         Ok(Instr::Break { reinit, when, span })
     }
 
-    fn quantity_name(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<crate::design::QuantityId> {
+    pub(super) fn quantity_name(
+        &mut self,
+        sc: &Scope<'a>,
+        e: &ast::Expr,
+    ) -> R<crate::design::QuantityId> {
         // `break x => 0.0, x'dot => 0.1;`: the initial slope of a second-order equation.
         if let ast::ExprKind::Attribute(prefix, attr) = &e.kind
             && attr.name == "dot"
         {
             let q = self.quantity_name(sc, prefix)?;
             return Ok(self.dot_quantity(q));
+        }
+        // `break v'integ => -v'integ;` (the book's bouncing ball): the state of the integral.
+        if let ast::ExprKind::Attribute(prefix, attr) = &e.kind
+            && attr.name == "integ"
+        {
+            let q = self.quantity_name(sc, prefix)?;
+            return Ok(self.integ_quantity(q));
         }
         let (name, index) = match &e.kind {
             ast::ExprKind::Apply(prefix, args) => (&**prefix, Some(args)),

@@ -17,6 +17,10 @@ use super::{Elab, R};
 /// A branch of a simultaneous if or case: its condition (`None` for the default) and body.
 type Arm<'s> = (Option<(Expr, Span)>, &'s [ConcStmt]);
 
+/// The quantity attributes that apply to a quantity array element by element (`'dot` has
+/// its own arm: it also applies to derivatives).
+const ELEMENTWISE: [&str; 6] = ["integ", "slew", "ltf", "zoh", "ztf", "delayed"];
+
 /// An equation before it is placed in the design.
 struct Eqn {
     residual: Expr,
@@ -129,6 +133,20 @@ impl<'a> Elab<'a> {
                 let items = self.lookup(sc, e)?;
                 Ok(composite_item(&items[0]))
             }
+            // `v'slew(1.0e6, -1.0e6)`, `v'integ`, `v'ltf(num, den)` of a quantity array: the
+            // attribute of each element.
+            ExprKind::Attribute(prefix, attr) if ELEMENTWISE.contains(&attr.name.as_str()) => {
+                self.elementwise_attribute(sc, prefix, attr, &[], e.span, len)
+            }
+            ExprKind::Apply(target, args)
+                if matches!(&target.kind, ExprKind::Attribute(_, attr)
+                    if ELEMENTWISE.contains(&attr.name.as_str())) =>
+            {
+                let ExprKind::Attribute(prefix, attr) = &target.kind else {
+                    return Ok(None);
+                };
+                self.elementwise_attribute(sc, prefix, attr, args, e.span, len)
+            }
             ExprKind::Apply(prefix, args) => {
                 let is_object = matches!(prefix.kind, ExprKind::Name(_) | ExprKind::Selected(..));
                 let items = if is_object {
@@ -149,6 +167,18 @@ impl<'a> Elab<'a> {
                         let item = self.element_item(sc, e, prefix, args)?;
                         Ok(composite_item(&item))
                     }
+                    // A conversion to a closely related array type, `real_vector(v_out)`
+                    // of an array of a subtype of real: the same elements.
+                    Some(Item::Type(_)) => match args.as_slice() {
+                        [
+                            ast::Assoc {
+                                formal: None,
+                                actual: ast::Actual::Expr(inner),
+                                ..
+                            },
+                        ] => self.composite_side(sc, inner, len),
+                        _ => Ok(None),
+                    },
                     // A call of a function returning an array of reals.
                     Some(Item::Subprogram(_)) => {
                         let t = self.expr(sc, e, None)?;
@@ -175,6 +205,41 @@ impl<'a> Elab<'a> {
             }
             _ => Ok(None),
         }
+    }
+
+    /// `prefix'attr(args)` applied to each element of a quantity array `prefix`; `None` when
+    /// `prefix` is scalar.
+    fn elementwise_attribute(
+        &mut self,
+        sc: &Scope<'a>,
+        prefix: &'a ast::Expr,
+        attr: &ast::Ident,
+        args: &[ast::Assoc],
+        span: Span,
+        len: Option<usize>,
+    ) -> R<Option<Vec<Expr>>> {
+        let Some(elements) = self.composite_side(sc, prefix, len)? else {
+            return Ok(None);
+        };
+        let mut out = Vec::with_capacity(elements.len());
+        for x in elements {
+            let Expr::Quantity(q) = x else {
+                return Err(self.error(ElabError::invalid(
+                    prefix.span,
+                    format!("`'{}` applies to quantities", attr.name),
+                    None,
+                )));
+            };
+            out.push(match attr.name.as_str() {
+                "integ" => Expr::Quantity(self.integ_quantity(q)),
+                "slew" => self.quantity_slew_attribute(sc, q, args, span)?,
+                "ltf" => self.ltf_attribute(sc, q, args, span)?,
+                "zoh" => self.zoh_attribute(sc, q, args, span)?,
+                "ztf" => self.ztf_attribute(sc, q, args, span)?,
+                _ => self.delayed_attribute(sc, q, args, span)?,
+            });
+        }
+        Ok(Some(out))
     }
 
     /// The equations of a composite simple simultaneous statement, element by element.

@@ -212,6 +212,19 @@ impl<'a> Elab<'a> {
             .filter_map(|s| bind(&s, args).map(|slots| (s, slots)))
             .collect();
         let what = if function { "function" } else { "procedure" };
+        if cands.is_empty()
+            && let Some(part) = args.iter().find_map(|a| {
+                a.formal
+                    .as_ref()
+                    .filter(|f| matches!(f.kind, ast::ExprKind::Apply(..)))
+            })
+        {
+            return Err(self.error(ElabError::unsupported(
+                part.span,
+                "a parameter associated element by element",
+                "associate the whole parameter: pass a signal of its type, and connect that signal's elements to the signals",
+            )));
+        }
         if cands.is_empty() {
             return Err(self.error(ElabError::invalid(
                 span,
