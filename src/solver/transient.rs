@@ -24,7 +24,9 @@
 //! no sliver remains). After each accepted step the root functions are evaluated; a sign change
 //! is located by the Illinois method on the cubic Hermite interpolant of the step, and the
 //! integrator is rewound to the crossing. After a breakpoint or a root, BDF history restarts at
-//! order 1.
+//! order 1. The first step after a restart is IDA's heuristic (`initial_step`), or, in a mode
+//! ([`DaeSystem::mode`]) restarted into before, half the step that the first step's error
+//! allowed there (at most ten times that step), never more than the step before the restart.
 //!
 //! **Memory.** Every vector is allocated in [`Transient::new`]; `advance` does not allocate.
 
@@ -71,6 +73,12 @@ pub struct Transient {
     int_alg_known: bool,
     /// Upper bound for the first step after a restart (the last step taken).
     h_cap: f64,
+    /// The first step after this restart, from the mode's memory (0: none; see
+    /// `init::Mode::first_step`).
+    h_first: f64,
+    /// The slot in `modes` of the mode the last consistent initialisation was made in, while
+    /// the first step after it is still to be accepted.
+    first_slot: Option<usize>,
     c0_factored: f64,
     x_pred: Vec<f64>,
     x_new: Vec<f64>,
@@ -198,6 +206,8 @@ impl Transient {
             xdot_alg_known: false,
             int_alg_known: false,
             h_cap: f64::INFINITY,
+            h_first: 0.0,
+            first_slot: None,
             c0_factored: 0.0,
             x_pred: v(),
             x_new: v(),
@@ -356,7 +366,7 @@ impl Transient {
             self.breakpoints.pop();
         }
         if self.h.is_nan() || self.h <= 0.0 {
-            let h0 = self.initial_step(t_out);
+            let h0 = self.initial_step(t_out).max(self.h_first);
             self.h = h0.min(self.opts.max_step).min(self.h_cap);
         }
         let mut last_err: Option<SolveError> = None;

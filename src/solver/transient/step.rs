@@ -231,6 +231,9 @@ impl Transient {
             1
         };
         self.stats.accepted_steps += 1;
+        if self.first_slot.is_some() {
+            self.remember_first_step(h, err);
+        }
         // Vectors move by swapping rather than copying: the oldest history vector and the old
         // `xdot_prev` become the scratch `x_new` and `xdot_new`.
         self.hist_x.swap(2, 3);
