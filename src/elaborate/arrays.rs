@@ -23,12 +23,19 @@ pub struct ArrayNature {
     pub element: usize,
     /// `(left, right, ascending)` when constrained.
     pub bounds: Option<(i64, i64, bool)>,
+    /// For a nature of two or more dimensions (`array (1 to 10, 19 downto 0) of thermal`): its
+    /// index ranges as an array type of reals, for the attributes of the nature. Terminals
+    /// of such a nature are not supported yet.
+    pub shape: Option<Ty>,
 }
 
 impl ArrayNature {
     /// The array type whose bounds a constrained array (sub)nature has, for `'left`,
     /// `'range`, ... of the nature itself; `None` when unconstrained.
     pub fn bounds_ty(&self) -> Option<Ty> {
+        if let Some(shape) = &self.shape {
+            return Some(shape.clone());
+        }
         let (left, right, ascending) = self.bounds?;
         Some(Ty::Array(Rc::new(ArrayTy {
             name: self.name.clone(),
@@ -117,19 +124,40 @@ impl<'a> Elab<'a> {
         element: &ast::SubtypeIndication,
         span: Span,
     ) -> R<()> {
-        let [index] = index_defs else {
-            return Err(self.error(ElabError::unsupported(
-                span,
-                "multi-dimensional array natures",
-                "use a one-dimensional array nature",
-            )));
-        };
         let NatureMark::Scalar(element) = self.nature_indication(sc, element)? else {
             return Err(self.error(ElabError::unsupported(
                 span,
                 "array natures of array natures",
                 "use a one-dimensional array of a scalar nature",
             )));
+        };
+        let [index] = index_defs else {
+            // Several dimensions: declared (and read by attributes) with constrained ranges.
+            let mut dims = Vec::with_capacity(index_defs.len());
+            for index in index_defs {
+                let IndexDef::Constrained(r) = index else {
+                    return Err(self.error(ElabError::unsupported(
+                        span,
+                        "unconstrained multi-dimensional array natures",
+                        "give each index a range",
+                    )));
+                };
+                let (l, r, asc, ty) = self.discrete_range_typed(sc, r)?;
+                dims.push((Some((l, r, asc)), l.min(r), ty));
+            }
+            let nature = ArrayNature {
+                name: name.name.clone(),
+                element,
+                bounds: dims[0].0,
+                shape: Some(super::decls::array_type(&name.name, dims, Ty::Real)),
+            };
+            if sc.declare_at(&name.name, name.span, Item::ArrayNature(Rc::new(nature))) {
+                return Ok(());
+            }
+            return Err(self.error(ElabError::Redeclared {
+                span: name.span,
+                name: name.name.clone(),
+            }));
         };
         let bounds = match index {
             IndexDef::Unconstrained(mark) => {
@@ -148,6 +176,7 @@ impl<'a> Elab<'a> {
             name: name.name.clone(),
             element,
             bounds,
+            shape: None,
         };
         if sc.declare_at(&name.name, name.span, Item::ArrayNature(Rc::new(nature))) {
             Ok(())
@@ -175,6 +204,13 @@ impl<'a> Elab<'a> {
             Item::Nature(n) if constraint.is_none() => return Ok(NatureMark::Scalar(*n)),
             Item::RecordNature(r) if constraint.is_none() => {
                 return Ok(NatureMark::Record(r.clone()));
+            }
+            Item::ArrayNature(a) if a.shape.is_some() => {
+                return Err(self.error(ElabError::unsupported(
+                    mark.span,
+                    format!("terminals of `{}`, a multi-dimensional array nature", a.name),
+                    "declare a one-dimensional array nature of the same element nature and index it by row and column",
+                )));
             }
             Item::ArrayNature(a) => a.clone(),
             other => {
@@ -213,6 +249,7 @@ impl<'a> Elab<'a> {
             name: nature.name.clone(),
             element: nature.element,
             bounds: Some(bounds),
+            shape: None,
         })))
     }
 
