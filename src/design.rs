@@ -895,6 +895,11 @@ pub enum Builtin {
     /// The number of elements of an array value known only at run time (`l'length` of a
     /// textio line).
     Length,
+    /// An array value assigned to a target of known length whose own length is known only
+    /// at run time (LRM 8.4, 8.5: the lengths must match): arguments the value, the target's
+    /// length and what the target is ("variable `v`"); the value itself, or an error
+    /// naming the target and both lengths.
+    CheckLength,
 }
 
 impl Builtin {
@@ -912,6 +917,7 @@ impl Builtin {
                 | Builtin::ValueOf
                 | Builtin::Restring
                 | Builtin::Length
+                | Builtin::CheckLength
         )
     }
 }
@@ -922,6 +928,9 @@ pub fn value_builtin(f: Builtin, args: &[Value]) -> Result<Value, String> {
     match (f, args) {
         (Builtin::Length, [Value::String(s)]) => Ok(Value::Integer(s.chars().count() as i64)),
         (Builtin::Length, [Value::Array(items)]) => Ok(Value::Integer(items.len() as i64)),
+        (Builtin::CheckLength, [v, Value::Integer(n), Value::String(target)]) => {
+            check_length(v, *n, target).map(|()| v.clone())
+        }
         (Builtin::Slice, [a, Value::Integer(first), Value::Integer(len)]) => {
             let elements = a.elements();
             let (first, len) = (*first, *len);
@@ -965,6 +974,28 @@ pub fn value_builtin(f: Builtin, args: &[Value]) -> Result<Value, String> {
         }
         _ => scalar_attribute(f, args),
     }
+}
+
+/// `Ok` when array value `v` has `n` elements, else the error of an assignment of it to
+/// `target` ("variable `v`"), which has `n` (LRM 8.4, 8.5: an implicit subtype conversion
+/// keeps the target's bounds, and the lengths must match). See [`Builtin::CheckLength`].
+pub fn check_length(v: &Value, n: i64, target: &str) -> Result<(), String> {
+    let m = match v {
+        Value::Array(items) => items.len(),
+        Value::String(s) => s.chars().count(),
+        _ => return Ok(()),
+    };
+    if m as i64 == n {
+        Ok(())
+    } else {
+        Err(length_mismatch(target, n, m as i64))
+    }
+}
+
+/// The message of an array assignment whose value has `found` elements where the target has
+/// `expected`: the same words at elaboration and at run time.
+pub fn length_mismatch(target: &str, expected: i64, found: i64) -> String {
+    format!("a value of {found} element(s) assigned to {target} of {expected} element(s)")
 }
 
 /// `T'value(text)` (LRM 14.1): the literal `text` (leading and trailing blanks ignored,

@@ -37,6 +37,7 @@ mod generics;
 mod hier;
 mod inline;
 mod io;
+mod lengths;
 mod library;
 mod ltf;
 mod process;
@@ -170,6 +171,9 @@ struct NatureInfo {
 
 /// The elaboration of one design.
 struct Elab<'a> {
+    /// Calls being lowered for static scalar arguments, innermost last (see
+    /// `Elab::specialised`).
+    specialising: usize,
     sources: &'a SourceMap,
     lib: Library<'a>,
     design: Design,
@@ -289,6 +293,7 @@ impl<'a> Elab<'a> {
     ) -> Elab<'a> {
         let (resolved, mixed_universal) = resolutions(analysis);
         Elab {
+            specialising: 0,
             sources,
             lib: Library::index(analysis, files),
             resolved,

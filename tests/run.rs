@@ -436,6 +436,62 @@ fn a_far_stop_time_does_not_scale_the_first_step() {
     assert!(stderr.contains("failed at t = 0.49"), "{stderr}");
 }
 
+/// An array value whose length is known only at run time and differs from its target's
+/// stops the run at the statement, naming the target and both lengths (LRM 8.4, 8.5); with
+/// every length right (`which=0`) the run completes.
+#[test]
+fn array_lengths_that_differ_stop_the_run() {
+    vams()
+        .args(["run", "tests/run/length_check.vhd"])
+        .assert()
+        .success();
+    let cases = [
+        (
+            "1",
+            "a value of 6 element(s) assigned to variable `v` of 8 element(s)",
+            "length_check.vhd:42:21",
+        ),
+        // A signal assignment after a delay is checked when it is executed.
+        (
+            "2",
+            "a value of 3 element(s) assigned to signal `s` of 4 element(s)",
+            "length_check.vhd:43:17",
+        ),
+        (
+            "3",
+            "a value of 3 element(s) assigned to variable `v(7 downto 4)` of 4 element(s)",
+            "length_check.vhd:44:17",
+        ),
+        // A subprogram's variable initialised from its parameter, at its declaration.
+        (
+            "4",
+            "a value of 3 element(s) assigned to variable `r` of 4 element(s)",
+            "length_check.vhd:27:5",
+        ),
+        // A function result of a constrained subtype (at the statement calling it).
+        (
+            "5",
+            "a value of 3 element(s) assigned to the function's result of 4 element(s)",
+            "length_check.vhd:46:17",
+        ),
+    ];
+    for (which, message, at) in cases {
+        vams()
+            .args([
+                "run",
+                "tests/run/length_check.vhd",
+                "-g",
+                &format!("which={which}"),
+            ])
+            .assert()
+            .code(1)
+            .stderr(contains(message))
+            .stderr(contains("in process `p`"))
+            .stderr(contains("5e-9 s"))
+            .stderr(contains(at));
+    }
+}
+
 #[test]
 fn integers_outside_their_range_stop_the_run() {
     vams()

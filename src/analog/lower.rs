@@ -118,6 +118,6 @@ fn lower_call(
         Builtin::Slice | Builtin::Splice => Err(NotAnalog("a slice")),
         Builtin::ValueOf => Err(NotAnalog("the 'value attribute")),
         Builtin::Restring => Err(NotAnalog("a character array")),
-        Builtin::Length => Err(NotAnalog("the length of an array")),
+        Builtin::Length | Builtin::CheckLength => Err(NotAnalog("the length of an array")),
     }
 }

@@ -171,6 +171,7 @@ impl<'a> Elab<'a> {
                     return Ok(());
                 };
                 let v = self.static_value(sc, value, &sub.ty, "the value of a constant")?;
+                self.check_initial(&sub, &v, value.span)?;
                 let ty = fit_array(&sub.ty, &v);
                 for n in names {
                     self.declare(
@@ -950,6 +951,17 @@ impl Elab<'_> {
         init: &Value,
         span: crate::source::Span,
     ) -> R<()> {
+        if let (Ty::Array(a), Some(m)) = (&sub.ty, super::lengths::value_len(init))
+            && let Some(n) = a.len().map(|n| n as i64)
+            && n != m
+        {
+            return Err(self.error(ElabError::LengthMismatch {
+                span,
+                message: format!("the initial value has {m} element(s), but its subtype has {n}"),
+                found: m,
+                help: Some(super::lengths::HELP.into()),
+            }));
+        }
         match (init, integer_bounds(sub)) {
             (Value::Integer(i), Some((lo, hi))) if *i < lo || *i > hi => {
                 Err(self.error(ElabError::invalid(

@@ -58,6 +58,20 @@ pub enum ElabError {
         help: Option<String>,
     },
 
+    /// `v := a * b;` with `v : signed(11 downto 0)` and `a * b` of 10 elements: an array
+    /// value must have its target's length (LRM 8.4, 8.5; also initial values, and
+    /// parameters and results of constrained array subtypes).
+    #[error("{message}")]
+    #[diagnostic(code(vams::elab::length_mismatch))]
+    LengthMismatch {
+        #[label("{found} element(s)")]
+        span: Span,
+        message: String,
+        found: i64,
+        #[help]
+        help: Option<String>,
+    },
+
     /// A generic with no default, no map entry and no override.
     #[error("generic `{name}` of `{entity}` has no value")]
     #[diagnostic(
@@ -231,6 +245,7 @@ impl Located for ElabError {
             | ElabError::WrongClass { span, .. }
             | ElabError::TypeMismatch { span, .. }
             | ElabError::BadOperands { span, .. }
+            | ElabError::LengthMismatch { span, .. }
             | ElabError::MissingGeneric { span, .. }
             | ElabError::UnknownFormal { span, .. }
             | ElabError::UnknownGeneric { span, .. }

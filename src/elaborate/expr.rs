@@ -915,6 +915,15 @@ impl<'a> Elab<'a> {
                 }));
             }
         };
+        // Operands of known lengths give a result of known length (LRM 7.2.4: indexed from
+        // the index subtype's left bound, in its direction).
+        let ty = match (&ty, bop) {
+            (Ty::Array(a), BinaryOp::Concat) => match (operand_len(&lt, a), operand_len(&rt, a)) {
+                (Some(l), Some(r)) => constrain(a, l + r),
+                _ => ty,
+            },
+            _ => ty,
+        };
         // A physical value times or over a real: computed in reals, rounded to the unit.
         if let Ty::Physical(_) = ty
             && (lt.ty == Ty::Real || rt.ty == Ty::Real)
@@ -1584,6 +1593,20 @@ fn is_logical_scalar(t: &Ty) -> bool {
 /// element by element, and the shift and rotate operators apply (LRM 7.2.1, 7.2.3).
 fn logical_array(t: &Ty) -> bool {
     matches!(t, Ty::Array(a) if is_logical_scalar(&a.element))
+}
+
+/// The number of elements an operand of `&` whose result is of type `result` contributes,
+/// where elaboration knows it: an element's one, an array's length.
+fn operand_len(t: &Typed, result: &ArrayTy) -> Option<usize> {
+    match (&t.ty, &t.e) {
+        (Ty::Array(a), e) if a.name == result.name && a.dimension == result.dimension => match e {
+            _ if a.bounds.is_some() => a.len(),
+            Expr::Const(Value::Array(v)) => Some(v.len()),
+            Expr::Const(Value::String(s)) => Some(s.chars().count()),
+            _ => None,
+        },
+        _ => Some(1),
+    }
 }
 
 /// `arr` constrained to `n` elements from its index subtype's low bound.

@@ -308,7 +308,8 @@ fn call(f: Builtin, args: &[Value]) -> Result<Value, NoFold> {
         | Builtin::Splice
         | Builtin::ValueOf
         | Builtin::Restring
-        | Builtin::Length => {
+        | Builtin::Length
+        | Builtin::CheckLength => {
             unreachable!("handled above")
         }
     };

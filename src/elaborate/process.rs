@@ -28,6 +28,10 @@ pub(super) struct Proc {
     loops: Vec<LoopFrame>,
     /// Set while lowering a subprogram body.
     pub(super) subprogram: Option<SubContext>,
+    /// In a function body, after a `return` that every path to here takes: the statements
+    /// that follow are not lowered (with a condition that folds, `if size = 0 then return
+    /// none; end if;`, what follows would index `none` or recurse on `size - 1` forever).
+    dead: bool,
 }
 
 /// What a subprogram body may do.
@@ -276,6 +280,8 @@ impl<'a> Elab<'a> {
     ) -> R<()> {
         let mut result = Ok(());
         for d in decls {
+            // An initial value assigned when the call or the process starts fails here.
+            let enclosing = std::mem::replace(&mut p.at, d.span);
             if let ast::DeclKind::Variable {
                 names,
                 subtype,
@@ -288,20 +294,27 @@ impl<'a> Elab<'a> {
                     // An initial value that is not static (a subprogram's parameter, a
                     // signal or quantity a process snapshots) is assigned when the call or
                     // the process starts (LRM 12.3.1.4).
+                    let what = |_: &Self| match names.as_slice() {
+                        [n] => format!("variable `{}`", n.name),
+                        _ => "the variables declared here".to_string(),
+                    };
                     let (init, dynamic) = match value {
-                        Some(v) => match self.expr_of(sc, v, &sub.ty)?.e {
-                            Expr::Const(c) => {
-                                self.check_initial(&sub, &c, v.span)?;
-                                (c, None)
+                        Some(v) => {
+                            let t = self.expr_of(sc, v, &sub.ty)?;
+                            match self.fit_length(t, &sub.ty, what, v.span)? {
+                                Expr::Const(c) => {
+                                    self.check_initial(&sub, &c, v.span)?;
+                                    (c, None)
+                                }
+                                e if let Some(c) =
+                                    super::inline::static_call_value(&self.design, &e) =>
+                                {
+                                    self.check_initial(&sub, &c, v.span)?;
+                                    (c, None)
+                                }
+                                e => (super::decls::default_value(&sub), Some(e)),
                             }
-                            e if let Some(c) =
-                                super::inline::static_call_value(&self.design, &e) =>
-                            {
-                                self.check_initial(&sub, &c, v.span)?;
-                                (c, None)
-                            }
-                            e => (super::decls::default_value(&sub), Some(e)),
-                        },
+                        }
                         None => (super::decls::default_value(&sub), None),
                     };
                     let ty = super::decls::fit_array(&sub.ty, &init);
@@ -361,8 +374,13 @@ impl<'a> Elab<'a> {
                 let r = (|| {
                     let sub = self.subtype_indication(sc, subtype)?;
                     let t = self.expr_of(sc, value, &sub.ty)?;
+                    let what = |_: &Self| match names.as_slice() {
+                        [n] => format!("constant `{}`", n.name),
+                        _ => "the constants declared here".to_string(),
+                    };
+                    let e = self.fit_length(t, &sub.ty, what, value.span)?;
                     for n in names {
-                        let item = match &t.e {
+                        let item = match &e {
                             Expr::Const(v) => Item::Constant {
                                 value: v.clone(),
                                 ty: super::decls::fit_array(&sub.ty, v),
@@ -407,6 +425,7 @@ impl<'a> Elab<'a> {
             } else {
                 self.decl(sc, d);
             }
+            p.at = enclosing;
         }
         result
     }
@@ -427,6 +446,9 @@ impl<'a> Elab<'a> {
 
     pub(super) fn seq(&mut self, sc: &mut Scope<'a>, p: &mut Proc, stmts: &'a [SeqStmt]) {
         for s in stmts {
+            if p.dead {
+                break;
+            }
             let enclosing = std::mem::replace(&mut p.at, s.span);
             let _ = self.seq_stmt(sc, p, s);
             p.at = enclosing;
@@ -585,26 +607,35 @@ impl<'a> Elab<'a> {
                     && let Some((pointer, path, ty)) = self.heap_target(sc, target)?
                 {
                     let v = self.expr_of(sc, value, &ty)?;
+                    let v = self.fit_length(
+                        v,
+                        &ty,
+                        |e: &Self| e.target_name("variable", target),
+                        value.span,
+                    )?;
                     let object = Expr::Deref(Box::new(pointer.clone()));
-                    let value = updated(object, &path, v.e);
+                    let value = updated(object, &path, v);
                     p.emit(Instr::SetHeap { pointer, value });
                     return Ok(());
                 }
                 let (id, path, ty) = self.variable_target(sc, &p.vars, target)?;
                 let v = self.expr_of(sc, value, &ty)?;
+                let v = self.fit_length(
+                    v,
+                    &ty,
+                    |e: &Self| e.target_name("variable", target),
+                    value.span,
+                )?;
                 p.emit(match path.as_slice() {
-                    [] => Instr::SetVar {
-                        var: id,
-                        value: v.e,
-                    },
+                    [] => Instr::SetVar { var: id, value: v },
                     [Part::Element { index, .. }] => Instr::SetVarElement {
                         var: id,
                         index: index.clone(),
-                        value: v.e,
+                        value: v,
                     },
                     _ => Instr::SetVar {
                         var: id,
-                        value: updated(Expr::Var(id), &path, v.e),
+                        value: updated(Expr::Var(id), &path, v),
                     },
                 });
             }
@@ -612,21 +643,39 @@ impl<'a> Elab<'a> {
                 branches,
                 otherwise,
             } => {
+                // In a function, a branch whose condition folds is taken or left out (a
+                // function assigns no signals, so code that cannot run has no driver to
+                // keep); `dead` then says whether the branch taken returns.
                 let mut ends = Vec::new();
+                let mut taken = false;
                 for (c, body) in branches {
                     let cond = self
                         .cond(sc, c)
                         .unwrap_or(Expr::Const(Value::Boolean(false)));
+                    if in_function && let Expr::Const(Value::Boolean(holds)) = cond {
+                        if holds {
+                            p.dead = false;
+                            self.seq(sc, p, body);
+                            taken = true;
+                            break;
+                        }
+                        continue;
+                    }
                     let skip = p.emit(Instr::JumpIfNot { cond, target: 0 });
                     self.seq(sc, p, body);
+                    p.dead = false;
                     ends.push(p.emit(Instr::Jump(0)));
                     let next = p.here();
                     p.patch(skip, next);
                 }
-                if let Some(body) = otherwise {
+                if !taken && let Some(body) = otherwise {
                     self.seq(sc, p, body);
                 }
                 let end = p.here();
+                if !ends.is_empty() {
+                    // A branch taken at run time may fall through.
+                    p.dead = false;
+                }
                 for j in ends {
                     p.patch(j, end);
                 }
@@ -642,6 +691,7 @@ impl<'a> Elab<'a> {
                     let cond = self.folded(cond, Ty::Boolean, s.span)?.e;
                     let skip = p.emit(Instr::JumpIfNot { cond, target: 0 });
                     self.seq(sc, p, body);
+                    p.dead = false;
                     ends.push(p.emit(Instr::Jump(0)));
                     let next = p.here();
                     p.patch(skip, next);
@@ -651,7 +701,12 @@ impl<'a> Elab<'a> {
                     p.patch(j, end);
                 }
             }
-            SeqKind::Loop { scheme, body } => self.loop_stmt(sc, p, s, scheme, body)?,
+            SeqKind::Loop { scheme, body } => {
+                let r = self.loop_stmt(sc, p, s, scheme, body);
+                // `next` and `exit` leave the body: what follows the loop runs.
+                p.dead = false;
+                r?
+            }
             SeqKind::Next { label, condition } | SeqKind::Exit { label, condition } => {
                 let is_exit = matches!(s.kind, SeqKind::Exit { .. });
                 let frame = match label {
@@ -699,15 +754,19 @@ impl<'a> Elab<'a> {
                 };
                 let value = match (&ctx.ret, value) {
                     (Some(ty), Some(v)) => {
-                        let t = self.expr_of(sc, v, &ty.clone())?;
-                        let bounds = match &t.ty {
-                            Ty::Array(a) => a.bounds,
+                        let ty = ty.clone();
+                        let t = self.expr_of(sc, v, &ty)?;
+                        // A constrained result subtype gives the result its bounds.
+                        let bounds = match (&ty, &t.ty) {
+                            (Ty::Array(r), _) if r.bounds.is_some() => r.bounds,
+                            (_, Ty::Array(a)) => a.bounds,
                             _ => None,
                         };
                         if let Some(ctx) = &mut p.subprogram {
                             ctx.returned.push(bounds);
                         }
-                        Some(t.e)
+                        let what = |_: &Self| "the function's result".to_string();
+                        Some(self.fit_length(t, &ty, what, v.span)?)
                     }
                     (None, None) => None,
                     (Some(_), None) => {
@@ -726,6 +785,7 @@ impl<'a> Elab<'a> {
                     }
                 };
                 p.emit(Instr::Return(value));
+                p.dead = in_function;
             }
             SeqKind::Null => {}
             SeqKind::Assert(a) => {
@@ -995,7 +1055,13 @@ impl<'a> Elab<'a> {
                 let v = self.expr(sc, v, None)?;
                 self.split_array(v, &types, el.span)?
             } else {
-                vec![self.expr_of(sc, v, &sigs[0].1)?.e]
+                let t = self.expr_of(sc, v, &sigs[0].1)?;
+                vec![self.fit_length(
+                    t,
+                    &sigs[0].1,
+                    |e: &Self| e.target_name("signal", target),
+                    v.span,
+                )?]
             };
             let v = v.into_iter().map(Some).collect::<Vec<_>>();
             let d = match &el.after {
@@ -1109,6 +1175,11 @@ impl<'a> Elab<'a> {
                 }
             }
         }
+    }
+
+    /// How a length error names an assignment's target: "variable `v(3 downto 0)`".
+    pub(super) fn target_name(&self, class: &str, target: &ast::Expr) -> String {
+        format!("{class} `{}`", self.sources.snippet(target.span))
     }
 
     /// The variable a (simple) target names, with its type.

@@ -260,7 +260,15 @@ impl<'a> Elab<'a> {
         span: Span,
     ) -> R<Typed> {
         match actual.or(p.default) {
-            Some(e) => self.expr_of(sc, e, &p.ty),
+            Some(e) => {
+                let t = self.expr_of(sc, e, &p.ty)?;
+                // A parameter of a constrained array subtype takes values of its length
+                // (LRM 2.1.1.1).
+                let ty = t.ty.clone();
+                let what = |_: &Self| format!("parameter `{}`", p.name);
+                let e = self.fit_length(t, &p.ty, what, e.span)?;
+                Ok(Typed::new(e, ty))
+            }
             None => Err(self.error(ElabError::invalid(
                 span,
                 format!("no argument for the parameter `{}`", p.name),
@@ -420,12 +428,96 @@ impl<'a> Elab<'a> {
         objects: &[Item<'a>],
         span: Span,
     ) -> R<Expr> {
-        let id = self.instance(sub, &signals, bounds, &args, objects, span)?;
+        let mut id = self.instance(sub, &signals, bounds, &args, objects, span)?;
+        if let Some(special) = self.specialised(sub, id, &signals, bounds, &args, objects, span) {
+            id = special;
+        }
         Ok(Expr::FnCall {
             sub: id,
             args,
             signals,
         })
+    }
+
+    /// For a call of function `sub` whose instance `id` returns an unconstrained array of
+    /// bounds known only at run time (its `return`s disagree: `vbuild` returns a null array
+    /// or an element joined to its own result for `size - 1`), an instance lowered with every
+    /// scalar `in` parameter whose actual among `args` is static as that constant, if its
+    /// result's bounds are static then: `to_signed(x, 8)` is 8 elements long, known at
+    /// elaboration, so that it can be passed straight to another call (whose unconstrained
+    /// parameter needs static bounds) and its length checked against a target's. Conditions
+    /// that fold prune the body's dead code (`if size = 0 then return none; end if;`), so the
+    /// recursion on a static size ends. Tried at most [`SPECIALISING_DEPTH`] calls deep; a
+    /// body that fails to lower this way, or whose result still has no static bounds, keeps
+    /// `id` (and no diagnostic).
+    #[allow(clippy::too_many_arguments)]
+    fn specialised(
+        &mut self,
+        sub: &Rc<Subprogram<'a>>,
+        id: SubprogramId,
+        signals: &[SignalId],
+        bounds: &[Option<Bounds>],
+        args: &[Expr],
+        objects: &[Item<'a>],
+        span: Span,
+    ) -> Option<SubprogramId> {
+        let Some(Ty::Array(ret)) = &sub.ret else {
+            return None;
+        };
+        if ret.bounds.is_some() || self.specialising >= SPECIALISING_DEPTH {
+            return None;
+        }
+        let result_of = |sub: &Subprogram<'a>, id: SubprogramId| {
+            (sub.instances.borrow().iter())
+                .find(|i| i.id == id)
+                .and_then(|i| i.result)
+        };
+        if result_of(sub, id).is_some() {
+            return None;
+        }
+        let current = (sub.instances.borrow().iter())
+            .find(|i| i.id == id)
+            .map(|i| i.constants.clone())?;
+        // Every static actual of a scalar `in` parameter.
+        let mut args = args.iter();
+        let mut added = false;
+        let constants: Vec<Option<Value>> = (sub.params.iter().enumerate())
+            .map(|(k, p)| {
+                if p.is_signal || matches!(p.ty, Ty::Protected(_)) {
+                    return None;
+                }
+                let arg = args.next();
+                if let Some(c) = current.get(k).cloned().flatten() {
+                    return Some(c);
+                }
+                match arg {
+                    Some(Expr::Const(v)) if p.mode == ParamMode::In && p.ty.is_scalar() => {
+                        added = true;
+                        Some(v.clone())
+                    }
+                    _ => None,
+                }
+            })
+            .collect();
+        if !added {
+            return None;
+        }
+        let (errors, first) = (self.errors.len(), self.design.subprograms.len());
+        self.specialising += 1;
+        let special = self.lowered(sub, signals, bounds, constants, objects, span);
+        self.specialising -= 1;
+        match special {
+            Ok(special) if result_of(sub, special).is_some() => Some(special),
+            Ok(_) => None,
+            Err(_) => {
+                // Lowered with the constants, the body failed where the general instance
+                // did not: forget that instance and what it reported.
+                self.errors.truncate(errors);
+                let failed = SubprogramId(first as u32);
+                sub.instances.borrow_mut().retain(|i| i.id != failed);
+                None
+            }
+        }
     }
 
     /// A call of the user-defined procedure `sub`: `in` arguments by value, `out` and `inout`
@@ -477,6 +569,7 @@ impl<'a> Elab<'a> {
                     if let Some(part) = self.variable_part_actual(sc, vars, actual)? {
                         let (id, path, ty) = part;
                         self.actual_of_type(actual, &ty, p)?;
+                        self.actual_length(actual, &ty, p)?;
                         let value = path.iter().fold(Expr::Var(id), |e, part| part.of(e));
                         bounds.push(actual_bounds(&p.ty, &ty, &value));
                         args.push(if p.mode == ParamMode::Out {
@@ -514,6 +607,7 @@ impl<'a> Elab<'a> {
                     bounds.push(actual_bounds(&p.ty, ty, &Expr::Var(*id)));
                     // Reported; the call is still lowered.
                     let _ = self.actual_of_type(actual, ty, p);
+                    self.actual_length(actual, ty, p)?;
                     args.push(if p.mode == ParamMode::Out {
                         Expr::Const(p.ty.default_value())
                     } else {
@@ -556,6 +650,26 @@ impl<'a> Elab<'a> {
             found: ty.to_string(),
             help: None,
         }))
+    }
+
+    /// The error for an `out` or `inout` actual of type `ty` whose length differs from its
+    /// parameter `p`'s, of a constrained array subtype (copied in and back, LRM 2.1.1.1).
+    fn actual_length(&mut self, actual: &ast::Expr, ty: &Ty, p: &Param<'a>) -> R<()> {
+        let (Ty::Array(f), Ty::Array(a)) = (&p.ty, ty) else {
+            return Ok(());
+        };
+        match (f.len(), a.len()) {
+            (Some(n), Some(m)) if n != m => Err(self.error(ElabError::LengthMismatch {
+                span: actual.span,
+                message: format!(
+                    "the actual of `{}` has {m} element(s), but the parameter has {n}",
+                    p.name
+                ),
+                found: m as i64,
+                help: Some(super::lengths::HELP.into()),
+            })),
+            _ => Ok(()),
+        }
     }
 
     /// An `out` or `inout` actual naming a part of a variable (a field, an element, a
@@ -629,6 +743,21 @@ impl<'a> Elab<'a> {
         span: Span,
     ) -> R<SubprogramId> {
         let constants = self.bounding_constants(sub, args);
+        self.lowered(sub, signals, bounds, constants, objects, span)
+    }
+
+    /// The instance of `sub` for `signals`, `bounds` and `objects` (see
+    /// [`Elab::instance`]) in which the parameters that `constants` gives values (one entry
+    /// per parameter, or none) are those constants.
+    fn lowered(
+        &mut self,
+        sub: &Rc<Subprogram<'a>>,
+        signals: &[SignalId],
+        bounds: &[Option<Bounds>],
+        constants: Vec<Option<Value>>,
+        objects: &[Item<'a>],
+        span: Span,
+    ) -> R<SubprogramId> {
         // The shared variables of the protected parameters, by identity.
         let object_keys: Vec<usize> = objects
             .iter()
@@ -889,6 +1018,10 @@ impl<'a> Elab<'a> {
             .collect()
     }
 }
+
+/// How many calls deep [`Elab::specialised`] lowers instances for static scalar arguments
+/// (`vbuild` recurses once per element: 256 covers the products of two 128-bit operands).
+const SPECIALISING_DEPTH: usize = 256;
 
 /// An `out` or `inout` actual that is a part of a variable: the callee's parameter `param`
 /// is copied into the part of `var` at `path` after the call.

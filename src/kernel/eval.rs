@@ -1,7 +1,7 @@
 //! Expression evaluation in processes: [`Expr`] to [`Value`] against the current signal values,
 //! the process's variables, the analog solution at the current time and `now`.
 
-use crate::design::{BinaryOp, Expr, SignalAttr, Subprogram, Type, Value};
+use crate::design::{BinaryOp, Builtin, Expr, SignalAttr, Subprogram, Type, Value};
 
 use super::image::image;
 use super::io::Io;
@@ -43,6 +43,26 @@ pub(crate) fn eval(e: &Expr, env: &Env) -> Result<Value, EvalError> {
             a => binary(*op, a, eval(b, env)?)?,
         },
         Expr::Binary(op, a, b) => binary(*op, eval(a, env)?, eval(b, env)?)?,
+        // An array value checked against its target's length: moved through, not copied.
+        Expr::Call(Builtin::CheckLength, args) => match args.as_slice() {
+            [
+                v,
+                Expr::Const(Value::Integer(n)),
+                Expr::Const(Value::String(target)),
+            ] => {
+                let v = eval(v, env)?;
+                crate::design::check_length(&v, *n, target)
+                    .map_err(|m| EvalError::new(m, super::ops::LENGTH_HELP))?;
+                v
+            }
+            _ => {
+                let values = args
+                    .iter()
+                    .map(|a| eval(a, env))
+                    .collect::<Result<Vec<_>, _>>()?;
+                builtin(Builtin::CheckLength, &values)?
+            }
+        },
         Expr::Call(f, args) => {
             let values = args
                 .iter()

@@ -301,6 +301,9 @@ fn latin1(position: u32) -> char {
     char::from_u32(position).unwrap_or(char::REPLACEMENT_CHARACTER)
 }
 
+/// The help of an array assignment whose lengths differ.
+pub(crate) const LENGTH_HELP: &str = "an array value must have its target's length (LRM 8.4, 8.5: the target keeps its bounds); resize the value (a slice, `resize`, an aggregate with `others`) or the target";
+
 /// The math_real functions and the numeric type conversions.
 pub(crate) fn builtin(f: Builtin, args: &[Value]) -> Result<Value, EvalError> {
     use Builtin::*;
@@ -309,6 +312,8 @@ pub(crate) fn builtin(f: Builtin, args: &[Value]) -> Result<Value, EvalError> {
             "keep a slice within its array's bounds"
         } else if f == ValueOf {
             "'value reads one literal of the type, as 'image writes it"
+        } else if f == CheckLength {
+            LENGTH_HELP
         } else {
             "keep the argument within the type's range (T'low to T'high)"
         };
@@ -421,9 +426,8 @@ pub(crate) fn real_builtin(f: Builtin, x: f64, y: f64) -> f64 {
         ToReal => x,
         ToInteger => x.round(),
         // Not real-valued: `builtin` handles them before it reaches here; NaN otherwise.
-        Pos | TimePos | EnumVal | TimeVal | Slice | Splice | ValueOf | Restring | Length => {
-            f64::NAN
-        }
+        Pos | TimePos | EnumVal | TimeVal | Slice | Splice | ValueOf | Restring | Length
+        | CheckLength => f64::NAN,
     }
 }
 
