@@ -106,6 +106,15 @@ pub enum NatureMark {
     Record(Rc<super::record_natures::RecordNature>),
 }
 
+/// The index at position `pos` (from the left) of a range.
+fn index_at((left, _, ascending): (i64, i64, bool), pos: usize) -> i64 {
+    if ascending {
+        left + pos as i64
+    } else {
+        left - pos as i64
+    }
+}
+
 /// The indexes of a range, left to right (empty for a null range).
 pub(super) fn indexes((left, right, ascending): (i64, i64, bool)) -> Vec<i64> {
     if ascending {
@@ -686,104 +695,68 @@ impl<'a> Elab<'a> {
             let ExprKind::Apply(_, args) = &formal.kind else {
                 return Err(Reported);
             };
-            // A slice of the port, `t(4 to 7) => n(2 to 5)`: element by element.
-            if let [
-                ast::Assoc {
-                    actual: Actual::Range(r),
-                    ..
-                },
-            ] = args.as_slice()
-            {
-                let (l, r2, asc) = self.range_bounds(parent, r)?;
-                let mut at = Vec::new();
-                for i in indexes((l, r2, asc)) {
-                    at.push(self.element(&positions, i, formal.span)?);
-                }
-                let items = self.lookup(parent, actual)?;
-                let Item::TerminalArray {
-                    elements,
-                    nature: n,
-                } = &items[0]
-                else {
-                    return Err(self.error(ElabError::invalid(
-                        actual.span,
-                        format!("a slice of port `{}` needs a terminal array", name.name),
-                        None,
-                    )));
-                };
-                if *n != nature.element || elements.ids.len() != at.len() {
-                    return Err(self.error(ElabError::invalid(
-                        actual.span,
-                        format!(
-                            "the slice has {} elements of nature {}, `{}` {} of nature {}",
-                            at.len(),
-                            self.natures[nature.element].name,
-                            elements.name,
-                            elements.ids.len(),
-                            self.natures[*n].name
-                        ),
-                        Some(
-                            "associate a terminal array slice of the same length and nature".into(),
-                        ),
-                    )));
-                }
-                for (pos, id) in at.into_iter().zip(elements.ids.iter().copied()) {
-                    if ids[pos].replace(id).is_some() {
+            // A slice of the port, `t(4 to 7) => n(2 to 5)`, or one element, `t(1) => a`.
+            let at = self.formal_positions(parent, &positions, args, &name.name, formal.span)?;
+            let terminals = match args.as_slice() {
+                [
+                    ast::Assoc {
+                        actual: Actual::Range(_),
+                        ..
+                    },
+                ] => {
+                    let items = self.lookup(parent, actual)?;
+                    let Item::TerminalArray {
+                        elements,
+                        nature: n,
+                    } = &items[0]
+                    else {
                         return Err(self.error(ElabError::invalid(
-                            formal.span,
-                            format!("an element of port `{}` is associated twice", name.name),
-                            Some("associate each element of the port once".into()),
+                            actual.span,
+                            format!("a slice of port `{}` needs a terminal array", name.name),
+                            None,
+                        )));
+                    };
+                    if *n != nature.element || elements.ids.len() != at.len() {
+                        return Err(self.error(ElabError::invalid(
+                            actual.span,
+                            format!(
+                                "the slice has {} elements of nature {}, `{}` {} of nature {}",
+                                at.len(),
+                                self.natures[nature.element].name,
+                                elements.name,
+                                elements.ids.len(),
+                                self.natures[*n].name
+                            ),
+                            Some(
+                                "associate a terminal array slice of the same length and nature"
+                                    .into(),
+                            ),
                         )));
                     }
+                    elements.ids.clone()
                 }
-                continue;
-            }
-            let (index, index_span) = self.static_index(parent, args, &name.name, formal.span)?;
-            let pos = self.element(&positions, index, index_span)?;
-            let (id, actual_nature) = self.terminal(parent, actual)?;
-            if actual_nature != nature.element {
-                let (a, b) = (
-                    self.natures[nature.element].name.clone(),
-                    self.natures[actual_nature].name.clone(),
-                );
-                return Err(self.error(ElabError::TypeMismatch {
-                    span: actual.span,
-                    expected: format!("a terminal of nature {a}"),
-                    found: format!("a terminal of nature {b}"),
-                    help: Some("a terminal port connects to a terminal of the same nature".into()),
-                }));
-            }
-            if ids[pos].replace(id).is_some() {
-                return Err(self.error(ElabError::invalid(
-                    formal.span,
-                    format!("`{}({index})` is associated twice", name.name),
-                    Some("associate each element of the port once".into()),
-                )));
-            }
-        }
-        let mut complete = Vec::with_capacity(count);
-        for (pos, id) in ids.into_iter().enumerate() {
-            match id {
-                Some(id) => complete.push(id),
-                None => {
-                    let index = match bounds.2 {
-                        true => bounds.0 + pos as i64,
-                        false => bounds.0 - pos as i64,
-                    };
-                    return Err(self.error(ElabError::invalid(
-                        first,
-                        format!(
-                            "element `{}({index})` of port `{}` is not associated",
-                            name.name, name.name
-                        ),
-                        Some(format!(
-                            "associate every element of `{}`, or the whole port: `{} => n`",
-                            name.name, name.name
-                        )),
-                    )));
+                _ => {
+                    let (id, actual_nature) = self.terminal(parent, actual)?;
+                    if actual_nature != nature.element {
+                        let (a, b) = (
+                            self.natures[nature.element].name.clone(),
+                            self.natures[actual_nature].name.clone(),
+                        );
+                        return Err(self.error(ElabError::TypeMismatch {
+                            span: actual.span,
+                            expected: format!("a terminal of nature {a}"),
+                            found: format!("a terminal of nature {b}"),
+                            help: Some(
+                                "a terminal port connects to a terminal of the same nature".into(),
+                            ),
+                        }));
+                    }
+                    vec![id]
                 }
-            }
+            };
+            self.associate_elements(&mut ids, &at, terminals, bounds, &name.name, formal.span)?;
         }
+        let complete = self.complete_elements(ids, bounds, &name.name, first, "n")?;
         Ok(Item::TerminalArray {
             elements: Rc::new(Elements {
                 name: name.name.clone(),
@@ -793,6 +766,84 @@ impl<'a> Elab<'a> {
             }),
             nature: nature.element,
         })
+    }
+
+    /// The positions (from the left) of the port elements a formal names: `t(3)`, or a
+    /// slice `t(4 to 7)` (its range read in the instantiating scope `parent`).
+    fn formal_positions(
+        &mut self,
+        parent: &Scope<'a>,
+        positions: &Elements<usize>,
+        args: &[ast::Assoc],
+        name: &str,
+        span: Span,
+    ) -> R<Vec<usize>> {
+        if let [
+            ast::Assoc {
+                actual: Actual::Range(r),
+                ..
+            },
+        ] = args
+        {
+            let bounds = self.range_bounds(parent, r)?;
+            return indexes(bounds)
+                .into_iter()
+                .map(|i| self.element(positions, i, span))
+                .collect();
+        }
+        let (index, index_span) = self.static_index(parent, args, name, span)?;
+        Ok(vec![self.element(positions, index, index_span)?])
+    }
+
+    /// Associates the port elements at positions `at` with `objects`; an element associated
+    /// twice is an error at the formal (`span`).
+    fn associate_elements<T>(
+        &mut self,
+        ids: &mut [Option<T>],
+        at: &[usize],
+        objects: Vec<T>,
+        bounds: (i64, i64, bool),
+        name: &str,
+        span: Span,
+    ) -> R<()> {
+        for (&pos, object) in at.iter().zip(objects) {
+            if ids[pos].replace(object).is_some() {
+                let index = index_at(bounds, pos);
+                return Err(self.error(ElabError::invalid(
+                    span,
+                    format!("`{name}({index})` is associated twice"),
+                    Some("associate each element of the port once".into()),
+                )));
+            }
+        }
+        Ok(())
+    }
+
+    /// The objects of a port associated element by element, left to right; an element left
+    /// out is an error at the first association (`actual` names an actual in the help).
+    fn complete_elements<T>(
+        &mut self,
+        ids: Vec<Option<T>>,
+        bounds: (i64, i64, bool),
+        name: &str,
+        first: Span,
+        actual: &str,
+    ) -> R<Vec<T>> {
+        let mut complete = Vec::with_capacity(ids.len());
+        for (pos, id) in ids.into_iter().enumerate() {
+            let Some(id) = id else {
+                let index = index_at(bounds, pos);
+                return Err(self.error(ElabError::invalid(
+                    first,
+                    format!("element `{name}({index})` of port `{name}` is not associated"),
+                    Some(format!(
+                        "associate every element of `{name}`, or the whole port: `{name} => {actual}`"
+                    )),
+                )));
+            };
+            complete.push(id);
+        }
+        Ok(complete)
     }
 
     /// A quantity port of an array type (`quantity y : out real_vector(1 to 7)`): the
@@ -905,18 +956,14 @@ impl<'a> Elab<'a> {
                 return Err(Reported);
             };
             // The formal's positions, and the actual's quantities for them.
-            let (at, quantities) = match args.as_slice() {
+            let at = self.formal_positions(parent, &positions, args, &name.name, formal.span)?;
+            let quantities = match args.as_slice() {
                 [
                     ast::Assoc {
-                        actual: Actual::Range(r),
+                        actual: Actual::Range(_),
                         ..
                     },
                 ] => {
-                    let (l, r2, asc) = self.range_bounds(parent, r)?;
-                    let mut at = Vec::new();
-                    for i in indexes((l, r2, asc)) {
-                        at.push(self.element(&positions, i, formal.span)?);
-                    }
                     let Item::QuantityArray(q) = self.lookup(parent, actual)?.swap_remove(0) else {
                         return Err(self.error(ElabError::invalid(
                             actual.span,
@@ -936,46 +983,13 @@ impl<'a> Elab<'a> {
                             Some("associate a slice of the same length".into()),
                         )));
                     }
-                    (at, q.ids.clone())
+                    q.ids.clone()
                 }
-                _ => {
-                    let (index, index_span) =
-                        self.static_index(parent, args, &name.name, formal.span)?;
-                    let pos = self.element(&positions, index, index_span)?;
-                    (vec![pos], vec![self.quantity_name(parent, actual)?])
-                }
+                _ => vec![self.quantity_name(parent, actual)?],
             };
-            for (pos, q) in at.into_iter().zip(quantities) {
-                if ids[pos].replace(q).is_some() {
-                    return Err(self.error(ElabError::invalid(
-                        formal.span,
-                        format!("an element of port `{}` is associated twice", name.name),
-                        Some("associate each element of the port once".into()),
-                    )));
-                }
-            }
+            self.associate_elements(&mut ids, &at, quantities, bounds, &name.name, formal.span)?;
         }
-        let mut complete = Vec::with_capacity(count);
-        for (pos, id) in ids.into_iter().enumerate() {
-            let Some(id) = id else {
-                let index = match bounds.2 {
-                    true => bounds.0 + pos as i64,
-                    false => bounds.0 - pos as i64,
-                };
-                return Err(self.error(ElabError::invalid(
-                    first,
-                    format!(
-                        "element `{}({index})` of port `{}` is not associated",
-                        name.name, name.name
-                    ),
-                    Some(format!(
-                        "associate every element of `{}`, or the whole port: `{} => q`",
-                        name.name, name.name
-                    )),
-                )));
-            };
-            complete.push(id);
-        }
+        let complete = self.complete_elements(ids, bounds, &name.name, first, "q")?;
         Ok(Item::QuantityArray(Rc::new(Elements {
             name: name.name.clone(),
             left: bounds.0,
