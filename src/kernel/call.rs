@@ -141,30 +141,7 @@ pub(crate) fn call_function(
                         continue;
                     }
                 }
-                let message = match report {
-                    Some(r) => match eval(r, &inner)? {
-                        Value::String(s) => s,
-                        other => format!("{other:?}"),
-                    },
-                    None => "Assertion violation.".to_string(),
-                };
-                let severity = match eval(severity, &inner)? {
-                    Value::Enum(0) => Severity::Note,
-                    Value::Enum(1) => Severity::Warning,
-                    Value::Enum(2) => Severity::Error,
-                    _ => {
-                        return Err(EvalError::new(
-                            format!("failure reported in function `{}`: {message}", sub.name),
-                            "an assertion of severity failure stops the simulation",
-                        ));
-                    }
-                };
-                // Told by the process that evaluated the call, in order with its own reports.
-                (env.io.function_reports.borrow_mut()).push(FunctionReport {
-                    severity,
-                    message,
-                    span: *span,
-                });
+                function_report(sub, report.as_ref(), severity, *span, &inner)?;
             }
             Instr::Call { .. }
             | Instr::Assign { .. }
@@ -189,6 +166,44 @@ pub(crate) fn call_function(
         ),
         "check the function's loops: every path must reach a return",
     ))
+}
+
+/// A report (or failed assertion) of `sub`: queued for the calling process to tell, or an
+/// error for severity failure. Kept out of `call_function`, whose frame every nested call
+/// adds to the stack (a debug build's frames must stay under 20 KB per level).
+#[inline(never)]
+fn function_report(
+    sub: &Subprogram,
+    report: Option<&Expr>,
+    severity: &Expr,
+    span: crate::source::Span,
+    env: &Env,
+) -> Result<(), EvalError> {
+    let message = match report {
+        Some(r) => match eval(r, env)? {
+            Value::String(s) => s,
+            other => format!("{other:?}"),
+        },
+        None => "Assertion violation.".to_string(),
+    };
+    let severity = match eval(severity, env)? {
+        Value::Enum(0) => Severity::Note,
+        Value::Enum(1) => Severity::Warning,
+        Value::Enum(2) => Severity::Error,
+        _ => {
+            return Err(EvalError::new(
+                format!("failure reported in function `{}`: {message}", sub.name),
+                "an assertion of severity failure stops the simulation",
+            ));
+        }
+    };
+    // Told by the process that evaluated the call, in order with its own reports.
+    (env.io.function_reports.borrow_mut()).push(FunctionReport {
+        severity,
+        message,
+        span,
+    });
+    Ok(())
 }
 
 fn no_return(sub: &Subprogram) -> EvalError {

@@ -28,6 +28,31 @@ pub(crate) struct Env<'a> {
     pub drivers: Option<(&'a super::signals::Signals, usize)>,
 }
 
+/// `Builtin::CheckLength(value, length, target)`. Kept out of [`eval`], whose frame every
+/// nested function call adds to the stack.
+#[inline(never)]
+fn checked_length(args: &[Expr], env: &Env) -> Result<Value, EvalError> {
+    match args {
+        [
+            v,
+            Expr::Const(Value::Integer(n)),
+            Expr::Const(Value::String(target)),
+        ] => {
+            let v = eval(v, env)?;
+            crate::design::check_length(&v, *n, target)
+                .map_err(|m| EvalError::new(m, super::ops::LENGTH_HELP))?;
+            Ok(v)
+        }
+        _ => {
+            let values = args
+                .iter()
+                .map(|a| eval(a, env))
+                .collect::<Result<Vec<_>, _>>()?;
+            builtin(Builtin::CheckLength, &values)
+        }
+    }
+}
+
 pub(crate) fn eval(e: &Expr, env: &Env) -> Result<Value, EvalError> {
     Ok(match e {
         Expr::Const(v) => v.clone(),
@@ -44,25 +69,7 @@ pub(crate) fn eval(e: &Expr, env: &Env) -> Result<Value, EvalError> {
         },
         Expr::Binary(op, a, b) => binary(*op, eval(a, env)?, eval(b, env)?)?,
         // An array value checked against its target's length: moved through, not copied.
-        Expr::Call(Builtin::CheckLength, args) => match args.as_slice() {
-            [
-                v,
-                Expr::Const(Value::Integer(n)),
-                Expr::Const(Value::String(target)),
-            ] => {
-                let v = eval(v, env)?;
-                crate::design::check_length(&v, *n, target)
-                    .map_err(|m| EvalError::new(m, super::ops::LENGTH_HELP))?;
-                v
-            }
-            _ => {
-                let values = args
-                    .iter()
-                    .map(|a| eval(a, env))
-                    .collect::<Result<Vec<_>, _>>()?;
-                builtin(Builtin::CheckLength, &values)?
-            }
-        },
+        Expr::Call(Builtin::CheckLength, args) => checked_length(args, env)?,
         Expr::Call(f, args) => {
             let values = args
                 .iter()
