@@ -576,9 +576,9 @@ impl<'a> Elab<'a> {
                     }
                     _ => None,
                 };
-                match actual_expr {
-                    Some(_) if named.is_some() => Item::Quantity(named.expect("tested")),
-                    Some((e, p)) if matches!(decl.mode, None | Some(ast::Mode::In)) => {
+                match (named, actual_expr) {
+                    (Some(q), _) => Item::Quantity(q),
+                    (None, Some((e, p))) if matches!(decl.mode, None | Some(ast::Mode::In)) => {
                         let value = self.expr_of(p, e, &Ty::Real)?;
                         let value = self.analog_value(value.e, value.ty, e.span)?;
                         let q = self.new_quantity(
@@ -590,19 +590,11 @@ impl<'a> Elab<'a> {
                             name.span,
                         );
                         let text = format!("{} => {}", name.name, self.text(e.span));
-                        self.design.equations.push(design::Equation {
-                            residual: design::Expr::Binary(
-                                design::BinaryOp::Sub,
-                                Box::new(design::Expr::Quantity(q)),
-                                Box::new(value),
-                            ),
-                            span: e.span,
-                            instance: self.instance.clone(),
-                            text,
-                        });
+                        let residual = super::synth::sub(design::Expr::Quantity(q), value);
+                        self.generated_equation(residual, e.span, text);
                         Item::Quantity(q)
                     }
-                    Some((e, _)) => {
+                    (None, Some((e, _))) => {
                         return Err(self.error(ElabError::invalid(
                             e.span,
                             format!(
@@ -613,7 +605,7 @@ impl<'a> Elab<'a> {
                             Some("an expression is an actual only for a port of mode in".into()),
                         )));
                     }
-                    None => Item::Quantity(self.new_quantity(
+                    (None, None) => Item::Quantity(self.new_quantity(
                         &name.name,
                         QuantityKind::Free,
                         &sub,
