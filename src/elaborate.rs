@@ -167,6 +167,9 @@ struct NatureInfo {
     across: Rc<Sub>,
     through: Rc<Sub>,
     id: Option<crate::design::NatureId>,
+    /// The nature a subnature with tolerance groups of its own belongs to: its terminals
+    /// connect to the base nature's and share its reference terminal.
+    base: Option<usize>,
 }
 
 /// The elaboration of one design.

@@ -64,6 +64,7 @@ impl<'a> Elab<'a> {
             across,
             through,
             id: None,
+            base: None,
         });
         sc.declare_at(&name.name, name.span, Item::Nature(idx));
         sc.declare_at(
@@ -74,8 +75,61 @@ impl<'a> Elab<'a> {
         Ok(())
     }
 
+    /// The table entry of the nature that `idx` is, or is a subnature of.
+    pub(super) fn nature_root(&self, idx: usize) -> usize {
+        self.natures[idx].base.unwrap_or(idx)
+    }
+
+    /// Whether terminals of natures `a` and `b` may be joined (a subnature is its base nature).
+    pub(super) fn same_nature(&self, a: usize, b: usize) -> bool {
+        self.nature_root(a) == self.nature_root(b)
+    }
+
+    /// `subnature accurate is electrical tolerance "v" across "i" through;`: a scalar
+    /// subnature with groups of its own gets a table entry whose across and through subtypes
+    /// carry them (its branch quantities' `'tolerance`); otherwise it is its base nature.
+    pub(super) fn subnature_decl(
+        &mut self,
+        sc: &mut Scope<'a>,
+        name: &Ident,
+        nature: &ast::SubtypeIndication,
+        through_tolerance: Option<&ast::Expr>,
+    ) -> R<()> {
+        let item = match self.nature_indication(sc, nature)? {
+            NatureMark::Scalar(n) => {
+                let (across, _) = self.tolerance_and_init(sc, nature.tolerance.as_ref(), None)?;
+                let (through, _) = self.tolerance_and_init(sc, through_tolerance, None)?;
+                if across.is_none() && through.is_none() {
+                    Item::Nature(n)
+                } else {
+                    let base = &self.natures[n];
+                    let with = |sub: &Rc<Sub>, group: Option<String>| match group {
+                        Some(g) => Rc::new(Sub {
+                            tolerance: Some(g.into()),
+                            ..(**sub).clone()
+                        }),
+                        None => sub.clone(),
+                    };
+                    let info = NatureInfo {
+                        name: base.name.clone(),
+                        across: with(&base.across, across),
+                        through: with(&base.through, through),
+                        id: None,
+                        base: Some(self.nature_root(n)),
+                    };
+                    self.natures.push(info);
+                    Item::Nature(self.natures.len() - 1)
+                }
+            }
+            NatureMark::Array(a) => Item::ArrayNature(a),
+            NatureMark::Record(r) => Item::RecordNature(r),
+        };
+        self.declare(sc, name, item)
+    }
+
     /// The design nature of table entry `idx`, created with its reference terminal on first use.
     pub(super) fn nature_id(&mut self, idx: usize) -> NatureId {
+        let idx = self.nature_root(idx);
         if let Some(id) = self.natures[idx].id {
             return id;
         }
@@ -474,7 +528,7 @@ impl<'a> Elab<'a> {
                 let minus_end = match minus {
                     Some(minus) => {
                         let (ms, mn, bounds) = self.branch_end(sc, minus)?;
-                        if mn != nature {
+                        if !self.same_nature(mn, nature) {
                             let (a, b) = (
                                 self.natures[nature].name.clone(),
                                 self.natures[mn].name.clone(),

@@ -602,7 +602,7 @@ impl<'a> Elab<'a> {
                 )),
             }));
         };
-        if *actual_nature != nature.element {
+        if !self.same_nature(*actual_nature, nature.element) {
             let (a, b) = (
                 self.natures[nature.element].name.clone(),
                 self.natures[*actual_nature].name.clone(),
@@ -716,7 +716,7 @@ impl<'a> Elab<'a> {
                             None,
                         )));
                     };
-                    if *n != nature.element || elements.ids.len() != at.len() {
+                    if !self.same_nature(*n, nature.element) || elements.ids.len() != at.len() {
                         return Err(self.error(ElabError::invalid(
                             actual.span,
                             format!(
@@ -737,7 +737,7 @@ impl<'a> Elab<'a> {
                 }
                 _ => {
                     let (id, actual_nature) = self.terminal(parent, actual)?;
-                    if actual_nature != nature.element {
+                    if !self.same_nature(actual_nature, nature.element) {
                         let (a, b) = (
                             self.natures[nature.element].name.clone(),
                             self.natures[actual_nature].name.clone(),

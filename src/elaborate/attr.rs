@@ -6,7 +6,7 @@
 use std::rc::Rc;
 
 use crate::ast::{self, Actual, Ident, Range};
-use crate::design::{BinaryOp, Builtin, Expr, QuantityKind, SignalAttr, UnaryOp, Value};
+use crate::design::{BinaryOp, Builtin, Expr, SignalAttr, UnaryOp, Value};
 use crate::source::Span;
 
 use super::error::ElabError;
@@ -226,17 +226,9 @@ impl<'a> Elab<'a> {
                 let items = self.lookup(sc, prefix)?;
                 let group = match &items[0] {
                     Item::Type(sub) => sub.tolerance.clone(),
-                    Item::Quantity(q) if matches!(self.design.quantities[q.index()].kind, QuantityKind::Free) => {
-                        self.design.quantities[q.index()].tolerance.clone()
-                    }
-                    // A subnature's own groups do not reach its branch quantities yet.
-                    Item::Quantity(_) => {
-                        return Err(self.error(ElabError::unsupported(
-                            attr.span,
-                            "`'tolerance` of a branch quantity",
-                            "ask the subtype: `voltage'tolerance`",
-                        )));
-                    }
+                    // A branch quantity's group is its declaration's, else its nature's (a
+                    // subnature's own groups included).
+                    Item::Quantity(q) => self.design.quantities[q.index()].tolerance.clone(),
                     other => {
                         let class = other.class();
                         return Err(self.error(ElabError::invalid(

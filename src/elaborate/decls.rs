@@ -8,7 +8,6 @@ use crate::ast::{
 };
 use crate::design::{Builtin, Signal, SignalId, SignalKind, Value};
 
-use super::arrays::NatureMark;
 use super::error::ElabError;
 use super::expr::constrain;
 use super::scope::{IoNative, Item, Native, Scope};
@@ -261,16 +260,11 @@ impl<'a> Elab<'a> {
                 self.declare(sc, name, Item::Type(Rc::new(sub)))
             }
             DeclKind::Nature { name, def } => self.nature_decl(sc, name, def, d.span),
-            // A subnature's tolerance groups name its quantities' groups; the solver uses
-            // one tolerance for all quantities.
-            DeclKind::Subnature { name, nature, .. } => {
-                let item = match self.nature_indication(sc, nature)? {
-                    NatureMark::Scalar(n) => Item::Nature(n),
-                    NatureMark::Array(a) => Item::ArrayNature(a),
-                    NatureMark::Record(r) => Item::RecordNature(r),
-                };
-                self.declare(sc, name, item)
-            }
+            DeclKind::Subnature {
+                name,
+                nature,
+                through_tolerance,
+            } => self.subnature_decl(sc, name, nature, through_tolerance.as_ref()),
             DeclKind::Terminal { names, nature } => self.terminal_decl(sc, names, nature),
             DeclKind::Quantity(q) => self.quantity_decl(sc, q, d.span),
             DeclKind::Alias {

@@ -517,7 +517,7 @@ impl<'a> Elab<'a> {
                                 return Err(port_class_error(self, e, other.class(), "terminal"));
                             }
                         };
-                        if n != nature {
+                        if !self.same_nature(n, nature) {
                             let (a, b) = (
                                 self.natures[nature].name.clone(),
                                 self.natures[n].name.clone(),
