@@ -432,6 +432,13 @@ pub enum SignalKind {
     /// `S'transaction` (LRM 14.1): a `bit` that toggles in each simulation cycle in which
     /// `source` is active; the kernel updates it, nothing drives it.
     Transaction { source: SignalId },
+    /// An array port associated element by element (`port map (i(1) => a, i(2) => b)`): its
+    /// element `k` is `elements[k]`, a whole scalar signal (`None`) or the element at a
+    /// position of an array signal, like a [`SignalKind::View`] of several parents. None of
+    /// the parents is a view or a gather.
+    Gather {
+        elements: Vec<(SignalId, Option<usize>)>,
+    },
 }
 
 /// A process (explicit, or the equivalent process of a concurrent statement: signal

@@ -424,7 +424,7 @@ impl<'a> Elab<'a> {
     }
 
     /// The static index of `prefix(args)`: one positional expression.
-    fn static_index(
+    pub(super) fn static_index(
         &mut self,
         sc: &Scope<'a>,
         args: &[ast::Assoc],

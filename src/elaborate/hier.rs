@@ -418,10 +418,14 @@ impl<'a> Elab<'a> {
         let actual = match (actual, parent) {
             (PortActual::Whole(a), _) => a,
             (PortActual::Elements(elements), Some(parent)) => {
-                let item = if decl.class == Some(ObjectClass::Quantity) {
-                    self.quantity_port_elements(sc, parent, name, decl, elements)?
-                } else {
-                    self.terminal_port_elements(sc, parent, name, decl, elements)?
+                let item = match decl.class {
+                    Some(ObjectClass::Quantity) => {
+                        self.quantity_port_elements(sc, parent, name, decl, elements)?
+                    }
+                    Some(ObjectClass::Terminal) => {
+                        self.terminal_port_elements(sc, parent, name, decl, elements)?
+                    }
+                    _ => self.signal_port_elements(sc, parent, name, decl, elements)?,
                 };
                 sc.declare_at(&name.name, name.span, item);
                 return Ok(());

@@ -277,6 +277,21 @@ impl<'a> Elab<'a> {
         suffix: &str,
         span: Span,
     ) -> R<SignalId> {
+        // An element of a gathered port is its actual's element; a slice, a gather of theirs.
+        if let SignalKind::Gather { elements } = &self.design.signals[parent.index()].kind {
+            let n = len.unwrap_or(1);
+            let Some(parts) = elements.get(first..first + n).map(<[_]>::to_vec) else {
+                return Err(super::Reported);
+            };
+            return match (len, parts[0]) {
+                (None, (root, None)) => Ok(root),
+                (None, (root, Some(k))) => self.view(root, (k, None), ty, suffix, span),
+                (Some(_), _) => {
+                    let name = format!("{}{suffix}", self.design.signals[parent.index()].name);
+                    Ok(self.gather_signal(name, ty, parts, span))
+                }
+            };
+        }
         let (parent, first) = match self.design.signals[parent.index()].kind {
             SignalKind::View {
                 parent: root,
@@ -312,5 +327,243 @@ impl<'a> Elab<'a> {
         });
         self.views.insert((parent, first, len), id);
         Ok(id)
+    }
+}
+
+impl<'a> Elab<'a> {
+    /// A signal port of an array type associated element by element (`port map (i(1) => a,
+    /// i(2) => b, i(3 to 4) => pair)`): a gathered signal ([`SignalKind::Gather`]) whose
+    /// elements are the actuals'. An unconstrained port takes the formals' indexes as its
+    /// range, ascending from the lowest (LRM 3.2.1.1: the index subtype's direction; vams's
+    /// array index subtypes ascend). Formal indexes and actuals are read in the instantiating
+    /// scope `parent`.
+    pub(super) fn signal_port_elements(
+        &mut self,
+        sc: &Scope<'a>,
+        parent: &Scope<'a>,
+        name: &ast::Ident,
+        decl: &ast::InterfaceDecl,
+        assocs: &[&ast::Assoc],
+    ) -> R<Item<'a>> {
+        let first = assocs.first().map_or(name.span, |a| a.span);
+        let sub = self.subtype_indication(sc, &decl.subtype)?;
+        let arr = match &sub.ty {
+            Ty::Array(arr) if arr.dimensions() == 1 && arr.index == Ty::Integer => arr.clone(),
+            _ => {
+                return Err(self.error(ElabError::unsupported(
+                    first,
+                    format!(
+                        "element associations of port `{}` of type {}",
+                        name.name, sub.ty
+                    ),
+                    "associate the whole port",
+                )));
+            }
+        };
+        // Each association's formal indexes, left to right.
+        let mut formals = Vec::with_capacity(assocs.len());
+        for a in assocs {
+            let Some(ExprKind::Apply(_, args)) = a.formal.as_ref().map(|f| &f.kind) else {
+                return Err(super::Reported);
+            };
+            let at = match args.as_slice() {
+                [
+                    ast::Assoc {
+                        actual: Actual::Range(r),
+                        ..
+                    },
+                ] => super::arrays::indexes(self.range_bounds(parent, r)?),
+                _ => {
+                    let (i, _) = self.static_index(parent, args, &name.name, a.span)?;
+                    vec![i]
+                }
+            };
+            formals.push((at, a));
+        }
+        let bounds = match arr.bounds {
+            Some(b) => b,
+            None => {
+                let all = formals.iter().flat_map(|(at, _)| at.iter().copied());
+                let (lo, hi) = all.fold((i64::MAX, i64::MIN), |(lo, hi), i| (lo.min(i), hi.max(i)));
+                (lo, hi, true)
+            }
+        };
+        let (left, right, ascending) = bounds;
+        self.array_size(&[bounds], first)?;
+        let count = bounds_len(left, right, ascending);
+        let mut elements: Vec<Option<(SignalId, Option<usize>)>> = vec![None; count];
+        for (at, a) in formals {
+            let Actual::Expr(actual) = &a.actual else {
+                return Err(self.error(ElabError::invalid(
+                    a.span,
+                    format!("an element of port `{}` needs a signal", name.name),
+                    Some("connect a signal to each element: `i(1) => a`".into()),
+                )));
+            };
+            let whole = at.len() == 1
+                && !matches!(a.formal.as_ref().map(|f| &f.kind),
+                Some(ExprKind::Apply(_, args)) if matches!(args.as_slice(), [ast::Assoc { actual: Actual::Range(_), .. }]));
+            let parts = self.gathered_actual(parent, actual, &arr, at.len(), whole, &name.name)?;
+            for (i, part) in at.into_iter().zip(parts) {
+                let inside = if ascending {
+                    left <= i && i <= right
+                } else {
+                    right <= i && i <= left
+                };
+                if !inside {
+                    return Err(self.error(ElabError::invalid(
+                        a.span,
+                        format!("index {i} is outside port `{}`'s range", name.name),
+                        None,
+                    )));
+                }
+                let pos = i.abs_diff(left) as usize;
+                if elements[pos].replace(part).is_some() {
+                    return Err(self.error(ElabError::invalid(
+                        a.span,
+                        format!("`{}({i})` is associated twice", name.name),
+                        Some("associate each element of the port once".into()),
+                    )));
+                }
+            }
+        }
+        let mut parts = Vec::with_capacity(count);
+        for (pos, part) in elements.into_iter().enumerate() {
+            let Some(part) = part else {
+                let i = if ascending {
+                    left + pos as i64
+                } else {
+                    left - pos as i64
+                };
+                return Err(self.error(ElabError::invalid(
+                    first,
+                    format!(
+                        "element `{}({i})` of port `{}` is not associated",
+                        name.name, name.name
+                    ),
+                    Some(format!(
+                        "associate every element of `{}`, or the whole port",
+                        name.name
+                    )),
+                )));
+            };
+            parts.push(part);
+        }
+        let ty = arr.with_bounds(Some(bounds));
+        let full = self.hier_name(&name.name);
+        let id = self.gather_signal(full, &ty, parts, name.span);
+        Ok(Item::Signal { id, ty })
+    }
+
+    /// The parent elements an actual gives a gathered port: one element (`whole`, the actual
+    /// a signal of the element type) or `n` elements of an array signal, each as a root
+    /// signal (never a view) and a position in it (`None`: the whole scalar signal).
+    fn gathered_actual(
+        &mut self,
+        parent: &Scope<'a>,
+        actual: &ast::Expr,
+        arr: &ArrayTy,
+        n: usize,
+        whole: bool,
+        port: &str,
+    ) -> R<Vec<(SignalId, Option<usize>)>> {
+        let t = self.signal_expr(parent, actual)?;
+        let Expr::Signal(s) = t.e else {
+            return Err(self.error(ElabError::invalid(
+                actual.span,
+                format!("an element of port `{port}` needs a signal"),
+                Some("connect a signal (or an element or slice of one) to each element".into()),
+            )));
+        };
+        let expected = if whole {
+            arr.element.clone()
+        } else {
+            arr.with_bounds(None)
+        };
+        if !t.ty.same(&expected) {
+            return Err(self.error(ElabError::TypeMismatch {
+                span: actual.span,
+                expected: expected.to_string(),
+                found: t.ty.to_string(),
+                help: Some(format!(
+                    "the elements of port `{port}` are of type {}",
+                    arr.element
+                )),
+            }));
+        }
+        let parts = match (&self.design.signals[s.index()].kind, whole) {
+            (
+                SignalKind::View {
+                    parent,
+                    first,
+                    len: None,
+                },
+                true,
+            ) => vec![(*parent, Some(*first))],
+            (
+                SignalKind::View {
+                    parent,
+                    first,
+                    len: Some(len),
+                },
+                false,
+            ) => (*first..first + len).map(|k| (*parent, Some(k))).collect(),
+            (SignalKind::Gather { elements }, false) => elements.clone(),
+            (SignalKind::View { .. } | SignalKind::Gather { .. }, _) => {
+                return Err(self.error(ElabError::unsupported(
+                    actual.span,
+                    "an element of a port associated element by element that is itself a part of a composite element",
+                    "associate a signal of the element type",
+                )));
+            }
+            (_, true) => vec![(s, None)],
+            (_, false) => (0..self.design.signals[s.index()].init.elements().len())
+                .map(|k| (s, Some(k)))
+                .collect(),
+        };
+        if parts.len() != n {
+            return Err(self.error(ElabError::invalid(
+                actual.span,
+                format!(
+                    "the formal names {n} element(s) of `{port}`, the actual has {}",
+                    parts.len()
+                ),
+                Some("associate a slice of the same length".into()),
+            )));
+        }
+        Ok(parts)
+    }
+
+    /// A gathered signal of type `ty` with the hierarchical name `name` over root signal
+    /// elements `parts`, its initial value theirs.
+    fn gather_signal(
+        &mut self,
+        name: String,
+        ty: &Ty,
+        parts: Vec<(SignalId, Option<usize>)>,
+        span: Span,
+    ) -> SignalId {
+        let elements = parts
+            .iter()
+            .map(|&(p, k)| {
+                let init = &self.design.signals[p.index()].init;
+                k.and_then(|k| init.view(k, None))
+                    .unwrap_or_else(|| init.clone())
+            })
+            .collect();
+        let string = matches!(ty, Ty::Array(a) if a.name == "string");
+        let init = crate::design::aggregate_value(elements, string);
+        let id = SignalId(self.design.signals.len() as u32);
+        self.design.signals.push(Signal {
+            name,
+            ty: ty.to_design(),
+            init,
+            kind: SignalKind::Gather { elements: parts },
+            span,
+            range: None,
+            resolution: None,
+            guarded: None,
+        });
+        id
     }
 }

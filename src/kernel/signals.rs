@@ -59,6 +59,9 @@ struct Driver {
     waveform: VecDeque<Transaction>,
 }
 
+/// An element of a gathered port: a root signal and the position in it (`None`: all of it).
+type GatherElement = (SignalId, Option<usize>);
+
 /// Every signal's state and every driver.
 pub(crate) struct Signals {
     pub states: Vec<SignalState>,
@@ -80,6 +83,11 @@ pub(crate) struct Signals {
     view_of: Vec<Option<(SignalId, usize, Option<usize>)>>,
     /// The view signals, in increasing order.
     views: Vec<SignalId>,
+    /// What each gathered port shows: one parent element per element
+    /// ([`SignalKind::Gather`]); `None` for other signals.
+    gather_of: Vec<Option<Vec<GatherElement>>>,
+    /// The gathered ports, in increasing order.
+    gathers: Vec<SignalId>,
     /// `(S'transaction, S)` pairs ([`SignalKind::Transaction`]).
     transactions: Vec<(SignalId, SignalId)>,
     /// `'above` values to apply in the next update phase.
@@ -144,6 +152,14 @@ impl Signals {
                 _ => None,
             })
             .collect();
+        let gather_of: Vec<Option<Vec<GatherElement>>> = design
+            .signals
+            .iter()
+            .map(|s| match &s.kind {
+                SignalKind::Gather { elements } => Some(elements.clone()),
+                _ => None,
+            })
+            .collect();
         // An assignment to a view drives its elements of the parent (statically known ones).
         // Each target comes with its driver's initial value: the default of the port the
         // process drives it through, else the signal's own (an element's for a position).
@@ -165,6 +181,25 @@ impl Signals {
                         .map(|(_, v)| v);
                     let signal = &design.signals[target.index()];
                     let init = port_default.unwrap_or(&signal.init);
+                    // An assignment to a gathered port drives each element's parent: an
+                    // element of an array, or a whole scalar signal.
+                    if let Some(parts) = &gather_of[target.index()] {
+                        let own = init.elements();
+                        let n = parts.len();
+                        let slots: Vec<usize> = match driven {
+                            Driven::Static(i) => match super::eval::offset(&signal.ty, i, n) {
+                                Ok(k) => vec![k],
+                                Err(_) => (0..n).collect(),
+                            },
+                            _ => (0..n).collect(),
+                        };
+                        for k in slots {
+                            let (parent, position) = parts[k];
+                            let v = own.get(k).cloned().unwrap_or_else(|| init.clone());
+                            out.push((parent, position.map_or(Driven::Whole, Driven::Position), v));
+                        }
+                        continue;
+                    }
                     match view_of[target.index()] {
                         Some((parent, first, len)) => {
                             // A slice's element k - first of its (port's) initial value, which
@@ -313,6 +348,11 @@ impl Signals {
                 .map(|s| SignalId(s as u32))
                 .collect(),
             view_of,
+            gathers: (0..gather_of.len())
+                .filter(|&s| gather_of[s].is_some())
+                .map(|s| SignalId(s as u32))
+                .collect(),
+            gather_of,
             transactions: design
                 .signals
                 .iter()
@@ -354,7 +394,31 @@ impl Signals {
                 st.value = value;
             }
         }
+        for k in 0..self.gathers.len() {
+            let g = self.gathers[k];
+            let value = self.gathered(g);
+            let st = &mut self.states[g.index()];
+            st.last_value = value.clone();
+            st.value = value;
+        }
         Ok(())
+    }
+
+    /// The value of gathered port `g` from its parents' current values.
+    fn gathered(&self, g: SignalId) -> Value {
+        let parts = self.gather_of[g.index()].as_deref().unwrap_or_default();
+        let elements = parts
+            .iter()
+            .map(|&(parent, position)| {
+                let value = &self.states[parent.index()].value;
+                // Elaboration placed each position within its parent's bounds.
+                position
+                    .and_then(|k| value.view(k, None))
+                    .unwrap_or_else(|| value.clone())
+            })
+            .collect();
+        let string = matches!(self.states[g.index()].value, Value::String(_));
+        crate::design::aggregate_value(elements, string)
     }
 
     /// The driver of `signal` in process `process` (every assignment has one), or of its
@@ -365,6 +429,10 @@ impl Signals {
         signal: SignalId,
         element: Option<usize>,
     ) -> Option<usize> {
+        if let Some(parts) = &self.gather_of[signal.index()] {
+            let (parent, position) = *parts.get(element?)?;
+            return self.index.get(&(process, parent, position)).copied();
+        }
         let key = match (self.view_of[signal.index()], element) {
             (Some((parent, first, None)), _) => (process, parent, Some(first)),
             (Some((parent, first, Some(_))), Some(k)) => (process, parent, Some(first + k)),
@@ -377,7 +445,7 @@ impl Signals {
     /// `signal` is connected and the driver's current value (of a signal driven element by
     /// element, the array of its element drivers'); `None` when the process has no driver.
     pub fn driving(&self, process: usize, signal: SignalId) -> Option<(bool, Value)> {
-        if let (None, Some(n)) = (self.view_of[signal.index()], self.split[signal.index()]) {
+        if let (None, Some(n)) = (self.view_of[signal.index()], self.split(signal)) {
             let mut connected = true;
             let mut values = Vec::with_capacity(n);
             for k in 0..n {
@@ -398,7 +466,10 @@ impl Signals {
         match self.view_of[signal.index()] {
             // A slice view is driven element by element; an element view as a whole.
             Some((_, _, len)) => len,
-            None => self.split[signal.index()],
+            None => match &self.gather_of[signal.index()] {
+                Some(parts) => Some(parts.len()),
+                None => self.split[signal.index()],
+            },
         }
     }
 
@@ -513,6 +584,18 @@ impl Signals {
                 self.states[v.index()].last_active = Some(now);
                 self.set(v, value, now);
             }
+        }
+        // Gathered ports follow theirs the same way.
+        for k in 0..self.gathers.len() {
+            let g = self.gathers[k];
+            let parts = self.gather_of[g.index()].as_deref().unwrap_or_default();
+            if !parts.iter().any(|(p, _)| self.states[p.index()].active) {
+                continue;
+            }
+            let value = self.gathered(g);
+            self.states[g.index()].active = true;
+            self.states[g.index()].last_active = Some(now);
+            self.set(g, value, now);
         }
         // `S'transaction` toggles whenever `S` is active; in signal order, so the transaction
         // signal of a transaction signal follows its source.
