@@ -204,6 +204,7 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_terminal_attributes ... ok"))
         .stdout(contains("test tb_subnature_tolerance ... ok"))
         .stdout(contains("test tb_signal_port_elements ... ok"))
+        .stdout(contains("test tb_signal_parameter_elements ... ok"))
         .stdout(contains("test tb_literal_operands ... ok"))
         .stdout(contains("test tb_operator_aliases ... ok"))
         .stdout(contains("test tb_declared_guard ... ok"))
@@ -246,7 +247,7 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_terminal_port_slices ... ok"))
         .stdout(contains("test tb_multidimensional_nature ... ok"))
         .stdout(contains("test tb_function_result_bounds ... ok"))
-        .stdout(contains("101 passed, 0 failed"));
+        .stdout(contains("102 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

@@ -23,13 +23,26 @@ use super::scope::{Body, Bounds, Instance, Item, Native, Param, Part, Scope, Sub
 use super::types::Ty;
 use super::{Elab, R};
 
-/// Arguments bound to a subprogram's parameters: one optional actual per parameter.
-type Slots<'e> = Vec<Option<&'e ast::Expr>>;
+/// Arguments bound to a subprogram's parameters: one optional actual per parameter, and the
+/// element associations of a parameter associated element by element (`bv(0) => sel0`).
+pub(super) struct Slots<'e> {
+    actuals: Vec<Option<&'e ast::Expr>>,
+    elements: Vec<Vec<&'e ast::Assoc>>,
+}
+
+impl<'s, 'e> IntoIterator for &'s Slots<'e> {
+    type Item = &'s Option<&'e ast::Expr>;
+    type IntoIter = std::slice::Iter<'s, Option<&'e ast::Expr>>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.actuals.iter()
+    }
+}
 
 /// The actuals of `args` by parameter of `sub`, or `None` when they do not fit (unknown formal,
 /// too many actuals, a parameter without actual or default).
 fn bind<'e>(sub: &Subprogram<'_>, args: &'e [ast::Assoc]) -> Option<Slots<'e>> {
-    let mut slots: Slots<'e> = vec![None; sub.params.len()];
+    let mut slots: Vec<Option<&'e ast::Expr>> = vec![None; sub.params.len()];
+    let mut elements: Vec<Vec<&'e ast::Assoc>> = vec![Vec::new(); sub.params.len()];
     let mut taken = vec![false; sub.params.len()];
     for (k, a) in args.iter().enumerate() {
         // `open` leaves the parameter to its default (LRM 2.1.1).
@@ -41,21 +54,34 @@ fn bind<'e>(sub: &Subprogram<'_>, args: &'e [ast::Assoc]) -> Option<Slots<'e>> {
         let slot = match &a.formal {
             Some(f) => match &f.kind {
                 ExprKind::Name(id) => sub.params.iter().position(|p| p.name == id.name)?,
+                // An element or slice of a parameter: gathered with the others of it.
+                ExprKind::Apply(prefix, _) => {
+                    let ExprKind::Name(id) = &prefix.kind else {
+                        return None;
+                    };
+                    let slot = sub.params.iter().position(|p| p.name == id.name)?;
+                    if taken[slot] || actual.is_none() {
+                        return None;
+                    }
+                    elements[slot].push(a);
+                    continue;
+                }
                 _ => return None,
             },
             None => k,
         };
-        if slot >= slots.len() || taken[slot] {
+        if slot >= slots.len() || taken[slot] || !elements[slot].is_empty() {
             return None;
         }
         taken[slot] = true;
         slots[slot] = actual;
     }
-    let complete = slots
-        .iter()
-        .zip(&sub.params)
-        .all(|(s, p)| s.is_some() || p.has_default);
-    complete.then_some(slots)
+    let complete = (slots.iter().zip(&elements).zip(&sub.params))
+        .all(|((s, e), p)| s.is_some() || !e.is_empty() || p.has_default);
+    complete.then_some(Slots {
+        actuals: slots,
+        elements,
+    })
 }
 
 fn mode(m: Option<Mode>) -> ParamMode {
@@ -212,6 +238,19 @@ impl<'a> Elab<'a> {
             .filter_map(|s| bind(&s, args).map(|slots| (s, slots)))
             .collect();
         let what = if function { "function" } else { "procedure" };
+        if let [(sub, slots)] = cands.as_slice()
+            && let Some((p, assocs)) = (sub.params.iter().zip(&slots.elements))
+                .find(|(p, e)| !e.is_empty() && !p.is_signal)
+        {
+            return Err(self.error(ElabError::unsupported(
+                assocs[0].span,
+                format!(
+                    "the parameter `{}`, not a signal, associated element by element",
+                    p.name
+                ),
+                "associate the whole parameter: an aggregate, `(x, y, z)`",
+            )));
+        }
         if cands.is_empty()
             && let Some(part) = args.iter().find_map(|a| {
                 a.formal
@@ -277,14 +316,20 @@ impl<'a> Elab<'a> {
         }
     }
 
-    /// The actual signal of a signal parameter.
+    /// The actual signal of a signal parameter: a gathered signal over the actuals of one
+    /// associated element by element (`elements`).
     fn signal_actual(
         &mut self,
         sc: &Scope<'a>,
         p: &Param<'a>,
         actual: Option<&ast::Expr>,
+        elements: &[&ast::Assoc],
         span: Span,
     ) -> R<SignalId> {
+        if !elements.is_empty() {
+            let name = self.hier_name(&p.name);
+            return Ok(self.gathered(sc, &p.name, name, &p.ty, elements, span)?.0);
+        }
         let t = match actual {
             // An element or slice of a signal: its view (type checked by analysis).
             Some(
@@ -352,9 +397,9 @@ impl<'a> Elab<'a> {
         let mut signals = Vec::new();
         let mut bounds = Vec::new();
         let mut objects = Vec::new();
-        for (p, actual) in sub.params.iter().zip(slots) {
+        for (k, (p, actual)) in sub.params.iter().zip(slots).enumerate() {
             if p.is_signal {
-                signals.push(self.signal_actual(sc, p, *actual, span)?);
+                signals.push(self.signal_actual(sc, p, *actual, &slots.elements[k], span)?);
                 bounds.push(None);
             } else if matches!(p.ty, Ty::Protected(_)) {
                 objects.push(self.shared_actual(sc, p, *actual, span)?);
@@ -538,9 +583,9 @@ impl<'a> Elab<'a> {
         let mut parts = Vec::new();
         let mut bounds = Vec::new();
         let mut objects = Vec::new();
-        for (p, actual) in sub.params.iter().zip(slots) {
+        for (k, (p, actual)) in sub.params.iter().zip(slots).enumerate() {
             if p.is_signal {
-                signals.push(self.signal_actual(sc, p, *actual, span)?);
+                signals.push(self.signal_actual(sc, p, *actual, &slots.elements[k], span)?);
                 bounds.push(None);
                 continue;
             }

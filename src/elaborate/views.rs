@@ -345,18 +345,32 @@ impl<'a> Elab<'a> {
         decl: &ast::InterfaceDecl,
         assocs: &[&ast::Assoc],
     ) -> R<Item<'a>> {
-        let first = assocs.first().map_or(name.span, |a| a.span);
         let sub = self.subtype_indication(sc, &decl.subtype)?;
-        let arr = match &sub.ty {
+        let full = self.hier_name(&name.name);
+        let (id, ty) = self.gathered(parent, &name.name, full, &sub.ty, assocs, name.span)?;
+        Ok(Item::Signal { id, ty })
+    }
+
+    /// The gathered signal (hierarchical name `full`) of formal `name` of type `ty`
+    /// associated element by element by `assocs`, read in scope `parent`: a port's, or a
+    /// signal parameter's (`all_possible_values(bv(0) => sel0, bv(1) => sel1, ...)`).
+    pub(super) fn gathered(
+        &mut self,
+        parent: &Scope<'a>,
+        name: &str,
+        full: String,
+        ty: &Ty,
+        assocs: &[&ast::Assoc],
+        span: Span,
+    ) -> R<(SignalId, Ty)> {
+        let first = assocs.first().map_or(span, |a| a.span);
+        let arr = match ty {
             Ty::Array(arr) if arr.dimensions() == 1 && arr.index == Ty::Integer => arr.clone(),
             _ => {
                 return Err(self.error(ElabError::unsupported(
                     first,
-                    format!(
-                        "element associations of port `{}` of type {}",
-                        name.name, sub.ty
-                    ),
-                    "associate the whole port",
+                    format!("element associations of `{name}` of type {ty}"),
+                    "associate it whole",
                 )));
             }
         };
@@ -374,7 +388,7 @@ impl<'a> Elab<'a> {
                     },
                 ] => super::arrays::indexes(self.range_bounds(parent, r)?),
                 _ => {
-                    let (i, _) = self.static_index(parent, args, &name.name, a.span)?;
+                    let (i, _) = self.static_index(parent, args, name, a.span)?;
                     vec![i]
                 }
             };
@@ -396,14 +410,14 @@ impl<'a> Elab<'a> {
             let Actual::Expr(actual) = &a.actual else {
                 return Err(self.error(ElabError::invalid(
                     a.span,
-                    format!("an element of port `{}` needs a signal", name.name),
+                    format!("an element of `{}` needs a signal", name),
                     Some("connect a signal to each element: `i(1) => a`".into()),
                 )));
             };
             let whole = at.len() == 1
                 && !matches!(a.formal.as_ref().map(|f| &f.kind),
                 Some(ExprKind::Apply(_, args)) if matches!(args.as_slice(), [ast::Assoc { actual: Actual::Range(_), .. }]));
-            let parts = self.gathered_actual(parent, actual, &arr, at.len(), whole, &name.name)?;
+            let parts = self.gathered_actual(parent, actual, &arr, at.len(), whole, name)?;
             for (i, part) in at.into_iter().zip(parts) {
                 let inside = if ascending {
                     left <= i && i <= right
@@ -413,7 +427,7 @@ impl<'a> Elab<'a> {
                 if !inside {
                     return Err(self.error(ElabError::invalid(
                         a.span,
-                        format!("index {i} is outside port `{}`'s range", name.name),
+                        format!("index {i} is outside `{}`'s range", name),
                         None,
                     )));
                 }
@@ -421,7 +435,7 @@ impl<'a> Elab<'a> {
                 if elements[pos].replace(part).is_some() {
                     return Err(self.error(ElabError::invalid(
                         a.span,
-                        format!("`{}({i})` is associated twice", name.name),
+                        format!("`{}({i})` is associated twice", name),
                         Some("associate each element of the port once".into()),
                     )));
                 }
@@ -437,22 +451,18 @@ impl<'a> Elab<'a> {
                 };
                 return Err(self.error(ElabError::invalid(
                     first,
-                    format!(
-                        "element `{}({i})` of port `{}` is not associated",
-                        name.name, name.name
-                    ),
+                    format!("element `{}({i})` of `{}` is not associated", name, name),
                     Some(format!(
                         "associate every element of `{}`, or the whole port",
-                        name.name
+                        name
                     )),
                 )));
             };
             parts.push(part);
         }
         let ty = arr.with_bounds(Some(bounds));
-        let full = self.hier_name(&name.name);
-        let id = self.gather_signal(full, &ty, parts, name.span);
-        Ok(Item::Signal { id, ty })
+        let id = self.gather_signal(full, &ty, parts, span);
+        Ok((id, ty))
     }
 
     /// The parent elements an actual gives a gathered port: one element (`whole`, the actual
