@@ -173,11 +173,20 @@ impl<'a> Elab<'a> {
                         }
                         continue;
                     }
+                    // `to_bool(y) => yb`: a conversion of an `out` port's value.
+                    ast::ExprKind::Apply(..) => {
+                        self.error(ElabError::unsupported(
+                            f.span,
+                            "a conversion function or type conversion on a formal",
+                            "associate the port with a signal of its own type and convert in a signal assignment (`yb <= to_bool(y_bit);`, one delta cycle later)",
+                        ));
+                        continue;
+                    }
                     _ => {
                         self.error(ElabError::unsupported(
                             f.span,
-                            "partial or converted formals",
-                            "associate whole formals by name",
+                            "this form of formal",
+                            "name the formal, or an element or slice of it: `p => a`, `p(1) => a`",
                         ));
                         continue;
                     }

@@ -122,6 +122,12 @@ impl<'a> Elab<'a> {
                     path: path.into(),
                 })
             }
+            // `to_bit(s)`, `integer(s)`: a conversion, in a port map or a signal parameter.
+            Item::Subprogram(_) | Item::Type(_) => Err(self.error(ElabError::unsupported(
+                e.span,
+                "a conversion function or type conversion as the actual of a port or signal parameter",
+                "convert in a signal assignment of its own (`b_bit <= to_bit(b);`, one delta cycle later) and associate that signal",
+            ))),
             _ => Err(self.error(ElabError::unsupported(
                 e.span,
                 "an element or a slice where a whole object is named",
