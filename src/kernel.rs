@@ -19,6 +19,7 @@ use crate::waveform::Waveforms;
 mod analog_model;
 mod call;
 mod cancel;
+mod coupling;
 mod cycle;
 mod error;
 mod eval;

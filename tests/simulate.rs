@@ -609,3 +609,49 @@ fn domain_idiom_starts_from_the_quiescent_value_then_integrates() {
     let events = w.column("domain_events").expect("recorded");
     assert_eq!(*events.values.last().unwrap(), 1.0);
 }
+
+/// Clock edges of a counter that nothing analog reads run between the integrator's steps
+/// (before, each edge cost an accepted step): a few dozen steps for 40 000 edges, the counter
+/// exact, the sampled and recorded (interpolated) capacitor voltages on the closed form.
+#[test]
+fn digital_only_events_run_between_analog_steps() {
+    let result = run(
+        "clocked_counter_rc",
+        SimOptions {
+            stop: 20e-6,
+            ..SimOptions::default()
+        },
+    );
+    assert_eq!(result.outcome, Outcome::Finished);
+    assert!(
+        result.stats.accepted_steps < 200,
+        "{} accepted steps for an RC over 2 tau",
+        result.stats.accepted_steps
+    );
+    let w = &result.waveforms;
+    let count = w.column("count").expect("count recorded");
+    assert_eq!(count.values.last().copied(), Some(20_000.0));
+    // Every count is recorded at its time: rising edges at 0.5, 1.5, ... ns.
+    assert_eq!(w.value_at("count", 5.2e-9), Some(5.0));
+    assert_eq!(w.value_at("count", 5.5e-9), Some(6.0));
+    // At the default reltol (1e-3) the BDF2 solution is within 5e-3 V of the closed form; the
+    // rows between steps interpolate inside that.
+    let tau = 10e-6;
+    let v_c = w.column("v_c").expect("v_c recorded");
+    for (&t, &v) in w.times.iter().zip(&v_c.values).step_by(97) {
+        let exact = 1.0 - (-t / tau).exp();
+        assert!(
+            (v - exact).abs() < 5e-3,
+            "t = {t}: v_c = {v}, exact {exact}"
+        );
+    }
+    // The sampling process reads the solution at 10 and 20 us: points of their own.
+    for (t, k) in [(15e-6, 1.0f64), (20e-6, 2.0)] {
+        let sampled = w.value_at("sampled", t).expect("sampled recorded");
+        let exact = 1.0 - (-k).exp();
+        assert!(
+            (sampled - exact).abs() < 5e-3,
+            "sampled by {t}: {sampled}, exact {exact}"
+        );
+    }
+}

@@ -12,6 +12,7 @@ use crate::design::{Design, Expr, QuantityId, SignalId, Value};
 use crate::solver::{Advance, OpOptions, Transient, TransientOptions};
 
 use super::analog_model::AnalogModel;
+use super::coupling::Coupling;
 use super::error::SimError;
 use super::eval::{Env, eval};
 use super::events::{AnalogView, EventKernel};
@@ -44,6 +45,11 @@ struct Analog<A> {
     /// The quiescent point (every `x'` zero), before the integrator's consistent
     /// initialisation gives the derivatives their values at `0+`: what `vams op` reports.
     quiescent: Vec<f64>,
+    /// Which digital activity needs an analog solution point (the rest runs between steps).
+    coupling: Coupling,
+    /// Interpolation buffers for the points of digital-only activity.
+    xi: Vec<f64>,
+    xdi: Vec<f64>,
 }
 
 pub(crate) struct Simulation<'d, A> {
@@ -223,7 +229,11 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             integ.set_root_offset(i, hysteresis(now, band));
         }
         let m = above.len();
+        let coupling = Coupling::new(design, |s| sys.reads_signal(s));
         Ok(Analog {
+            coupling,
+            xi: vec![0.0; n],
+            xdi: vec![0.0; n],
             sys,
             slots,
             above,
@@ -409,10 +419,14 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             if t >= self.stop {
                 break;
             }
-            let target = self.kernel.next_time(t).min(self.stop);
-            t = match self.analog.is_some() {
-                true => self.advance(t, target, recorder)?,
-                false => target,
+            // The analog solver stops only where something needs its solution; digital-only
+            // activity runs between its steps (see `digital_between`).
+            t = match &self.analog {
+                Some(a) => {
+                    let target = self.kernel.next_coupled_time(t, &a.coupling).min(self.stop);
+                    self.advance(t, target, recorder, on_report)?
+                }
+                None => self.kernel.next_time(t).min(self.stop),
             };
             self.progress.tick(t);
             self.check_cancelled(t)?;
@@ -426,14 +440,29 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
 
     /// Integrates from `t` towards `target`, recording every accepted step; stops early at a
     /// threshold crossing (forcing the `'above` signals that crossed). Returns the time reached.
-    fn advance(&mut self, t: f64, target: f64, recorder: &mut Recorder) -> Result<f64, SimError> {
+    fn advance(
+        &mut self,
+        t: f64,
+        target: f64,
+        recorder: &mut Recorder,
+        on_report: &mut dyn FnMut(&Report),
+    ) -> Result<f64, SimError> {
         if target < self.stop {
             if let Some(a) = self.analog.as_mut() {
                 a.integ.add_breakpoint(target);
             }
         }
         loop {
-            match self.step(t, target)? {
+            let advance = self.step(t, target)?;
+            let reached = match advance {
+                Advance::StepAccepted(t1) | Advance::Reached(t1) => t1,
+                Advance::Root { t: tr, .. } => tr,
+            };
+            self.digital_between(reached, recorder, on_report)?;
+            if self.outcome.is_some() {
+                return Ok(reached);
+            }
+            match advance {
                 Advance::StepAccepted(t1) => {
                     self.refresh()?;
                     let crossed = self.sync_above(t1);
@@ -465,6 +494,52 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                     return Ok(tr);
                 }
             }
+        }
+    }
+
+    /// Runs the digital-only time points due before `until` (the time the integrator just
+    /// reached), each recorded with the quantities interpolated inside the step: their
+    /// processes read no quantity and their events change nothing the equations read, so
+    /// the analog solution needs no point of its own there.
+    fn digital_between(
+        &mut self,
+        until: f64,
+        recorder: &mut Recorder,
+        on_report: &mut dyn FnMut(&Report),
+    ) -> Result<(), SimError> {
+        let mut values = Vec::new();
+        let mut derivatives = Vec::new();
+        loop {
+            let td = self.kernel.next_time(until);
+            if td >= until || self.outcome.is_some() {
+                return Ok(());
+            }
+            if values.is_empty() {
+                values = self.values.clone();
+                derivatives = self.derivatives.clone();
+            }
+            if let Some(a) = self.analog.as_mut()
+                && a.integ
+                    .interpolate_with_derivative(td, &mut a.xi, &mut a.xdi)
+                    .is_ok()
+            {
+                a.sys
+                    .quantity_values(td, &a.xi, &a.xdi, &mut values, &mut derivatives);
+            }
+            if recorder.last_time() != Some(td) {
+                recorder.record(td, &values, &self.kernel.signals.states);
+            }
+            let events = self.kernel.events;
+            let view = AnalogView {
+                values: &values,
+                derivatives: &derivatives,
+            };
+            self.outcome = self.kernel.run_time_point(td, &view, on_report)?;
+            if self.kernel.events != events {
+                recorder.record(td, &values, &self.kernel.signals.states);
+            }
+            self.progress.tick(td);
+            self.check_cancelled(td)?;
         }
     }
 

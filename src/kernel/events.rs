@@ -102,6 +102,24 @@ impl<'d> EventKernel<'d> {
             .fold(self.signals.next_time(), f64::min)
     }
 
+    /// The earliest time at which something due needs the analog solution (see
+    /// [`super::coupling`]): a transaction on a signal that wakes the analog side, or a
+    /// coupled process's timeout.
+    pub fn next_coupled_time(&self, now: f64, coupling: &super::coupling::Coupling) -> f64 {
+        if self.signals.has_forced() {
+            return now;
+        }
+        self.procs
+            .iter()
+            .enumerate()
+            .filter(|(i, p)| !p.halted && coupling.is_coupled(*i))
+            .filter_map(|(_, p)| p.timeout_at)
+            .fold(
+                self.signals.next_time_where(|s| coupling.wakes(s)),
+                f64::min,
+            )
+    }
+
     /// Runs simulation cycles at `now` until nothing more is due at `now`.
     pub fn run_time_point(
         &mut self,

@@ -175,12 +175,17 @@ pub(crate) fn later(now: f64, d: f64) -> f64 {
     }
 }
 
-/// Runs process `index` until it suspends.
 /// Tells the reports that functions made while `process` evaluated their calls.
+#[inline]
 pub(crate) fn emit_function_reports(cx: &mut Context, process: &str) {
-    if cx.io.function_reports.borrow().is_empty() {
-        return;
+    // Checked before every instruction: the common case stays inline and cheap.
+    if !cx.io.function_reports.borrow().is_empty() {
+        emit_pending_reports(cx, process);
     }
+}
+
+#[inline(never)]
+fn emit_pending_reports(cx: &mut Context, process: &str) {
     for r in cx.io.function_reports.take() {
         let report = Report {
             time: cx.now,
@@ -194,6 +199,7 @@ pub(crate) fn emit_function_reports(cx: &mut Context, process: &str) {
     }
 }
 
+/// Runs process `index` until it suspends.
 pub(crate) fn run(
     index: usize,
     process: &Process,

@@ -8,7 +8,9 @@
 //! several drivers act on a `std_ulogic` signal). `'above` signals have no driver: the analog
 //! side forces their values at threshold crossings.
 
-use std::collections::{HashMap, VecDeque};
+use std::collections::VecDeque;
+
+use rustc_hash::FxHashMap;
 
 use crate::ast::GuardedKind;
 use crate::design::{Design, Expr, Resolution, SignalId, SignalKind, Type, Value};
@@ -69,7 +71,7 @@ pub(crate) struct Signals {
     /// Driver indices of each signal.
     by_signal: Vec<Vec<usize>>,
     /// Driver index of `(process, signal, element)`.
-    index: HashMap<(usize, SignalId, Option<usize>), usize>,
+    index: FxHashMap<(usize, SignalId, Option<usize>), usize>,
     /// Signals driven element by element, with their number of elements.
     split: Vec<Option<usize>>,
     /// Signals resolved with the std_logic table.
@@ -143,7 +145,7 @@ impl Signals {
             .collect();
         let mut drivers = Vec::new();
         let mut by_signal = vec![Vec::new(); design.signals.len()];
-        let mut index = HashMap::new();
+        let mut index = FxHashMap::default();
         let view_of: Vec<Option<(SignalId, usize, Option<usize>)>> = design
             .signals
             .iter()
@@ -522,6 +524,15 @@ impl Signals {
     pub fn next_time(&self) -> f64 {
         self.drivers
             .iter()
+            .filter_map(|d| d.waveform.front().map(|t| t.time))
+            .fold(f64::INFINITY, f64::min)
+    }
+
+    /// The earliest transaction due on a signal for which `counts` holds.
+    pub fn next_time_where(&self, counts: impl Fn(SignalId) -> bool) -> f64 {
+        self.drivers
+            .iter()
+            .filter(|d| counts(d.signal))
             .filter_map(|d| d.waveform.front().map(|t| t.time))
             .fold(f64::INFINITY, f64::min)
     }

@@ -9,10 +9,10 @@ begin
   y <= not a;
 end architecture behavioral;
 
-entity tb_port_conversions is
-end entity tb_port_conversions;
+entity port_conversions is
+end entity port_conversions;
 
-architecture test of tb_port_conversions is
+architecture test of port_conversions is
   function to_bit ( x : boolean ) return bit is
   begin
     if x then

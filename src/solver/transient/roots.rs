@@ -33,6 +33,17 @@ impl Transient {
         self.interpolate_both(t, out, None)
     }
 
+    /// `x(t)` and `x'(t)` for `t` inside the last accepted step (or `t` equal to the current
+    /// time).
+    pub fn interpolate_with_derivative(
+        &self,
+        t: f64,
+        out: &mut [f64],
+        dout: &mut [f64],
+    ) -> Result<(), SolveError> {
+        self.interpolate_both(t, out, Some(dout))
+    }
+
     fn interpolate_both(
         &self,
         t: f64,
