@@ -1,7 +1,9 @@
 //! The simulation cycle: the VHDL event kernel synchronised with the analog solver.
 //!
 //! **Takes** a [`Design`] and [`SimOptions`]; **gives** a [`SimResult`]: the recorded
-//! [`Waveforms`], every report and assertion, how the run ended, and statistics.
+//! [`Waveforms`], every report and assertion, how the run ended, and statistics. Or, through
+//! [`simulate_into`], the rows go to a [`WaveformSink`] as they are accepted (`vams run`
+//! streams them to its files) and the run gives a [`SimEnd`].
 //!
 //! Submodules: `signals` (drivers, projected waveforms, resolution), `process` (the
 //! instruction interpreter), `eval`/`ops`/`image` (expressions to values), `events` (delta
@@ -14,7 +16,7 @@
 use crate::analog::{AnalogOptions, AnalogSystem};
 use crate::design::Design;
 use crate::source::Span;
-use crate::waveform::Waveforms;
+use crate::waveform::{WaveformSink, Waveforms};
 
 mod analog_model;
 mod call;
@@ -165,6 +167,15 @@ pub struct SimResult {
     pub stats: SimStats,
 }
 
+/// How a run that recorded into a sink ended: [`SimResult`] without the waveforms, which
+/// went to the sink.
+#[derive(Clone, Debug)]
+pub struct SimEnd {
+    pub reports: Vec<Report>,
+    pub outcome: Outcome,
+    pub stats: SimStats,
+}
+
 /// Runs the design from its quiescent point to `options.stop`; `on_report` sees each report
 /// as it happens (for live printing).
 pub fn simulate(
@@ -190,18 +201,37 @@ pub fn simulate_keeping(
     options: &SimOptions,
     on_report: &mut dyn FnMut(&Report),
 ) -> Result<SimResult, Box<Failed>> {
-    let early = |error| {
-        Box::new(Failed {
+    let mut waveforms = Waveforms::default();
+    match simulate_into(design, options, &mut waveforms, on_report) {
+        Ok(end) => Ok(SimResult {
+            waveforms,
+            reports: end.reports,
+            outcome: end.outcome,
+            stats: end.stats,
+        }),
+        Err(error) => Err(Box::new(Failed {
             error,
-            partial: None,
-        })
-    };
-    let recorder = Recorder::new(design, &options.probes).map_err(early)?;
-    let mut analog = analog_system(design, options).map_err(early)?;
+            // Rows start at time 0, after the quiescent point.
+            partial: (!waveforms.times.is_empty()).then_some(waveforms),
+        })),
+    }
+}
+
+/// Runs the design like [`simulate`], handing every accepted time point to `sink` as it
+/// comes instead of keeping it. On an error, the rows before it have reached the sink (none
+/// when the error came before time 0: building the analog system, the quiescent point).
+pub fn simulate_into(
+    design: &Design,
+    options: &SimOptions,
+    sink: &mut dyn WaveformSink,
+    on_report: &mut dyn FnMut(&Report),
+) -> Result<SimEnd, SimError> {
+    let recorder = Recorder::new(design, &options.probes, options.stop, sink)?;
+    let mut analog = analog_system(design, options)?;
     if let Some(a) = analog.as_mut() {
         a.select_quantities(&wanted_quantities(design, &recorder));
     }
-    let sim = Simulation::start(design, options, analog, on_report).map_err(early)?;
+    let sim = Simulation::start(design, options, analog, on_report)?;
     sim.run(recorder, on_report)
 }
 

@@ -1,12 +1,15 @@
 //! Output of results: waveform files (CSV, VCD), plots of waveforms, and the atomic file
-//! writes they share.
+//! writes they share; `stream` writes them as a run goes (a [`crate::waveform::WaveformSink`]),
+//! `decimate` keeps a long run's plot in bounded memory.
 //!
-//! Reads results handed to it as plain data ([`crate::waveform::Waveforms`], plot panels);
-//! never reaches into the solver, the kernel or the extractor.
+//! Reads results handed to it as plain data ([`crate::waveform::Waveforms`], rows, plot
+//! panels); never reaches into the solver, the kernel or the extractor.
 
 pub mod atomic;
 pub mod csv;
+pub mod decimate;
 pub mod levels;
 pub mod plot;
+pub mod stream;
 pub mod vcd;
 pub mod waveplot;

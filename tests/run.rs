@@ -192,7 +192,7 @@ fn rc_step_matches_its_closed_form_in_every_output() {
         assert!((v - exact).abs() < 1e-2, "vout({t}) = {v}, exact {exact}");
     }
     let dump = std::fs::read_to_string(&vcd).unwrap();
-    assert!(dump.contains("$timescale 1 ns $end") && dump.contains("$scope module rc $end"));
+    assert!(dump.contains("$timescale 1 fs $end") && dump.contains("$scope module rc $end"));
     assert!(dump.contains(" vout $end") && dump.contains("wire 1"));
     assert!(std::fs::read_to_string(&svg).unwrap().contains("vout"));
 }

@@ -1,19 +1,15 @@
-//! `vams run`: elaborate, simulate to the stop time, print reports as they happen, write the
-//! waveform files and the plot, and close with a summary line.
+//! `vams run`: elaborate, simulate to the stop time, print reports as they happen, stream the
+//! waveform files and the plot's data as the run goes (`output::stream`), and close with a
+//! summary line.
 
-use std::io::Write;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::time::Instant;
 
 use clap::Args;
 use miette::Report;
 
-use crate::kernel::{Failed, Outcome, SimError, SimOptions, SimResult, SimStats, simulate_keeping};
-use crate::output::atomic::{commit, temp_path, write_atomically};
-use crate::output::csv::write_csv;
-use crate::output::vcd::write_vcd;
-use crate::output::waveplot::{default_groups, named_groups, plot_waveforms};
-use crate::waveform::Waveforms;
+use crate::kernel::{Outcome, SimEnd, SimError, SimOptions, SimStats, simulate_into};
+use crate::output::stream::{PlotRequest, Request, StreamError, Streams};
 
 use super::compile::{DesignArgs, compile, discard_at_exit};
 use super::error::CliError;
@@ -40,7 +36,7 @@ pub struct RunArgs {
     #[arg(long, value_name = "TIME", value_parser = parse_positive_time)]
     pub stop: Option<f64>,
     /// Write the waveforms to FILE, by extension: .csv (time and one column per probe) or .vcd
-    /// (for GTKWave, Surfer; 1 ns resolution). Repeatable.
+    /// (for GTKWave, Surfer; 1 fs resolution). Written as the run goes. Repeatable.
     #[arg(short = 'o', long = "out", value_name = "FILE", value_parser = output_path)]
     pub outputs: Vec<PathBuf>,
     /// Plot the waveforms to FILE (.svg or .png): stacked panels on a shared time axis.
@@ -182,47 +178,62 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
         }
         eprintln!("{}", format_report(r, &loaded.sources));
     };
-    check_writable(args)?;
-    let result = simulate_keeping(design, &options, &mut print);
-    if let Some(bar) = &bar {
-        bar.clear();
-    }
     // Without --panel, the testbench's own `-- vams: panel` comments lay out the plot.
     let file_panels = match declaring_file(loaded, &design.top) {
         Some(f) if panels.is_empty() => panel_comments(&loaded.sources, f),
         _ => Vec::new(),
     };
-    let result = match result {
-        Ok(result) => result,
-        Err(failed) => {
-            let Failed { error, partial } = *failed;
+    let request = Request {
+        outputs: args.outputs.clone(),
+        plot: args.plot.as_ref().map(|path| PlotRequest {
+            path: path.clone(),
+            panels: panels.clone(),
+            file_panels,
+        }),
+        top: design.top.clone(),
+    };
+    // Every output is created (as its temporary) before the run: a path that cannot be
+    // written fails now, not after the simulation.
+    let mut streams = Streams::create(&request).map_err(stream_error)?;
+    super::interrupt::remove_on_exit(streams.temporaries());
+    let result = simulate_into(design, &options, &mut streams, &mut print);
+    if let Some(bar) = &bar {
+        bar.clear();
+    }
+    let title = |partial: Option<&str>| match partial {
+        Some(p) => format!("{} ({p})", design.top),
+        None => format!("{} (stop {})", design.top, format_time(stop)),
+    };
+    let end = match result {
+        Ok(end) => end,
+        Err(error) => {
+            if let Some(failure) = streams.take_failure() {
+                streams.abandon();
+                return Err(stream_error(failure));
+            }
             eprint!("{}", render_sim_error(&error, &loaded.sources));
             // What the run computed before the error is kept: the waveforms up to it.
-            if let Some(w) = partial.filter(|w| !w.times.is_empty()) {
-                let last = w.times.last().copied().unwrap_or(0.0);
-                let why = match error {
-                    SimError::Interrupted { .. } => "interrupted",
-                    _ => "stopped by an error",
-                };
-                let ending = format!("{why} at t = {}", format_time(last));
-                let written = write_outputs(
-                    args,
-                    &w,
-                    &design.top,
-                    stop,
-                    &panels,
-                    &file_panels,
-                    Some(&ending),
-                )?;
-                if !written.is_empty() {
-                    let last = w.times.last().copied().unwrap_or(0.0);
-                    eprintln!(
-                        "wrote the waveforms up to t = {} to {}",
-                        format_time(last),
-                        written.join(", ")
-                    );
+            match streams.last_time() {
+                Some(last) => {
+                    let why = match error {
+                        SimError::Interrupted { .. } => "interrupted",
+                        _ => "stopped by an error",
+                    };
+                    let ending = format!("{why} at t = {}", format_time(last));
+                    let written = streams
+                        .finish(Some(&ending), &title(Some(&ending)))
+                        .map_err(stream_error)?;
+                    if !written.is_empty() {
+                        eprintln!(
+                            "wrote the waveforms up to t = {} to {}",
+                            format_time(last),
+                            names(&written)
+                        );
+                    }
                 }
+                None => streams.abandon(),
             }
+            super::interrupt::remove_on_exit(Vec::new());
             let top = design.top.clone();
             return Err(match error {
                 SimError::Interrupted { .. } => CliError::Interrupted { top },
@@ -231,43 +242,39 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
             .into());
         }
     };
-    let ending = match result.outcome {
+    let ending = match end.outcome {
         Outcome::Failed { time } => Some(format!(
             "stopped by an assertion of severity failure at t = {}",
             format_time(time)
         )),
         Outcome::Finished | Outcome::Stopped { .. } => None,
     };
-    let written = write_outputs(
-        args,
-        &result.waveforms,
-        &design.top,
-        stop,
-        &panels,
-        &file_panels,
-        ending.as_deref(),
-    )?;
+    let written = streams
+        .finish(ending.as_deref(), &title(ending.as_deref()))
+        .map_err(stream_error)?;
+    super::interrupt::remove_on_exit(Vec::new());
+    let written: Vec<String> = written.iter().map(|p| p.display().to_string()).collect();
     eprintln!(
         "{}",
         summary(
             &design.top,
             stop,
-            &result,
+            &end,
             started.elapsed().as_secs_f64(),
             &written
         )
     );
     if args.stats {
-        eprint!("{}", stats_table(&result.stats));
+        eprint!("{}", stats_table(&end.stats));
     }
-    let outcome = result.outcome;
-    let failure = result
+    let outcome = end.outcome;
+    let failure = end
         .reports
         .iter()
         .rev()
         .find(|r| r.severity == crate::kernel::Severity::Failure)
         .map(|r| r.message.clone());
-    discard_at_exit((compiled, result));
+    discard_at_exit((compiled, end));
     if let Outcome::Failed { time } = outcome {
         let message = failure.unwrap_or_else(|| "assertion of severity failure".into());
         return Err(CliError::RunFailed {
@@ -279,105 +286,29 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
     Ok(())
 }
 
-/// Fails before the run when an output cannot be written (a missing directory, no
-/// permission): by creating and removing the temporary file its atomic write will use.
-fn check_writable(args: &RunArgs) -> Result<(), CliError> {
-    for path in args.outputs.iter().chain(&args.plot) {
-        let temp = temp_path(path);
-        std::fs::File::create(&temp).map_err(|e| write_error(path, e))?;
-        let _ = std::fs::remove_file(&temp);
-    }
-    Ok(())
+/// Paths for a message, comma separated.
+fn names(paths: &[PathBuf]) -> String {
+    let names: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
+    names.join(", ")
 }
 
-fn write_error(path: &Path, e: impl ToString) -> CliError {
-    CliError::Write {
-        path: path.display().to_string(),
-        reason: e.to_string(),
+/// The command's diagnostic for an output that failed.
+fn stream_error(e: StreamError) -> Report {
+    match e {
+        StreamError::Write { path, source } => CliError::Write {
+            path: path.display().to_string(),
+            reason: source.to_string(),
+        }
+        .into(),
+        StreamError::UnknownPanel { name, recorded } => {
+            CliError::UnknownPanelName { name, recorded }.into()
+        }
+        StreamError::Plot(e) => e.into(),
     }
-}
-
-/// Column indices of the file's `-- vams: panel` groups; names not recorded (the user chose
-/// other probes) are left out, and so are panels left empty.
-fn file_groups(waveforms: &Waveforms, file_panels: &[Vec<String>]) -> Vec<Vec<usize>> {
-    file_panels
-        .iter()
-        .map(|names| {
-            names
-                .iter()
-                .filter_map(|n| waveforms.columns.iter().position(|c| c.name == *n))
-                .collect::<Vec<usize>>()
-        })
-        .filter(|g| !g.is_empty())
-        .collect()
-}
-
-/// Writes every `--out` file and the plot; returns the paths written.
-/// Writes every requested output. `partial` says why a run ended early ("interrupted at t =
-/// 2.5 s"): each file then says so (a last `# partial: ...` line in CSV, a `$comment` in VCD,
-/// the plot's title), so that a script can tell it from a complete run.
-fn write_outputs(
-    args: &RunArgs,
-    waveforms: &Waveforms,
-    top: &str,
-    stop: f64,
-    panels: &[Vec<String>],
-    file_panels: &[Vec<String>],
-    partial: Option<&str>,
-) -> Result<Vec<String>, Report> {
-    let mut written = Vec::new();
-    let note = partial.map(|p| format!("partial: {p}"));
-    for path in &args.outputs {
-        let is_vcd = path
-            .extension()
-            .is_some_and(|e| e.eq_ignore_ascii_case("vcd"));
-        write_atomically(path, |w| {
-            if is_vcd {
-                write_vcd(w, waveforms, top, note.as_deref())
-            } else {
-                write_csv(w, waveforms)?;
-                match &note {
-                    Some(n) => writeln!(w, "# {n}"),
-                    None => Ok(()),
-                }
-            }
-        })
-        .map_err(|e| write_error(path, e))?;
-        written.push(path.display().to_string());
-    }
-    if let Some(path) = &args.plot {
-        let from_file = file_groups(waveforms, file_panels);
-        let groups = if !panels.is_empty() {
-            named_groups(waveforms, panels).map_err(|name| CliError::UnknownPanelName {
-                name,
-                recorded: waveforms
-                    .columns
-                    .iter()
-                    .map(|c| c.name.as_str())
-                    .collect::<Vec<_>>()
-                    .join(", "),
-            })?
-        } else if !from_file.is_empty() {
-            from_file
-        } else {
-            default_groups(waveforms)
-        };
-        let title = match partial {
-            Some(p) => format!("{top} ({p})"),
-            None => format!("{top} (stop {})", format_time(stop)),
-        };
-        let temp = temp_path(path);
-        plot_waveforms(&temp, &title, waveforms, &groups).inspect_err(|_| {
-            let _ = std::fs::remove_file(&temp);
-        })?;
-        commit(&temp, path).map_err(|e| write_error(path, e))?;
-        written.push(path.display().to_string());
-    }
-    Ok(written)
 }
 
 /// The closing line: simulated and wall time, steps, Newton iterations, files written.
-pub fn summary(top: &str, stop: f64, result: &SimResult, wall: f64, written: &[String]) -> String {
+pub fn summary(top: &str, stop: f64, result: &SimEnd, wall: f64, written: &[String]) -> String {
     let ended = match result.outcome {
         Outcome::Finished => format!("simulated {top} to {}", format_time(stop)),
         Outcome::Stopped { time } => format!(
@@ -440,82 +371,9 @@ mod tests {
         assert!(probe_list(&[], &groups).is_empty());
     }
 
-    fn args(outputs: Vec<PathBuf>, plot: Option<PathBuf>) -> RunArgs {
-        RunArgs {
-            design: DesignArgs {
-                paths: vec![],
-                libraries: vec![],
-                top: None,
-                generics: vec![],
-                params: None,
-            },
-            stop: None,
-            outputs,
-            plot,
-            reltol: 1e-3,
-            abstol: None,
-            max_step: None,
-            probe: vec![],
-            keep_unknowns: false,
-            panel: vec![],
-            stats: false,
-        }
-    }
-
-    #[test]
-    fn writes_every_output_and_names_them() {
-        let dir = tempfile::tempdir().unwrap();
-        let (csv, vcd, svg) = (
-            dir.path().join("w.csv"),
-            dir.path().join("w.vcd"),
-            dir.path().join("w.svg"),
-        );
-        let wf = crate::output::csv::tests::synthetic();
-        let a = args(vec![csv.clone(), vcd.clone()], Some(svg.clone()));
-        let written = write_outputs(&a, &wf, "tb", 1.0, &[], &[], None).unwrap();
-        assert_eq!(written.len(), 3);
-        assert!(
-            std::fs::read_to_string(&csv)
-                .unwrap()
-                .starts_with("time,vout,")
-        );
-        assert!(
-            std::fs::read_to_string(&vcd)
-                .unwrap()
-                .contains("$scope module tb $end")
-        );
-        assert!(
-            std::fs::read_to_string(&svg)
-                .unwrap()
-                .contains("tb (stop 1 s)")
-        );
-        // Only the three targets: no temporary left behind.
-        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 3);
-    }
-
-    #[test]
-    fn an_unknown_panel_name_lists_what_was_recorded_and_keeps_the_old_plot() {
-        let dir = tempfile::tempdir().unwrap();
-        let svg = dir.path().join("w.svg");
-        std::fs::write(&svg, "old").unwrap();
-        let wf = crate::output::csv::tests::synthetic();
-        let a = args(vec![], Some(svg.clone()));
-        let err = write_outputs(&a, &wf, "tb", 1.0, &[vec!["vot".into()]], &[], None).unwrap_err();
-        let text = format!("{err:?}");
-        assert!(
-            text.contains("vot") && text.contains("vout, dut.u_ic.ov"),
-            "{text}"
-        );
-        assert_eq!(std::fs::read_to_string(&svg).unwrap(), "old");
-        let missing_dir = args(vec![dir.path().join("no/dir/w.csv")], None);
-        let err = write_outputs(&missing_dir, &wf, "tb", 1.0, &[], &[], None).unwrap_err();
-        assert!(format!("{err:?}").contains("cannot write"));
-    }
-
     #[test]
     fn summary_and_stats_name_every_figure() {
-        let result = SimResult {
-            waveforms: Waveforms::default(),
+        let result = SimEnd {
             reports: vec![],
             outcome: Outcome::Finished,
             stats: SimStats {

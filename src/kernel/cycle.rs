@@ -19,7 +19,7 @@ use super::events::{AnalogView, EventKernel};
 use super::progress::Throttle;
 use super::record::Recorder;
 use super::solve_error::solve_error;
-use super::{Failed, Outcome, Report, SimOptions, SimResult, SimStats};
+use super::{Outcome, Report, SimEnd, SimOptions, SimStats};
 
 /// Absolute tolerance of unknowns without a tolerance group (when `--abstol` is not given).
 pub(crate) const DEFAULT_ABSTOL: f64 = 1e-9;
@@ -342,22 +342,16 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         quantities.chain(signals).collect()
     }
 
-    /// Runs from time 0 to the stop time (or a stop or failure). On an error, the waveforms
-    /// recorded up to it come back with it.
+    /// Runs from time 0 to the stop time (or a stop or failure), every accepted point going
+    /// to `recorder`'s sink as it comes.
     pub fn run(
         mut self,
         mut recorder: Recorder,
         on_report: &mut dyn FnMut(&Report),
-    ) -> Result<SimResult, Box<Failed>> {
-        if let Err(error) = self.run_recording(&mut recorder, on_report) {
-            return Err(Box::new(Failed {
-                error,
-                partial: Some(recorder.waveforms),
-            }));
-        }
+    ) -> Result<SimEnd, SimError> {
+        self.run_recording(&mut recorder, on_report)?;
         let stats = self.stats();
-        Ok(SimResult {
-            waveforms: recorder.waveforms,
+        Ok(SimEnd {
             reports: std::mem::take(&mut self.kernel.reports),
             outcome: self.outcome.unwrap_or(Outcome::Finished),
             stats,
@@ -370,7 +364,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         on_report: &mut dyn FnMut(&Report),
     ) -> Result<(), SimError> {
         let mut t = 0.0;
-        recorder.record(t, &self.values, &self.kernel.signals.states);
+        recorder.record(t, &self.values, &self.kernel.signals.states)?;
         // Synchronisations at the current time point: a crossing that flips back at every
         // analog restart would otherwise loop here forever.
         let mut settling = (t, 0usize);
@@ -402,7 +396,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                     });
                 }
                 if recorder.last_time() != Some(t) {
-                    recorder.record(t, &self.values, &self.kernel.signals.states);
+                    recorder.record(t, &self.values, &self.kernel.signals.states)?;
                 }
                 let events = self.kernel.events;
                 let view = AnalogView {
@@ -412,7 +406,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                 self.outcome = self.kernel.run_time_point(t, &view, on_report)?;
                 let restarted = self.synchronise(t)?;
                 if restarted || self.kernel.events != events {
-                    recorder.record(t, &self.values, &self.kernel.signals.states);
+                    recorder.record(t, &self.values, &self.kernel.signals.states)?;
                 }
                 continue;
             }
@@ -433,7 +427,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         }
         // Digital-only runs end with the last event: close the record at the end time.
         if recorder.last_time().is_some_and(|last| last < t) {
-            recorder.record(t, &self.values, &self.kernel.signals.states);
+            recorder.record(t, &self.values, &self.kernel.signals.states)?;
         }
         Ok(())
     }
@@ -466,7 +460,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                 Advance::StepAccepted(t1) => {
                     self.refresh()?;
                     let crossed = self.sync_above(t1);
-                    recorder.record(t1, &self.values, &self.kernel.signals.states);
+                    recorder.record(t1, &self.values, &self.kernel.signals.states)?;
                     self.progress.tick(t1);
                     self.check_cancelled(t1)?;
                     if crossed {
@@ -476,7 +470,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                 Advance::Reached(t1) => {
                     self.refresh()?;
                     self.sync_above(t1);
-                    recorder.record(t1, &self.values, &self.kernel.signals.states);
+                    recorder.record(t1, &self.values, &self.kernel.signals.states)?;
                     return Ok(t1);
                 }
                 Advance::Root {
@@ -490,7 +484,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                         self.force_above(tr, index, rising);
                     }
                     self.refresh()?;
-                    recorder.record(tr, &self.values, &self.kernel.signals.states);
+                    recorder.record(tr, &self.values, &self.kernel.signals.states)?;
                     return Ok(tr);
                 }
             }

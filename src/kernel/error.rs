@@ -184,6 +184,14 @@ pub enum SimError {
         help("the stop time must be positive and finite, tolerances positive")
     )]
     BadOption { message: String },
+
+    /// The sink the rows go to stopped taking them (an output file that cannot be written).
+    #[error("the waveforms cannot be recorded: {message}")]
+    #[diagnostic(
+        code(vams::sim::output),
+        help("the run stops where its output fails; see the message for the file")
+    )]
+    Output { message: String },
 }
 
 fn equation_suffix(equation: &Option<String>) -> String {
@@ -219,6 +227,7 @@ impl Located for SimError {
             SimError::UnknownProbe { .. }
             | SimError::BadOption { .. }
             | SimError::Interrupted { .. }
+            | SimError::Output { .. }
             | SimError::SettleLimit { .. } => Span::default(),
         }
     }

@@ -1,7 +1,9 @@
-//! Probes and output rows: which quantities and signals are recorded, one row per time point.
+//! Probes and output rows: which quantities and signals are recorded, one row per time point,
+//! handed to a [`WaveformSink`] as each point is accepted (nothing is kept here but the row
+//! being built and the last time).
 
 use crate::design::{Design, QuantityId, SignalId, SignalKind, Type};
-use crate::waveform::{Column, ColumnKind, Waveforms};
+use crate::waveform::{Column, ColumnKind, Header, WaveformSink};
 
 use super::error::SimError;
 use super::signals::SignalState;
@@ -12,15 +14,24 @@ enum Probe {
     Signal(SignalId),
 }
 
-pub(crate) struct Recorder {
+pub(crate) struct Recorder<'s> {
     probes: Vec<Probe>,
-    pub waveforms: Waveforms,
+    sink: &'s mut dyn WaveformSink,
+    /// The row being handed over, reused.
+    row: Vec<f64>,
+    last: Option<f64>,
 }
 
-impl Recorder {
-    /// Resolves `names`; without names, every quantity except terminal potentials and
-    /// auxiliary quantities (names with a `'`), and every explicit scalar signal.
-    pub fn new(design: &Design, names: &[String]) -> Result<Recorder, SimError> {
+impl<'s> Recorder<'s> {
+    /// Resolves `names` and tells `sink` the columns; without names, every quantity except
+    /// terminal potentials and auxiliary quantities (names with a `'`), and every explicit
+    /// scalar signal.
+    pub fn new(
+        design: &Design,
+        names: &[String],
+        stop: f64,
+        sink: &'s mut dyn WaveformSink,
+    ) -> Result<Recorder<'s>, SimError> {
         let probes = if names.is_empty() {
             default_probes(design)
         } else {
@@ -52,24 +63,30 @@ impl Recorder {
                 }
             })
             .collect();
+        sink.start(&Header { columns, stop })
+            .map_err(output_error)?;
         Ok(Recorder {
+            row: Vec::with_capacity(probes.len()),
             probes,
-            waveforms: Waveforms {
-                times: Vec::new(),
-                columns,
-            },
+            sink,
+            last: None,
         })
     }
 
-    /// Appends a row; `quantities` by `QuantityId`.
-    pub fn record(&mut self, t: f64, quantities: &[f64], signals: &[SignalState]) {
-        self.waveforms.times.push(t);
-        for (p, col) in self.probes.iter().zip(&mut self.waveforms.columns) {
-            col.values.push(match *p {
-                Probe::Quantity(q) => quantities[q.index()],
-                Probe::Signal(s) => signals[s.index()].value.as_f64().unwrap_or(f64::NAN),
-            });
-        }
+    /// Hands a row to the sink; `quantities` by `QuantityId`.
+    pub fn record(
+        &mut self,
+        t: f64,
+        quantities: &[f64],
+        signals: &[SignalState],
+    ) -> Result<(), SimError> {
+        self.row.clear();
+        self.row.extend(self.probes.iter().map(|p| match *p {
+            Probe::Quantity(q) => quantities[q.index()],
+            Probe::Signal(s) => signals[s.index()].value.as_f64().unwrap_or(f64::NAN),
+        }));
+        self.last = Some(t);
+        self.sink.row(t, &self.row).map_err(output_error)
     }
 
     /// The recorded quantities.
@@ -82,8 +99,12 @@ impl Recorder {
 
     /// Time of the last row.
     pub fn last_time(&self) -> Option<f64> {
-        self.waveforms.times.last().copied()
+        self.last
     }
+}
+
+fn output_error(e: crate::waveform::SinkError) -> SimError {
+    SimError::Output { message: e.0 }
 }
 
 fn default_probes(design: &Design) -> Vec<Probe> {

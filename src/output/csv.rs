@@ -5,7 +5,7 @@
 
 use std::io::{self, Write};
 
-use crate::waveform::Waveforms;
+use crate::waveform::{Column, Waveforms};
 
 /// The shortest text that parses back to exactly `v`: plain decimals for ordinary magnitudes,
 /// scientific notation for very small and very large ones.
@@ -111,35 +111,69 @@ fn field(name: &str) -> String {
     }
 }
 
+/// CSV written row by row as a run accepts its points ([`write_csv`] for a whole record):
+/// the header on creation, one line per [`row`](Self::row), an optional closing comment line
+/// (a partial run's `# partial: ...`) on [`finish`](Self::finish).
+pub struct CsvWriter<W: Write> {
+    out: W,
+    /// The line being built, reused.
+    line: String,
+}
+
+impl<W: Write> CsvWriter<W> {
+    /// Writes the header `time,<names>` for `columns`.
+    pub fn new(mut out: W, columns: &[Column]) -> io::Result<Self> {
+        let mut header = String::from("time");
+        for column in columns {
+            header.push(',');
+            header.push_str(&field(&column.name));
+        }
+        header.push('\n');
+        out.write_all(header.as_bytes())?;
+        Ok(CsvWriter {
+            out,
+            line: String::new(),
+        })
+    }
+
+    /// One line: the time, then `values` in column order.
+    pub fn row(&mut self, time: f64, values: impl IntoIterator<Item = f64>) -> io::Result<()> {
+        let line = &mut self.line;
+        line.clear();
+        push_number(line, time);
+        for v in values {
+            line.push(',');
+            push_number(line, v);
+        }
+        line.push('\n');
+        self.out.write_all(line.as_bytes())
+    }
+
+    /// Writes `# <comment>` as the last line, if given, and gives the output back.
+    pub fn finish(mut self, comment: Option<&str>) -> io::Result<W> {
+        if let Some(c) = comment {
+            writeln!(self.out, "# {c}")?;
+        }
+        Ok(self.out)
+    }
+}
+
 /// Writes `waveforms` as CSV.
 pub fn write_csv(out: &mut impl Write, waveforms: &Waveforms) -> io::Result<()> {
-    let mut header = String::from("time");
-    for column in &waveforms.columns {
-        header.push(',');
-        header.push_str(&field(&column.name));
-    }
-    writeln!(out, "{header}")?;
-    let mut row = String::new();
+    let mut writer = CsvWriter::new(out, &waveforms.columns)?;
     for (k, &t) in waveforms.times.iter().enumerate() {
-        row.clear();
-        push_number(&mut row, t);
-        for column in &waveforms.columns {
-            row.push(',');
-            // `Waveforms`' invariant: every column has one value per time point.
-            let v = column.values.get(k).copied().unwrap_or(f64::NAN);
-            push_number(&mut row, v);
-        }
-        row.push('\n');
-        out.write_all(row.as_bytes())?;
+        // `Waveforms`' invariant: every column has one value per time point.
+        let values = waveforms.columns.iter().map(|c| c.values.get(k).copied());
+        writer.row(t, values.map(|v| v.unwrap_or(f64::NAN)))?;
     }
-    Ok(())
+    writer.finish(None).map(|_| ())
 }
 
 #[cfg(test)]
 pub(crate) mod tests {
     use super::*;
     use crate::design::Type;
-    use crate::waveform::{Column, ColumnKind};
+    use crate::waveform::ColumnKind;
 
     /// A small record: a decaying voltage, a boolean, a std_ulogic and a three-state enum.
     pub(crate) fn synthetic() -> Waveforms {

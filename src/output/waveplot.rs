@@ -35,8 +35,7 @@ fn group_key(column: &Column) -> GroupKey {
 }
 
 /// Column indices per panel in the default layout.
-pub fn default_groups(waveforms: &Waveforms) -> Vec<Vec<usize>> {
-    let columns = &waveforms.columns;
+pub fn default_groups(columns: &[Column]) -> Vec<Vec<usize>> {
     // A testbench exposes what matters at its top level (`vref`, `i_motor`, `ov`); with many
     // probes, the hierarchy below it would drown those in a plot.
     let top_level =
@@ -65,18 +64,14 @@ pub fn default_groups(waveforms: &Waveforms) -> Vec<Vec<usize>> {
 
 /// Column indices per panel for explicit groups of names; `Err(name)` for a name that is not
 /// a column.
-pub fn named_groups(
-    waveforms: &Waveforms,
-    groups: &[Vec<String>],
-) -> Result<Vec<Vec<usize>>, String> {
+pub fn named_groups(columns: &[Column], groups: &[Vec<String>]) -> Result<Vec<Vec<usize>>, String> {
     groups
         .iter()
         .map(|names| {
             names
                 .iter()
                 .map(|name| {
-                    waveforms
-                        .columns
+                    columns
                         .iter()
                         .position(|c| c.name == *name)
                         .ok_or_else(|| name.clone())
@@ -86,39 +81,77 @@ pub fn named_groups(
         .collect()
 }
 
-fn trace(waveforms: &Waveforms, column: &Column) -> Trace {
+/// The panels of a plot: the named `panels` (`--panel`) when there are some, else the
+/// testbench's `-- vams: panel` comments (`file_panels`; names not recorded left out, and so
+/// are panels left empty), else the default layout. `Err(name)` for a `--panel` name that is
+/// not a column.
+pub fn layout(
+    columns: &[Column],
+    panels: &[Vec<String>],
+    file_panels: &[Vec<String>],
+) -> Result<Vec<Vec<usize>>, String> {
+    if !panels.is_empty() {
+        return named_groups(columns, panels);
+    }
+    let from_file: Vec<Vec<usize>> = file_panels
+        .iter()
+        .map(|names| {
+            names
+                .iter()
+                .filter_map(|n| columns.iter().position(|c| c.name == *n))
+                .collect::<Vec<usize>>()
+        })
+        .filter(|g| !g.is_empty())
+        .collect();
+    if from_file.is_empty() {
+        Ok(default_groups(columns))
+    } else {
+        Ok(from_file)
+    }
+}
+
+/// A column's trace from its points `(time, value)`.
+fn trace(column: &Column, points: Vec<(f64, f64)>) -> Trace {
     let kind = presentation(column);
-    let points = |f: &dyn Fn(f64) -> f64| -> Vec<(f64, f64)> {
-        waveforms
-            .times
-            .iter()
-            .zip(&column.values)
-            .map(|(&t, &v)| (t, f(v)))
-            .collect()
-    };
     match kind {
         Presentation::Bit | Presentation::StdLogic => {
-            Trace::logic(column.name.clone(), points(&|v| plot_level(kind, v)))
+            let levels = points.into_iter().map(|(t, v)| (t, plot_level(kind, v)));
+            Trace::logic(column.name.clone(), levels.collect())
         }
         _ => {
             let unit = match &column.kind {
                 ColumnKind::Quantity { unit } => unit.clone().unwrap_or_default(),
                 ColumnKind::Signal { .. } => String::new(),
             };
-            Trace::analog(column.name.clone(), unit, points(&|v| v))
+            Trace::analog(column.name.clone(), unit, points)
         }
     }
 }
 
 /// The panels for the given groups of column indices.
 pub fn panels(waveforms: &Waveforms, groups: &[Vec<usize>]) -> Vec<Panel> {
+    let points = |c: usize| -> Vec<(f64, f64)> {
+        let values = waveforms.columns[c].values.iter().copied();
+        waveforms.times.iter().copied().zip(values).collect()
+    };
+    panels_of(&waveforms.columns, &points, groups)
+}
+
+/// The panels for the given groups of column indices, the points of column `c` from
+/// `points(c)`: whole waveforms, or the plot's bounded copy of a long run
+/// ([`super::decimate::Decimator`]).
+pub fn panels_of(
+    columns: &[Column],
+    points: &dyn Fn(usize) -> Vec<(f64, f64)>,
+    groups: &[Vec<usize>],
+) -> Vec<Panel> {
     groups
         .iter()
         .map(|group| {
             let traces: Vec<Trace> = group
                 .iter()
-                .filter_map(|&c| waveforms.columns.get(c))
-                .map(|column| trace(waveforms, column))
+                .filter(|&&c| c < columns.len())
+                .map(|&c| trace(&columns[c], points(c)))
                 .collect();
             // A long list of names makes an unreadable axis label; the legend names them.
             let label = if traces.len() > 3 {
@@ -186,7 +219,7 @@ mod tests {
     #[test]
     fn one_panel_per_probe_up_to_six() {
         let wf = synthetic();
-        assert_eq!(default_groups(&wf), [[0], [1], [2], [3], [4]]);
+        assert_eq!(default_groups(&wf.columns), [[0], [1], [2], [3], [4]]);
     }
 
     #[test]
@@ -194,7 +227,7 @@ mod tests {
         let wf = many();
         // Strings are not drawable and are left out.
         assert_eq!(
-            default_groups(&wf),
+            default_groups(&wf.columns),
             [vec![0, 2, 4], vec![1, 5], vec![3], vec![6]]
         );
     }
@@ -206,15 +239,18 @@ mod tests {
             vec!["vref".to_string(), "vfb".to_string()],
             vec!["ov".to_string()],
         ];
-        assert_eq!(named_groups(&wf, &groups).unwrap(), [vec![0, 2], vec![6]]);
+        assert_eq!(
+            named_groups(&wf.columns, &groups).unwrap(),
+            [vec![0, 2], vec![6]]
+        );
         let bad = vec![vec!["vref".to_string(), "vbf".to_string()]];
-        assert_eq!(named_groups(&wf, &bad).unwrap_err(), "vbf");
+        assert_eq!(named_groups(&wf.columns, &bad).unwrap_err(), "vbf");
     }
 
     #[test]
     fn logic_signals_become_logic_traces_and_quantities_keep_units() {
         let wf = synthetic();
-        let panels = panels(&wf, &default_groups(&wf));
+        let panels = panels(&wf, &default_groups(&wf.columns));
         let kinds: Vec<(TraceKind, &str)> = panels
             .iter()
             .map(|p| (p.traces[0].kind, p.traces[0].unit.as_str()))
@@ -239,7 +275,7 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let path = dir.path().join("run.svg");
         let wf = many();
-        plot_waveforms(&path, "tb (stop 1 s)", &wf, &default_groups(&wf)).unwrap();
+        plot_waveforms(&path, "tb (stop 1 s)", &wf, &default_groups(&wf.columns)).unwrap();
         let svg = std::fs::read_to_string(&path).unwrap();
         for name in ["vref", "i_motor", "ov", "tb (stop 1 s)"] {
             assert!(svg.contains(name), "{name} missing");

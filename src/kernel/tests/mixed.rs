@@ -13,6 +13,7 @@ use crate::kernel::cycle::Simulation;
 use crate::kernel::record::Recorder;
 use crate::kernel::{Outcome, SimOptions, SimResult, simulate};
 use crate::source::Span;
+use crate::waveform::Waveforms;
 
 fn quantity(d: &mut Design, name: &str) -> QuantityId {
     d.quantities.push(Quantity {
@@ -74,13 +75,18 @@ fn real(x: f64) -> Expr {
 }
 
 fn run_with<A: AnalogModel>(d: &Design, options: &SimOptions, model: A) -> SimResult {
-    let recorder = Recorder::new(d, &options.probes).expect("probes exist");
-    Simulation::start(d, options, Some(model), &mut |_| {})
-        .and_then(|sim| {
-            sim.run(recorder, &mut |_| {})
-                .map_err(|failed| failed.error)
-        })
-        .expect("simulation runs")
+    let mut waveforms = Waveforms::default();
+    let recorder =
+        Recorder::new(d, &options.probes, options.stop, &mut waveforms).expect("probes exist");
+    let end = Simulation::start(d, options, Some(model), &mut |_| {})
+        .and_then(|sim| sim.run(recorder, &mut |_| {}))
+        .expect("simulation runs");
+    SimResult {
+        waveforms,
+        reports: end.reports,
+        outcome: end.outcome,
+        stats: end.stats,
+    }
 }
 
 fn report_times(r: &SimResult, message: &str) -> Vec<f64> {
@@ -453,12 +459,10 @@ fn a_solver_failure_names_the_unknown_and_the_time() {
         stop: 2.0,
         ..SimOptions::default()
     };
-    let recorder = Recorder::new(&d, &[]).expect("probes");
-    let result =
-        Simulation::start(&d, &options, Some(ExprDae::new(&d)), &mut |_| {}).and_then(|sim| {
-            sim.run(recorder, &mut |_| {})
-                .map_err(|failed| failed.error)
-        });
+    let mut waveforms = Waveforms::default();
+    let recorder = Recorder::new(&d, &[], options.stop, &mut waveforms).expect("probes");
+    let result = Simulation::start(&d, &options, Some(ExprDae::new(&d)), &mut |_| {})
+        .and_then(|sim| sim.run(recorder, &mut |_| {}));
     match result {
         Err(crate::kernel::SimError::Solve { time, unknowns, .. }) => {
             assert!((0.9..=1.0).contains(&time), "failed at {time}");

@@ -116,7 +116,7 @@ fn history<'a>(dump: &'a Dump, id: &str) -> Vec<(u64, &'a str)> {
 #[test]
 fn header_declares_every_probe_in_its_scope_with_its_kind() {
     let (_, dump) = written();
-    assert_eq!(dump.timescale, "1 ns");
+    assert_eq!(dump.timescale, "1 fs");
     assert_eq!(dump.vars.len(), 5);
     let types: Vec<(&str, u32)> = [
         ("tb_servo", "vout"),
@@ -144,32 +144,19 @@ fn header_declares_every_probe_in_its_scope_with_its_kind() {
 }
 
 #[test]
-fn changes_only_with_collapsed_nanoseconds() {
+fn changes_only_with_collapsed_discontinuities() {
     let (wf, dump) = written();
     // Times 0, 1 ms, 2 ms (twice: the before/after pair collapses), 100 ms, 1/3 s.
-    let stamps = [0u64, 1_000_000, 2_000_000, 100_000_000, 333_333_333];
+    let stamps = [0u64, MS, 2 * MS, 100 * MS, 333_333_333_333_333];
     let ov = history(&dump, id_of(&dump, "tb_servo.dut.u_ic", "ov"));
-    assert_eq!(ov, [(0, "0"), (2_000_000, "1"), (333_333_333, "0")]);
+    assert_eq!(ov, [(0, "0"), (2 * MS, "1"), (333_333_333_333_333, "0")]);
     let en = history(&dump, id_of(&dump, "tb_servo.dut.u_ic", "en"));
     // U, 0, (1 then) Z, H -> x 0 z 1; the final H repeats and is not written again.
-    assert_eq!(
-        en,
-        [
-            (0, "x"),
-            (1_000_000, "0"),
-            (2_000_000, "z"),
-            (100_000_000, "1")
-        ]
-    );
+    assert_eq!(en, [(0, "x"), (MS, "0"), (2 * MS, "z"), (100 * MS, "1")]);
     let state = history(&dump, id_of(&dump, "tb_servo.dut", "state"));
     assert_eq!(
         state,
-        [
-            (0, "b0"),
-            (1_000_000, "b1"),
-            (2_000_000, "b10"),
-            (100_000_000, "b0")
-        ]
+        [(0, "b0"), (MS, "b1"), (2 * MS, "b10"), (100 * MS, "b0")]
     );
     // Reals read back exactly, at every distinct stamp (all values differ).
     let vout = history(&dump, id_of(&dump, "tb_servo", "vout"));
@@ -181,6 +168,27 @@ fn changes_only_with_collapsed_nanoseconds() {
     }
     let i = history(&dump, id_of(&dump, "tb_servo.dut.u_motor", "i"));
     assert_eq!(i[0].1, "r-2e-9");
+}
+
+/// A millisecond in femtoseconds, the VCD's unit.
+const MS: u64 = 1_000_000_000_000;
+
+/// Events 1 fs apart stay apart and in order; long runs take a coarser unit.
+#[test]
+fn femtosecond_stamps_and_units_for_long_runs() {
+    let mut wf = synthetic();
+    wf.times = vec![0.0, 1e-15, 2e-15, 2e-15, 0.009, 6.0];
+    let mut out = Vec::new();
+    write_vcd(&mut out, &wf, "tb", None).unwrap();
+    let dump = parse(&String::from_utf8(out).unwrap());
+    let ov = history(&dump, id_of(&dump, "tb.dut.u_ic", "ov"));
+    assert_eq!(ov, [(0, "0"), (2, "1"), (6000 * MS, "0")]);
+    let state = history(&dump, id_of(&dump, "tb.dut", "state"));
+    assert_eq!(state, [(0, "b0"), (1, "b1"), (2, "b10"), (9 * MS, "b0")]);
+    assert_eq!(time_unit(6.0), (1e-15, "fs"));
+    assert_eq!(time_unit(1e5), (1e-12, "ps"));
+    assert_eq!(time_unit(1e9), (1e-9, "ns"));
+    assert_eq!(time_unit(1e30), (1.0, "s"));
 }
 
 #[test]
