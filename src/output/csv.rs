@@ -81,7 +81,10 @@ fn shortest_digits(text: &str, digits: &mut [u8; 24]) -> (usize, i32) {
 
 /// ASCII digits appended to `out`.
 fn push_ascii(out: &mut String, digits: &[u8]) {
-    out.extend(digits.iter().map(|&b| b as char));
+    // ASCII digits are UTF-8; one copy instead of a push per character.
+    if let Ok(text) = std::str::from_utf8(digits) {
+        out.push_str(text);
+    }
 }
 
 /// `digits` with the first at decimal `exponent`, written without an exponent.
@@ -118,6 +121,11 @@ pub struct CsvWriter<W: Write> {
     out: W,
     /// The line being built, reused.
     line: String,
+    /// Per cell of a line (the time, then each column): the bits of the last value written
+    /// and its text, reused while the value repeats (most cells of an event-heavy run: the
+    /// before/after rows of an event share their time and quantities, and most signals keep
+    /// their values).
+    cells: Vec<(Option<u64>, String)>,
 }
 
 impl<W: Write> CsvWriter<W> {
@@ -133,6 +141,7 @@ impl<W: Write> CsvWriter<W> {
         Ok(CsvWriter {
             out,
             line: String::new(),
+            cells: vec![(None, String::new()); columns.len() + 1],
         })
     }
 
@@ -140,10 +149,22 @@ impl<W: Write> CsvWriter<W> {
     pub fn row(&mut self, time: f64, values: impl IntoIterator<Item = f64>) -> io::Result<()> {
         let line = &mut self.line;
         line.clear();
-        push_number(line, time);
-        for v in values {
-            line.push(',');
-            push_number(line, v);
+        let mut cells = self.cells.iter_mut();
+        for (k, v) in std::iter::once(time).chain(values).enumerate() {
+            if k > 0 {
+                line.push(',');
+            }
+            match cells.next() {
+                Some((bits, text)) => {
+                    if *bits != Some(v.to_bits()) {
+                        text.clear();
+                        push_number(text, v);
+                        *bits = Some(v.to_bits());
+                    }
+                    line.push_str(text);
+                }
+                None => push_number(line, v),
+            }
         }
         line.push('\n');
         self.out.write_all(line.as_bytes())
@@ -347,6 +368,31 @@ pub(crate) mod tests {
             }
         }
         assert!(lines[4].starts_with("0.002,") && lines[4].contains(",1,4,2,"));
+    }
+
+    /// Cells whose values repeat reuse their text; the lines are what formatting each number
+    /// gives (including -0 after 0, which compare equal but print differently).
+    #[test]
+    fn repeated_values_are_written_as_formatted() {
+        let wf = synthetic();
+        let values = [
+            [0.5, 1.0],
+            [0.5, 1.0],
+            [0.0, 2.0],
+            [-0.0, 2.0],
+            [f64::NAN, 2.0],
+        ];
+        let mut writer = CsvWriter::new(Vec::new(), &wf.columns[..2]).unwrap();
+        let mut expected = String::from("time,vout,dut.u_ic.ov\n");
+        for (k, row) in values.iter().enumerate() {
+            let t = (k / 2) as f64 * 1e-3;
+            writer.row(t, row.iter().copied()).unwrap();
+            let cells: Vec<String> = [t, row[0], row[1]].map(format_number).into();
+            expected.push_str(&format!("{}\n", cells.join(",")));
+        }
+        let out = writer.finish(Some("partial: x")).unwrap();
+        expected.push_str("# partial: x\n");
+        assert_eq!(String::from_utf8(out).unwrap(), expected);
     }
 
     #[test]
