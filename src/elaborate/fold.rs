@@ -93,6 +93,14 @@ fn unary(op: UnaryOp, v: Value) -> Result<Value, NoFold> {
         (UnaryOp::Abs, Value::Time(x)) => Value::Time(x.abs()),
         (UnaryOp::Not, Value::Boolean(b)) => Value::Boolean(!b),
         (UnaryOp::Not, Value::Enum(p)) => Value::Enum(1 - p.min(1)),
+        // `not` of a static `bit_vector` or boolean array (`not bv4'("0010")`), element by
+        // element as the kernel computes it at run time.
+        (UnaryOp::Not, Value::Array(items)) => Value::Array(
+            items
+                .into_iter()
+                .map(|e| unary(UnaryOp::Not, e))
+                .collect::<Result<_, _>>()?,
+        ),
         _ => return err("operand type not supported by the operator"),
     })
 }
@@ -237,6 +245,27 @@ fn binary(op: BinaryOp, a: Value, b: Value) -> Result<Value, NoFold> {
         (Boolean(x), Boolean(y)) => Boolean(logic(op, x, y)?),
         (Enum(x), Enum(y)) => Enum(u32::from(logic(op, x != 0, y != 0)?)),
         (Array(items), Integer(n)) if op.is_shift() => crate::design::shifted(op, &items, n),
+        // The logical operators on two static arrays of one length (`bv4'("1101") and
+        // bv4'("0011")`), element by element; analysis checked the lengths' types.
+        (Array(x), Array(y))
+            if x.len() == y.len()
+                && matches!(
+                    op,
+                    BinaryOp::And
+                        | BinaryOp::Or
+                        | BinaryOp::Nand
+                        | BinaryOp::Nor
+                        | BinaryOp::Xor
+                        | BinaryOp::Xnor
+                ) =>
+        {
+            Array(
+                x.into_iter()
+                    .zip(y)
+                    .map(|(p, q)| binary(op, p, q))
+                    .collect::<Result<_, _>>()?,
+            )
+        }
         _ => return err("operand types not supported by the operator"),
     })
 }

@@ -9,7 +9,7 @@
 use crate::design::{Expr, Instr, Subprogram, SubprogramId, Value};
 
 use super::Severity;
-use super::eval::{Env, EvalError, eval, integer, offset, truth};
+use super::eval::{Env, EvalError, eval, integer, set_element, truth};
 use super::io::FunctionReport;
 use super::process::INSTRUCTION_LIMIT;
 
@@ -102,14 +102,7 @@ pub(crate) fn call_function(
                 let i = integer(&eval(index, &inner)?)?;
                 let v = eval(value, &inner)?;
                 let ty = &sub.vars[var.index()].ty;
-                let Value::Array(items) = &mut vars[var.index()] else {
-                    return Err(EvalError::new(
-                        "element assignment to a variable that is not an array",
-                        "only array variables can be assigned element by element",
-                    ));
-                };
-                let pos = offset(ty, i, items.len())?;
-                items[pos] = v;
+                set_element(&mut vars[var.index()], ty, i, v)?;
             }
             Instr::SetHeap { pointer, value } => super::textio::set_heap(pointer, value, &inner)?,
             Instr::Native {

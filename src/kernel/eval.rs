@@ -198,6 +198,41 @@ pub(crate) fn offset(ty: &Type, i: i64, len: usize) -> Result<usize, EvalError> 
     Ok(pos as usize)
 }
 
+/// `target(i) := v` on a variable's value of type `ty`: an array's element, or a character of
+/// a `string` (strings are `Value::String`, `r(k) := '1'` on `variable r : string(1 to 4)`).
+pub(crate) fn set_element(
+    target: &mut Value,
+    ty: &Type,
+    i: i64,
+    v: Value,
+) -> Result<(), EvalError> {
+    match target {
+        Value::Array(items) => {
+            let pos = offset(ty, i, items.len())?;
+            items[pos] = v;
+            Ok(())
+        }
+        Value::String(s) => {
+            let mut chars: Vec<char> = s.chars().collect();
+            let pos = offset(ty, i, chars.len())?;
+            let Value::Enum(c) = v else {
+                return Err(EvalError::new(
+                    "a character of a string assigned a value that is not a character",
+                    "this is a bug in elaboration if the model passed type checking",
+                ));
+            };
+            // `character` positions are Latin-1 codes.
+            chars[pos] = char::from_u32(c).unwrap_or(char::REPLACEMENT_CHARACTER);
+            *s = chars.into_iter().collect();
+            Ok(())
+        }
+        _ => Err(EvalError::new(
+            "element assignment to a variable that is not an array",
+            "only array variables can be assigned element by element",
+        )),
+    }
+}
+
 fn element(array: Value, i: i64, ty: &Type) -> Result<Value, EvalError> {
     match array {
         Value::Array(mut items) => {

@@ -8,7 +8,7 @@ use crate::source::Span;
 
 use super::call::{call_depth_limit, frame, too_deep};
 use super::error::SimError;
-use super::eval::{Env, EvalError, eval, integer, offset, truth};
+use super::eval::{Env, EvalError, eval, integer, offset, set_element, truth};
 use super::signals::{Delay, Signals};
 use super::{Report, Severity};
 
@@ -271,18 +271,7 @@ pub(crate) fn run(
                 let i = integer(&eval(index, &env).map_err(at)?).map_err(at)?;
                 let v = eval(value, &env).map_err(at)?;
                 let ty = &decls[var.index()].ty;
-                match &mut state.vars[var.index()] {
-                    Value::Array(items) => {
-                        let pos = offset(ty, i, items.len()).map_err(at)?;
-                        items[pos] = v;
-                    }
-                    _ => {
-                        return Err(at(EvalError::new(
-                            "element assignment to a variable that is not an array",
-                            "only array variables can be assigned element by element",
-                        )));
-                    }
-                }
+                set_element(&mut state.vars[var.index()], ty, i, v).map_err(at)?;
             }
             Instr::Assign {
                 target,

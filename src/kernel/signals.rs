@@ -490,28 +490,34 @@ impl Signals {
         let Some(&(ref first_value, first_time)) = elements.first() else {
             return;
         };
-        let w = &mut self.drivers[d].waveform;
+        let driver = &mut self.drivers[d];
+        let w = &mut driver.waveform;
         // Old transactions at or after the first new one are deleted (both mechanisms).
         while w.back().is_some_and(|tr| tr.time >= first_time) {
             w.pop_back();
         }
         if let Delay::Inertial(reject) = delay {
-            // Within the rejection interval, keep only the run of old transactions directly
-            // before the new one that already carries its value; delete the rest.
             let start = first_time - reject;
-            let mut kept = VecDeque::with_capacity(w.len());
-            let mut chain = true;
-            while let Some(tr) = w.pop_back() {
-                if tr.time < start {
-                    w.push_back(tr);
-                    break;
+            let by_element = first_value
+                .as_ref()
+                .is_some_and(|new| reject_by_element(w, start, new, &driver.current));
+            if !by_element {
+                // Within the rejection interval, keep only the run of old transactions
+                // directly before the new one that already carries its value; delete the rest.
+                let mut kept = VecDeque::with_capacity(w.len());
+                let mut chain = true;
+                while let Some(tr) = w.pop_back() {
+                    if tr.time < start {
+                        w.push_back(tr);
+                        break;
+                    }
+                    chain = chain && tr.value == *first_value;
+                    if chain {
+                        kept.push_front(tr);
+                    }
                 }
-                chain = chain && tr.value == *first_value;
-                if chain {
-                    kept.push_front(tr);
-                }
+                w.extend(kept);
             }
-            w.extend(kept);
         }
         w.extend(
             elements
@@ -809,6 +815,106 @@ fn resolve(values: &[&Value]) -> Value {
             Value::Enum(r)
         }
     }
+}
+
+/// The scalar subelements of a value, in order (an array's elements, a record's fields,
+/// recursively; any other value is one scalar).
+fn scalars<'v>(v: &'v Value, out: &mut Vec<&'v Value>) {
+    match v {
+        Value::Array(items) => items.iter().for_each(|i| scalars(i, out)),
+        other => out.push(other),
+    }
+}
+
+/// `template` with its scalar subelements replaced, in order, by `leaves`.
+fn rebuild(template: &Value, leaves: &mut impl Iterator<Item = Value>) -> Value {
+    match template {
+        Value::Array(items) => Value::Array(items.iter().map(|i| rebuild(i, leaves)).collect()),
+        other => leaves.next().unwrap_or_else(|| other.clone()),
+    }
+}
+
+/// Inertial pulse rejection for a composite value, scalar subelement by scalar subelement: the
+/// LRM gives a composite signal a driver per scalar subelement (12.6.1) and marks each one's
+/// transactions on its own (12.6.2: in the rejection interval, an old transaction survives only
+/// in the run directly before the new one that has the new value). For one element whose old
+/// transaction survives beside another whose does not, the transaction is kept with the rejected
+/// element's value as it was before it, which gives that element no change. `w` holds the
+/// old transactions (none at or after the new one's time), `start` is the first new time minus
+/// the rejection limit, `current` the driver's value. Returns false, having changed nothing,
+/// for a scalar value or where a transaction in the interval is null or shaped differently; the
+/// caller then compares whole values.
+fn reject_by_element(
+    w: &mut VecDeque<Transaction>,
+    start: f64,
+    new: &Value,
+    current: &Value,
+) -> bool {
+    if !matches!(new, Value::Array(_)) {
+        return false;
+    }
+    let mut new_leaves = Vec::new();
+    scalars(new, &mut new_leaves);
+    let first = w.partition_point(|tr| tr.time < start);
+    // The value each element has before the interval: the last transaction before it, else the
+    // driver's current value.
+    let before = match first.checked_sub(1).map(|k| &w[k].value) {
+        Some(Some(v)) => v,
+        Some(None) => return false,
+        None => current,
+    };
+    let mut previous: Vec<Value> = Vec::new();
+    {
+        let mut leaves = Vec::new();
+        scalars(before, &mut leaves);
+        if leaves.len() != new_leaves.len() {
+            return false;
+        }
+        previous.extend(leaves.into_iter().cloned());
+    }
+    let mut window: Vec<Vec<Value>> = Vec::with_capacity(w.len() - first);
+    for tr in w.range(first..) {
+        let Some(v) = &tr.value else {
+            return false;
+        };
+        let mut leaves = Vec::new();
+        scalars(v, &mut leaves);
+        if leaves.len() != new_leaves.len() {
+            return false;
+        }
+        window.push(leaves.into_iter().cloned().collect());
+    }
+    // Backwards from the new transaction: element k's run of equal values.
+    let mut chain = vec![true; new_leaves.len()];
+    let mut marked: Vec<Vec<bool>> = vec![Vec::new(); window.len()];
+    for (leaves, mark) in window.iter().zip(marked.iter_mut()).rev() {
+        for (k, leaf) in leaves.iter().enumerate() {
+            chain[k] = chain[k] && leaf == new_leaves[k];
+        }
+        *mark = chain.clone();
+    }
+    let old: Vec<Transaction> = w.drain(first..).collect();
+    for ((tr, mut leaves), mark) in old.into_iter().zip(window).zip(marked) {
+        if !mark.iter().any(|m| *m) {
+            continue;
+        }
+        for (k, leaf) in leaves.iter_mut().enumerate() {
+            if mark[k] {
+                previous[k] = leaf.clone();
+            } else {
+                *leaf = previous[k].clone();
+            }
+        }
+        let Some(template) = &tr.value else {
+            continue;
+        };
+        let value = rebuild(template, &mut leaves.into_iter());
+        w.push_back(Transaction {
+            time: tr.time,
+            value: Some(value),
+        });
+    }
+    true
 }
 
 #[cfg(test)]

@@ -1,0 +1,85 @@
+-- vams: stop 100 ns
+--
+-- Disagreements with GHDL that the differential test (tests/ghdl_differential.rs) found,
+-- reduced to their cause; each testbench checks the LRM's answer, which GHDL 2.0 gives.
+
+-- The logical operators and `not` on static arrays (qualified literals), folded at
+-- elaboration as the kernel computes them at run time.
+entity tb_ghdl_static_array_logic is end;
+architecture t of tb_ghdl_static_array_logic is
+  subtype bv4 is bit_vector(3 downto 0);
+begin
+  process
+    variable x : bv4;
+  begin
+    x := bv4'("1101") and bv4'("0011");
+    assert x = "0001" report "static and" severity error;
+    assert (not bv4'("0010")) = "1101" report "static not" severity error;
+    assert not ((not bv4'("0010")) < bv4'("0100")) report "static not in a comparison" severity error;
+    -- (GHDL 2.0 stops with an internal error on this one, folding `xnor` of two literals.)
+    assert (bv4'("1100") xnor bv4'("1010")) = "1001" report "static xnor" severity error;
+    wait;
+  end process;
+end;
+
+-- A character of a string variable as an assignment target (`r(k) := '1'`), in a function and
+-- in a process.
+entity tb_ghdl_string_elements is end;
+architecture t of tb_ghdl_string_elements is
+  function img(v : bit_vector) return string is
+    variable r : string(1 to v'length);
+    variable k : integer := 1;
+  begin
+    for i in v'range loop
+      if v(i) = '1' then
+        r(k) := '1';
+      else
+        r(k) := '0';
+      end if;
+      k := k + 1;
+    end loop;
+    return r;
+  end function img;
+begin
+  process
+    variable s : string(1 to 3) := "abc";
+  begin
+    assert img(bit_vector'("0110")) = "0110" report "img" severity error;
+    s(2) := 'x';
+    assert s = "axc" report "s(2) := 'x'" severity error;
+    wait;
+  end process;
+end;
+
+-- Inertial pulse rejection on a composite signal works scalar subelement by scalar subelement
+-- (LRM 12.6.1 gives each one its own driver; 12.6.2 marks their transactions one by one). The
+-- transaction of "1100" at 8 ns lies in the rejection interval of the assignment of "1110" at
+-- 12 ns: it is kept for the elements where both values agree (3, 2 and 0) and rejected for
+-- element 1 alone, so at 8 ns the vector becomes 1100 (comparing whole values, it would be
+-- dropped and the vector would stay 1000 until 12 ns).
+entity tb_ghdl_composite_inertial is end;
+architecture t of tb_ghdl_composite_inertial is
+  signal v : bit_vector(3 downto 0) := "1000";
+  signal w : bit_vector(0 to 2) := "000";
+begin
+  stimulus : process
+  begin
+    v <= inertial "1100" after 4 ns;
+    w <= inertial "110" after 4 ns;
+    wait for 2 ns;
+    v <= inertial "1110" after 10 ns;
+    w <= inertial "001" after 10 ns;
+    wait;
+  end process;
+  check : process
+  begin
+    wait for 5 ns;
+    assert v = "1100" report "v at 5 ns: the agreeing elements' transaction is kept" severity error;
+    -- No element of w agrees: the whole transaction goes.
+    assert w = "000" report "w at 5 ns: the transaction is rejected" severity error;
+    wait for 8 ns;
+    assert v = "1110" report "v at 13 ns" severity error;
+    assert w = "001" report "w at 13 ns" severity error;
+    wait;
+  end process;
+end;
