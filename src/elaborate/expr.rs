@@ -342,7 +342,19 @@ impl<'a> Elab<'a> {
             ExprKind::Paren(inner) => self.expr(sc, inner, want),
             ExprKind::Qualified(mark, inner) => {
                 let ty = self.type_mark(sc, mark)?.ty.clone();
-                self.expr_of(sc, inner, &ty)
+                let t = self.expr_of(sc, inner, &ty)?;
+                // A constrained array subtype gives the value its bounds (LRM 7.3.4: the
+                // operand's value belongs to the subtype), so `bv4'(a & b & f(v))` has length 4
+                // where the concatenation's own length is known only at run time: a parameter
+                // or local array sized by it can be elaborated. The length is checked.
+                match (&ty, &t.ty) {
+                    (Ty::Array(a), Ty::Array(b)) if a.len().is_some() && b.len().is_none() => {
+                        let what = |_: &Self| format!("the value qualified by `{ty}`");
+                        let e = self.fit_length(t, &ty, what, inner.span)?;
+                        Ok(Typed::new(e, ty))
+                    }
+                    _ => Ok(t),
+                }
             }
             ExprKind::Aggregate(elems) => self.aggregate(sc, elems, e.span, want),
             ExprKind::Unary(op, a) => {

@@ -281,6 +281,7 @@ pub(crate) fn run(
             } => {
                 cx.waveform.clear();
                 let mut last = cx.now;
+                let mut first_delay = 0.0;
                 let signal = cx.design_signals.get(target.index());
                 for (value, delay) in waveform {
                     let v = match value {
@@ -295,6 +296,9 @@ pub(crate) fn run(
                         None => None,
                     };
                     let d = seconds(&eval(delay, &env).map_err(at)?).map_err(at)?;
+                    if cx.waveform.is_empty() {
+                        first_delay = d;
+                    }
                     let t = later(cx.now, d);
                     if d < 0.0 || t < last {
                         return Err(at(EvalError::new(
@@ -306,15 +310,17 @@ pub(crate) fn run(
                     last = t;
                     cx.waveform.push((v, t));
                 }
+                // The rejection interval starts at the first element's time minus the limit,
+                // `now + d1 - r`, computed on the time grid as the transactions' times are.
                 let delay = match mechanism {
                     DelayMechanism::Transport => Delay::Transport,
                     DelayMechanism::Inertial { reject: Some(r) } => {
-                        Delay::Inertial(seconds(&eval(r, &env).map_err(at)?).map_err(at)?)
+                        let r = seconds(&eval(r, &env).map_err(at)?).map_err(at)?;
+                        Delay::Inertial(later(cx.now, (first_delay - r).max(0.0)))
                     }
-                    // Without `reject`, the limit is the first element's delay.
-                    DelayMechanism::Inertial { reject: None } => {
-                        Delay::Inertial(cx.waveform.first().map_or(0.0, |e| e.1 - cx.now))
-                    }
+                    // Without `reject`, the limit is the first element's delay: the interval
+                    // starts now.
+                    DelayMechanism::Inertial { reject: None } => Delay::Inertial(cx.now),
                 };
                 let no_driver = || {
                     // `Signals::new` creates a driver for every assignment of every process.

@@ -43,7 +43,9 @@ struct Transaction {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum Delay {
     Transport,
-    /// Inertial with this pulse-rejection limit in seconds.
+    /// Inertial; the pulse-rejection interval starts at this time (the first new transaction's
+    /// time minus the rejection limit, on the femtosecond grid as the caller computes times:
+    /// in floating point, `t + 4.6 ns - 4.6 ns` may miss a transaction at `t`).
     Inertial(f64),
 }
 
@@ -496,8 +498,7 @@ impl Signals {
         while w.back().is_some_and(|tr| tr.time >= first_time) {
             w.pop_back();
         }
-        if let Delay::Inertial(reject) = delay {
-            let start = first_time - reject;
+        if let Delay::Inertial(start) = delay {
             let by_element = first_value
                 .as_ref()
                 .is_some_and(|new| reject_by_element(w, start, new, &driver.current));

@@ -83,3 +83,75 @@ begin
     wait;
   end process;
 end;
+
+-- The pulse-rejection interval of an inertial assignment starts at the first new element's
+-- time minus the limit, here now: a zero-delay transaction pending at 1.7 ns is inside it and,
+-- of another value, rejected. (In floating point, 1.7 ns + 4.6 ns - 4.6 ns is a little after
+-- 1.7 ns, which kept the transaction.)
+entity tb_ghdl_inertial_window is end;
+architecture t of tb_ghdl_inertial_window is
+  signal s, r : bit := '0';
+begin
+  process
+  begin
+    wait for 1.7 ns;
+    s <= '1';
+    s <= '0' after 4.6 ns;
+    r <= '1';
+    r <= reject 4.6 ns inertial '0' after 4.6 ns;
+    wait for 0 ns;
+    assert s = '0' report "s: the zero-delay transaction is rejected" severity error;
+    assert r = '0' report "r: the zero-delay transaction is rejected" severity error;
+    wait;
+  end process;
+end;
+
+-- A zero-delay transport assignment to a resolved signal with two drivers changes it in the
+-- next delta cycle (LRM 12.6.2: the signal is active, its resolution function is called on
+-- its drivers' values, '1' and 'Z'). GHDL 2.0 misses this: it keeps 'Z' until another driver
+-- changes, a GHDL bug that the generator avoids (zero-delay transport only on signals with
+-- one driver).
+library ieee;
+use ieee.std_logic_1164.all;
+entity tb_ghdl_transport_resolved is end;
+architecture t of tb_ghdl_transport_resolved is
+  signal s : std_logic := 'Z';
+begin
+  first : process
+  begin
+    s <= transport '1';
+    wait;
+  end process;
+  second : process
+  begin
+    s <= '0' after 2 ns;
+    wait for 1 ns;
+    assert s = '1' report "s at 1 ns: resolved('1', 'Z')" severity error;
+    wait for 2 ns;
+    assert s = 'X' report "s at 3 ns: resolved('1', '0')" severity error;
+    wait;
+  end process;
+end;
+
+-- A qualified expression of a constrained array subtype has that subtype's length, also where
+-- the operand's length is known only at run time (a concatenation with a function result):
+-- `to_stdlogicvector`'s local arrays are sized by it.
+library ieee;
+use ieee.std_logic_1164.all;
+entity tb_ghdl_qualified_length is end;
+architecture t of tb_ghdl_qualified_length is
+  subtype bv4 is bit_vector(3 downto 0);
+  function low(v : bv4) return bit_vector is
+  begin
+    return v(1 downto 0);
+  end function low;
+  signal s : bv4 := "0110";
+begin
+  process
+    variable x : std_logic_vector(3 downto 0);
+  begin
+    x := to_stdlogicvector(bv4'(s(0) & s(1) & low(s)));
+    assert x = "0110" report "to_stdlogicvector of a qualified concatenation" severity error;
+    wait;
+  end process;
+end;

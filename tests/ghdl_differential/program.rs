@@ -153,6 +153,8 @@ pub struct Program {
     context: Context,
     fresh: usize,
     reports: usize,
+    /// The signals with two drivers.
+    multiple: Vec<String>,
     /// Declarations the statements generated so far need (the counters of `while` loops).
     pending: Vec<String>,
     text: String,
@@ -171,6 +173,7 @@ impl Program {
             fresh: 0,
             reports: 0,
             pending: Vec::new(),
+            multiple: Vec::new(),
             text: String::new(),
         };
         p.program();
@@ -218,6 +221,7 @@ impl Program {
             if s.ty == Ty::Logic && self.rng.chance(0.3) {
                 let other = (owner + 1) % processes;
                 owners[other].push(s.clone());
+                self.multiple.push(s.name.clone());
             }
             owners[owner].push(s);
         }
@@ -520,12 +524,11 @@ impl Program {
         }
         let target = self.rng.pick(&self.driven.clone()).clone();
         let (name, ty) = match target.ty.element() {
-            Some((el, low, len)) if self.rng.chance(0.4) && target.ty != Ty::LogicVec => {
+            Some((el, low, len)) if self.rng.chance(0.4) => {
                 (format!("{}({})", target.name, self.index(low, len)), el)
             }
             _ => (target.name.clone(), target.ty),
         };
-        let zero_ok = self.context == Context::Waiting;
         let mechanism = match self.rng.below(5) {
             0 => "transport ".to_string(),
             1 => {
@@ -534,6 +537,10 @@ impl Program {
             }
             _ => String::new(),
         };
+        // GHDL 2.0 misses a zero-delay transport transaction on a resolved signal with two
+        // drivers (tests/conformance/ghdl_agreement.vhd, tb_ghdl_transport_resolved).
+        let zero_ok = self.context == Context::Waiting
+            && !(mechanism.starts_with("transport") && self.multiple.contains(&target.name));
         let elements = if mechanism.starts_with("reject") {
             1
         } else {
@@ -1040,7 +1047,9 @@ impl Program {
             3 => {
                 let a = self.bit_vector_expr(d);
                 let op = self.rng.pick(&["sll", "srl", "sla", "sra", "rol", "ror"]);
-                format!("({a} {op} {})", self.rng.int(0, 5))
+                // Not by 0: GHDL 2.0 folds `bv4'("1111") ror 0` wrongly (compared with
+                // "0110", it says the rotated literal is the smaller).
+                format!("({a} {op} {})", self.rng.int(1, 5))
             }
             4 => {
                 let a = self.bit_expr(d);
