@@ -153,6 +153,8 @@ pub struct Program {
     context: Context,
     fresh: usize,
     reports: usize,
+    /// True while a `wait` statement's condition is generated.
+    in_wait: bool,
     /// The signals with two drivers.
     multiple: Vec<String>,
     /// Declarations the statements generated so far need (the counters of `while` loops).
@@ -174,6 +176,7 @@ impl Program {
             reports: 0,
             pending: Vec::new(),
             multiple: Vec::new(),
+            in_wait: false,
             text: String::new(),
         };
         p.program();
@@ -243,7 +246,18 @@ impl Program {
             self.locals.clear();
             let value = self.expr(s.ty, 2);
             let delay = self.delay(false);
-            let _ = writeln!(out, "  {} <= {value} after {delay};", s.name);
+            if self.rng.chance(0.3) {
+                let c = self.bool_expr(2);
+                let other = self.expr(s.ty, 1);
+                let delay2 = self.delay(false);
+                let _ = writeln!(
+                    out,
+                    "  {} <= {value} after {delay} when {c} else {other} after {delay2};",
+                    s.name
+                );
+            } else {
+                let _ = writeln!(out, "  {} <= {value} after {delay};", s.name);
+            }
         }
         out.push_str("end architecture gen;\n");
         self.text = out;
@@ -347,7 +361,7 @@ impl Program {
     fn statement(&mut self, depth: usize) -> String {
         let pad = Self::indent(depth);
         loop {
-            let choice = self.rng.below(12);
+            let choice = self.rng.below(14);
             match choice {
                 0 | 1 => {
                     if let Some(s) = self.variable_assignment() {
@@ -382,6 +396,18 @@ impl Program {
                     return s;
                 }
                 9 if depth > 0 => return self.case(depth),
+                12 if self.context != Context::Function => {
+                    if let Some(s) = self.call() {
+                        return format!("{pad}{s}\n");
+                    }
+                }
+                13 if self.context != Context::Function => {
+                    // An assertion reports when its condition is false.
+                    let c = self.bool_expr(2);
+                    let r = self.report();
+                    let message = r.trim_start_matches("report ").trim_end_matches(';');
+                    return format!("{pad}assert {c} report {message} severity note;\n");
+                }
                 10 if depth > 0 => return self.for_loop(depth),
                 11 if depth > 0 => return self.while_loop(depth),
                 _ => {}
@@ -496,6 +522,26 @@ impl Program {
         )
     }
 
+    /// A call of the procedures every program has: `bump` on an integer variable, `pause` (a
+    /// `wait` inside a procedure) where the process may wait.
+    fn call(&mut self) -> Option<String> {
+        if self.context == Context::Waiting && self.rng.chance(0.3) {
+            return Some(format!("pause({});", self.delay(true)));
+        }
+        let ints: Vec<String> = self
+            .locals
+            .iter()
+            .filter(|(o, w)| *w && o.ty == Ty::Int)
+            .map(|(o, _)| o.name.clone())
+            .collect();
+        if ints.is_empty() {
+            return None;
+        }
+        let v = self.rng.pick(&ints).clone();
+        let d = self.expr(Ty::Int, 1);
+        Some(format!("bump({v}, {d});"))
+    }
+
     fn variable_assignment(&mut self) -> Option<String> {
         let writable: Vec<Object> = self
             .locals
@@ -575,6 +621,13 @@ impl Program {
     }
 
     fn wait(&mut self) -> String {
+        self.in_wait = true;
+        let wait = self.wait_statement();
+        self.in_wait = false;
+        wait
+    }
+
+    fn wait_statement(&mut self) -> String {
         let signal = |p: &mut Program| p.rng.pick(&p.signals).name.clone();
         match self.rng.below(5) {
             0 => format!("wait for {};", self.delay(true)),
@@ -814,6 +867,17 @@ impl Program {
         let leaf = depth == 0 || self.rng.chance(0.3);
         if leaf {
             return match self.rng.below(8) {
+                0 if self.context != Context::Function
+                    && self.signals.iter().any(|s| s.ty == Ty::Int) =>
+                {
+                    let ints: Vec<String> = self
+                        .signals
+                        .iter()
+                        .filter(|s| s.ty == Ty::Int)
+                        .map(|s| s.name.clone())
+                        .collect();
+                    (format!("{}'last_value", self.rng.pick(&ints)), MAX)
+                }
                 0..=3 => match self.object_or_element(Ty::Int) {
                     Some(o) => (o, MAX),
                     None => self.int_literal(),
@@ -966,7 +1030,15 @@ impl Program {
             }
             7 if self.context != Context::Function => {
                 let s = self.rng.pick(&self.signals).name.clone();
-                let attr = self.rng.pick(&["event", "active"]);
+                // `'stable` and `'quiet` only where a process reads them when it resumes: vams
+                // computes them as values, not as the implicit signals a sensitivity list (a
+                // concurrent assignment's, a `wait until`'s) would wait on.
+                let attrs: &[&str] = if self.context == Context::Waiting && !self.in_wait {
+                    &["event", "active", "stable", "quiet"]
+                } else {
+                    &["event", "active"]
+                };
+                let attr = self.rng.pick(attrs);
                 format!("{s}'{attr}")
             }
             _ => {
@@ -1153,6 +1225,14 @@ const HELPERS: &str = "  function img(v : bit_vector) return string is
     end loop;
     return r;
   end function img;
+  procedure bump(variable x : inout integer; constant d : in integer) is
+  begin
+    x := (x + d) mod 1000;
+  end procedure bump;
+  procedure pause(constant t : in time) is
+  begin
+    wait for t;
+  end procedure pause;
   function bv_low(v : bv4) return bit_vector is
   begin
     return v(1 downto 0);
