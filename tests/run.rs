@@ -643,6 +643,26 @@ fn an_array_too_large_to_hold_is_a_diagnostic_not_an_abort() {
         .stderr(contains("huge.vhd:3:14"));
 }
 
+/// A generate statement's bound typed a few digits too long (found by tests/mutation.rs: it
+/// tried to allocate 16 GiB) is a diagnostic at the statement.
+#[test]
+fn a_generate_of_billions_of_iterations_is_a_diagnostic() {
+    let (_dir, file) = model_file(
+        "many.vhd",
+        "entity many is end;\narchitecture a of many is\n  signal s : bit;\nbegin\n  \
+         g : for i in 0 to 2147483647 generate\n    s <= '1';\n  end generate;\nend;\n",
+    );
+    vams()
+        .arg("check")
+        .arg(&file)
+        .assert()
+        .code(1)
+        .stderr(contains(
+            "not supported yet: a generate statement of 2147483648 iterations",
+        ))
+        .stderr(contains("many.vhd:5:3"));
+}
+
 /// Ctrl-C stops a run at its next step: the waveforms computed so far are written, and the
 /// exit code is the shell's for SIGINT.
 #[cfg(unix)]

@@ -43,6 +43,10 @@ enum PortActual<'x> {
 }
 
 /// Interface names in declaration order with their declarations.
+/// The most iterations of one `for ... generate`: each elaborates its statements again (a
+/// bound typed a few digits too long is a diagnostic, not hours of elaboration and gigabytes).
+const MAX_GENERATE_ITERATIONS: usize = 1 << 20;
+
 fn flatten(decls: &[InterfaceDecl]) -> Vec<(&ast::Ident, &InterfaceDecl)> {
     decls
         .iter()
@@ -764,6 +768,16 @@ impl<'a> Elab<'a> {
                         continue;
                     };
                     let label = s.label.as_ref().map_or("gen", |l| l.name.as_str());
+                    // i128: no bounds an i64 holds overflow the count.
+                    let count = (i128::from(r) - i128::from(l)) * if asc { 1 } else { -1 } + 1;
+                    if count > MAX_GENERATE_ITERATIONS as i128 {
+                        self.error(ElabError::unsupported(
+                            s.span,
+                            format!("a generate statement of {count} iterations"),
+                            format!("vams elaborates up to {MAX_GENERATE_ITERATIONS} iterations of one generate statement; check the bounds"),
+                        ));
+                        continue;
+                    }
                     let values: Vec<i64> = if asc {
                         (l..=r).collect()
                     } else {

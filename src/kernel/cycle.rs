@@ -521,7 +521,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                     .quantity_values(td, &a.xi, &a.xdi, &mut values, &mut derivatives);
             }
             if recorder.last_time() != Some(td) {
-                recorder.record(td, &values, &self.kernel.signals.states);
+                recorder.record(td, &values, &self.kernel.signals.states)?;
             }
             let events = self.kernel.events;
             let view = AnalogView {
@@ -530,7 +530,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             };
             self.outcome = self.kernel.run_time_point(td, &view, on_report)?;
             if self.kernel.events != events {
-                recorder.record(td, &values, &self.kernel.signals.states);
+                recorder.record(td, &values, &self.kernel.signals.states)?;
             }
             self.progress.tick(td);
             self.check_cancelled(td)?;
