@@ -890,7 +890,12 @@ impl<'a> Elab<'a> {
             } else {
                 params.push(param.mode);
                 let ty = match (&param.ty, bounds.get(i).copied().flatten()) {
-                    (Ty::Array(a), Some(b)) if a.bounds.is_none() => a.with_bounds(Some(b)),
+                    (Ty::Array(a), Some(b)) if a.bounds.is_none() => {
+                        // The actual's bounds (a static size argument, `to_signed(x, n)`):
+                        // a size no array may have is a diagnostic, not an allocation.
+                        self.array_size(&[b], at)?;
+                        a.with_bounds(Some(b))
+                    }
                     (ty, _) => ty.clone(),
                 };
                 let var = p.new_var(&param.name, &ty, ty.default_value());

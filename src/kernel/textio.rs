@@ -87,14 +87,14 @@ pub(crate) fn run(op: &NativeProc, args: &mut [Value], io: &Io) -> Result<(), Ev
             let justified = int(arg(2)?)?;
             let field = int(arg(3)?)?;
             let text = written(ty, arg(1)?, args.get(4))?;
-            let text = justify(text, justified == 1, field);
+            let text = justify(text, justified == 1, field)?;
             append(io, &mut args[0], &text)?;
         }
         NativeProc::WriteDigits { bits, ty } => {
             let justified = int(arg(2)?)?;
             let field = int(arg(3)?)?;
             let text = digits_of(arg(1)?, *bits, &BitCode::of(ty))?;
-            append(io, &mut args[0], &justify(text, justified == 1, field))?;
+            append(io, &mut args[0], &justify(text, justified == 1, field)?)?;
         }
         NativeProc::Read { ty, good } => {
             let line = line_text(io, arg(0)?)?;
@@ -247,14 +247,23 @@ fn type_name(ty: &Type) -> String {
     }
 }
 
-fn justify(text: String, left: bool, field: i64) -> String {
+/// The widest field `write` pads to: a wider one is an error, not gigabytes of spaces.
+const MAX_FIELD: i64 = 1 << 20;
+
+fn justify(text: String, left: bool, field: i64) -> Result<String, EvalError> {
+    if field > MAX_FIELD {
+        return Err(EvalError::new(
+            format!("a field width of {field} characters"),
+            "write pads to at most 1048576 characters; check the `field` argument",
+        ));
+    }
     let pad = usize::try_from(field).unwrap_or(0);
     let len = text.chars().count();
     if len >= pad {
-        return text;
+        return Ok(text);
     }
     let fill = " ".repeat(pad - len);
-    if left { text + &fill } else { fill + &text }
+    Ok(if left { text + &fill } else { fill + &text })
 }
 
 /// An enumeration literal as text: a character literal without its quotes.
@@ -614,8 +623,9 @@ mod tests {
             written(&Type::Time, &Value::Time(1.5e-9), Some(&Value::Time(1e-12))).unwrap(),
             "1500 ps"
         );
-        assert_eq!(justify("42".into(), false, 5), "   42");
-        assert_eq!(justify("42".into(), true, 5), "42   ");
+        assert_eq!(justify("42".into(), false, 5).unwrap(), "   42");
+        assert_eq!(justify("42".into(), true, 5).unwrap(), "42   ");
+        assert!(justify("42".into(), true, i64::MAX).is_err());
         let v = Value::Array([1, 0, 1, 0, 1, 1, 1, 1].map(Value::Enum).to_vec());
         let bits = Type::Array {
             element: Box::new(bit()),
