@@ -824,3 +824,43 @@ fn a_function_reports_in_order_and_the_run_goes_on() {
     assert!(at("function_report.vhd:10:") < at("function_report.vhd:11:"));
     assert!(at("1 ms: note: done") > at("half of 7 is 3"));
 }
+
+/// Ctrl-C in the middle of a long computation inside a function (minutes of interpreted
+/// loops) stops the run within moments, with the waveforms up to that time.
+#[cfg(unix)]
+#[test]
+fn ctrl_c_stops_a_long_function_call() {
+    use std::time::{Duration, Instant};
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("long.csv");
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_vams"))
+        .args(["run", "tests/run/long_function.vhd", "--stop", "2 ns", "-o"])
+        .arg(&csv)
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    std::thread::sleep(Duration::from_secs(2));
+    let killed = std::process::Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(killed.success());
+    let started = Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break status;
+        }
+        assert!(
+            started.elapsed() < Duration::from_secs(30),
+            "the run did not stop"
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    let mut stderr = String::new();
+    std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut stderr).unwrap();
+    assert_eq!(status.code(), Some(130), "{stderr}");
+    assert!(stderr.contains("interrupted at t = 1e-9 s"), "{stderr}");
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let last = text.lines().last().unwrap();
+    assert_eq!(last, "# partial: interrupted at t = 1 ns");
+}

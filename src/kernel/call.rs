@@ -83,7 +83,8 @@ pub(crate) fn call_function(
         .collect::<Result<Vec<_>, _>>()?;
     let mut vars = frame(sub, values);
     let mut pc = 0;
-    for _ in 0..INSTRUCTION_LIMIT {
+    for step in 0..INSTRUCTION_LIMIT {
+        env.io.check_cancel(step)?;
         let inner = Env {
             vars: &vars,
             depth: env.depth + 1,

@@ -79,6 +79,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
     ) -> Result<Self, SimError> {
         options.validate()?;
         let mut kernel = EventKernel::new(design)?;
+        kernel.io.cancel = options.cancel.clone();
         let values: Vec<f64> = design
             .quantities
             .iter()

@@ -67,6 +67,7 @@ impl<'d> EventKernel<'d> {
             breaks_total: 0,
             io: Io {
                 function_reports: std::cell::RefCell::default(),
+                cancel: None,
                 heap,
                 files: std::cell::RefCell::new(Files::new(&design.files).map_err(|(k, e)| {
                     SimError::FileOpen {

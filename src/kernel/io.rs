@@ -19,6 +19,27 @@ pub(crate) struct Io {
     /// Reports of functions (`report` and failed assertions of severity below failure),
     /// made inside an expression and told by the process that evaluated it.
     pub function_reports: RefCell<Vec<FunctionReport>>,
+    /// The run's cancel flag (Ctrl-C, SIGTERM): long loops in processes and functions look
+    /// at it every [`CANCEL_CHECK`] instructions, so that a stop does not wait for them.
+    pub cancel: Option<super::Cancel>,
+}
+
+/// How many interpreted instructions run between two looks at the cancel flag.
+pub(crate) const CANCEL_CHECK: usize = 1 << 16;
+
+impl Io {
+    /// `Err` when the run was cancelled (checked every [`CANCEL_CHECK`]-th `step`).
+    pub fn check_cancel(&self, step: usize) -> Result<(), EvalError> {
+        if step % CANCEL_CHECK == CANCEL_CHECK - 1
+            && self
+                .cancel
+                .as_ref()
+                .is_some_and(super::Cancel::is_cancelled)
+        {
+            return Err(EvalError::interrupted());
+        }
+        Ok(())
+    }
 }
 
 /// A report a function made: the process that called it emits it with its own name.

@@ -16,7 +16,20 @@ pub(crate) struct EvalError {
     pub help: &'static str,
 }
 
+/// The help of [`EvalError::interrupted`], which tells it apart.
+const INTERRUPTED: &str = "the run was cancelled while a process or function ran";
+
 impl EvalError {
+    /// The run was cancelled in the middle of a process's or function's instructions: not
+    /// an error of the model (`SimError::Interrupted` where a process reports it).
+    pub fn interrupted() -> EvalError {
+        EvalError::new("interrupted", INTERRUPTED)
+    }
+
+    pub fn is_interrupted(&self) -> bool {
+        self.help == INTERRUPTED
+    }
+
     pub fn new(message: impl Into<String>, help: &'static str) -> EvalError {
         EvalError {
             message: message.into(),

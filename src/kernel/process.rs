@@ -207,17 +207,23 @@ pub(crate) fn run(
     cx: &mut Context,
 ) -> Result<Suspend, SimError> {
     let now = cx.now;
-    let fail = |e: EvalError, span: Span| SimError::Runtime {
-        process: process.name.clone(),
-        time: now,
-        message: e.message,
-        span,
-        help: e.help.to_string(),
+    let fail = |e: EvalError, span: Span| match e.is_interrupted() {
+        true => SimError::Interrupted { time: now },
+        false => SimError::Runtime {
+            process: process.name.clone(),
+            time: now,
+            message: e.message,
+            span,
+            help: e.help.to_string(),
+        },
     };
     state.waiting_at = None;
     state.timeout_at = None;
     let subs = cx.subprograms;
-    for _ in 0..INSTRUCTION_LIMIT {
+    for step in 0..INSTRUCTION_LIMIT {
+        cx.io
+            .check_cancel(step)
+            .map_err(|e| fail(e, process.span))?;
         emit_function_reports(cx, &process.name);
         let (code, decls, spans) = code_of(process, subs, state.running);
         let Some(instr) = code.get(state.pc) else {
