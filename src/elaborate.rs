@@ -177,6 +177,10 @@ struct Elab<'a> {
     /// Calls being lowered for static scalar arguments, innermost last (see
     /// `Elab::specialised`).
     specialising: usize,
+    /// Where `S'stable` and `S'quiet` were lowered (as values), and whether with a time: a
+    /// condition whose signals a process waits on implicitly must not read them (see
+    /// `Elab::implicit_sensitivity`).
+    stable_reads: Vec<(Span, bool)>,
     sources: &'a SourceMap,
     lib: Library<'a>,
     design: Design,
@@ -297,6 +301,7 @@ impl<'a> Elab<'a> {
         let (resolved, mixed_universal) = resolutions(analysis);
         Elab {
             specialising: 0,
+            stable_reads: Vec::new(),
             sources,
             lib: Library::index(analysis, files),
             resolved,

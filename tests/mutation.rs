@@ -5,7 +5,7 @@
 //! elaborate, a short simulation. Whatever the mutant, vams must answer with diagnostics or
 //! results: no panic, no hang (each run is cancelled after a few seconds of wall time, and a
 //! run that ignores the cancel fails the test). `VAMS_MUTANTS=N` sets the number of mutants
-//! (default 400, a minute or two in a debug build); `VAMS_MUTATION_SEED` the first seed.
+//! (default 1000, seconds in a debug build); `VAMS_MUTATION_SEED` the first seed.
 
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::{Path, PathBuf};
@@ -242,7 +242,7 @@ fn mutated_models_give_diagnostics_never_a_panic_or_a_hang() {
     let count: usize = std::env::var("VAMS_MUTANTS")
         .ok()
         .and_then(|v| v.parse().ok())
-        .unwrap_or(400);
+        .unwrap_or(1000);
     let seed: u64 = std::env::var("VAMS_MUTATION_SEED")
         .ok()
         .and_then(|v| v.parse().ok())

@@ -134,6 +134,7 @@ impl<'a> Elab<'a> {
             // `S'stable(T)` until `T` after it; `S'quiet` likewise for a transaction. Not a
             // signal of its own: a process cannot wait on it.
             "stable" | "quiet" => {
+                self.stable_reads.push((span, arg(0).is_some()));
                 let p = self.signal_expr(sc, prefix)?;
                 let Expr::Signal(s) = p.e else {
                     return Err(self.wrong_class(prefix, &p, "a signal", name));
