@@ -6,6 +6,10 @@ use std::path::Path;
 use assert_cmd::Command;
 use predicates::str::contains;
 
+#[cfg(unix)]
+#[path = "support/interrupt.rs"]
+mod interrupt;
+
 fn vams() -> Command {
     Command::cargo_bin("vams").expect("the vams binary is built for integration tests")
 }
@@ -668,43 +672,22 @@ fn a_generate_of_billions_of_iterations_is_a_diagnostic() {
 #[cfg(unix)]
 #[test]
 fn ctrl_c_stops_the_run_and_keeps_its_waveforms() {
-    use std::time::{Duration, Instant};
     let dir = tempfile::tempdir().unwrap();
     let csv = dir.path().join("endless.csv");
-    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_vams"))
-        .args([
+    let (status, stderr) = interrupt::run_interrupted(
+        [
             "run",
             "tests/run/endless.vhd",
             "--stop",
             "1e9 sec",
             "--max-step",
             "0.05 sec",
-        ])
-        .arg("-o")
-        .arg(&csv)
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .unwrap();
-    // Long enough to be simulating (elaboration takes milliseconds) in a debug build too.
-    std::thread::sleep(Duration::from_secs(2));
-    let killed = std::process::Command::new("kill")
-        .args(["-INT", &child.id().to_string()])
-        .status()
-        .unwrap();
-    assert!(killed.success());
-    let started = Instant::now();
-    let status = loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            break status;
-        }
-        assert!(
-            started.elapsed() < Duration::from_secs(60),
-            "the run did not stop"
-        );
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    let mut stderr = String::new();
-    std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut stderr).unwrap();
+            "-o",
+        ]
+        .map(std::ffi::OsString::from)
+        .into_iter()
+        .chain([csv.clone().into_os_string()]),
+    );
     assert_eq!(status.code(), Some(130), "{stderr}");
     assert!(stderr.contains("interrupted at t ="), "{stderr}");
     assert!(stderr.contains("wrote the waveforms up to"), "{stderr}");
@@ -830,34 +813,14 @@ fn a_function_reports_in_order_and_the_run_goes_on() {
 #[cfg(unix)]
 #[test]
 fn ctrl_c_stops_a_long_function_call() {
-    use std::time::{Duration, Instant};
     let dir = tempfile::tempdir().unwrap();
     let csv = dir.path().join("long.csv");
-    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_vams"))
-        .args(["run", "tests/run/long_function.vhd", "--stop", "2 ns", "-o"])
-        .arg(&csv)
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .unwrap();
-    std::thread::sleep(Duration::from_secs(2));
-    let killed = std::process::Command::new("kill")
-        .args(["-INT", &child.id().to_string()])
-        .status()
-        .unwrap();
-    assert!(killed.success());
-    let started = Instant::now();
-    let status = loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            break status;
-        }
-        assert!(
-            started.elapsed() < Duration::from_secs(30),
-            "the run did not stop"
-        );
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    let mut stderr = String::new();
-    std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut stderr).unwrap();
+    let (status, stderr) = interrupt::run_interrupted(
+        ["run", "tests/run/long_function.vhd", "--stop", "2 ns", "-o"]
+            .map(std::ffi::OsString::from)
+            .into_iter()
+            .chain([csv.clone().into_os_string()]),
+    );
     assert_eq!(status.code(), Some(130), "{stderr}");
     assert!(stderr.contains("interrupted at t = 1e-9 s"), "{stderr}");
     let text = std::fs::read_to_string(&csv).unwrap();

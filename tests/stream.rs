@@ -14,6 +14,10 @@ use vams::kernel::{SimOptions, simulate};
 use vams::output::csv::write_csv;
 use vams::output::vcd::write_vcd;
 
+#[cfg(unix)]
+#[path = "support/interrupt.rs"]
+mod interrupt;
+
 fn vams() -> Command {
     Command::cargo_bin("vams").expect("the vams binary is built for integration tests")
 }
@@ -148,34 +152,22 @@ fn an_error_leaves_streamed_files_ending_at_the_printed_time() {
 #[cfg(unix)]
 #[test]
 fn sigint_leaves_streamed_files_ending_at_the_printed_time() {
-    use std::time::{Duration, Instant};
     let dir = tempfile::tempdir().unwrap();
     let (csv, vcd) = (dir.path().join("e.csv"), dir.path().join("e.vcd"));
-    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_vams"))
-        .args(["run", "tests/run/endless.vhd", "--stop", "1e9 sec"])
-        .args(["--max-step", "0.05 sec", "-o"])
-        .arg(&csv)
-        .arg("-o")
-        .arg(&vcd)
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .unwrap();
-    std::thread::sleep(Duration::from_secs(2));
-    let killed = std::process::Command::new("kill")
-        .args(["-INT", &child.id().to_string()])
-        .status()
-        .unwrap();
-    assert!(killed.success());
-    let started = Instant::now();
-    let status = loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            break status;
-        }
-        assert!(started.elapsed() < Duration::from_secs(60), "no stop");
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    let mut stderr = String::new();
-    std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut stderr).unwrap();
+    let (status, stderr) = interrupt::run_interrupted(
+        [
+            "run",
+            "tests/run/endless.vhd",
+            "--stop",
+            "1e9 sec",
+            "--max-step",
+            "0.05 sec",
+        ]
+        .map(std::ffi::OsString::from)
+        .into_iter()
+        .chain(["-o".into(), csv.clone().into_os_string()])
+        .chain(["-o".into(), vcd.clone().into_os_string()]),
+    );
     assert_eq!(status.code(), Some(130), "{stderr}");
     let end = printed_end(&stderr);
     assert_partial(&csv, &vcd, &end, "interrupted");

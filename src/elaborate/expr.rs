@@ -1657,7 +1657,7 @@ pub(super) fn designator_span(e: &ast::Expr) -> Span {
 }
 
 /// `and`, `or`, `nand`, `nor`, `xor`, `xnor`.
-fn is_logical(op: BinaryOp) -> bool {
+pub(super) fn is_logical(op: BinaryOp) -> bool {
     matches!(
         op,
         BinaryOp::And

@@ -247,25 +247,12 @@ fn binary(op: BinaryOp, a: Value, b: Value) -> Result<Value, NoFold> {
         (Array(items), Integer(n)) if op.is_shift() => crate::design::shifted(op, &items, n),
         // The logical operators on two static arrays of one length (`bv4'("1101") and
         // bv4'("0011")`), element by element; analysis checked the lengths' types.
-        (Array(x), Array(y))
-            if x.len() == y.len()
-                && matches!(
-                    op,
-                    BinaryOp::And
-                        | BinaryOp::Or
-                        | BinaryOp::Nand
-                        | BinaryOp::Nor
-                        | BinaryOp::Xor
-                        | BinaryOp::Xnor
-                ) =>
-        {
-            Array(
-                x.into_iter()
-                    .zip(y)
-                    .map(|(p, q)| binary(op, p, q))
-                    .collect::<Result<_, _>>()?,
-            )
-        }
+        (Array(x), Array(y)) if x.len() == y.len() && super::expr::is_logical(op) => Array(
+            x.into_iter()
+                .zip(y)
+                .map(|(p, q)| binary(op, p, q))
+                .collect::<Result<_, _>>()?,
+        ),
         _ => return err("operand types not supported by the operator"),
     })
 }
