@@ -6,6 +6,10 @@
 //! (sampled every 5 ms). Peak memory must not grow with the run: the three figures agree
 //! within 10 %.
 //!
+//! Then the event kernel alone beside GHDL: `benches/models/counter.vhd` (the counter without
+//! the RC, plain VHDL) for 1 ms without output, through `vams run` and, when Debian's `ghdl`
+//! is installed, `ghdl --elab-run` (its mcode backend; analysis not timed).
+//!
 //! Run: `cargo bench --bench stream` (`STREAM_STOPS=0.1ms,1ms` for other lengths). Writes
 //! CSVs of up to 2.5 GB into a temporary directory, removed after each run.
 
@@ -135,5 +139,56 @@ fn main() {
             "NOT within"
         };
         println!("peak memory spread {spread:.1} % ({verdict} 10 %)");
+    }
+    beside_ghdl(dir.path());
+}
+
+/// Wall time of one command, or `None` when it does not run or fails.
+fn timed(command: &mut Command) -> Option<f64> {
+    let started = Instant::now();
+    let out = command
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .status()
+        .ok()?;
+    out.success().then(|| started.elapsed().as_secs_f64())
+}
+
+/// The digital counter for 1 ms in vams and in GHDL (best of three each).
+fn beside_ghdl(dir: &Path) {
+    const COUNTER: &str = "benches/models/counter.vhd";
+    let best = |f: &mut dyn FnMut() -> Option<f64>| (0..3).filter_map(|_| f()).reduce(f64::min);
+    let vams = env!("CARGO_BIN_EXE_vams");
+    let v = best(&mut || timed(Command::new(vams).args(["run", COUNTER, "--stop", "1 ms"])));
+    println!("event kernel, {COUNTER} for 1 ms without output (best of 3):");
+    match v {
+        Some(t) => println!("  vams run          {t:>8.3} s"),
+        None => println!("  vams run          failed"),
+    }
+    let work = format!("--workdir={}", dir.display());
+    let analysed = Command::new("ghdl")
+        .args(["-a", "--std=02", &work, COUNTER])
+        .stderr(Stdio::null())
+        .status()
+        .is_ok_and(|s| s.success());
+    if !analysed {
+        println!("  ghdl              not installed (.ci/install-ghdl.sh installs it)");
+        return;
+    }
+    let g = best(&mut || {
+        timed(Command::new("ghdl").args([
+            "--elab-run",
+            "--std=02",
+            &work,
+            "counter",
+            "--stop-time=1ms",
+        ]))
+    });
+    match (v, g) {
+        (Some(v), Some(g)) => println!(
+            "  ghdl --elab-run   {g:>8.3} s  (vams / ghdl = {:.1})",
+            v / g
+        ),
+        _ => println!("  ghdl --elab-run   failed"),
     }
 }
