@@ -265,7 +265,12 @@ fn current_source_and_inductor_cut_set_follows_the_closed_form() {
     let v3 = |t: f64| r * amp * (w * t).sin();
     let v1 = |t: f64| v3(t) + l * amp * w * (w * t).cos();
     for keep_unknowns in [false, true] {
-        for (reltol, bound) in [(1e-3, 5e-3), (1e-6, 2e-4)] {
+        // The inductors' voltages are index-2 unknowns (derivatives of the source's current
+        // through the BDF formula): BDF of order k gives them order k - 1 and its error
+        // estimate misjudges them, so at 1e-6 the orders up to 5 that the currents allow end
+        // at 2.4e-4 in 129 steps (order 2 alone: 5.9e-5 in 531) until index reduction
+        // differentiates the cut set (issue 15).
+        for (reltol, bound) in [(1e-3, 5e-3), (1e-6, 3e-4)] {
             let options = SimOptions {
                 stop: 2e-3,
                 reltol,
@@ -316,10 +321,14 @@ fn loose_tolerance_keeps_junction_currents_balanced() {
     let design =
         elaborate(&loaded.sources, &loaded.files, &options).unwrap_or_else(|e| panic!("{e:?}"));
     let probes: Vec<String> = ["v_1", "v_2", "v_3"].map(String::from).to_vec();
-    let run = |reltol: f64| {
+    // The tight run is the reference, read by linear interpolation between its points: a
+    // step ceiling keeps that interpolation's own error out of the comparison (orders up to
+    // 5 take steps of tens of microseconds there).
+    let run = |reltol: f64, max_step: Option<f64>| {
         let options = SimOptions {
             stop: 1e-3,
             reltol,
+            max_step,
             probes: probes.clone(),
             ..SimOptions::default()
         };
@@ -327,7 +336,7 @@ fn loose_tolerance_keeps_junction_currents_balanced() {
         assert_eq!(result.outcome, Outcome::Finished, "reltol {reltol}");
         result
     };
-    let (loose, tight) = (run(1e-2), run(1e-6));
+    let (loose, tight) = (run(1e-2, None), run(1e-6, Some(1e-6)));
     for probe in &probes {
         let reference = tight.waveforms.column(probe).expect("recorded");
         let waves = Waves {
@@ -343,8 +352,10 @@ fn loose_tolerance_keeps_junction_currents_balanced() {
             .zip(&column.values)
             .map(|(&t, &v)| (v - waves.at(0, t)).abs())
             .fold(0.0, f64::max);
+        // 3.1 % measured on v_3 with orders up to 5 (their longer steps at 1e-2 each carry
+        // the whole tolerance), under 3 % at orders 1 and 2.
         assert!(
-            worst < 0.03 * swing,
+            worst < 0.035 * swing,
             "{probe}: {worst} V off the tight run (swing {swing} V)"
         );
     }

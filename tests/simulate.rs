@@ -57,10 +57,11 @@ fn rc_charge_follows_the_exponential() {
         let t = k as f64 * 0.5e-3;
         let v = w.value_at("v_c", t).expect("v_c recorded");
         let exact = 1.0 - (-t / tau).exp();
-        // Linear interpolation between accepted points adds its own error: compare at
+        // Linear interpolation between accepted points adds its own error (the orders up to
+        // 5 take longer steps: 2.2e-3 at 1 ms between points 0.3 ms apart): compare at
         // recorded points too.
         assert!(
-            (v - exact).abs() < 2e-3,
+            (v - exact).abs() < 5e-3,
             "t = {t}: v_c = {v}, exact {exact}"
         );
     }
@@ -175,6 +176,43 @@ fn thermostat_switches_at_the_analytic_times() {
     }
     for (t, x) in ons.iter().zip(&expected_on) {
         assert!((t - x).abs() < 1e-5 * x, "on at {t}, analytic {x}");
+    }
+}
+
+/// At the default tolerance (issue 15): the first switch within 0.05 % (order 2 alone switched
+/// 1.1 % late: each restart climbed from order 1 in long steps), the bouncing ball's impacts
+/// within 0.3 ms (6 ms before).
+#[test]
+fn events_at_the_default_tolerance_land_near_the_analytic_times() {
+    let result = run(
+        "thermostat",
+        SimOptions {
+            stop: 60.0,
+            ..SimOptions::default()
+        },
+    );
+    let exact = 100.0 * (15.0f64 / 9.0).ln();
+    let off = report_times(&result, "off");
+    assert!(
+        off.len() == 1 && (off[0] - exact).abs() < 5e-4 * exact,
+        "off at {off:?}, analytic {exact}"
+    );
+    let result = run(
+        "bouncing_ball",
+        SimOptions {
+            stop: 2.5,
+            ..SimOptions::default()
+        },
+    );
+    let (g, e): (f64, f64) = (9.81, 0.8);
+    let mut expected = vec![(2.0 / g).sqrt()];
+    for k in 1..4 {
+        expected.push(expected[k - 1] + 2.0 * e.powi(k as i32) * (2.0 * g).sqrt() / g);
+    }
+    let impacts = report_times(&result, "impact");
+    assert_eq!(impacts.len(), expected.len(), "impacts {impacts:?}");
+    for (t, x) in impacts.iter().zip(&expected) {
+        assert!((t - x).abs() < 3e-4, "impact at {t}, analytic {x}");
     }
 }
 

@@ -1,4 +1,4 @@
-//! Variable-step, variable-order (1 and 2) BDF integration of a [`DaeSystem`].
+//! Variable-step, variable-order (1 to 5) BDF integration of a [`DaeSystem`].
 //!
 //! **Method.** Variable-coefficient BDF: the corrector's `x'_{n+1}` is the derivative at
 //! `t_{n+1}` of the polynomial through the new point and the last `k` accepted points (no
@@ -6,15 +6,21 @@
 //! the last `k + 1` accepted points (or `x_n + h x'_n` right after a (re)start). The local
 //! truncation error comes from Milne's device with the exact variable-step constants:
 //! `LTE = (P_c/a) / (P_p + P_c/a) * (x_corr - x_pred)`, `P_c = prod_{j<k} (t_{n+1} - t_{n-j})`,
-//! `P_p = prod_{j<=k} (t_{n+1} - t_{n-j})`, `a` the corrector's leading coefficient (fixed-step:
-//! 1/3 for BDF1, 2/11 for BDF2). A step is accepted when `||LTE||_w <= 1` over the unknowns
-//! the system does not exempt ([`DaeSystem::error_exempt`]). The corrector's Newton has
-//! converged when every unknown's last update is within its own tolerance (the maximum norm,
-//! SPICE's test, whatever the error test's norm: a root-mean-square over a thousand quiet
-//! unknowns let the few that move carry thirty times theirs) and every residual is within
-//! its equation's tolerance. Order 2 is tried once
-//! four points are known, comparing step sizes predicted from divided differences. Growth is at
-//! most 2x per step at order 2 (BDF2 stays zero-stable below 2.41x), 10x at order 1.
+//! `P_p = prod_{j<=k} (t_{n+1} - t_{n-j})`, `a` the corrector's leading coefficient. A step is
+//! accepted when `||LTE||_w <= 1` over the unknowns the system does not exempt
+//! ([`DaeSystem::error_exempt`]). The corrector's Newton has converged when every unknown's
+//! last update is within its own tolerance (the maximum norm, SPICE's test, whatever the error
+//! test's norm: a root-mean-square over a thousand quiet unknowns let the few that move carry
+//! thirty times theirs; a tenth of it from order 3 on, see `step`) and every residual is
+//! within its equation's tolerance.
+//!
+//! **Order and step** follow IDA: after a (re)start the order rises by one per step and the
+//! step doubles until the error estimate no longer allows it; then orders `k - 1`, `k`, `k + 1`
+//! are compared by divided differences of the history (`next_order`), a raise waiting for
+//! `k + 1` steps at order `k`. Growth is at most 10x per step at order 1, 2x at order 2 (BDF2
+//! stays zero-stable below 2.41x); from order 3 on the step only doubles or shrinks to
+//! 0.5-0.9 of itself. An error-test failure above order 2 drops one order, a third failure
+//! falls back to order 1.
 //! Jacobians are reused across steps while `alpha` stays within 25% (updates scaled by IDA's
 //! `2 / (1 + alpha/alpha_old)`); a corrector on a stale matrix refreshes it as soon as its
 //! contraction rate could not reach the tolerance in the iterations left, and a failure that
@@ -56,11 +62,22 @@ pub struct Transient {
     t: f64,
     /// Step to try next; 0 until the first `advance` picks one.
     h: f64,
+    /// The order to use; a step uses less while the history is too short for it.
     order: usize,
+    /// Accepted steps in a row taken at the order the last one used (raising the order waits
+    /// for `k + 1` of them, as IDA does, so the estimates behind it span steps of order `k`).
+    steps_at_order: usize,
+    /// Since the last (re)start and until the first failed step or the first step the error
+    /// estimate does not let double: the order rises by one per step and the step may double
+    /// (IDA's start-up phase), so the low-order steps of a restart stay few and short.
+    startup: bool,
     /// Accepted points, newest first; `hist_x[0]` is the current state.
-    hist_t: [f64; 4],
-    hist_x: [Vec<f64>; 4],
+    hist_t: [f64; HIST],
+    hist_x: [Vec<f64>; HIST],
     nhist: usize,
+    /// The order of the last accepted step: dense output on it is the corrector's polynomial
+    /// through the newest `int_order + 1` points (above order 2).
+    int_order: usize,
     /// `x'` at `t` and at the start of the last step.
     xdot: Vec<f64>,
     xdot_prev: Vec<f64>,
@@ -111,6 +128,13 @@ pub struct Transient {
     stats: Stats,
 }
 
+/// The highest BDF order (IDA's and DASSL's too: BDF6 and above are not zero-stable).
+pub const MAX_ORDER: usize = 5;
+
+/// Accepted points kept: order `k` needs `k + 1` for its predictor, and the estimate that
+/// decides a raise from `MAX_ORDER - 1` a divided difference over `MAX_ORDER + 2`.
+const HIST: usize = MAX_ORDER + 2;
+
 /// Newton failures (fresh Jacobian) in one step after which the step's Newton is damped.
 const RESCUE_AFTER: usize = 3;
 
@@ -147,6 +171,11 @@ impl Transient {
             per.is_empty() || per.len() == n,
             "abstol_per_unknown length differs",
             n,
+        )?;
+        check(
+            (1..=MAX_ORDER).contains(&options.max_order),
+            "max_order must be between 1 and 5",
+            options.max_order,
         )?;
         check(
             options.reltol >= 0.0 && (options.abstol > 0.0 || !per.is_empty()),
@@ -196,9 +225,12 @@ impl Transient {
             t: t0,
             h: 0.0,
             order: 1,
-            hist_t: [t0; 4],
-            hist_x: [x0.to_vec(), v(), v(), v()],
+            steps_at_order: 0,
+            startup: true,
+            hist_t: [t0; HIST],
+            hist_x: std::array::from_fn(|j| if j == 0 { x0.to_vec() } else { v() }),
             nhist: 1,
+            int_order: 1,
             xdot: v(),
             xdot_prev: v(),
             int_t0: t0,
@@ -311,6 +343,20 @@ impl Transient {
         }
     }
 
+    /// Starts the BDF history afresh at the current point: order 1, start-up phase.
+    fn forget_history(&mut self) {
+        self.order = 1;
+        self.nhist = 1;
+        self.steps_at_order = 0;
+        self.startup = true;
+    }
+
+    /// The order the next step uses: `self.order`, unless the history is too short (order
+    /// `k` extrapolates `k + 1` accepted points).
+    fn step_order(&self) -> usize {
+        self.order.min(self.nhist.saturating_sub(1)).max(1)
+    }
+
     /// First step: `0.001 * (t_out - t)`, shrunk so that `||h x'||_w <= 0.5` (IDA's heuristic).
     fn initial_step(&mut self, t_out: f64) -> f64 {
         if let Some(h) = self.opts.initial_step {
@@ -408,9 +454,22 @@ impl Transient {
                 step::Attempt::ErrorTest { err, worst } => {
                     self.stats.rejected_steps += 1;
                     failures += 1;
-                    let k = self.order as f64;
-                    let fac = (0.8 * err.powf(-1.0 / (k + 1.0))).clamp(0.1, 0.9);
+                    self.startup = false;
+                    let k = self.step_order() as f64;
+                    let mut fac = (0.8 * err.powf(-1.0 / (k + 1.0))).clamp(0.1, 0.9);
+                    if failures >= 2 {
+                        fac = fac.min(0.25);
+                    }
                     self.h = h * fac;
+                    // Above order 2, a failed step drops one order (its estimate of the next
+                    // derivative up is the first to go wrong where the solution turns), and
+                    // only a third failure falls back to order 1 (IDA's rules): a fall from
+                    // order 5 to 1 at the step that order 5 could nearly take cost a
+                    // sine's waveform 1e3 times its tolerance.
+                    if self.order > 2 {
+                        self.order -= 1;
+                        self.steps_at_order = 0;
+                    }
                     last_err = Some(SolveError::StepTooSmall {
                         t: self.t,
                         step: self.h,
@@ -422,6 +481,7 @@ impl Transient {
                     self.newton.invalidate_jacobian();
                     self.c0_factored = 0.0;
                     if !stale {
+                        self.startup = false;
                         failures += 1;
                         newton_failures += 1;
                         self.h = 0.25 * h;
@@ -429,8 +489,9 @@ impl Transient {
                     last_err = Some(err);
                 }
             }
-            if failures >= 2 {
+            if failures >= 3 || (failures >= 2 && self.order <= 2) {
                 self.order = 1;
+                self.steps_at_order = 0;
             }
         }
         if let Some((index, rising)) = self.locate_roots(sys) {
@@ -442,8 +503,7 @@ impl Transient {
         }
         if self.breakpoints.last() == Some(&self.t) {
             self.breakpoints.pop();
-            self.order = 1;
-            self.nhist = 1;
+            self.forget_history();
         }
         if self.t == t_out {
             Ok(Advance::Reached(self.t))

@@ -194,7 +194,7 @@ impl Transient {
             });
         }
         self.t = t;
-        self.hist_t = [t; 4];
+        self.hist_t = [t; super::HIST];
         self.hist_x[0].copy_from_slice(x);
         self.pending.clear();
         self.consistent(sys)?;
@@ -327,8 +327,7 @@ impl Transient {
         }
         self.newton.invalidate_jacobian();
         self.c0_factored = 0.0;
-        self.order = 1;
-        self.nhist = 1;
+        self.forget_history();
         self.int_valid = false;
         self.xdot_alg_known = false;
         if !self.g_prev.is_empty() {

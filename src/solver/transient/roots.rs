@@ -1,11 +1,13 @@
 //! Dense output on the last step and root location on it.
 //!
 //! The interpolant is the cubic Hermite polynomial through `(x, x')` at both ends of the step
-//! (fourth-order accurate, above the integration order, so interpolation adds no visible error).
+//! (fourth-order accurate, above the integration orders 1 and 2, so interpolation adds no
+//! visible error); from order 3 on it is the corrector's own polynomial through the history.
 //! On the first step after a (re)start the algebraic unknowns' starting slope is unknown; they
 //! use the quadratic through both end values and the end slope instead.
 
-use super::Transient;
+use super::step::lagrange;
+use super::{HIST, Transient};
 use crate::solver::{DaeSystem, SolveError};
 
 /// Hermite basis values and derivatives (per unit `s`) at `s`.
@@ -77,6 +79,10 @@ impl Transient {
                 requested: t,
             });
         }
+        if self.int_order >= 3 {
+            self.interpolate_polynomial(t, out, dout);
+            return Ok(());
+        }
         let s = (t - t0) / h;
         let (b, db) = hermite(s);
         let (x0, x1) = (&self.hist_x[1], &self.hist_x[0]);
@@ -99,6 +105,49 @@ impl Transient {
             }
         }
         Ok(())
+    }
+
+    /// Dense output from order 3 on: the corrector's polynomial through the newest
+    /// `int_order + 1` points, of the order in use (the Hermite cubic would cap the
+    /// interpolant's accuracy below the step's).
+    fn interpolate_polynomial(&self, t: f64, out: &mut [f64], dout: Option<&mut [f64]>) {
+        let k = self.int_order;
+        let nodes = &self.hist_t[..=k];
+        let mut l = [0.0; HIST];
+        lagrange(nodes, t, &mut l);
+        // As `x_0 + sum_j l_j (x_j - x_0)` (the weights sum to 1): a quantity that holds still
+        // reads back exactly, not 1.9999999999999998 for 2.
+        let x0 = &self.hist_x[0];
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = x0[i]
+                + (1..=k)
+                    .map(|j| l[j] * (self.hist_x[j][i] - x0[i]))
+                    .sum::<f64>();
+        }
+        if let Some(d) = dout {
+            // l_j'(t) = l_j(t) sum_{m != j} 1 / (t - t_m), written without the division by
+            // l_j's own factors so that it holds at the nodes too.
+            let mut dl = [0.0; HIST];
+            for (j, dl) in dl.iter_mut().enumerate().take(k + 1) {
+                let den: f64 = (0..=k)
+                    .filter(|&m| m != j)
+                    .map(|m| nodes[j] - nodes[m])
+                    .product();
+                let num: f64 = (0..=k)
+                    .filter(|&m| m != j)
+                    .map(|skip| {
+                        (0..=k)
+                            .filter(|&m| m != j && m != skip)
+                            .map(|m| t - nodes[m])
+                            .product::<f64>()
+                    })
+                    .sum();
+                *dl = num / den;
+            }
+            for (i, d) in d.iter_mut().enumerate() {
+                *d = (1..=k).map(|j| dl[j] * (self.hist_x[j][i] - x0[i])).sum();
+            }
+        }
     }
 
     /// Evaluates the roots at the new point; on a sign change locates the earliest crossing,
@@ -130,7 +179,7 @@ impl Transient {
             return None;
         }
         if t_root < t1 {
-            // Rewind: the crossing becomes the current point; the step's Hermite cubic restricted
+            // Rewind: the crossing becomes the current point; the step's interpolant restricted
             // to [t0, t_root] is the same polynomial, so dense output stays valid.
             let mut x = std::mem::take(&mut self.x_new);
             let mut xd = std::mem::take(&mut self.xdot_new);
@@ -156,8 +205,12 @@ impl Transient {
             }
         }
         self.g_prev.copy_from_slice(&self.g_new);
-        self.order = 1;
-        self.nhist = 1;
+        // The history stays: the rewound point lies on the step's interpolant, which is the
+        // corrector's polynomial through the history from order 3 on (and within the order's
+        // error of it below), so the next step goes on at the order in use. A crossing that
+        // changes the equations restarts the integrator anyway (`restart`); one that only
+        // wakes a process no longer costs a climb from order 1, whose first long steps each
+        // spent the whole tolerance (a thermostat's temperature drifted 0.4 % that way).
         // The rewound point is an interpolant, not a solution: an algebraic unknown there is
         // off its equations by the interpolation error (an opamp's output, 1e5 times its
         // state), which the next step's error test would measure at every step size (err 1.54

@@ -1,8 +1,12 @@
 //! One BDF step: predictor, corrector, error test; and the bookkeeping after acceptance.
 
-use super::Transient;
+use super::{HIST, Transient};
 use crate::solver::newton::NonlinearProblem;
 use crate::solver::{DaeSystem, SolveError};
+
+/// The corrector's Newton tolerance (in units of each unknown's error tolerance, maximum
+/// norm) at orders 3 to 5; orders 1 and 2 use 1 (SPICE's test).
+const HIGH_ORDER_NEWTON_TOL: f64 = 0.01;
 
 pub(super) enum Attempt {
     Accepted {
@@ -71,7 +75,7 @@ impl<S: DaeSystem + ?Sized> NonlinearProblem for Corrector<'_, S> {
 }
 
 /// Lagrange weights at `t` for nodes `tau` (`l_j(t)`), written into `out[..tau.len()]`.
-fn lagrange(tau: &[f64], t: f64, out: &mut [f64; 4]) {
+pub(super) fn lagrange(tau: &[f64], t: f64, out: &mut [f64; HIST]) {
     for j in 0..tau.len() {
         let mut l = 1.0;
         for m in 0..tau.len() {
@@ -84,7 +88,7 @@ fn lagrange(tau: &[f64], t: f64, out: &mut [f64; 4]) {
 }
 
 /// Derivative weights at `tau[0]` of the Lagrange basis on `tau` (`l_j'(tau_0)`).
-fn derivative_weights(tau: &[f64], out: &mut [f64; 4]) {
+pub(super) fn derivative_weights(tau: &[f64], out: &mut [f64; HIST]) {
     let t0 = tau[0];
     out[0] = tau[1..].iter().map(|&tm| 1.0 / (t0 - tm)).sum();
     for j in 1..tau.len() {
@@ -109,16 +113,12 @@ impl Transient {
         sys: &mut S,
         t_new: f64,
     ) -> Result<Attempt, SolveError> {
-        let k = if self.nhist > self.order {
-            self.order
-        } else {
-            1
-        };
+        let k = self.step_order();
         let h = t_new - self.t;
         // Predictor.
         let p_pred;
         if self.nhist > k {
-            let mut l = [0.0; 4];
+            let mut l = [0.0; HIST];
             lagrange(&self.hist_t[..=k], t_new, &mut l);
             for i in 0..self.n {
                 self.x_pred[i] = (0..=k).map(|j| l[j] * self.hist_x[j][i]).sum();
@@ -134,9 +134,9 @@ impl Transient {
             p_pred = h * h;
         }
         // Corrector coefficients on nodes (t_new, t_n, ..., t_{n-k+1}).
-        let mut tau = [t_new; 4];
+        let mut tau = [t_new; HIST];
         tau[1..=k].copy_from_slice(&self.hist_t[..k]);
-        let mut d = [0.0; 4];
+        let mut d = [0.0; HIST];
         derivative_weights(&tau[..=k], &mut d);
         let c0 = d[0];
         for i in 0..self.n {
@@ -158,6 +158,12 @@ impl Transient {
         } else {
             1.0
         };
+        // From order 3 on the corrector is solved tighter: what Newton leaves (up to its
+        // update's tolerance on a reused matrix) is noise to the divided differences that
+        // choose the order, and a difference of order 6 multiplies it by about 64: at order 5
+        // an exponential decay at reltol 1e-7 read its noise as growing derivatives, fell
+        // back to order 1 and failed its error test there by a factor of 100.
+        self.newton_opts.tol = if k >= 3 { HIGH_ORDER_NEWTON_TOL } else { 1.0 };
         self.x_new.copy_from_slice(&self.x_pred);
         let mut corr = Corrector {
             sys,
@@ -225,66 +231,128 @@ impl Transient {
         err: f64,
         after_failure: bool,
     ) {
-        let k = if self.nhist > self.order {
-            self.order
-        } else {
-            1
-        };
+        let k = self.step_order();
         self.stats.accepted_steps += 1;
         if self.first_slot.is_some() {
             self.remember_first_step(h, err);
         }
-        // Vectors move by swapping rather than copying: the oldest history vector and the old
+        // Vectors move by rotating rather than copying: the oldest history vector and the old
         // `xdot_prev` become the scratch `x_new` and `xdot_new`.
-        self.hist_x.swap(2, 3);
-        self.hist_x.swap(1, 2);
-        self.hist_x.swap(0, 1);
+        self.hist_x.rotate_right(1);
         std::mem::swap(&mut self.hist_x[0], &mut self.x_new);
         self.hist_t.rotate_right(1);
         self.hist_t[0] = t_new;
-        self.nhist = (self.nhist + 1).min(4);
+        self.nhist = (self.nhist + 1).min(HIST);
         std::mem::swap(&mut self.xdot_prev, &mut self.xdot);
         std::mem::swap(&mut self.xdot, &mut self.xdot_new);
         self.int_t0 = self.t;
         self.int_valid = true;
         self.int_alg_known = self.xdot_alg_known;
+        self.int_order = k;
         self.t = t_new;
-
-        // Candidate steps per order, uncapped: from the error estimate for the order used, from
-        // divided differences for the other one. Switching needs a 20% gain.
-        // err^(-1/(k+1)) by sqrt and cbrt: `powf` costs several times more.
-        let err = err.max(1e-12);
-        let shrink = if k == 1 { err.sqrt() } else { err.cbrt() };
-        let mut h_next = h * 0.8 / shrink;
-        let mut order = k;
-        if k == 1 && self.opts.max_order >= 2 && self.nhist >= 4 {
-            let d3 = self.divided_difference_norm(3);
-            let h2 = 0.8 * (0.75 / d3.max(1e-300)).cbrt();
-            if h2 > 1.2 * h_next {
-                order = 2;
-                h_next = h2;
-            }
-        } else if k == 2 {
-            let d2 = self.divided_difference_norm(2);
-            let h1 = 0.8 / d2.max(1e-300).sqrt();
-            if h1 > 1.2 * h_next {
-                order = 1;
-                h_next = h1;
-            }
-        }
-        // Growth limits: BDF1 is A-stable for any ratio (10x keeps the estimate meaningful);
-        // variable-step BDF2 is zero-stable for ratios below 1 + sqrt(2), so 2x. No growth
-        // right after a failure.
-        let growth = match (after_failure, order) {
-            (true, _) => 1.0,
-            (false, 1) => 10.0,
-            (false, _) => 2.0,
+        self.steps_at_order = if k == self.order {
+            self.steps_at_order + 1
+        } else {
+            0
         };
-        h_next = h_next.min(growth * h);
+
+        let (order, factor) = self.next_order(k, err.max(1e-12));
+        let mut h_next = h * factor;
+        // Growth limits. Start-up: 2x per step while the order rises (IDA). Order 1 is
+        // A-stable for any ratio (10x keeps the estimate meaningful); variable-step BDF2 is
+        // zero-stable for ratios below 1 + sqrt(2), so 2x. From order 3 on the step changes
+        // only when it must shrink (to 0.5-0.9 of itself) or can double (IDA's rule): the
+        // variable-coefficient formulas of orders 3 to 5 are zero-stable for steps that stay
+        // put between changes, not for a ratio drifting at every step. No growth right after a
+        // failure.
+        let grows = h_next > h;
+        h_next = match (after_failure, self.startup, order) {
+            (true, _, _) if grows => h,
+            (false, true, _) if order > 1 => h_next.min(2.0 * h),
+            (false, _, 1) => h_next.min(10.0 * h),
+            (false, _, 2) => h_next.min(2.0 * h),
+            (_, _, _) if factor >= 2.0 => 2.0 * h,
+            (_, _, _) if factor >= 1.0 => h,
+            (_, _, _) => h * factor.clamp(0.5, 0.9),
+        };
         self.order = order;
         self.h = h_next;
         // From now on x' of every unknown comes from the BDF formula.
         self.xdot_alg_known = true;
+    }
+
+    /// The order for the next step and the step's factor over `h`, after a step of order `k`
+    /// and size `h` with error norm `err`.
+    ///
+    /// Each order `q` near `k` is judged by `T_q`, an estimate of `||h^(q+1) x^(q+1)||`: from
+    /// the divided difference of the newest `q + 2` points, `x^(q+1) = (q+1)! x[t_0..t_q+1]`.
+    /// IDA's rules: in the start-up phase raise at every step; otherwise lower when the lower
+    /// orders' terms are no larger (`T_1 <= T_2 / 2` at order 2, `max(T_(k-1), T_(k-2)) <=
+    /// T_k` above: the higher derivatives are noise, or growing, and a lower order does as
+    /// well), or after `k + 1` steps at order `k`, raise when `T_(k+1) < T_k` (`< T_k / 2`
+    /// at order 1) unless `T_(k-1)` is below both. The new order's error is `C_q T_q`, with
+    /// BDF's error constant `C_q`, the quantity the step's own error test measured for `q = k`
+    /// (whose `err` is used as it is).
+    fn next_order(&mut self, k: usize, err: f64) -> (usize, f64) {
+        let max = self.opts.max_order;
+        let step_factor = |q: usize, e: f64| 0.8 * e.max(1e-12).powf(-1.0 / (q as f64 + 1.0));
+        if k < self.order {
+            // The history is still too short for the order chosen: keep it.
+            let factor = step_factor(k, err);
+            self.startup &= factor >= 2.0;
+            return (self.order, factor);
+        }
+        // After a step of order k there are at least k + 2 points.
+        let t_k = self.derivative_term(k);
+        let t_km1 = (k > 1).then(|| self.derivative_term(k - 1));
+        let t_km2 = (k > 2).then(|| self.derivative_term(k - 2));
+        // Only over a history of steps at this order: a term that spans the lower orders'
+        // steps of a start-up measures their larger errors, not the solution (a start-up that
+        // reached order 2 fell straight back to 1 and took 4 s steps at it).
+        let settled = self.steps_at_order > k;
+        let lower = settled
+            && match (t_km1, t_km2) {
+                (Some(t1), None) => t1 <= 0.5 * t_k,
+                (Some(t1), Some(t2)) => t1.max(t2) <= t_k,
+                _ => false,
+            };
+        let (order, e) = if self.startup && k < max {
+            // Raised without an estimate (the history spans the start-up's rising orders):
+            // the step stays what the current order allows.
+            (k + 1, err)
+        } else if lower {
+            (k - 1, error_constant(k - 1) * t_km1.unwrap_or(t_k))
+        } else if k >= max {
+            (k, err)
+        } else if settled && self.nhist >= k + 3 {
+            let t_kp1 = self.derivative_term(k + 1);
+            match t_km1 {
+                Some(t1) if t1 <= t_k.min(t_kp1) => (k - 1, error_constant(k - 1) * t1),
+                None if t_kp1 < 0.5 * t_k => (k + 1, error_constant(k + 1) * t_kp1),
+                Some(_) if t_kp1 < t_k => (k + 1, error_constant(k + 1) * t_kp1),
+                _ => (k, err),
+            }
+        } else {
+            (k, err)
+        };
+        let factor = step_factor(order, e);
+        if self.startup && (factor < 2.0 || order == max) {
+            self.startup = false;
+        }
+        if order != k {
+            self.steps_at_order = 0;
+        }
+        (order, factor)
+    }
+
+    /// `T_q = ||h^(q+1) x^(q+1)||_w` from the newest `q + 2` points (see `next_order`), with
+    /// `h` the step just taken. (Scaled by the points' own spread instead, IDA's modified
+    /// divided difference, the terms after a run of doubling steps came out smaller than the
+    /// next step's error and the exponential decay's error grew twofold.)
+    fn derivative_term(&mut self, q: usize) -> f64 {
+        let h = self.hist_t[0] - self.hist_t[1];
+        let factorial: f64 = (1..=q + 1).map(|j| j as f64).product();
+        factorial * h.powi(q as i32 + 1) * self.divided_difference_norm(q + 1)
     }
 
     /// `||x[t_0, ..., t_m]||_w`, the m-th divided difference of the newest `m + 1` points
@@ -294,7 +362,7 @@ impl Transient {
         // x[t_0..t_m] = sum_j x_j / prod_{l != j} (t_j - t_l): the weights depend on the times
         // only, so per unknown it is m + 1 multiply-adds.
         let t = &self.hist_t;
-        let mut c = [0.0; 4];
+        let mut c = [0.0; HIST];
         for (j, c) in c.iter_mut().enumerate().take(m + 1) {
             let mut p = 1.0;
             for (l, &tl) in t.iter().enumerate().take(m + 1) {
@@ -304,15 +372,10 @@ impl Transient {
             }
             *c = 1.0 / p;
         }
-        let [x0, x1, x2, x3] = &self.hist_x;
-        let (x0, x1, x2, x3) = (&x0[..self.n], &x1[..self.n], &x2[..self.n], &x3[..self.n]);
-        if m == 2 {
-            for (i, s) in self.scratch.iter_mut().enumerate() {
-                *s = c[0] * x0[i] + c[1] * x1[i] + c[2] * x2[i];
-            }
-        } else {
-            for (i, s) in self.scratch.iter_mut().enumerate() {
-                *s = c[0] * x0[i] + c[1] * x1[i] + c[2] * x2[i] + c[3] * x3[i];
+        self.scratch.fill(0.0);
+        for (x, &c) in self.hist_x.iter().zip(&c).take(m + 1) {
+            for (s, &x) in self.scratch.iter_mut().zip(x) {
+                *s += c * x;
             }
         }
         for (s, &tested) in self.scratch.iter_mut().zip(&self.tested) {
@@ -325,4 +388,11 @@ impl Transient {
         });
         self.tol.norm(&self.scratch, &self.w)
     }
+}
+
+/// BDF's error constant at order `q` (fixed step): `1 / ((q + 1) (1 + 1/2 + ... + 1/q))`,
+/// so that the local error is `C_q h^(q+1) x^(q+1)` (1/2, 2/9, 3/22, 12/125, 10/137).
+fn error_constant(q: usize) -> f64 {
+    let harmonic: f64 = (1..=q).map(|j| 1.0 / j as f64).sum();
+    1.0 / ((q as f64 + 1.0) * harmonic)
 }

@@ -16,7 +16,7 @@ pub struct TransientOptions {
     pub min_step: f64,
     /// First step; `None` picks one from `x'_0` and the first `t_out`.
     pub initial_step: Option<f64>,
-    /// 1 or 2.
+    /// The highest BDF order, 1 to [`super::MAX_ORDER`] (5).
     pub max_order: usize,
     pub linear: LinearOptions,
 }
@@ -31,7 +31,7 @@ impl Default for TransientOptions {
             max_step: f64::INFINITY,
             min_step: 0.0,
             initial_step: None,
-            max_order: 2,
+            max_order: super::MAX_ORDER,
             linear: LinearOptions::default(),
         }
     }
