@@ -53,21 +53,53 @@ fn checked_length(args: &[Expr], env: &Env) -> Result<Value, EvalError> {
     }
 }
 
+/// The value of `e`. The leaves and operators of ordinary arithmetic are here, in a small
+/// frame; everything else is in [`eval_other`], whose frame is large.
 pub(crate) fn eval(e: &Expr, env: &Env) -> Result<Value, EvalError> {
-    Ok(match e {
-        Expr::Const(v) => v.clone(),
-        Expr::Quantity(q) => Value::Real(env.quantities[q.index()]),
-        Expr::Dot(q) => Value::Real(env.derivatives[q.index()]),
-        Expr::Signal(s) => env.signals[s.index()].value.clone(),
-        Expr::Var(v) => env.vars[v.index()].clone(),
-        Expr::Now => Value::Time(env.now),
-        Expr::Unary(op, a) => unary(*op, eval(a, env)?)?,
+    match e {
+        Expr::Const(v) => Ok(v.clone()),
+        Expr::Signal(s) => Ok(env.signals[s.index()].value.clone()),
+        Expr::Var(v) => Ok(env.vars[v.index()].clone()),
         // `and` and `or` on booleans short-circuit (LRM 9.2.2).
         Expr::Binary(op @ (BinaryOp::And | BinaryOp::Or), a, b) => match eval(a, env)? {
-            Value::Boolean(x) if x == (*op == BinaryOp::Or) => Value::Boolean(x),
-            a => binary(*op, a, eval(b, env)?)?,
+            Value::Boolean(x) if x == (*op == BinaryOp::Or) => Ok(Value::Boolean(x)),
+            a => binary(*op, a, eval(b, env)?),
         },
-        Expr::Binary(op, a, b) => binary(*op, eval(a, env)?, eval(b, env)?)?,
+        Expr::Binary(op, a, b) => {
+            let a = match leaf(a, env) {
+                Some(v) => v,
+                None => eval(a, env)?,
+            };
+            let b = match leaf(b, env) {
+                Some(v) => v,
+                None => eval(b, env)?,
+            };
+            binary(*op, a, b)
+        }
+        _ => eval_other(e, env),
+    }
+}
+
+/// The value of a constant, signal or variable operand, read in place rather than through
+/// a call of [`eval`]; `None` for other expressions.
+#[inline(always)]
+fn leaf(e: &Expr, env: &Env) -> Option<Value> {
+    match e {
+        Expr::Const(v) => Some(v.clone()),
+        Expr::Signal(s) => Some(env.signals[s.index()].value.clone()),
+        Expr::Var(v) => Some(env.vars[v.index()].clone()),
+        _ => None,
+    }
+}
+
+#[inline(never)]
+fn eval_other(e: &Expr, env: &Env) -> Result<Value, EvalError> {
+    Ok(match e {
+        Expr::Const(_) | Expr::Signal(_) | Expr::Var(_) | Expr::Binary(..) => eval(e, env)?,
+        Expr::Quantity(q) => Value::Real(env.quantities[q.index()]),
+        Expr::Dot(q) => Value::Real(env.derivatives[q.index()]),
+        Expr::Now => Value::Time(env.now),
+        Expr::Unary(op, a) => unary(*op, eval(a, env)?)?,
         // An array value checked against its target's length: moved through, not copied.
         Expr::Call(Builtin::CheckLength, args) => checked_length(args, env)?,
         Expr::Call(f, args) => {

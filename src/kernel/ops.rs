@@ -104,6 +104,12 @@ pub(crate) fn unary(op: UnaryOp, v: Value) -> Result<Value, EvalError> {
 /// Arithmetic, comparison, logic and concatenation. `and`/`or` short-circuit in the caller.
 pub(crate) fn binary(op: BinaryOp, a: Value, b: Value) -> Result<Value, EvalError> {
     use BinaryOp::*;
+    // Two integers (counters, indices, loop bounds) skip the general dispatch; operands
+    // matched by value here need no drop.
+    let (a, b) = match (a, b) {
+        (Value::Integer(x), Value::Integer(y)) => return integers(op, x, y),
+        other => other,
+    };
     match op {
         Add | Sub | Mul | Div => arithmetic(op, a, b),
         Pow => power(a, b),
@@ -156,22 +162,7 @@ fn arithmetic(op: BinaryOp, a: Value, b: Value) -> Result<Value, EvalError> {
             }
             Real(r)
         }
-        (Div, Integer(_), Integer(0)) => {
-            return Err(EvalError::new(
-                "integer division by zero",
-                "guard the division, or use real arithmetic",
-            ));
-        }
-        (_, Integer(x), Integer(y)) => {
-            let r = match op {
-                Add => x.checked_add(*y),
-                Sub => x.checked_sub(*y),
-                Mul => x.checked_mul(*y),
-                // Rust's `/` truncates towards zero, as VHDL's does.
-                _ => x.checked_div(*y),
-            };
-            checked("integer arithmetic", r)?
-        }
+        (_, Integer(x), Integer(y)) => integer_arithmetic(op, *x, *y)?,
         (Add | Sub, Time(x), Time(y)) => Time(real(*x, *y)),
         (Mul | Div, Time(x), Real(y)) => Time(real(*x, *y)),
         (Mul | Div, Time(x), Integer(y)) => Time(real(*x, *y as f64)),
@@ -192,18 +183,68 @@ fn arithmetic(op: BinaryOp, a: Value, b: Value) -> Result<Value, EvalError> {
     })
 }
 
+/// `x op y` on two integers: what [`binary`] gives for them, by a shorter path.
+fn integers(op: BinaryOp, x: i64, y: i64) -> Result<Value, EvalError> {
+    use BinaryOp::*;
+    match op {
+        Add | Sub | Mul | Div => integer_arithmetic(op, x, y),
+        Mod | Rem => integer_modulo(op, x, y),
+        Pow => integer_power(x, y),
+        Eq => Ok(Value::Boolean(x == y)),
+        Ne => Ok(Value::Boolean(x != y)),
+        Lt => Ok(Value::Boolean(x < y)),
+        Le => Ok(Value::Boolean(x <= y)),
+        Gt => Ok(Value::Boolean(x > y)),
+        Ge => Ok(Value::Boolean(x >= y)),
+        // Type errors: the general path words them.
+        _ => general(op, Value::Integer(x), Value::Integer(y)),
+    }
+}
+
+/// [`binary`] without its integer shortcut (which comes back here only for type errors).
+#[inline(never)]
+fn general(op: BinaryOp, a: Value, b: Value) -> Result<Value, EvalError> {
+    use BinaryOp::*;
+    match op {
+        And | Or | Nand | Nor | Xor | Xnor => logic(op, a, b),
+        Concat => concat(a, b),
+        Sll | Srl | Sla | Sra | Rol | Ror => shift(op, a, b),
+        _ => Err(mismatch(&format!("{op:?}"), &a, &b)),
+    }
+}
+
+fn integer_arithmetic(op: BinaryOp, x: i64, y: i64) -> Result<Value, EvalError> {
+    use BinaryOp::*;
+    if op == Div && y == 0 {
+        return Err(EvalError::new(
+            "integer division by zero",
+            "guard the division, or use real arithmetic",
+        ));
+    }
+    let r = match op {
+        Add => x.checked_add(y),
+        Sub => x.checked_sub(y),
+        Mul => x.checked_mul(y),
+        // Rust's `/` truncates towards zero, as VHDL's does.
+        _ => x.checked_div(y),
+    };
+    checked("integer arithmetic", r)
+}
+
+fn integer_power(x: i64, y: i64) -> Result<Value, EvalError> {
+    let e = u32::try_from(y).map_err(|_| {
+        EvalError::new(
+            format!("integer {x} ** {y}: negative exponent"),
+            "an integer power needs a non-negative exponent; use real operands",
+        )
+    })?;
+    checked("**", x.checked_pow(e))
+}
+
 fn power(a: Value, b: Value) -> Result<Value, EvalError> {
     use Value::*;
     Ok(match (&a, &b) {
-        (Integer(x), Integer(y)) => {
-            let e = u32::try_from(*y).map_err(|_| {
-                EvalError::new(
-                    format!("integer {x} ** {y}: negative exponent"),
-                    "an integer power needs a non-negative exponent; use real operands",
-                )
-            })?;
-            checked("**", x.checked_pow(e))?
-        }
+        (Integer(x), Integer(y)) => integer_power(*x, *y)?,
         (Real(x), Integer(y)) => match i32::try_from(*y) {
             Ok(e) => Real(x.powi(e)),
             Err(_) => Real(x.powf(*y as f64)),
@@ -218,15 +259,19 @@ fn modulo(op: BinaryOp, a: Value, b: Value) -> Result<Value, EvalError> {
     let (Value::Integer(x), Value::Integer(y)) = (&a, &b) else {
         return Err(mismatch(&format!("{op:?}"), &a, &b));
     };
-    if *y == 0 {
+    integer_modulo(op, *x, *y)
+}
+
+fn integer_modulo(op: BinaryOp, x: i64, y: i64) -> Result<Value, EvalError> {
+    if y == 0 {
         return Err(EvalError::new(
             format!("{x} {} 0", if op == BinaryOp::Mod { "mod" } else { "rem" }),
             "the right operand of mod and rem must not be zero",
         ));
     }
-    let r = x.checked_rem(*y).ok_or_else(|| overflow("rem"))?;
+    let r = x.checked_rem(y).ok_or_else(|| overflow("rem"))?;
     // `rem` has the sign of the left operand (Rust's `%`); `mod` that of the right.
-    let m = if op == BinaryOp::Mod && r != 0 && (r < 0) != (*y < 0) {
+    let m = if op == BinaryOp::Mod && r != 0 && (r < 0) != (y < 0) {
         r + y
     } else {
         r

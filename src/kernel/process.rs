@@ -220,13 +220,32 @@ pub(crate) fn run(
     state.waiting_at = None;
     state.timeout_at = None;
     let subs = cx.subprograms;
+    // The running code changes only at `Call` and `Return`, which look it up again.
+    let (mut code, mut decls, mut spans) = code_of(process, subs, state.running);
+    // What an instruction's expressions read; built where used, since assignments change
+    // the signals and variables it borrows.
+    macro_rules! env {
+        () => {
+            Env {
+                signals: &cx.signals.states,
+                vars: &state.vars,
+                quantities: cx.quantities,
+                derivatives: cx.derivatives,
+                now: cx.now,
+                subprograms: subs,
+                depth: state.stack.len(),
+                io: cx.io,
+                drivers: Some((&*cx.signals, index)),
+            }
+        };
+    }
     for step in 0..INSTRUCTION_LIMIT {
         cx.io
             .check_cancel(step)
             .map_err(|e| fail(e, process.span))?;
         emit_function_reports(cx, &process.name);
-        let (code, decls, spans) = code_of(process, subs, state.running);
-        let Some(instr) = code.get(state.pc) else {
+        let pc = state.pc;
+        let Some(instr) = code.get(pc) else {
             // Elaboration guarantees every path ends in a wait; stop here rather than panic.
             return Err(fail(
                 EvalError::new(
@@ -236,23 +255,12 @@ pub(crate) fn run(
                 process.span,
             ));
         };
-        let env = Env {
-            signals: &cx.signals.states,
-            vars: &state.vars,
-            quantities: cx.quantities,
-            derivatives: cx.derivatives,
-            now: cx.now,
-            subprograms: subs,
-            depth: state.stack.len(),
-            io: cx.io,
-            drivers: Some((&*cx.signals, index)),
-        };
-        // The statement the instruction comes from, else the process.
-        let span = spans.get(state.pc).copied().unwrap_or(process.span);
-        let at = |e: EvalError| fail(e, span);
+        // An error points at the statement the instruction comes from, else the process.
+        let at = |e: EvalError| fail(e, spans.get(pc).copied().unwrap_or(process.span));
         state.pc += 1;
         match instr {
             Instr::SetVar { var, value } => {
+                let env = env!();
                 let v = eval(value, &env).map_err(at)?;
                 if let Some(decl) = decls.get(var.index()) {
                     in_range(&v, decl.range, "variable", &decl.name).map_err(at)?;
@@ -260,6 +268,7 @@ pub(crate) fn run(
                 state.vars[var.index()] = v;
             }
             Instr::SetHeap { pointer, value } => {
+                let env = env!();
                 super::textio::set_heap(pointer, value, &env).map_err(at)?;
             }
             Instr::Native {
@@ -268,12 +277,14 @@ pub(crate) fn run(
                 copy_back,
                 ..
             } => {
+                let env = env!();
                 let back = super::textio::call(op, args, copy_back, &env).map_err(at)?;
                 for (var, v) in back {
                     state.vars[var.index()] = v;
                 }
             }
             Instr::SetVarElement { var, index, value } => {
+                let env = env!();
                 let i = integer(&eval(index, &env).map_err(at)?).map_err(at)?;
                 let v = eval(value, &env).map_err(at)?;
                 let ty = &decls[var.index()].ty;
@@ -285,6 +296,7 @@ pub(crate) fn run(
                 waveform,
                 mechanism,
             } => {
+                let env = env!();
                 cx.waveform.clear();
                 let mut last = cx.now;
                 let mut first_delay = 0.0;
@@ -301,7 +313,7 @@ pub(crate) fn run(
                         // A null transaction (elaboration allows it on guarded signals only).
                         None => None,
                     };
-                    let d = seconds(&eval(delay, &env).map_err(at)?).map_err(at)?;
+                    let d = seconds_of(delay, &env).map_err(at)?;
                     if cx.waveform.is_empty() {
                         first_delay = d;
                     }
@@ -321,7 +333,7 @@ pub(crate) fn run(
                 let delay = match mechanism {
                     DelayMechanism::Transport => Delay::Transport,
                     DelayMechanism::Inertial { reject: Some(r) } => {
-                        let r = seconds(&eval(r, &env).map_err(at)?).map_err(at)?;
+                        let r = seconds_of(r, &env).map_err(at)?;
                         Delay::Inertial(later(cx.now, (first_delay - r).max(0.0)))
                     }
                     // Without `reject`, the limit is the first element's delay: the interval
@@ -392,9 +404,10 @@ pub(crate) fn run(
                 }
             }
             Instr::Wait { until, timeout, .. } => {
+                let env = env!();
                 let timeout = match timeout {
                     Some(t) => {
-                        let d = seconds(&eval(t, &env).map_err(at)?).map_err(at)?;
+                        let d = seconds_of(t, &env).map_err(at)?;
                         if d < 0.0 {
                             return Err(at(EvalError::new(
                                 format!("wait for a negative time ({d} s)"),
@@ -405,7 +418,6 @@ pub(crate) fn run(
                     }
                     None => None,
                 };
-                let pc = state.pc - 1;
                 if state.running.is_some() {
                     // A wait inside a procedure (rare): its sensitivity is computed here.
                     let sens = &mut state.procedure_sensitivity;
@@ -432,6 +444,7 @@ pub(crate) fn run(
             }
             Instr::Jump(target) => state.pc = *target,
             Instr::JumpIfNot { cond, target } => {
+                let env = env!();
                 if !truth(&eval(cond, &env).map_err(at)?).map_err(at)? {
                     state.pc = *target;
                 }
@@ -442,6 +455,7 @@ pub(crate) fn run(
                 severity,
                 span,
             } => {
+                let env = env!();
                 let at = |e: EvalError| fail(e, *span);
                 if let Some(c) = cond {
                     if truth(&eval(c, &env).map_err(at)?).map_err(at)? {
@@ -477,6 +491,7 @@ pub(crate) fn run(
                 }
             }
             Instr::Break { reinit, when, span } => {
+                let env = env!();
                 let at = |e: EvalError| fail(e, *span);
                 if let Some(c) = when {
                     if !truth(&eval(c, &env).map_err(at)?).map_err(at)? {
@@ -496,6 +511,7 @@ pub(crate) fn run(
                 }
             }
             Instr::Call { sub, args, .. } => {
+                let env = env!();
                 let Some(callee) = subs.get(sub.index()) else {
                     return Err(at(EvalError::new(
                         "a call of a subprogram the design does not have",
@@ -518,6 +534,7 @@ pub(crate) fn run(
                 });
                 state.running = Some(*sub);
                 state.pc = 0;
+                (code, decls, spans) = code_of(process, subs, state.running);
             }
             Instr::Return(_) => {
                 let Some(caller) = state.stack.pop() else {
@@ -529,8 +546,8 @@ pub(crate) fn run(
                 let callee_vars = std::mem::replace(&mut state.vars, caller.vars);
                 state.running = caller.running;
                 state.pc = caller.pc;
+                (code, decls, spans) = code_of(process, subs, state.running);
                 // `out` and `inout` parameters go back to the caller's variables.
-                let (code, ..) = code_of(process, subs, state.running);
                 if let Some(Instr::Call { copy_back, .. }) = code.get(state.pc.wrapping_sub(1)) {
                     for (param, actual) in copy_back {
                         state.vars[actual.index()] = callee_vars[param.index()].clone();
@@ -550,6 +567,15 @@ pub(crate) fn run(
         limit: INSTRUCTION_LIMIT,
         span: process.span,
     })
+}
+
+/// The value of delay or timeout `e` in seconds; a literal one (`after 5 ns`, `wait for
+/// 1 ns`, the usual case) is read without evaluating it.
+fn seconds_of(e: &Expr, env: &Env) -> Result<f64, EvalError> {
+    match e {
+        Expr::Const(Value::Time(t) | Value::Real(t)) => Ok(*t),
+        _ => seconds(&eval(e, env)?),
+    }
 }
 
 /// A delay or timeout in seconds.
