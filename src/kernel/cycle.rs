@@ -370,7 +370,8 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         // analog restart would otherwise loop here forever.
         let mut settling = (t, 0usize);
         while self.outcome.is_none() {
-            if self.kernel.next_time(t) <= t {
+            let next = self.kernel.next_time(t);
+            if next <= t {
                 self.check_cancelled(t)?;
                 settling = if settling.0 == t {
                     (t, settling.1 + 1)
@@ -421,7 +422,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                     let target = self.kernel.next_coupled_time(t, &a.coupling).min(self.stop);
                     self.advance(t, target, recorder, on_report)?
                 }
-                None => self.kernel.next_time(t).min(self.stop),
+                None => next.min(self.stop),
             };
             self.progress.tick(t);
             self.check_cancelled(t)?;

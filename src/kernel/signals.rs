@@ -61,10 +61,16 @@ struct Driver {
     /// guarded signal takes no part in its resolution.
     connected: bool,
     waveform: VecDeque<Transaction>,
+    /// In [`Signals::pending`].
+    pending: bool,
 }
 
 /// An element of a gathered port: a root signal and the position in it (`None`: all of it).
 type GatherElement = (SignalId, Option<usize>);
+
+/// What a driver of a process drives: a signal, and its element for a signal driven element
+/// by element.
+type DriverKey = (SignalId, Option<usize>);
 
 /// Every signal's state and every driver.
 pub(crate) struct Signals {
@@ -72,8 +78,15 @@ pub(crate) struct Signals {
     drivers: Vec<Driver>,
     /// Driver indices of each signal.
     by_signal: Vec<Vec<usize>>,
-    /// Driver index of `(process, signal, element)`.
-    index: FxHashMap<(usize, SignalId, Option<usize>), usize>,
+    /// Per process, its drivers by `(signal, element)`, sorted: a process drives few
+    /// signals, and a binary search of them costs less than hashing at every assignment.
+    drivers_of: Vec<Vec<(DriverKey, usize)>>,
+    /// The drivers with a projected transaction, in no order: the update phase and the next
+    /// time look at these only, not at every driver.
+    pending: Vec<usize>,
+    /// The signals active in the last update phase: the only ones with `active` or `event`
+    /// set.
+    active: Vec<SignalId>,
     /// Signals driven element by element, with their number of elements.
     split: Vec<Option<usize>>,
     /// Signals resolved with the std_logic table.
@@ -268,6 +281,7 @@ impl Signals {
                             current,
                             connected: true,
                             waveform: VecDeque::new(),
+                            pending: false,
                         });
                         drivers.len() - 1
                     });
@@ -334,11 +348,20 @@ impl Signals {
             });
         }
         let n = states.len();
+        let mut drivers_of = vec![Vec::new(); design.processes.len()];
+        for (&(p, signal, element), &d) in &index {
+            drivers_of[p].push(((signal, element), d));
+        }
+        for list in &mut drivers_of {
+            list.sort_unstable();
+        }
         let mut signals = Signals {
             states,
             drivers,
             by_signal,
-            index,
+            drivers_of,
+            pending: Vec::new(),
+            active: Vec::new(),
             split,
             resolved,
             resolution: design
@@ -433,16 +456,17 @@ impl Signals {
         signal: SignalId,
         element: Option<usize>,
     ) -> Option<usize> {
-        if let Some(parts) = &self.gather_of[signal.index()] {
-            let (parent, position) = *parts.get(element?)?;
-            return self.index.get(&(process, parent, position)).copied();
-        }
-        let key = match (self.view_of[signal.index()], element) {
-            (Some((parent, first, None)), _) => (process, parent, Some(first)),
-            (Some((parent, first, Some(_))), Some(k)) => (process, parent, Some(first + k)),
-            _ => (process, signal, element),
+        let key = match &self.gather_of[signal.index()] {
+            Some(parts) => *parts.get(element?)?,
+            None => match (self.view_of[signal.index()], element) {
+                (Some((parent, first, None)), _) => (parent, Some(first)),
+                (Some((parent, first, Some(_))), Some(k)) => (parent, Some(first + k)),
+                _ => (signal, element),
+            },
         };
-        self.index.get(&key).copied()
+        let list = self.drivers_of.get(process)?;
+        let k = list.binary_search_by_key(&key, |&(key, _)| key).ok()?;
+        Some(list[k].1)
     }
 
     /// `S'driving` and `S'driving_value` for `process` (LRM 14.1): whether its driver of
@@ -498,7 +522,10 @@ impl Signals {
         while w.back().is_some_and(|tr| tr.time >= first_time) {
             w.pop_back();
         }
-        if let Delay::Inertial(start) = delay {
+        // With no old transaction left there is nothing to reject (the usual case).
+        if let Delay::Inertial(start) = delay
+            && !w.is_empty()
+        {
             let by_element = first_value
                 .as_ref()
                 .is_some_and(|new| reject_by_element(w, start, new, &driver.current));
@@ -520,40 +547,66 @@ impl Signals {
                 w.extend(kept);
             }
         }
-        w.extend(
-            elements
-                .drain(..)
-                .map(|(value, time)| Transaction { time, value }),
-        );
+        if let [(value, time)] = elements.as_mut_slice() {
+            // One element (the usual case): moved without a drain.
+            let value = value.take();
+            w.push_back(Transaction { time: *time, value });
+            elements.clear();
+        } else {
+            for (value, time) in elements.drain(..) {
+                w.push_back(Transaction { time, value });
+            }
+        }
+        if !driver.pending {
+            driver.pending = true;
+            self.pending.push(d);
+        }
     }
 
     /// The earliest pending transaction, or infinity.
     pub fn next_time(&self) -> f64 {
-        self.drivers
-            .iter()
-            .filter_map(|d| d.waveform.front().map(|t| t.time))
-            .fold(f64::INFINITY, f64::min)
+        self.next_time_where(|_| true)
     }
 
     /// The earliest transaction due on a signal for which `counts` holds.
     pub fn next_time_where(&self, counts: impl Fn(SignalId) -> bool) -> f64 {
-        self.drivers
-            .iter()
-            .filter(|d| counts(d.signal))
-            .filter_map(|d| d.waveform.front().map(|t| t.time))
-            .fold(f64::INFINITY, f64::min)
+        let mut next = f64::INFINITY;
+        for &d in &self.pending {
+            let d = &self.drivers[d];
+            if let Some(tr) = d.waveform.front()
+                && counts(d.signal)
+            {
+                next = next.min(tr.time);
+            }
+        }
+        next
+    }
+
+    /// Marks signal `s` active at `now`.
+    fn activate(&mut self, s: SignalId, now: f64) {
+        let st = &mut self.states[s.index()];
+        if !st.active {
+            st.active = true;
+            self.active.push(s);
+        }
+        st.last_active = Some(now);
     }
 
     /// The update phase at `now`: transactions due become driving values; effective values are
     /// recomputed; `events` lists the signals whose value changed.
     pub fn update(&mut self, now: f64, design: &Design) -> Result<(), SimError> {
-        for st in &mut self.states {
+        // Only the signals active in the last phase have flags set (`set` gives an event
+        // to active signals only).
+        for &s in &self.active {
+            let st = &mut self.states[s.index()];
             st.event = false;
             st.active = false;
         }
+        self.active.clear();
         self.events.clear();
-        for d in 0..self.drivers.len() {
-            let driver = &mut self.drivers[d];
+        let mut k = 0;
+        while k < self.pending.len() {
+            let driver = &mut self.drivers[self.pending[k]];
             let mut due = false;
             while driver.waveform.front().is_some_and(|t| t.time <= now) {
                 // The loop condition guarantees an element.
@@ -564,28 +617,39 @@ impl Signals {
                 }
                 due = true;
             }
+            let signal = driver.signal;
+            if driver.waveform.is_empty() {
+                driver.pending = false;
+                self.pending.swap_remove(k);
+            } else {
+                k += 1;
+            }
             if due {
-                let st = &mut self.states[driver.signal.index()];
-                st.active = true;
-                st.last_active = Some(now);
+                self.activate(signal, now);
             }
         }
-        for s in 0..self.states.len() {
-            if !self.states[s].active {
+        // Effective values in signal order, as the events list them.
+        self.active.sort_unstable();
+        for k in 0..self.active.len() {
+            let s = self.active[k].index();
+            // Without the `Result` of the general case, which is large.
+            if let Some(d) = self.single_driver(s) {
+                let value = self.drivers[d].current.clone();
+                self.set(SignalId(s as u32), value, now);
                 continue;
             }
             if let Some(value) = self.effective(s, design, now)? {
                 self.set(SignalId(s as u32), value, now);
             }
         }
-        let forced = std::mem::take(&mut self.forced);
-        for (s, value) in &forced {
-            self.states[s.index()].active = true;
-            self.states[s.index()].last_active = Some(now);
-            self.set(*s, value.clone(), now);
+        if !self.forced.is_empty() {
+            let mut forced = std::mem::take(&mut self.forced);
+            for (s, value) in forced.drain(..) {
+                self.activate(s, now);
+                self.set(s, value, now);
+            }
+            self.forced = forced;
         }
-        self.forced = forced;
-        self.forced.clear();
         // Views follow their parents (never views themselves) after these are updated.
         for i in 0..self.views.len() {
             let v = self.views[i];
@@ -598,8 +662,7 @@ impl Signals {
             }
             // Elaboration placed the view within its parent's bounds.
             if let Some(value) = p.value.view(first, len) {
-                self.states[v.index()].active = true;
-                self.states[v.index()].last_active = Some(now);
+                self.activate(v, now);
                 self.set(v, value, now);
             }
         }
@@ -611,8 +674,7 @@ impl Signals {
                 continue;
             }
             let value = self.gathered(g);
-            self.states[g.index()].active = true;
-            self.states[g.index()].last_active = Some(now);
+            self.activate(g, now);
             self.set(g, value, now);
         }
         // `S'transaction` toggles whenever `S` is active; in signal order, so the transaction
@@ -624,8 +686,7 @@ impl Signals {
                     Value::Enum(b) => Value::Enum(1 - b.min(1)),
                     _ => Value::Enum(1),
                 };
-                self.states[t.index()].active = true;
-                self.states[t.index()].last_active = Some(now);
+                self.activate(t, now);
                 self.set(t, toggled, now);
             }
         }
@@ -643,6 +704,22 @@ impl Signals {
                 self.changed[s.index()] = true;
                 self.changed_list.push(s);
             }
+        }
+    }
+
+    /// The common case of [`Signals::effective`], a signal driven whole by one connected
+    /// driver without a resolution function: that driver, whose value is the signal's (this
+    /// runs at every transaction).
+    #[inline]
+    fn single_driver(&self, s: usize) -> Option<usize> {
+        match self.by_signal[s].as_slice() {
+            [d] if self.split[s].is_none()
+                && self.drivers[*d].connected
+                && self.resolution[s].is_none() =>
+            {
+                Some(*d)
+            }
+            _ => None,
         }
     }
 
@@ -673,13 +750,8 @@ impl Signals {
             let string = matches!(value, Value::String(_));
             return Ok(Some(crate::design::aggregate_value(values, string)));
         }
-        // The common case, a driver that is always connected: its value, without collecting
-        // the connected ones (this runs at every transaction).
-        if let [d] = ds.as_slice()
-            && self.drivers[*d].connected
-            && self.resolution[s].is_none()
-        {
-            return Ok(Some(self.drivers[*d].current.clone()));
+        if let Some(d) = self.single_driver(s) {
+            return Ok(Some(self.drivers[d].current.clone()));
         }
         let on: Vec<&Value> = ds
             .iter()
