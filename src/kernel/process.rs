@@ -207,16 +207,7 @@ pub(crate) fn run(
     cx: &mut Context,
 ) -> Result<Suspend, SimError> {
     let now = cx.now;
-    let fail = |e: EvalError, span: Span| match e.is_interrupted() {
-        true => SimError::Interrupted { time: now },
-        false => SimError::Runtime {
-            process: process.name.clone(),
-            time: now,
-            message: e.message,
-            span,
-            help: e.help.to_string(),
-        },
-    };
+    let fail = |e: EvalError, span: Span| runtime_error(process, now, e, span);
     state.waiting_at = None;
     state.timeout_at = None;
     let subs = cx.subprograms;
@@ -266,29 +257,6 @@ pub(crate) fn run(
                     in_range(&v, decl.range, "variable", &decl.name).map_err(at)?;
                 }
                 state.vars[var.index()] = v;
-            }
-            Instr::SetHeap { pointer, value } => {
-                let env = env!();
-                super::textio::set_heap(pointer, value, &env).map_err(at)?;
-            }
-            Instr::Native {
-                op,
-                args,
-                copy_back,
-                ..
-            } => {
-                let env = env!();
-                let back = super::textio::call(op, args, copy_back, &env).map_err(at)?;
-                for (var, v) in back {
-                    state.vars[var.index()] = v;
-                }
-            }
-            Instr::SetVarElement { var, index, value } => {
-                let env = env!();
-                let i = integer(&eval(index, &env).map_err(at)?).map_err(at)?;
-                let v = eval(value, &env).map_err(at)?;
-                let ty = &decls[var.index()].ty;
-                set_element(&mut state.vars[var.index()], ty, i, v).map_err(at)?;
             }
             Instr::Assign {
                 target,
@@ -365,40 +333,9 @@ pub(crate) fn run(
                             .ok_or_else(no_driver)?;
                         cx.signals.assign(d, cx.waveform, delay);
                     }
-                    // A whole assignment to a signal driven element by element: each element
-                    // of each value goes to that element's driver.
+                    // A whole assignment to a signal driven element by element.
                     (None, Some(n)) => {
-                        let whole = &*cx.waveform;
-                        let split: Vec<Option<Vec<Value>>> = whole
-                            .iter()
-                            .map(|(v, _)| v.as_ref().map(Value::elements))
-                            .collect();
-                        for k in 0..n {
-                            let d = cx
-                                .signals
-                                .driver(index, *target, Some(k))
-                                .ok_or_else(no_driver)?;
-                            let mut wave: Vec<(Option<Value>, f64)> =
-                                Vec::with_capacity(whole.len());
-                            for ((_, t), values) in whole.iter().zip(&split) {
-                                // A null transaction disconnects every element's driver.
-                                let Some(values) = values else {
-                                    wave.push((None, *t));
-                                    continue;
-                                };
-                                let v = values.get(k).cloned().ok_or_else(|| {
-                                    at(EvalError::new(
-                                        format!(
-                                            "a value of {} element(s) assigned to a signal of {n}",
-                                            values.len()
-                                        ),
-                                        "an array assignment needs a value of the target's length",
-                                    ))
-                                })?;
-                                wave.push((Some(v), *t));
-                            }
-                            cx.signals.assign(d, &mut wave, delay);
-                        }
+                        assign_elements(index, *target, n, delay, cx).map_err(at)?;
                     }
                     (Some(_), None) => return Err(no_driver()),
                 }
@@ -449,115 +386,17 @@ pub(crate) fn run(
                     state.pc = *target;
                 }
             }
-            Instr::Assert {
-                cond,
-                report,
-                severity,
-                span,
-            } => {
-                let env = env!();
-                let at = |e: EvalError| fail(e, *span);
-                if let Some(c) = cond {
-                    if truth(&eval(c, &env).map_err(at)?).map_err(at)? {
-                        continue;
-                    }
-                }
-                let message = match report {
-                    Some(r) => match eval(r, &env).map_err(at)? {
-                        Value::String(s) => s,
-                        other => format!("{other:?}"),
-                    },
-                    None => "Assertion violation.".to_string(),
-                };
-                let severity = match eval(severity, &env).map_err(at)? {
-                    Value::Enum(0) => Severity::Note,
-                    Value::Enum(1) => Severity::Warning,
-                    Value::Enum(2) => Severity::Error,
-                    _ => Severity::Failure,
-                };
-                // The reports of the functions the message called come first.
-                emit_function_reports(cx, &process.name);
-                let report = Report {
-                    time: cx.now,
-                    severity,
-                    message,
-                    process: process.name.clone(),
-                    span: *span,
-                };
-                (cx.on_report)(&report);
-                cx.reports.push(report);
-                if severity == Severity::Failure {
-                    return Ok(Suspend::Failure);
-                }
-            }
-            Instr::Break { reinit, when, span } => {
-                let env = env!();
-                let at = |e: EvalError| fail(e, *span);
-                if let Some(c) = when {
-                    if !truth(&eval(c, &env).map_err(at)?).map_err(at)? {
-                        continue;
-                    }
-                }
-                *cx.break_count += 1;
-                for r in reinit {
-                    let v = eval(&r.value, &env).map_err(at)?;
-                    let x = v.as_f64().ok_or_else(|| {
-                        at(EvalError::new(
-                            "a break value is not a number",
-                            "break values must be real expressions",
-                        ))
-                    })?;
-                    cx.breaks.push((r.quantity, x));
-                }
-            }
-            Instr::Call { sub, args, .. } => {
-                let env = env!();
-                let Some(callee) = subs.get(sub.index()) else {
-                    return Err(at(EvalError::new(
-                        "a call of a subprogram the design does not have",
-                        "this is a bug in elaboration",
-                    )));
-                };
-                if state.stack.len() + 1 >= call_depth_limit() {
-                    return Err(at(too_deep(&callee.name)));
-                }
-                let values = args
-                    .iter()
-                    .map(|a| eval(a, &env))
-                    .collect::<Result<Vec<_>, _>>()
-                    .map_err(at)?;
-                let callee_vars = frame(callee, values);
-                state.stack.push(Frame {
-                    running: state.running,
-                    pc: state.pc,
-                    vars: std::mem::replace(&mut state.vars, callee_vars),
-                });
-                state.running = Some(*sub);
-                state.pc = 0;
-                (code, decls, spans) = code_of(process, subs, state.running);
-            }
-            Instr::Return(_) => {
-                let Some(caller) = state.stack.pop() else {
-                    return Err(at(EvalError::new(
-                        "`return` outside a subprogram",
-                        "this is a bug in elaboration",
-                    )));
-                };
-                let callee_vars = std::mem::replace(&mut state.vars, caller.vars);
-                state.running = caller.running;
-                state.pc = caller.pc;
-                (code, decls, spans) = code_of(process, subs, state.running);
-                // `out` and `inout` parameters go back to the caller's variables.
-                if let Some(Instr::Call { copy_back, .. }) = code.get(state.pc.wrapping_sub(1)) {
-                    for (param, actual) in copy_back {
-                        state.vars[actual.index()] = callee_vars[param.index()].clone();
-                    }
-                }
-            }
             Instr::Stop => return Ok(Suspend::Stop),
             Instr::Halt => {
                 state.halted = true;
                 return Ok(Suspend::Halt);
+            }
+            // The rarer instructions, out of this loop's frame.
+            _ => {
+                if let Some(suspend) = run_other(index, process, state, cx, instr)? {
+                    return Ok(suspend);
+                }
+                (code, decls, spans) = code_of(process, subs, state.running);
             }
         }
     }
@@ -567,6 +406,234 @@ pub(crate) fn run(
         limit: INSTRUCTION_LIMIT,
         span: process.span,
     })
+}
+
+/// The run-time error of `e` in `process` at `span`.
+fn runtime_error(process: &Process, now: f64, e: EvalError, span: Span) -> SimError {
+    match e.is_interrupted() {
+        true => SimError::Interrupted { time: now },
+        false => SimError::Runtime {
+            process: process.name.clone(),
+            time: now,
+            message: e.message,
+            span,
+            help: e.help.to_string(),
+        },
+    }
+}
+
+/// The instructions [`run`] leaves out of its loop (heap, files, element assignments of
+/// variables, assertions, breaks, procedure calls and returns): `Some` when the process
+/// suspends. `state.pc` is already past `instr`.
+#[inline(never)]
+fn run_other(
+    index: usize,
+    process: &Process,
+    state: &mut ProcState,
+    cx: &mut Context,
+    instr: &Instr,
+) -> Result<Option<Suspend>, SimError> {
+    let now = cx.now;
+    let fail = |e: EvalError, span: Span| runtime_error(process, now, e, span);
+    let subs = cx.subprograms;
+    let (_, decls, spans) = code_of(process, subs, state.running);
+    let pc = state.pc - 1;
+    let at = |e: EvalError| fail(e, spans.get(pc).copied().unwrap_or(process.span));
+    macro_rules! env {
+        () => {
+            Env {
+                signals: &cx.signals.states,
+                vars: &state.vars,
+                quantities: cx.quantities,
+                derivatives: cx.derivatives,
+                now: cx.now,
+                subprograms: subs,
+                depth: state.stack.len(),
+                io: cx.io,
+                drivers: Some((&*cx.signals, index)),
+            }
+        };
+    }
+    match instr {
+        Instr::SetHeap { pointer, value } => {
+            let env = env!();
+            super::textio::set_heap(pointer, value, &env).map_err(at)?;
+        }
+        Instr::Native {
+            op,
+            args,
+            copy_back,
+            ..
+        } => {
+            let env = env!();
+            let back = super::textio::call(op, args, copy_back, &env).map_err(at)?;
+            for (var, v) in back {
+                state.vars[var.index()] = v;
+            }
+        }
+        Instr::SetVarElement { var, index, value } => {
+            let env = env!();
+            let i = integer(&eval(index, &env).map_err(at)?).map_err(at)?;
+            let v = eval(value, &env).map_err(at)?;
+            let ty = &decls[var.index()].ty;
+            set_element(&mut state.vars[var.index()], ty, i, v).map_err(at)?;
+        }
+        Instr::Assert {
+            cond,
+            report,
+            severity,
+            span,
+        } => {
+            let env = env!();
+            let at = |e: EvalError| fail(e, *span);
+            if let Some(c) = cond {
+                if truth(&eval(c, &env).map_err(at)?).map_err(at)? {
+                    return Ok(None);
+                }
+            }
+            let message = match report {
+                Some(r) => match eval(r, &env).map_err(at)? {
+                    Value::String(s) => s,
+                    other => format!("{other:?}"),
+                },
+                None => "Assertion violation.".to_string(),
+            };
+            let severity = match eval(severity, &env).map_err(at)? {
+                Value::Enum(0) => Severity::Note,
+                Value::Enum(1) => Severity::Warning,
+                Value::Enum(2) => Severity::Error,
+                _ => Severity::Failure,
+            };
+            // The reports of the functions the message called come first.
+            emit_function_reports(cx, &process.name);
+            let report = Report {
+                time: cx.now,
+                severity,
+                message,
+                process: process.name.clone(),
+                span: *span,
+            };
+            (cx.on_report)(&report);
+            cx.reports.push(report);
+            if severity == Severity::Failure {
+                return Ok(Some(Suspend::Failure));
+            }
+        }
+        Instr::Break { reinit, when, span } => {
+            let env = env!();
+            let at = |e: EvalError| fail(e, *span);
+            if let Some(c) = when {
+                if !truth(&eval(c, &env).map_err(at)?).map_err(at)? {
+                    return Ok(None);
+                }
+            }
+            *cx.break_count += 1;
+            for r in reinit {
+                let v = eval(&r.value, &env).map_err(at)?;
+                let x = v.as_f64().ok_or_else(|| {
+                    at(EvalError::new(
+                        "a break value is not a number",
+                        "break values must be real expressions",
+                    ))
+                })?;
+                cx.breaks.push((r.quantity, x));
+            }
+        }
+        Instr::Call { sub, args, .. } => {
+            let env = env!();
+            let Some(callee) = subs.get(sub.index()) else {
+                return Err(at(EvalError::new(
+                    "a call of a subprogram the design does not have",
+                    "this is a bug in elaboration",
+                )));
+            };
+            if state.stack.len() + 1 >= call_depth_limit() {
+                return Err(at(too_deep(&callee.name)));
+            }
+            let values = args
+                .iter()
+                .map(|a| eval(a, &env))
+                .collect::<Result<Vec<_>, _>>()
+                .map_err(at)?;
+            let callee_vars = frame(callee, values);
+            state.stack.push(Frame {
+                running: state.running,
+                pc: state.pc,
+                vars: std::mem::replace(&mut state.vars, callee_vars),
+            });
+            state.running = Some(*sub);
+            state.pc = 0;
+        }
+        Instr::Return(_) => {
+            let Some(caller) = state.stack.pop() else {
+                return Err(at(EvalError::new(
+                    "`return` outside a subprogram",
+                    "this is a bug in elaboration",
+                )));
+            };
+            let callee_vars = std::mem::replace(&mut state.vars, caller.vars);
+            state.running = caller.running;
+            state.pc = caller.pc;
+            let (code, ..) = code_of(process, subs, state.running);
+            // `out` and `inout` parameters go back to the caller's variables.
+            if let Some(Instr::Call { copy_back, .. }) = code.get(state.pc.wrapping_sub(1)) {
+                for (param, actual) in copy_back {
+                    state.vars[actual.index()] = callee_vars[param.index()].clone();
+                }
+            }
+        }
+        _ => {}
+    }
+    Ok(None)
+}
+
+/// A whole assignment of `cx.waveform` to `target`, a signal driven element by element
+/// (`n` elements): each element of each value goes to that element's driver.
+#[inline(never)]
+fn assign_elements(
+    index: usize,
+    target: SignalId,
+    n: usize,
+    delay: Delay,
+    cx: &mut Context,
+) -> Result<(), EvalError> {
+    let no_driver = || {
+        EvalError::new(
+            "assignment to a signal without a driver",
+            "this is a kernel bug",
+        )
+    };
+    let whole = &*cx.waveform;
+    let split: Vec<Option<Vec<Value>>> = whole
+        .iter()
+        .map(|(v, _)| v.as_ref().map(Value::elements))
+        .collect();
+    for k in 0..n {
+        let d = cx
+            .signals
+            .driver(index, target, Some(k))
+            .ok_or_else(no_driver)?;
+        let mut wave: Vec<(Option<Value>, f64)> = Vec::with_capacity(whole.len());
+        for ((_, t), values) in whole.iter().zip(&split) {
+            // A null transaction disconnects every element's driver.
+            let Some(values) = values else {
+                wave.push((None, *t));
+                continue;
+            };
+            let v = values.get(k).cloned().ok_or_else(|| {
+                EvalError::new(
+                    format!(
+                        "a value of {} element(s) assigned to a signal of {n}",
+                        values.len()
+                    ),
+                    "an array assignment needs a value of the target's length",
+                )
+            })?;
+            wave.push((Some(v), *t));
+        }
+        cx.signals.assign(d, &mut wave, delay);
+    }
+    Ok(())
 }
 
 /// The value of delay or timeout `e` in seconds; a literal one (`after 5 ns`, `wait for
