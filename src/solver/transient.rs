@@ -11,7 +11,7 @@
 //! ([`DaeSystem::error_exempt`]). The corrector's Newton has converged when every unknown's
 //! last update is within its own tolerance (the maximum norm, SPICE's test, whatever the error
 //! test's norm: a root-mean-square over a thousand quiet unknowns let the few that move carry
-//! thirty times theirs; a tenth of it from order 3 on, see `step`) and every residual is
+//! thirty times theirs; a hundredth of it from order 3 on, see `step`) and every residual is
 //! within its equation's tolerance.
 //!
 //! **Order and step** follow IDA: after a (re)start the order rises by one per step and the
