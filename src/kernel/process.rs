@@ -199,6 +199,24 @@ fn emit_pending_reports(cx: &mut Context, process: &str) {
     }
 }
 
+/// The `Env` a process's expressions read: built where an instruction evaluates, since
+/// assignments change the signals and variables it borrows.
+macro_rules! process_env {
+    ($cx:expr, $state:expr, $subs:expr, $index:expr) => {
+        Env {
+            signals: &$cx.signals.states,
+            vars: &$state.vars,
+            quantities: $cx.quantities,
+            derivatives: $cx.derivatives,
+            now: $cx.now,
+            subprograms: $subs,
+            depth: $state.stack.len(),
+            io: $cx.io,
+            drivers: Some((&*$cx.signals, $index)),
+        }
+    };
+}
+
 /// Runs process `index` until it suspends.
 pub(crate) fn run(
     index: usize,
@@ -217,17 +235,7 @@ pub(crate) fn run(
     // the signals and variables it borrows.
     macro_rules! env {
         () => {
-            Env {
-                signals: &cx.signals.states,
-                vars: &state.vars,
-                quantities: cx.quantities,
-                derivatives: cx.derivatives,
-                now: cx.now,
-                subprograms: subs,
-                depth: state.stack.len(),
-                io: cx.io,
-                drivers: Some((&*cx.signals, index)),
-            }
+            process_env!(cx, state, subs, index)
         };
     }
     for step in 0..INSTRUCTION_LIMIT {
@@ -441,17 +449,7 @@ fn run_other(
     let at = |e: EvalError| fail(e, spans.get(pc).copied().unwrap_or(process.span));
     macro_rules! env {
         () => {
-            Env {
-                signals: &cx.signals.states,
-                vars: &state.vars,
-                quantities: cx.quantities,
-                derivatives: cx.derivatives,
-                now: cx.now,
-                subprograms: subs,
-                depth: state.stack.len(),
-                io: cx.io,
-                drivers: Some((&*cx.signals, index)),
-            }
+            process_env!(cx, state, subs, index)
         };
     }
     match instr {
