@@ -88,7 +88,7 @@ pub(super) fn lagrange(tau: &[f64], t: f64, out: &mut [f64; HIST]) {
 }
 
 /// Derivative weights at `tau[0]` of the Lagrange basis on `tau` (`l_j'(tau_0)`).
-pub(super) fn derivative_weights(tau: &[f64], out: &mut [f64; HIST]) {
+fn derivative_weights(tau: &[f64], out: &mut [f64; HIST]) {
     let t0 = tau[0];
     out[0] = tau[1..].iter().map(|&tm| 1.0 / (t0 - tm)).sum();
     for j in 1..tau.len() {
@@ -302,38 +302,40 @@ impl Transient {
             self.startup &= factor >= 2.0;
             return (self.order, factor);
         }
-        // After a step of order k there are at least k + 2 points.
-        let t_k = self.derivative_term(k);
-        let t_km1 = (k > 1).then(|| self.derivative_term(k - 1));
-        let t_km2 = (k > 2).then(|| self.derivative_term(k - 2));
         // Only over a history of steps at this order: a term that spans the lower orders'
         // steps of a start-up measures their larger errors, not the solution (a start-up that
-        // reached order 2 fell straight back to 1 and took 4 s steps at it).
+        // reached order 2 fell straight back to 1 and took 4 s steps at it). Until then the
+        // terms are not computed at all.
         let settled = self.steps_at_order > k;
-        let lower = settled
-            && match (t_km1, t_km2) {
-                (Some(t1), None) => t1 <= 0.5 * t_k,
-                (Some(t1), Some(t2)) => t1.max(t2) <= t_k,
-                _ => false,
-            };
         let (order, e) = if self.startup && k < max {
             // Raised without an estimate (the history spans the start-up's rising orders):
             // the step stays what the current order allows.
             (k + 1, err)
-        } else if lower {
-            (k - 1, error_constant(k - 1) * t_km1.unwrap_or(t_k))
-        } else if k >= max {
+        } else if !settled {
             (k, err)
-        } else if settled && self.nhist >= k + 3 {
-            let t_kp1 = self.derivative_term(k + 1);
-            match t_km1 {
-                Some(t1) if t1 <= t_k.min(t_kp1) => (k - 1, error_constant(k - 1) * t1),
-                None if t_kp1 < 0.5 * t_k => (k + 1, error_constant(k + 1) * t_kp1),
-                Some(_) if t_kp1 < t_k => (k + 1, error_constant(k + 1) * t_kp1),
-                _ => (k, err),
-            }
         } else {
-            (k, err)
+            // After a step of order k there are at least k + 2 points.
+            let t_k = self.derivative_term(k);
+            let t_km1 = (k > 1).then(|| self.derivative_term(k - 1));
+            let t_km2 = (k > 2).then(|| self.derivative_term(k - 2));
+            let lower = match (t_km1, t_km2) {
+                (Some(t1), None) => t1 <= 0.5 * t_k,
+                (Some(t1), Some(t2)) => t1.max(t2) <= t_k,
+                _ => false,
+            };
+            if lower {
+                (k - 1, error_constant(k - 1) * t_km1.unwrap_or(t_k))
+            } else if k >= max || self.nhist < k + 3 {
+                (k, err)
+            } else {
+                let t_kp1 = self.derivative_term(k + 1);
+                match t_km1 {
+                    Some(t1) if t1 <= t_k.min(t_kp1) => (k - 1, error_constant(k - 1) * t1),
+                    None if t_kp1 < 0.5 * t_k => (k + 1, error_constant(k + 1) * t_kp1),
+                    Some(_) if t_kp1 < t_k => (k + 1, error_constant(k + 1) * t_kp1),
+                    _ => (k, err),
+                }
+            }
         };
         let factor = step_factor(order, e);
         if self.startup && (factor < 2.0 || order == max) {
