@@ -32,7 +32,7 @@ mod tolerance;
 mod tests;
 
 pub use build::{Origin, Unknown};
-pub use error::AnalogError;
+pub use error::{AnalogError, AnalogWarning};
 pub use tolerance::TOLERANCE_GROUPS;
 
 /// The absolute tolerance of quantity `q` from its tolerance group (its own, else its
@@ -99,6 +99,22 @@ pub struct AnalogSystem {
     design_signals: usize,
     /// Every residual is affine in the unknowns ([`Sym::is_affine`]).
     linear: bool,
+    /// Lone across quantities given an implicit through quantity ([`Unknown::Flow`]).
+    implicit_flows: Vec<QuantityId>,
+}
+
+/// The incidence of the assembled residuals (the unknowns each one names).
+fn incidence(asm: &build::Assembled) -> structure::Incidence {
+    let mut pattern = Vec::new();
+    let mut cols = Vec::new();
+    for (row, r) in asm.residuals.iter().enumerate() {
+        cols.clear();
+        r.structural_unknowns(&mut cols);
+        cols.sort_unstable();
+        cols.dedup();
+        pattern.extend(cols.iter().map(|&c| (row, c)));
+    }
+    structure::Incidence::new(asm.residuals.len(), asm.unknowns.len(), &pattern)
 }
 
 /// Exponential arguments below this are not limited (`exp(10)` is a diode well below
@@ -271,32 +287,27 @@ impl AnalogSystem {
         design: &Design,
         options: &AnalogOptions,
     ) -> Result<AnalogSystem, Vec<AnalogError>> {
-        let asm = build::assemble(design)?;
-        let n = asm.unknowns.len();
-        let n_eq = asm.residuals.len();
-
         // Structural analysis on the system as written, so diagnostics name the model's own
-        // equations and quantities.
-        {
-            let mut full_pattern = Vec::new();
-            let mut cols = Vec::new();
-            for (row, r) in asm.residuals.iter().enumerate() {
-                cols.clear();
-                r.structural_unknowns(&mut cols);
-                cols.sort_unstable();
-                cols.dedup();
-                full_pattern.extend(cols.iter().map(|&c| (row, c)));
+        // equations and quantities. A lone across quantity that an equation sets gets an
+        // implicit through quantity, one at a time (each changes the matching).
+        let mut implicit_flows = Vec::new();
+        let asm = loop {
+            let asm = build::assemble(design, &implicit_flows)?;
+            let inc = incidence(&asm);
+            let names = structure::Names {
+                design,
+                unknowns: &asm.unknowns,
+                origins: &asm.origins,
+            };
+            match structure::implicit_flow(&inc, &names) {
+                Some(q) => implicit_flows.push(q),
+                None => {
+                    structure::check(&inc, &names)?;
+                    break asm;
+                }
             }
-            let inc = structure::Incidence::new(n_eq, n, &full_pattern);
-            structure::check(
-                &inc,
-                &structure::Names {
-                    design,
-                    unknowns: &asm.unknowns,
-                    origins: &asm.origins,
-                },
-            )?;
-        }
+        };
+        let n = asm.unknowns.len();
 
         let mut reads = vec![false; design.signals.len()];
         for r in &asm.residuals {
@@ -544,7 +555,7 @@ impl AnalogSystem {
                     unknown: j,
                     quantity: match all_unknowns[j] {
                         Unknown::Quantity(q) => Some(q),
-                        Unknown::Potential(_) => None,
+                        Unknown::Potential(_) | Unknown::Flow(_) => None,
                     },
                     solved_from: solved_from[j].unwrap_or(usize::MAX),
                     replacement,
@@ -580,6 +591,7 @@ impl AnalogSystem {
             delay_lines,
             design_signals: design.signals.len(),
             linear,
+            implicit_flows,
         };
         Ok(system)
     }
@@ -620,6 +632,20 @@ impl AnalogSystem {
                 .collect(),
         );
         self.outputs_tape = ob.finish();
+    }
+
+    /// What the system accepted with a warning: each lone across quantity given an implicit
+    /// through quantity.
+    pub fn warnings(&self, design: &Design) -> Vec<AnalogWarning> {
+        (self.implicit_flows.iter())
+            .map(|&q| {
+                let quantity = &design.quantities[q.index()];
+                AnalogWarning::ImplicitThrough {
+                    span: quantity.span,
+                    name: quantity.name.clone(),
+                }
+            })
+            .collect()
     }
 
     /// Names of the unknowns in solver order (quantity names; `v(t)` for terminal potentials).

@@ -228,6 +228,7 @@ pub fn simulate_into(
 ) -> Result<SimEnd, SimError> {
     let recorder = Recorder::new(design, &options.probes, options.stop, sink)?;
     let mut analog = analog_system(design, options)?;
+    announce_warnings(design, analog.as_ref(), on_report);
     if let Some(a) = analog.as_mut() {
         a.select_quantities(&wanted_quantities(design, &recorder));
     }
@@ -273,6 +274,25 @@ fn wanted_quantities(design: &Design, recorder: &Recorder) -> Vec<bool> {
         mark(&l.max_step);
     }
     wanted
+}
+
+/// The analog system's warnings, as reports of severity warning at time 0 from no process,
+/// so that a run shows them where it shows the model's own reports.
+fn announce_warnings(
+    design: &Design,
+    analog: Option<&AnalogSystem>,
+    on_report: &mut dyn FnMut(&Report),
+) {
+    for w in analog.map(|a| a.warnings(design)).unwrap_or_default() {
+        // The message only: `vams check` shows the help.
+        on_report(&Report {
+            time: 0.0,
+            severity: Severity::Warning,
+            message: w.to_string(),
+            process: String::new(),
+            span: crate::diagnostics::Located::primary_span(&w),
+        });
+    }
 }
 
 /// The analog system, or `None` for a design without quantities.

@@ -2,7 +2,8 @@
 //! equations, the across definitions and the conservation laws, each with its origin.
 //!
 //! Unknown order: the potential `v(<terminal>)` of every non-reference terminal some branch
-//! quantity refers to (terminal order), then every quantity (quantity order). Equation order:
+//! quantity refers to (terminal order), then every quantity (quantity order), then the
+//! implicit flows asked for (see [`Unknown::Flow`]). Equation order:
 //! user equations, then one across definition per across quantity, then one conservation law
 //! per potential unknown whose terminal carries a through quantity (a terminal reached only by
 //! across quantities carries no current: `0 = 0` is no equation).
@@ -22,6 +23,11 @@ use crate::source::Span;
 pub enum Unknown {
     Potential(TerminalId),
     Quantity(QuantityId),
+    /// The implicit through quantity of a lone across quantity that an equation sets
+    /// (`quantity vs across p to m; vs == 5.0;`, the University of Cincinnati's way of writing
+    /// a voltage source): the branch's flow from `plus` to `minus`, an unknown of the
+    /// conservation laws at both ends, as if the declaration had named a through quantity.
+    Flow(QuantityId),
 }
 
 /// Where an equation comes from.
@@ -88,13 +94,14 @@ impl Unknown {
         match self {
             Unknown::Potential(t) => format!("v({})", design.terminals[t.index()].name),
             Unknown::Quantity(q) => design.quantities[q.index()].name.clone(),
+            Unknown::Flow(q) => format!("through({})", design.quantities[q.index()].name),
         }
     }
 
     pub fn span(self, design: &Design) -> Span {
         match self {
             Unknown::Potential(t) => design.terminals[t.index()].span,
-            Unknown::Quantity(q) => design.quantities[q.index()].span,
+            Unknown::Quantity(q) | Unknown::Flow(q) => design.quantities[q.index()].span,
         }
     }
 }
@@ -180,7 +187,9 @@ fn check_indices(design: &Design) -> Result<(), AnalogError> {
 }
 
 /// Builds unknowns and residuals; reports malformed expressions and floating node sets.
-pub fn assemble(design: &Design) -> Result<Assembled, Vec<AnalogError>> {
+/// `flows` are the lone across quantities (of [`Design::lone_across`]) whose branches get an
+/// implicit through quantity ([`Unknown::Flow`]).
+pub fn assemble(design: &Design, flows: &[QuantityId]) -> Result<Assembled, Vec<AnalogError>> {
     check_indices(design).map_err(|e| vec![e])?;
     // Potential slots: non-reference terminals that some branch refers to.
     let mut used = vec![false; design.terminals.len()];
@@ -204,6 +213,8 @@ pub fn assemble(design: &Design) -> Result<Assembled, Vec<AnalogError>> {
         quantity_slot.push(unknowns.len());
         unknowns.push(Unknown::Quantity(QuantityId(i as u32)));
     }
+    let flow_start = unknowns.len();
+    unknowns.extend(flows.iter().map(|&q| Unknown::Flow(q)));
 
     let floating = floating_sets(design, &potential_slot);
     if !floating.is_empty() {
@@ -259,6 +270,15 @@ pub fn assemble(design: &Design) -> Result<Assembled, Vec<AnalogError>> {
             if minus != plus {
                 incident[minus.index()].push((quantity_slot[i], false));
             }
+        }
+    }
+    for (k, q) in flows.iter().enumerate() {
+        if let Some(QuantityKind::Across { plus, minus }) =
+            design.quantities.get(q.index()).map(|q| q.kind)
+            && plus != minus
+        {
+            incident[plus.index()].push((flow_start + k, true));
+            incident[minus.index()].push((flow_start + k, false));
         }
     }
     for (t, slot) in potential_slot.iter().enumerate() {

@@ -121,3 +121,33 @@ impl Located for AnalogError {
         }
     }
 }
+
+/// What the analog system accepted with a warning (codes `vams::analog::*`).
+#[derive(Clone, Debug, Error, Diagnostic, PartialEq)]
+pub enum AnalogWarning {
+    /// A lone across quantity that an equation sets (`quantity vs across p to m; vs ==
+    /// 5.0;`): its branch got an implicit through quantity, as a source's current.
+    #[error(
+        "`{name}` is set by an equation but has no through quantity: vams gives its branch one"
+    )]
+    #[diagnostic(
+        code(vams::analog::implicit_through),
+        severity(Warning),
+        help(
+            "the branch carries whatever flow the equation needs, like a voltage source; LRM 1076.1 12.6.6 counts only through and free quantities, so other simulators refuse this: declare the flow, `quantity {name} across i_{name} through ...;`"
+        )
+    )]
+    ImplicitThrough {
+        #[label("an across quantity without a through quantity")]
+        span: Span,
+        name: String,
+    },
+}
+
+impl Located for AnalogWarning {
+    fn primary_span(&self) -> Span {
+        match self {
+            AnalogWarning::ImplicitThrough { span, .. } => *span,
+        }
+    }
+}

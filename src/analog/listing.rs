@@ -25,7 +25,7 @@ pub fn listing(sys: &AnalogSystem, design: &Design, sources: &SourceMap) -> Stri
     let mut out = String::new();
     // `sys` was built from `design`, so assembling it again succeeds; the system keeps only
     // the reduced equations, and the listing shows the model's own.
-    let Ok(asm) = build::assemble(design) else {
+    let Ok(asm) = build::assemble(design, &sys.implicit_flows) else {
         return out;
     };
     let names: Vec<String> = asm.unknowns.iter().map(|u| u.name(design)).collect();

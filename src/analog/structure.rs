@@ -10,7 +10,7 @@ use std::collections::VecDeque;
 
 use super::build::{Origin, Unknown};
 use super::error::AnalogError;
-use crate::design::{Design, QuantityId};
+use crate::design::{BinaryOp, Design, Expr, QuantityId};
 
 /// The incidence of equations (rows) and unknowns (columns), both ways in compressed form
 /// (offsets into one index array each: two allocations, not one per equation and unknown).
@@ -229,6 +229,51 @@ impl Names<'_> {
     }
 }
 
+/// The lone across quantity to give an implicit through quantity ([`Unknown::Flow`]), if the
+/// system has an over-determined part (equations a maximum matching leaves out) and one of the
+/// model's equations sets such a quantity there: `quantity vs across p to m; vs == 5.0;` is a
+/// voltage source whose current the model forgot. LRM 1076.1 12.6.6 counts only through and
+/// free quantities, so the equation is one too many; the University of Cincinnati's test
+/// suite and the simulator it was written for read it as a source, and so does vams, with a
+/// warning. Of several candidates, one that an equation has on its left (`vout == 2.0 * vm`
+/// sets `vout`: the voltmeter `vm` it reads keeps no current), then the one whose setting
+/// equation names the fewest unknowns (`vs == f(t)` before `vs == k * vin`).
+pub fn implicit_flow(inc: &Incidence, names: &Names<'_>) -> Option<QuantityId> {
+    if names.design.lone_across.is_empty() {
+        return None;
+    }
+    let m = maximum_matching(inc);
+    if m.row_match.iter().all(Option::is_some) {
+        return None;
+    }
+    let (rows, cols) = alternating_reach(inc, &m, false);
+    let lone = |c: usize| match names.unknowns[c] {
+        Unknown::Quantity(q) if names.design.lone_across.contains(&q) => Some(q),
+        _ => None,
+    };
+    // Already given one: its column is a Flow now, so it is no candidate (the lookup above).
+    let given = |q: QuantityId| names.unknowns.contains(&Unknown::Flow(q));
+    // The user's equation of origin `r` written `q == ...` (`Sub(q, ...)` once elaborated).
+    let on_left = |r: usize, q: QuantityId| match names.origins[r] {
+        Origin::User(i) => matches!(
+            &names.design.equations[i].residual,
+            Expr::Binary(BinaryOp::Sub, l, _) if **l == Expr::Quantity(q)
+        ),
+        _ => false,
+    };
+    (cols.iter().copied())
+        .filter_map(|c| {
+            let q = lone(c).filter(|&q| !given(q))?;
+            let rank = (rows.iter().copied())
+                .filter(|&r| is_user(names, r) && inc.row(r).contains(&c))
+                .map(|r| (!on_left(r, q), inc.row(r).len()))
+                .min()?;
+            Some((rank, q))
+        })
+        .min_by_key(|&(rank, q)| (rank, q.index()))
+        .map(|(_, q)| q)
+}
+
 /// The count rule, then the matching; every structural defect as a diagnostic.
 pub fn check(inc: &Incidence, names: &Names<'_>) -> Result<(), Vec<AnalogError>> {
     let (ne, nu) = (inc.n_rows(), inc.n_cols());
@@ -379,7 +424,12 @@ fn lone_across_help(design: &Design, q: QuantityId) -> String {
 /// across t1; vs == 5.0;`, written as a voltage source), and its column.
 fn across_only(names: &Names<'_>, cols: &[usize]) -> Option<(QuantityId, usize)> {
     cols.iter().find_map(|&c| match names.unknowns[c] {
-        Unknown::Quantity(q) if names.design.lone_across.contains(&q) => Some((q, c)),
+        Unknown::Quantity(q)
+            if names.design.lone_across.contains(&q)
+                && !names.unknowns.contains(&Unknown::Flow(q)) =>
+        {
+            Some((q, c))
+        }
         _ => None,
     })
 }

@@ -63,6 +63,12 @@ pub fn per_unknown(design: &Design, unknowns: &[Unknown]) -> Vec<Option<f64>> {
         .map(|u| {
             let group = match *u {
                 Unknown::Potential(t) => nature_of(t).across_tolerance.as_deref(),
+                Unknown::Flow(q) => match design.quantities[q.index()].kind {
+                    QuantityKind::Across { plus, .. } => {
+                        nature_of(plus).through_tolerance.as_deref()
+                    }
+                    _ => None,
+                },
                 Unknown::Quantity(q) => {
                     let q = &design.quantities[q.index()];
                     q.tolerance.as_deref().or(match q.kind {

@@ -203,8 +203,11 @@ fn check_elaborated(
         return; // A digital design has no analog system (as in the kernel).
     }
     tally.analog_checked += 1;
-    if let Err(errors) = AnalogSystem::new(&design) {
-        tally.analog += tally.print(&errors, loaded, max);
+    match AnalogSystem::new(&design) {
+        Ok(system) => {
+            tally.print(&system.warnings(&design), loaded, max);
+        }
+        Err(errors) => tally.analog += tally.print(&errors, loaded, max),
     }
 }
 

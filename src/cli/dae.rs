@@ -29,6 +29,9 @@ pub fn run(args: &DaeArgs) -> Result<(), Report> {
             count: errors.len(),
         }
     })?;
+    for w in system.warnings(&compiled.design) {
+        eprint!("{}", render_located(&w, &compiled.loaded.sources));
+    }
     print!(
         "{}",
         system.listing(&compiled.design, &compiled.loaded.sources)

@@ -141,7 +141,15 @@ fn run_bench(
         stop,
         ..SimOptions::default()
     };
-    judge(simulate(&design, &sim, &mut |_| {}), sources)
+    // Reports from no process are the simulator's own warnings (an implicit through
+    // quantity); the model's own reports judge the run.
+    let mut own_warning = |r: &crate::kernel::Report| {
+        if r.process.is_empty() && r.severity == Severity::Warning {
+            warnings.push_str(&format_report(r, sources));
+            warnings.push('\n');
+        }
+    };
+    judge(simulate(&design, &sim, &mut own_warning), sources)
 }
 
 /// The verdict on a finished (or failed) run: reports of severity error or failure, or the
