@@ -389,11 +389,12 @@ pub struct RecordField {
 
 #[derive(Clone, Debug, PartialEq)]
 pub enum NatureDef {
-    /// `voltage across current through electrical_ref reference`
+    /// `voltage across current through electrical_ref reference`; the reference terminal's
+    /// name is missing in SEAMS's dialect (`real across real through;`).
     Scalar {
         across: Expr,
         through: Expr,
-        reference: Ident,
+        reference: Option<Ident>,
     },
     Array {
         indexes: Vec<IndexDef>,

@@ -115,6 +115,13 @@ pub enum DesignWarning {
         /// Its declaration.
         span: Span,
     },
+    /// `nature electrical is real across real through;` (SEAMS's dialect): the nature's
+    /// reference terminal has no name, `electrical'reference` reaches it.
+    UnnamedReference {
+        nature: String,
+        /// The nature declaration.
+        span: Span,
+    },
 }
 
 /// A component instance whose default binding found no entity of the component's name.
@@ -432,6 +439,15 @@ pub enum SignalKind {
     /// `S'transaction` (LRM 14.1): a `bit` that toggles in each simulation cycle in which
     /// `source` is active; the kernel updates it, nothing drives it.
     Transaction { source: SignalId },
+    /// `S'stable(T)` (`quiet`: `S'quiet(T)`, LRM 14.1): a `boolean`, true at first; the
+    /// kernel makes it false in each simulation cycle in which `source` has an event (is
+    /// active), and true again `delay` seconds after the last one (the next delta cycle for
+    /// 0). Nothing drives it.
+    Stable {
+        source: SignalId,
+        delay: f64,
+        quiet: bool,
+    },
     /// An array port associated element by element (`port map (i(1) => a, i(2) => b)`): its
     /// element `k` is `elements[k]`, a whole scalar signal (`None`) or the element at a
     /// position of an array signal, like a [`SignalKind::View`] of several parents. None of

@@ -177,10 +177,6 @@ struct Elab<'a> {
     /// Calls being lowered for static scalar arguments, innermost last (see
     /// `Elab::specialised`).
     specialising: usize,
-    /// Where `S'stable` and `S'quiet` were lowered (as values), and whether with a time: a
-    /// condition whose signals a process waits on implicitly must not read them (see
-    /// `Elab::implicit_sensitivity`).
-    stable_reads: Vec<(Span, bool)>,
     sources: &'a SourceMap,
     lib: Library<'a>,
     design: Design,
@@ -218,6 +214,8 @@ struct Elab<'a> {
     delayed_signals: FxHashMap<(SignalId, u64), SignalId>,
     /// `S'transaction` signals by `S`.
     transaction_signals: FxHashMap<SignalId, SignalId>,
+    /// `S'stable(T)` and `S'quiet(T)` signals by `S`, `T` (its bits) and whether quiet.
+    stable_signals: FxHashMap<(SignalId, u64, bool), SignalId>,
     /// Disconnection delays of guarded signals in seconds (`disconnect s : t after 3 ns;`).
     disconnect_delays: FxHashMap<SignalId, f64>,
     /// The `GUARD` signals of the guarded blocks being elaborated, innermost last: the guard
@@ -301,7 +299,6 @@ impl<'a> Elab<'a> {
         let (resolved, mixed_universal) = resolutions(analysis);
         Elab {
             specialising: 0,
-            stable_reads: Vec::new(),
             sources,
             lib: Library::index(analysis, files),
             resolved,
@@ -325,6 +322,7 @@ impl<'a> Elab<'a> {
             disconnect_delays: FxHashMap::default(),
             delayed_signals: FxHashMap::default(),
             transaction_signals: FxHashMap::default(),
+            stable_signals: FxHashMap::default(),
             guards: Vec::new(),
             dot_aux: FxHashMap::default(),
             terminal_attrs: FxHashMap::default(),

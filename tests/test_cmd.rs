@@ -251,7 +251,10 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains(
             "warning: `vout` is set by an equation but has no through quantity",
         ))
-        .stdout(contains("109 passed, 0 failed"));
+        .stdout(contains("test tb_stable_and_quiet_signals ... ok"))
+        .stdout(contains("test tb_unnamed_reference ... ok"))
+        .stdout(contains("the nature `electrical` names no reference terminal"))
+        .stdout(contains("111 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

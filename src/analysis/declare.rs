@@ -78,7 +78,9 @@ impl Analyzer<'_> {
                         let across = self.type_mark(across);
                         let through = self.type_mark(through);
                         let n = self.add_nature(&name.name, across, through);
-                        self.declare(&reference.name, reference.span, DeclKind::Terminal(n));
+                        if let Some(reference) = reference {
+                            self.declare(&reference.name, reference.span, DeclKind::Terminal(n));
+                        }
                         n
                     }
                     NatureDef::Array { indexes, element } => {

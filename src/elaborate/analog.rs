@@ -67,11 +67,22 @@ impl<'a> Elab<'a> {
             base: None,
         });
         sc.declare_at(&name.name, name.span, Item::Nature(idx));
-        sc.declare_at(
-            &reference.name,
-            reference.span,
-            Item::RefTerminal { nature: idx },
-        );
+        match reference {
+            Some(reference) => {
+                sc.declare_at(
+                    &reference.name,
+                    reference.span,
+                    Item::RefTerminal { nature: idx },
+                );
+            }
+            None => self
+                .design
+                .warnings
+                .push(crate::design::DesignWarning::UnnamedReference {
+                    nature: name.name.clone(),
+                    span,
+                }),
+        }
         Ok(())
     }
 

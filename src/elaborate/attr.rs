@@ -6,7 +6,7 @@
 use std::rc::Rc;
 
 use crate::ast::{self, Actual, Ident, Range};
-use crate::design::{BinaryOp, Builtin, Expr, SignalAttr, UnaryOp, Value};
+use crate::design::{BinaryOp, Builtin, Expr, SignalAttr, Value};
 use crate::source::Span;
 
 use super::error::ElabError;
@@ -130,11 +130,9 @@ impl<'a> Elab<'a> {
                 };
                 Ok(Typed { e, ty: Ty::Real })
             }
-            // As a value (LRM 14.1): `S'stable` is false in the cycle of an event on `S`,
-            // `S'stable(T)` until `T` after it; `S'quiet` likewise for a transaction. Not a
-            // signal of its own: a process cannot wait on it.
+            // Implicit signals (LRM 14.1): `S'stable(T)` is false from an event on `S` until `T`
+            // after it (the next delta cycle for 0), `S'quiet(T)` likewise for a transaction.
             "stable" | "quiet" => {
-                self.stable_reads.push((span, arg(0).is_some()));
                 let p = self.signal_expr(sc, prefix)?;
                 let Expr::Signal(s) = p.e else {
                     return Err(self.wrong_class(prefix, &p, "a signal", name));
@@ -146,23 +144,8 @@ impl<'a> Elab<'a> {
                     },
                     None => 0.0,
                 };
-                let e = match (name, t > 0.0) {
-                    ("stable", false) => Expr::Unary(UnaryOp::Not, Box::new(Expr::SignalAttr(s, SignalAttr::Event))),
-                    ("stable", true) => Expr::Binary(
-                        BinaryOp::Ge,
-                        Box::new(Expr::SignalAttr(s, SignalAttr::LastEvent)),
-                        Box::new(Expr::Const(Value::Time(t))),
-                    ),
-                    (_, false) => Expr::Unary(UnaryOp::Not, Box::new(Expr::SignalAttr(s, SignalAttr::Active))),
-                    _ => {
-                        return Err(self.error(ElabError::unsupported(
-                            span,
-                            "`S'quiet(T)` with a time",
-                            "use `S'quiet` (this cycle) or `S'stable(T)` (events)",
-                        )));
-                    }
-                };
-                Ok(Typed { e, ty: Ty::Boolean })
+                let id = self.stable_signal(s, t, name == "quiet", span);
+                Ok(Typed { e: Expr::Signal(id), ty: Ty::Boolean })
             }
             "event" | "active" | "last_value" | "last_event" | "last_active" | "driving"
             | "driving_value" => {

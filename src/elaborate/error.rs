@@ -315,6 +315,20 @@ pub enum ElabWarning {
         span: Span,
         name: String,
     },
+    /// `nature electrical is real across real through;`
+    #[error("the nature `{nature}` names no reference terminal")]
+    #[diagnostic(
+        code(vams::elab::unnamed_reference),
+        severity(Warning),
+        help(
+            "VHDL-AMS requires one (`... through {nature}_ref reference;`, LRM 1076.1 4.8); vams gives it one without a name, reached as `{nature}'reference`"
+        )
+    )]
+    UnnamedReference {
+        #[label("no `... reference` here")]
+        span: Span,
+        nature: String,
+    },
 }
 
 impl From<&crate::design::DesignWarning> for ElabWarning {
@@ -332,6 +346,12 @@ impl From<&crate::design::DesignWarning> for ElabWarning {
                     name: name.clone(),
                 }
             }
+            crate::design::DesignWarning::UnnamedReference { nature, span } => {
+                ElabWarning::UnnamedReference {
+                    span: *span,
+                    nature: nature.clone(),
+                }
+            }
         }
     }
 }
@@ -339,7 +359,9 @@ impl From<&crate::design::DesignWarning> for ElabWarning {
 impl Located for ElabWarning {
     fn primary_span(&self) -> Span {
         match self {
-            ElabWarning::Unbound { span, .. } | ElabWarning::BuiltinStandIn { span, .. } => *span,
+            ElabWarning::Unbound { span, .. }
+            | ElabWarning::BuiltinStandIn { span, .. }
+            | ElabWarning::UnnamedReference { span, .. } => *span,
         }
     }
 }

@@ -547,14 +547,10 @@ impl<'a> Elab<'a> {
                         sigs.push(sig);
                     }
                 }
-                let reads = self.stable_reads.len();
                 let until = match until {
                     Some(u) => Some(self.cond(sc, u)?),
                     None => None,
                 };
-                if on.is_empty() {
-                    self.implicit_sensitivity(reads, false)?;
-                }
                 let timeout = match timeout {
                     Some(t) => Some(self.expr_of(sc, t, &Ty::Time)?.e),
                     None => None,
@@ -1502,6 +1498,38 @@ impl<'a> Elab<'a> {
         id
     }
 
+    /// `s'stable(t)` or `s'quiet(t)` (LRM 14.1): an implicit `boolean` signal that the kernel
+    /// keeps ([`crate::design::SignalKind::Stable`]). One per signal, delay and attribute.
+    pub(super) fn stable_signal(
+        &mut self,
+        s: SignalId,
+        delay: f64,
+        quiet: bool,
+        span: Span,
+    ) -> SignalId {
+        let key = (s, delay.to_bits(), quiet);
+        if let Some(&id) = self.stable_signals.get(&key) {
+            return id;
+        }
+        let id = SignalId(self.design.signals.len() as u32);
+        self.design.signals.push(crate::design::Signal {
+            name: self.hier_name(self.sources.snippet(span)),
+            ty: Ty::Boolean.to_design(),
+            init: Value::Boolean(true),
+            kind: crate::design::SignalKind::Stable {
+                source: s,
+                delay,
+                quiet,
+            },
+            span,
+            range: None,
+            resolution: None,
+            guarded: None,
+        });
+        self.stable_signals.insert(key, id);
+        id
+    }
+
     /// `process (s) begin d <= transport s after t; end process;`. One per signal and delay.
     pub(super) fn delayed_signal(&mut self, s: SignalId, t: f64, span: Span) -> SignalId {
         if let Some(&d) = self.delayed_signals.get(&(s, t.to_bits())) {
@@ -1651,37 +1679,7 @@ impl<'a> Elab<'a> {
 
     /// A concurrent statement's equivalent process, waiting on the signals it reads.
     pub(super) fn concurrent_assign(&mut self, sc: &Scope<'a>, stmt: &ConcStmt) -> R<()> {
-        let reads = self.stable_reads.len();
-        let result = self.concurrent_process(sc, stmt);
-        let explicit = matches!(&stmt.kind, ast::ConcKind::Break(b) if !b.sensitivity.is_empty());
-        if !explicit {
-            self.implicit_sensitivity(reads, true)?;
-        }
-        result
-    }
-
-    /// `S'stable` and `S'quiet` are values computed from `S`'s events, not implicit signals
-    /// of their own (LRM 14.1): a process waiting on the signals of a condition that reads
-    /// one does not wake when it changes back (T after `S`'s last event, or the next delta
-    /// cycle), so such a condition, read since the `reads`-th lowering, is refused rather than
-    /// simulated wrong: `wait until s'stable...` (it would never resume), and `S'stable(T)`
-    /// in a concurrent statement. `not clk'stable` in a concurrent statement, the old idiom
-    /// for `clk'event`, stays: it is right at the events the statement wakes on; the
-    /// statement is not re-run when it turns back one delta cycle later (which matters
-    /// only where that re-run would assign an `else` value).
-    fn implicit_sensitivity(&mut self, reads: usize, concurrent: bool) -> R<()> {
-        let refused = (self.stable_reads.get(reads..).unwrap_or_default().iter())
-            .find(|(_, delayed)| *delayed || !concurrent)
-            .map(|(span, _)| *span);
-        self.stable_reads.truncate(reads);
-        let Some(span) = refused else {
-            return Ok(());
-        };
-        Err(self.error(ElabError::unsupported(
-            span,
-            "`'stable` or `'quiet` in a condition a process waits on without an `on` list (or in a concurrent statement)",
-            "vams computes it from the prefix's events, not as a signal of its own: wait with an explicit `on` list or a `for` timeout, and test it after the wait",
-        )))
+        self.concurrent_process(sc, stmt)
     }
 
     fn concurrent_process(&mut self, sc: &Scope<'a>, stmt: &ConcStmt) -> R<()> {

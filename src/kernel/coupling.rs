@@ -90,7 +90,7 @@ impl Coupling {
             .collect();
         let mut coupled: Vec<bool> = reaches.iter().map(|r| r.analog).collect();
         // The signals an event on a signal causes events on: its views, gathers and
-        // `'transaction` (their own drivers are their parents').
+        // `'transaction`, `'stable` and `'quiet` (their own drivers are their parents').
         let mut sources: Vec<Vec<usize>> = vec![Vec::new(); n];
         for (k, s) in design.signals.iter().enumerate() {
             match &s.kind {
@@ -98,7 +98,9 @@ impl Coupling {
                 SignalKind::Gather { elements } => {
                     sources[k].extend(elements.iter().map(|(p, _)| p.index()));
                 }
-                SignalKind::Transaction { source } => sources[k].push(source.index()),
+                SignalKind::Transaction { source } | SignalKind::Stable { source, .. } => {
+                    sources[k].push(source.index())
+                }
                 _ => {}
             }
         }

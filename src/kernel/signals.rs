@@ -65,6 +65,16 @@ struct Driver {
     pending: bool,
 }
 
+/// An implicit `S'stable(T)` or `S'quiet(T)` signal.
+#[derive(Clone, Copy, Debug)]
+struct Stable {
+    signal: SignalId,
+    source: SignalId,
+    delay: f64,
+    quiet: bool,
+    driver: usize,
+}
+
 /// An element of a gathered port: a root signal and the position in it (`None`: all of it).
 type GatherElement = (SignalId, Option<usize>);
 
@@ -107,6 +117,9 @@ pub(crate) struct Signals {
     gathers: Vec<SignalId>,
     /// `(S'transaction, S)` pairs ([`SignalKind::Transaction`]).
     transactions: Vec<(SignalId, SignalId)>,
+    /// `S'stable(T)` and `S'quiet(T)` ([`SignalKind::Stable`]), in signal order, each with
+    /// the driver the kernel schedules its return to true on.
+    stables: Vec<Stable>,
     /// `'above` values to apply in the next update phase.
     forced: Vec<(SignalId, Value)>,
     /// Signals with an event in the last update phase.
@@ -288,6 +301,34 @@ impl Signals {
                 }
             }
         }
+        // `S'stable(T)` and `S'quiet(T)`: a driver of the kernel's own each, for the return to
+        // true (no process drives them).
+        let mut stables = Vec::new();
+        for (k, signal) in design.signals.iter().enumerate() {
+            if let SignalKind::Stable {
+                source,
+                delay,
+                quiet,
+            } = signal.kind
+            {
+                by_signal[k].push(drivers.len());
+                stables.push(Stable {
+                    signal: SignalId(k as u32),
+                    source,
+                    delay,
+                    quiet,
+                    driver: drivers.len(),
+                });
+                drivers.push(Driver {
+                    signal: SignalId(k as u32),
+                    element: None,
+                    current: signal.init.clone(),
+                    connected: true,
+                    waveform: VecDeque::new(),
+                    pending: false,
+                });
+            }
+        }
         let resolved: Vec<bool> = design
             .signals
             .iter()
@@ -389,6 +430,7 @@ impl Signals {
                     _ => None,
                 })
                 .collect(),
+            stables,
             forced: Vec::new(),
             events: Vec::new(),
             changed: vec![false; n],
@@ -689,6 +731,33 @@ impl Signals {
                 self.activate(t, now);
                 self.set(t, toggled, now);
             }
+        }
+        // `S'stable(T)` falls in the cycle of an event on `S` (`S'quiet(T)`: of a transaction)
+        // and rises `T` after the last one: the earlier return is cancelled, as a transport
+        // assignment `<= false, true after T` would, but without its delta cycle of delay.
+        for k in 0..self.stables.len() {
+            let st = self.stables[k];
+            let source = &self.states[st.source.index()];
+            if !(if st.quiet {
+                source.active
+            } else {
+                source.event
+            }) {
+                continue;
+            }
+            let driver = &mut self.drivers[st.driver];
+            driver.current = Value::Boolean(false);
+            driver.waveform.clear();
+            driver.waveform.push_back(Transaction {
+                time: super::process::later(now, st.delay),
+                value: Some(Value::Boolean(true)),
+            });
+            if !driver.pending {
+                driver.pending = true;
+                self.pending.push(st.driver);
+            }
+            self.activate(st.signal, now);
+            self.set(st.signal, Value::Boolean(false), now);
         }
         Ok(())
     }

@@ -1030,14 +1030,9 @@ impl Program {
             }
             7 if self.context != Context::Function => {
                 let s = self.rng.pick(&self.signals).name.clone();
-                // `'stable` and `'quiet` only where a process reads them when it resumes: vams
-                // computes them as values, not as the implicit signals a sensitivity list (a
-                // concurrent assignment's, a `wait until`'s) would wait on.
-                let attrs: &[&str] = if self.context == Context::Waiting && !self.in_wait {
-                    &["event", "active", "stable", "quiet"]
-                } else {
-                    &["event", "active"]
-                };
+                // `'stable` and `'quiet` are implicit signals: also where a sensitivity list
+                // (a concurrent assignment's, a `wait until`'s) waits on them.
+                let attrs: &[&str] = &["event", "active", "stable", "quiet"];
                 let attr = self.rng.pick(attrs);
                 format!("{s}'{attr}")
             }
