@@ -253,7 +253,9 @@ fn the_repository_testbenches_pass_by_default() {
         ))
         .stdout(contains("test tb_stable_and_quiet_signals ... ok"))
         .stdout(contains("test tb_unnamed_reference ... ok"))
-        .stdout(contains("the nature `electrical` names no reference terminal"))
+        .stdout(contains(
+            "the nature `electrical` names no reference terminal",
+        ))
         .stdout(contains("111 passed, 0 failed"));
 }
 

@@ -302,7 +302,7 @@ impl Signals {
             }
         }
         // `S'stable(T)` and `S'quiet(T)`: a driver of the kernel's own each, for the return to
-        // true (no process drives them).
+        // true (no process drives them; `update` applies it, not the pending list).
         let mut stables = Vec::new();
         for (k, signal) in design.signals.iter().enumerate() {
             if let SignalKind::Stable {
@@ -613,7 +613,8 @@ impl Signals {
     /// The earliest transaction due on a signal for which `counts` holds.
     pub fn next_time_where(&self, counts: impl Fn(SignalId) -> bool) -> f64 {
         let mut next = f64::INFINITY;
-        for &d in &self.pending {
+        let stables = self.stables.iter().map(|st| st.driver);
+        for d in self.pending.iter().copied().chain(stables) {
             let d = &self.drivers[d];
             if let Some(tr) = d.waveform.front()
                 && counts(d.signal)
@@ -733,31 +734,30 @@ impl Signals {
             }
         }
         // `S'stable(T)` falls in the cycle of an event on `S` (`S'quiet(T)`: of a transaction)
-        // and rises `T` after the last one: the earlier return is cancelled, as a transport
-        // assignment `<= false, true after T` would, but without its delta cycle of delay.
+        // and rises `T` after the last one: a new event cancels the pending return, as a
+        // transport assignment `<= false, true after T` would, but without its delta cycle of
+        // delay. Their drivers stay out of `pending`, so that a return due in the phase of a
+        // new event is cancelled, not applied and undone (no event).
         for k in 0..self.stables.len() {
             let st = self.stables[k];
             let source = &self.states[st.source.index()];
-            if !(if st.quiet {
-                source.active
-            } else {
-                source.event
-            }) {
-                continue;
-            }
             let driver = &mut self.drivers[st.driver];
-            driver.current = Value::Boolean(false);
-            driver.waveform.clear();
-            driver.waveform.push_back(Transaction {
-                time: super::process::later(now, st.delay),
-                value: Some(Value::Boolean(true)),
-            });
-            if !driver.pending {
-                driver.pending = true;
-                self.pending.push(st.driver);
-            }
+            let value = if (st.quiet && source.active) || (!st.quiet && source.event) {
+                driver.waveform.clear();
+                driver.waveform.push_back(Transaction {
+                    time: super::process::later(now, st.delay),
+                    value: Some(Value::Boolean(true)),
+                });
+                false
+            } else if driver.waveform.front().is_some_and(|t| t.time <= now) {
+                driver.waveform.clear();
+                true
+            } else {
+                continue;
+            };
+            driver.current = Value::Boolean(value);
             self.activate(st.signal, now);
-            self.set(st.signal, Value::Boolean(false), now);
+            self.set(st.signal, Value::Boolean(value), now);
         }
         Ok(())
     }
