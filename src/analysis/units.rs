@@ -537,8 +537,24 @@ impl<'a> Analyzer<'a> {
     fn configuration_items(&mut self, items: &[crate::ast::ConfigItem]) {
         for item in items {
             match item {
-                // A block or generate statement of the architecture.
-                crate::ast::ConfigItem::Block(b) => self.configuration_items(&b.items),
+                // A block or generate statement of the architecture; for some iterations of
+                // a generate, the index or range selecting them is read in its scope.
+                crate::ast::ConfigItem::Block(b) => {
+                    if let crate::ast::ExprKind::Apply(_, args) = &b.spec.kind {
+                        for a in args {
+                            match &a.actual {
+                                crate::ast::Actual::Range(r) => {
+                                    self.range(r, UNKNOWN);
+                                }
+                                crate::ast::Actual::Expr(e) => {
+                                    self.expr(e, UNKNOWN);
+                                }
+                                crate::ast::Actual::Open(_) => {}
+                            }
+                        }
+                    }
+                    self.configuration_items(&b.items)
+                }
                 crate::ast::ConfigItem::Component(c) => {
                     let component = match self.peek_name(&c.component).as_deref() {
                         Some([d]) => match self.out.decl(*d).kind {

@@ -352,13 +352,70 @@ impl<'a> Elab<'a> {
                 ast::ConfigItem::Block(b) if matches!(b.spec.kind, ast::ExprKind::Name(_)) => {
                     self.block_config(sc, b)?;
                 }
+                // Some iterations of a generate statement: kept for its iterations to select.
                 ast::ConfigItem::Block(b) => {
-                    return Err(self.error(ElabError::unsupported(
-                        b.span,
-                        "configurations of some iterations of a generate statement",
-                        "configure the whole generate statement (`for gen_label ... end for;`), or use configuration specifications inside it",
-                    )));
+                    let label = match &b.spec.kind {
+                        ast::ExprKind::Apply(prefix, args) if args.len() == 1 => {
+                            prefix.name_ident()
+                        }
+                        _ => None,
+                    };
+                    let Some(label) = label else {
+                        return Err(self.error(ElabError::invalid(
+                            b.spec.span,
+                            "a block configuration names a block or generate statement, with an index or range for some iterations of a generate",
+                            None,
+                        )));
+                    };
+                    let key = iterations_key(&label.name);
+                    let mut list = match sc.lookup(&key) {
+                        Some([Item::IterationConfigs(old)]) => old.as_ref().clone(),
+                        _ => Vec::new(),
+                    };
+                    list.push(b);
+                    let item = Item::IterationConfigs(std::rc::Rc::new(list));
+                    if sc.lookup(&key).is_some() {
+                        sc.replace(&key, vec![item]);
+                    } else {
+                        sc.declare(&key, item);
+                    }
                 }
+            }
+        }
+        Ok(())
+    }
+
+    /// Applies the block configurations of the generate statement `label` that select the
+    /// iteration whose parameter is `i` (`for gen(0 to n - 2)`, `for gen(n - 1)`), in the
+    /// iteration's own region.
+    fn iteration_configs(&mut self, sc: &mut Scope<'a>, label: &str, i: i64) -> R<()> {
+        let configs = match sc.lookup(&iterations_key(label)) {
+            Some([Item::IterationConfigs(list)]) => std::rc::Rc::clone(list),
+            _ => return Ok(()),
+        };
+        for b in configs.iter() {
+            let ast::ExprKind::Apply(_, args) = &b.spec.kind else {
+                continue;
+            };
+            let selected = match &args[0].actual {
+                ast::Actual::Range(r) => {
+                    let (l, r, asc) = self.range_bounds(sc, r)?;
+                    if asc {
+                        l <= i && i <= r
+                    } else {
+                        r <= i && i <= l
+                    }
+                }
+                ast::Actual::Expr(e) => {
+                    match self.static_value(sc, e, &Ty::Integer, "an iteration of a generate")? {
+                        Value::Integer(v) => v == i,
+                        _ => false,
+                    }
+                }
+                ast::Actual::Open(_) => false,
+            };
+            if selected {
+                self.block_config(sc, b)?;
             }
         }
         Ok(())
@@ -795,6 +852,7 @@ impl<'a> Elab<'a> {
                                 ty: Ty::Integer,
                             },
                         );
+                        let _ = self.iteration_configs(sc, label, i);
                         self.decls(sc, decls);
                         self.conc_stmts(sc, stmts, depth);
                         sc.pop();
@@ -1407,4 +1465,10 @@ fn substitute(e: &ast::Expr, actuals: &FxHashMap<&str, Option<ast::Expr>>) -> Op
         other => other.clone(),
     };
     Some(ast::Expr { kind, span: e.span })
+}
+
+/// The scope key of a generate statement's iteration configurations (no identifier has a
+/// space).
+fn iterations_key(label: &str) -> String {
+    format!(" iterations {label}")
 }

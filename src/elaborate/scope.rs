@@ -93,6 +93,10 @@ pub enum Item<'a> {
     /// declaration, declared under ` for LABEL`, ` for all COMPONENT` or ` for others
     /// COMPONENT` (names no identifier can clash with).
     Binding(BindingRef<'a>),
+    /// The block configurations of some iterations of a generate statement (`for
+    /// gen(0 to 2) ... end for;`), declared under ` iterations LABEL`: each iteration of
+    /// `LABEL` that one selects applies its bindings in its own region.
+    IterationConfigs(Rc<Vec<&'a ast::BlockConfig>>),
     /// A user-declared attribute (`attribute symbol : string;`), with its type.
     Attribute(Rc<Sub>),
     /// Declared, but its declaration could not be elaborated (a stdlib declaration using an
@@ -199,6 +203,7 @@ impl<'a> Item<'a> {
             Item::Package(_) => "a package",
             Item::Component(_) => "a component",
             Item::Binding(_) => "a configuration specification",
+            Item::IterationConfigs(_) => "a block configuration",
             Item::Attribute(_) => "an attribute",
             Item::OperatorAlias(_) => "an operator",
             Item::PrivateVariable { .. } => "a variable",
