@@ -46,6 +46,7 @@ mod record_natures;
 mod resolution;
 mod sampled;
 mod scope;
+mod sensitivity;
 mod simultaneous;
 mod slew;
 mod subprogram;

@@ -13,6 +13,7 @@ use crate::source::Span;
 
 use super::error::ElabError;
 use super::scope::{Item, Native, Part, Scope, updated};
+use super::sensitivity::{reads, reads_of_code};
 use super::types::{ArrayTy, Ty};
 use super::{Elab, R, Reported};
 
@@ -91,35 +92,6 @@ impl Proc {
         });
         VarId(self.vars.len() as u32 - 1)
     }
-}
-
-/// Every signal the instructions read, without repetitions, in order of appearance: the
-/// implicit sensitivity of a process statement (a wait's own condition is not part of it).
-fn signals_read(code: &[Instr]) -> Vec<SignalId> {
-    let mut out = Vec::new();
-    let mut add = |e: &Expr| {
-        for s in e.signals() {
-            if !out.contains(&s) {
-                out.push(s);
-            }
-        }
-    };
-    for i in code {
-        match i {
-            Instr::Wait { .. } => {}
-            Instr::Call { sub, signals, .. } => {
-                i.visit_exprs(&mut add);
-                // The signal actuals, as one expression that reads them all.
-                add(&Expr::FnCall {
-                    sub: *sub,
-                    args: Vec::new(),
-                    signals: signals.clone(),
-                });
-            }
-            _ => i.visit_exprs(&mut add),
-        }
-    }
-    out
 }
 
 /// The index, in the object's own type `own`, of the element at index `i` of the view
@@ -258,7 +230,7 @@ impl<'a> Elab<'a> {
                 ));
             }
             if matches!(sensitivity, Some(Sensitivity::All)) {
-                on = signals_read(&p.code);
+                on = self.sensitivity(reads_of_code(&p.code));
             }
             p.emit(Instr::Wait {
                 on,
@@ -556,11 +528,7 @@ impl<'a> Elab<'a> {
                     None => None,
                 };
                 if on.is_empty() {
-                    for sig in until.iter().flat_map(Expr::signals) {
-                        if !sigs.contains(&sig) {
-                            sigs.push(sig);
-                        }
-                    }
+                    sigs = self.sensitivity(reads(until.iter()));
                 }
                 p.emit(Instr::Wait {
                     on: sigs,
@@ -1458,9 +1426,10 @@ impl<'a> Elab<'a> {
         mut p: Proc,
         on: Option<Vec<SignalId>>,
     ) {
-        let on = on
-            .filter(|o| !o.is_empty())
-            .unwrap_or_else(|| signals_read(&p.code));
+        let on = match on.filter(|o| !o.is_empty()) {
+            Some(on) => on,
+            None => self.sensitivity(reads_of_code(&p.code)),
+        };
         if on.is_empty() {
             p.emit(Instr::Halt);
         } else {
@@ -1758,12 +1727,9 @@ impl<'a> Elab<'a> {
                 }
                 end_guard(&mut p, guard);
                 // The selector is read even when no choice matches.
-                let mut on = signals_read(&p.code);
-                for s in sel.e.signals() {
-                    if !on.contains(&s) {
-                        on.push(s);
-                    }
-                }
+                let mut code_reads = reads_of_code(&p.code);
+                code_reads.extend(reads([&sel.e]));
+                let on = self.sensitivity(code_reads);
                 self.equivalent(stmt, p, Some(on));
                 return Ok(());
             }
@@ -1790,8 +1756,7 @@ impl<'a> Elab<'a> {
                 if on.is_empty() {
                     if let Some(c) = b.condition.as_ref() {
                         let c = self.cond(sc, c)?;
-                        on = c.signals();
-                        on.dedup();
+                        on = self.sensitivity(reads([&c]));
                     }
                     if on.is_empty() {
                         p.emit(Instr::Halt);

@@ -155,3 +155,41 @@ begin
     wait;
   end process;
 end;
+
+-- Implicit sensitivity takes the longest static prefix of each name (LRM 8.1): `s(1)` read
+-- with a constant index waits on that element, so an event on `s(0)` alone does not resume
+-- `wait until s(1) and s(2)` although the condition is already true (seed 3524 of the
+-- differential test). Likewise for a process with `all` and a concurrent statement.
+entity tb_ghdl_element_sensitivity is end;
+architecture t of tb_ghdl_element_sensitivity is
+  type bool_arr is array (0 to 2) of boolean;
+  signal s : bool_arr := (false, true, true);
+  signal wakes, concurrent_runs : natural := 0;
+  signal copy : boolean;
+begin
+  s <= (true, true, true) after 5 ns, (true, false, true) after 8 ns,
+       (true, true, true) after 11 ns;
+  waiter : process
+  begin
+    wait until s(1) and s(2);
+    wakes <= wakes + 1;
+    assert now = 11 ns report "woke at " & time'image(now) & ", not when s(1) rose"
+      severity error;
+  end process;
+  copy <= s(1);
+  count : process (copy) is
+  begin
+    if now > 0 ns then
+      concurrent_runs <= concurrent_runs + 1;
+    end if;
+  end process;
+  check : process
+  begin
+    wait for 20 ns;
+    assert wakes = 1 report "the wait resumed " & integer'image(wakes) & " times, not once"
+      severity error;
+    assert concurrent_runs = 2 report "copy changed " & integer'image(concurrent_runs) & " times"
+      severity error;
+    wait;
+  end process;
+end;

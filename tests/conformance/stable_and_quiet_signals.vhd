@@ -14,6 +14,8 @@ ARCHITECTURE test OF tb_stable_and_quiet_signals IS
   SIGNAL settled_at, quiet_at, edge_at : time := 0 ns;
   SIGNAL edges : natural := 0;
   SIGNAL clk, d, q : bit := '0';
+  TYPE int_arr IS ARRAY (1 TO 3) OF integer;
+  SIGNAL arr : int_arr := (0, 0, 0);
 BEGIN
   -- Events at 10, 14 and 17 ns; a transaction without event at 60 ns.
   stimulus : PROCESS IS
@@ -49,6 +51,17 @@ BEGIN
     edges <= edges + 1;
     edge_at <= now;
   END PROCESS edge_counter;
+
+  -- A composite signal: an event on one element is an event on the signal, so its
+  -- `'stable` is false in that cycle (GHDL 2.0 leaves it true at the second change).
+  arr <= (1, 2, 3) AFTER 5 ns, (1, 2, 4) AFTER 7 ns;
+  composite : PROCESS (arr) IS
+  BEGIN
+    ASSERT arr'stable = NOT arr'event
+      REPORT "arr'stable is " & boolean'image(arr'stable) & " with arr'event "
+        & boolean'image(arr'event)
+      SEVERITY error;
+  END PROCESS composite;
 
   -- The old idiom for a clock edge: `not clk'stable` in a concurrent statement.
   q <= d WHEN NOT clk'stable AND clk = '1';

@@ -1029,10 +1029,17 @@ impl Program {
                 format!("({a} {op} {b})")
             }
             7 if self.context != Context::Function => {
-                let s = self.rng.pick(&self.signals).name.clone();
+                let signal = self.rng.pick(&self.signals);
+                let (s, scalar) = (signal.name.clone(), SCALARS.contains(&signal.ty));
                 // `'stable` and `'quiet` are implicit signals: also where a sensitivity list
-                // (a concurrent assignment's, a `wait until`'s) waits on them.
-                let attrs: &[&str] = &["event", "active", "stable", "quiet"];
+                // (a concurrent assignment's, a `wait until`'s) waits on them. Of scalar
+                // signals only: GHDL 2.0 leaves a composite signal's `'stable` true in a cycle
+                // of an event on it (tests/conformance/stable_and_quiet_signals.vhd).
+                let attrs: &[&str] = if scalar {
+                    &["event", "active", "stable", "quiet"]
+                } else {
+                    &["event", "active"]
+                };
                 let attr = self.rng.pick(attrs);
                 format!("{s}'{attr}")
             }
