@@ -59,6 +59,8 @@ pub struct SimOptions {
     pub abstol: Option<f64>,
     /// Largest time step in seconds.
     pub max_step: Option<f64>,
+    /// Highest order of the BDF integrator, 1 to [`crate::solver::MAX_ORDER`].
+    pub max_order: usize,
     /// Names to record (hierarchical, lower case); empty: every quantity and explicit signal.
     pub probes: Vec<String>,
     /// Told the simulated time as the run advances (a progress bar), if given.
@@ -77,6 +79,7 @@ impl Default for SimOptions {
             reltol: 1e-3,
             abstol: None,
             max_step: None,
+            max_order: crate::solver::MAX_ORDER,
             probes: Vec::new(),
             progress: None,
             keep_unknowns: false,
@@ -105,6 +108,9 @@ impl SimOptions {
         }
         if o.max_step.is_some_and(|h| h.is_nan() || h <= 0.0) {
             return bad("the maximum step must be positive");
+        }
+        if !(1..=crate::solver::MAX_ORDER).contains(&o.max_order) {
+            return bad("the integration order must be 1 to 5");
         }
         Ok(())
     }

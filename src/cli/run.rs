@@ -51,6 +51,10 @@ pub struct RunArgs {
     /// Largest analog time step.
     #[arg(long, value_name = "TIME", value_parser = parse_positive_time)]
     pub max_step: Option<f64>,
+    /// Highest order of the variable-order BDF integrator, 1 (backward Euler: first order,
+    /// damps everything) to 5 (fewest steps for smooth waveforms at tight tolerances).
+    #[arg(long, value_name = "N", default_value_t = 5, value_parser = clap::value_parser!(u8).range(1..=5))]
+    pub max_order: u8,
     /// Solve for every unknown of the model, without eliminating those an equation gives
     /// explicitly (slower; to compare, or to debug a model).
     #[arg(long)]
@@ -167,6 +171,7 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
         reltol: args.reltol,
         abstol: args.abstol,
         max_step: args.max_step,
+        max_order: usize::from(args.max_order),
         probes: probe_list(&args.probe, &panels),
         progress: bar.as_ref().map(ProgressBar::hook),
         keep_unknowns: args.keep_unknowns,

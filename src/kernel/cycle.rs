@@ -219,6 +219,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             abstol: abstol.iter().copied().fold(DEFAULT_ABSTOL, f64::min),
             abstol_per_unknown: abstol,
             max_step,
+            max_order: options.max_order,
             // No unknown beyond a few tolerances, however large the system (see the norm).
             norm: crate::solver::ErrorNorm::Bounded,
             ..TransientOptions::default()
