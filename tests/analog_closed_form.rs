@@ -194,6 +194,28 @@ fn each_highest_order_meets_the_tolerance_with_fewer_points_as_it_rises() {
     assert!(simulate(&design, &invalid, &mut |_| {}).is_err());
 }
 
+/// Two inertias joined by a rigid gear (index 2), both held at rest by a break at time 0: the
+/// gear's equation reads only held speeds, so the quiescent point solves one speed from it
+/// (it stopped with a singular Jacobian), and the load follows the lumped first-order closed
+/// form.
+#[test]
+fn a_rigid_gear_between_two_inertias_starts_from_a_break() {
+    let (j1, j2, d2, ratio): (f64, f64, f64, f64) = (0.01, 0.5, 0.2, 3.0);
+    let tau = (j1 * ratio * ratio + j2) / d2;
+    let result = run("rigid_gear", &[], 3.0);
+    let w_end = ratio / d2;
+    check(&result, "w2", 1e-5 * w_end, |t| {
+        w_end * (1.0 - (-t / tau).exp())
+    });
+    check(&result, "w1", 1e-5 * ratio * w_end, |t| {
+        ratio * w_end * (1.0 - (-t / tau).exp())
+    });
+    // The gear's torque from the start: t1 = 1 - j1 w1' with w1' = ratio w2'.
+    let t1_0 = 1.0 - j1 * ratio * ratio / (d2 * tau);
+    let t1 = &result.waveforms.column("t1").expect("recorded").values;
+    assert!((t1[0] - t1_0).abs() < 1e-6, "t1(0) = {}, not {t1_0}", t1[0]);
+}
+
 #[test]
 fn mass_spring_damper_with_integ_follows_the_closed_form() {
     let (m, c, k, f): (f64, f64, f64, f64) = (0.5, 0.8, 200.0, 2.0);

@@ -10,6 +10,13 @@
 //! (a singular Jacobian at t = 0); with it they start from their initial values, as a
 //! `break phi => 0.0;` the model does not write would make them.
 //!
+//! Break values can hold more than the equations allow: `break w1 => 0.0, w2 => 0.0;` on two
+//! inertias joined by a rigid gear (`w1 == 3.0 * w2`, an index-2 system) leaves the gear's
+//! equation with no unknown at all, and the Jacobian singular. Such an equation is structurally
+//! unmatched; one held unknown it reads is released (solved from it, `w1 = 3 w2`, projecting
+//! inconsistent values onto the constraint), until every equation is matched. The transient
+//! integrator's initialisation then finds the consistent derivatives (`w1' = 3 w2'`).
+//!
 //! An adapter [`DaeSystem`] presents the augmented problem to [`operating_point`] (which adds
 //! gmin and source stepping): its unknown `z_i` is `x'_i` for a fixed differential unknown and
 //! `x_i` otherwise, and its Jacobian column `i` is `dF/dx'_i` or `dF/dx_i` accordingly.
@@ -89,6 +96,31 @@ fn hold_undetermined(sys: &AnalogSystem, held: &mut [bool]) {
     }
 }
 
+/// Releases held unknowns (see the module comment) until a maximum matching of the augmented
+/// problem's structure (column `c` is `x'_c` where held, `x_c` otherwise) matches every
+/// equation, or no unmatched equation reads a held unknown. One at a time: releasing one can
+/// match several equations.
+fn release_overheld(sys: &AnalogSystem, held: &mut [bool]) {
+    let n = held.len();
+    let structure: Vec<((usize, usize), bool, bool)> = sys.jacobian_structure().collect();
+    for _ in 0..n {
+        let pattern: Vec<(usize, usize)> = (structure.iter())
+            .filter(|&&((_, c), reads_x, reads_dot)| if held[c] { reads_dot } else { reads_x })
+            .map(|&(rc, _, _)| rc)
+            .collect();
+        let m =
+            super::structure::maximum_matching(&super::structure::Incidence::new(n, n, &pattern));
+        // The last held unknown that an unmatched equation reads undifferentiated.
+        let release = (structure.iter().rev())
+            .find(|&&((r, c), reads_x, _)| m.row_match[r].is_none() && reads_x && held[c])
+            .map(|&((_, c), _, _)| c);
+        match release {
+            Some(c) => held[c] = false,
+            None => return,
+        }
+    }
+}
+
 /// See [`AnalogSystem::quiescent_point`]. A fixed value for an unknown that appears nowhere
 /// differentiated has no `x' = 0` equation to replace: it only serves as the starting guess.
 pub fn solve(
@@ -121,6 +153,12 @@ pub fn solve(
         held[i] = sys.differential()[i];
     }
     hold_undetermined(sys, &mut held);
+    if fixed
+        .iter()
+        .any(|&(i, _)| held.get(i).copied().unwrap_or(false))
+    {
+        release_overheld(sys, &mut held);
+    }
     let mut z: Vec<f64> = (0..n).map(|i| if held[i] { 0.0 } else { x[i] }).collect();
     let mut p = Quiescent {
         sys,
