@@ -198,6 +198,19 @@ pub fn load_with_libraries(
             ids.push(sources.add(file.display().to_string(), library, text));
         }
     }
+    Ok(parse_loaded(sources, ids))
+}
+
+/// One source text in library `work`, with the bundled packages it names: what [`load`] gives
+/// for a file holding `text` (for the fuzz target, and tools that hold the text in memory).
+pub fn load_text(name: &str, text: String) -> Loaded {
+    let mut sources = SourceMap::new();
+    let id = sources.add(name.to_string(), "work", text);
+    parse_loaded(sources, vec![id])
+}
+
+/// Parses the user's files `ids` of `sources` and adds the bundled packages they need.
+fn parse_loaded(mut sources: SourceMap, ids: Vec<FileId>) -> Loaded {
     let mut user = Vec::with_capacity(ids.len());
     let mut syntax_errors = Vec::new();
     let parse = |id: FileId, sources: &SourceMap, errs: &mut Vec<(FileId, Vec<_>)>| {
@@ -217,11 +230,11 @@ pub fn load_with_libraries(
     syntax_errors.extend(stdlib_errors);
     // The stdlib first, in its own order, then the user's files.
     files.extend(user);
-    Ok(Loaded {
+    Loaded {
         sources,
         files,
         syntax_errors,
-    })
+    }
 }
 
 #[cfg(test)]
@@ -252,6 +265,19 @@ mod tests {
         assert_eq!(loaded.syntax_errors.len(), 1);
         assert!(loaded.has_errors(loaded.syntax_errors[0].0));
         assert!(loaded.error_count() >= 1);
+    }
+
+    #[test]
+    fn a_text_in_memory_loads_like_a_file() {
+        let loaded = load_text(
+            "m.vhd",
+            "entity m is end; architecture a of m is begin end;".into(),
+        );
+        assert_eq!(loaded.error_count(), 0);
+        // The text, then std.standard.
+        assert_eq!(loaded.files.len(), 2);
+        let bad = load_text("bad.vhd", "entity is".into());
+        assert_eq!(bad.syntax_errors.len(), 1);
     }
 
     #[test]
