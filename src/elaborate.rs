@@ -96,12 +96,27 @@ pub fn elaborate_analysed(
         elab.resolve_signals();
         elab.contribution_equations();
     }
+    elab.release_bodies();
     if elab.errors.is_empty() {
         let mut design = elab.design;
         design.shrink_to_fit();
         Ok(design)
     } else {
         Err(elab.errors)
+    }
+}
+
+impl Elab<'_> {
+    /// Drops the bodies of the subprograms (see `with_bodies`) and the designated types of
+    /// late-completed access types (`completed_access`), ending the `Rc` cycles through them;
+    /// nothing elaborates after this.
+    fn release_bodies(&mut self) {
+        for sub in self.with_bodies.drain(..) {
+            sub.body.borrow_mut().take();
+        }
+        for access in self.completed_access.drain(..) {
+            access.designated.borrow_mut().take();
+        }
     }
 }
 
@@ -190,6 +205,14 @@ struct Elab<'a> {
     incomplete: Vec<(String, Span, Vec<Rc<types::AccessTy>>)>,
     /// Packages elaborated so far, by unit index.
     packages: FxHashMap<usize, Rc<PackageScope<'a>>>,
+    /// Every subprogram given a body: the body's scope holds the region that declares the
+    /// subprogram (recursion sees itself), an `Rc` cycle that [`Elab::release_bodies`] breaks
+    /// once elaboration is done (else each elaborated design leaked its scopes).
+    with_bodies: Vec<Rc<scope::Subprogram<'a>>>,
+    /// Access types to an incomplete type completed later (`type node; type link is access
+    /// node; type node is record next : link; ... end record;`): the record holds the access
+    /// type, which holds the record, a cycle `release_bodies` breaks too.
+    completed_access: Vec<Rc<types::AccessTy>>,
     packages_in_progress: FxHashSet<usize>,
     /// The unit whose text is being elaborated: which of several namesake units a name
     /// in it denotes ([`Library::package`]).
@@ -310,6 +333,8 @@ impl<'a> Elab<'a> {
             incomplete: Vec::new(),
             protected: FxHashMap::default(),
             packages: FxHashMap::default(),
+            with_bodies: Vec::new(),
+            completed_access: Vec::new(),
             packages_in_progress: FxHashSet::default(),
             unit_at: usize::MAX,
             natures: Vec::new(),

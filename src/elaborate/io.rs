@@ -73,6 +73,7 @@ impl<'a> Elab<'a> {
         sc.declared_also_at(incomplete, item);
         for a in waiting {
             *a.designated.borrow_mut() = Some(full.clone());
+            self.completed_access.push(a);
         }
     }
 

@@ -186,6 +186,7 @@ impl<'a> Elab<'a> {
                     captured,
                     bounding: self.bounding_params(decls, &s.params),
                 }));
+                self.with_bodies.push(s);
                 return Ok(());
             }
         }
@@ -216,6 +217,7 @@ impl<'a> Elab<'a> {
                 captured,
                 bounding: self.bounding_params(decls, &sub.params),
             }));
+            self.with_bodies.push(sub);
         }
         Ok(())
     }
