@@ -173,6 +173,29 @@ fn function_report(
     span: crate::source::Span,
     env: &Env,
 ) -> Result<(), EvalError> {
+    let (message, severity) = assertion_report(report, severity, env)?;
+    if severity == Severity::Failure {
+        return Err(EvalError::new(
+            format!("failure reported in function `{}`: {message}", sub.name),
+            "an assertion of severity failure stops the simulation",
+        ));
+    }
+    // Told by the process that evaluated the call, in order with its own reports.
+    (env.io.function_reports.borrow_mut()).push(FunctionReport {
+        severity,
+        message,
+        span,
+    });
+    Ok(())
+}
+
+/// The message and severity of a failed assertion or a `report` (`Assertion violation.`
+/// without a message; positions of `severity_level` from note), in a process or a function.
+pub(crate) fn assertion_report(
+    report: Option<&Expr>,
+    severity: &Expr,
+    env: &Env,
+) -> Result<(String, Severity), EvalError> {
     let message = match report {
         Some(r) => match eval(r, env)? {
             Value::String(s) => s,
@@ -184,20 +207,9 @@ fn function_report(
         Value::Enum(0) => Severity::Note,
         Value::Enum(1) => Severity::Warning,
         Value::Enum(2) => Severity::Error,
-        _ => {
-            return Err(EvalError::new(
-                format!("failure reported in function `{}`: {message}", sub.name),
-                "an assertion of severity failure stops the simulation",
-            ));
-        }
+        _ => Severity::Failure,
     };
-    // Told by the process that evaluated the call, in order with its own reports.
-    (env.io.function_reports.borrow_mut()).push(FunctionReport {
-        severity,
-        message,
-        span,
-    });
-    Ok(())
+    Ok((message, severity))
 }
 
 fn no_return(sub: &Subprogram) -> EvalError {

@@ -6,7 +6,7 @@ use crate::design::{
 };
 use crate::source::Span;
 
-use super::call::{call_depth_limit, frame, too_deep};
+use super::call::{assertion_report, call_depth_limit, frame, too_deep};
 use super::error::SimError;
 use super::eval::{Env, EvalError, eval, integer, offset, set_element, truth};
 use super::signals::{Delay, Signals};
@@ -489,19 +489,8 @@ fn run_other(
                     return Ok(None);
                 }
             }
-            let message = match report {
-                Some(r) => match eval(r, &env).map_err(at)? {
-                    Value::String(s) => s,
-                    other => format!("{other:?}"),
-                },
-                None => "Assertion violation.".to_string(),
-            };
-            let severity = match eval(severity, &env).map_err(at)? {
-                Value::Enum(0) => Severity::Note,
-                Value::Enum(1) => Severity::Warning,
-                Value::Enum(2) => Severity::Error,
-                _ => Severity::Failure,
-            };
+            let (message, severity) =
+                assertion_report(report.as_ref(), severity, &env).map_err(at)?;
             // The reports of the functions the message called come first.
             emit_function_reports(cx, &process.name);
             let report = Report {
