@@ -19,83 +19,99 @@ pub(super) enum Read {
     Element(SignalId, i64, Type),
 }
 
-/// The signal reads of `exprs`, in order of first appearance.
-pub(super) fn reads<'e>(exprs: impl IntoIterator<Item = &'e Expr>) -> Vec<Read> {
-    let mut order: Vec<SignalId> = Vec::new();
-    // Per signal: its name nodes, those of them that are the prefix of a static element read,
-    // whether it is read through an attribute or as a signal actual, and its static elements.
-    let mut nodes: FxHashMap<SignalId, usize> = FxHashMap::default();
-    let mut prefixes: FxHashMap<SignalId, usize> = FxHashMap::default();
-    let mut whole: FxHashMap<SignalId, bool> = FxHashMap::default();
-    let mut elements: FxHashMap<SignalId, Vec<(i64, Type)>> = FxHashMap::default();
-    for e in exprs {
+/// How the expressions read one signal.
+#[derive(Default)]
+struct SignalUse {
+    /// Its name nodes.
+    names: usize,
+    /// Those of them that are the prefix of a static element read.
+    prefixes: usize,
+    /// Read through an attribute or as a signal actual.
+    whole: bool,
+    /// The static elements read, with the array's type.
+    elements: Vec<(i64, Type)>,
+}
+
+/// The signals read so far, in order of first appearance.
+#[derive(Default)]
+struct ReadSet {
+    order: Vec<SignalId>,
+    uses: FxHashMap<SignalId, SignalUse>,
+}
+
+impl ReadSet {
+    fn signal(&mut self, s: SignalId) -> &mut SignalUse {
+        let order = &mut self.order;
+        self.uses.entry(s).or_insert_with(|| {
+            order.push(s);
+            SignalUse::default()
+        })
+    }
+
+    fn add(&mut self, e: &Expr) {
         e.visit(&mut |e| match e {
-            Expr::Signal(s) => {
-                if !order.contains(s) {
-                    order.push(*s);
-                }
-                *nodes.entry(*s).or_default() += 1;
-            }
-            Expr::SignalAttr(s, _) => {
-                if !order.contains(s) {
-                    order.push(*s);
-                }
-                whole.insert(*s, true);
-            }
+            Expr::Signal(s) => self.signal(*s).names += 1,
+            Expr::SignalAttr(s, _) => self.signal(*s).whole = true,
             Expr::FnCall { signals, .. } => {
                 for s in signals {
-                    if !order.contains(s) {
-                        order.push(*s);
-                    }
-                    whole.insert(*s, true);
+                    self.signal(*s).whole = true;
                 }
             }
             Expr::Index { array, index, ty } => {
                 if let (Expr::Signal(s), Expr::Const(Value::Integer(i))) = (&**array, &**index) {
-                    *prefixes.entry(*s).or_default() += 1;
-                    let list = elements.entry(*s).or_default();
-                    if !list.iter().any(|(k, _)| k == i) {
-                        list.push((*i, ty.clone()));
+                    let used = self.signal(*s);
+                    used.prefixes += 1;
+                    if !used.elements.iter().any(|(k, _)| k == i) {
+                        used.elements.push((*i, ty.clone()));
                     }
                 }
             }
             _ => {}
         });
     }
-    let mut out = Vec::new();
-    for s in order {
-        let reads_whole = whole.get(&s).copied().unwrap_or(false)
-            || nodes.get(&s).copied().unwrap_or(0) > prefixes.get(&s).copied().unwrap_or(0);
-        match elements.remove(&s) {
-            Some(list) if !reads_whole => {
-                out.extend(list.into_iter().map(|(i, ty)| Read::Element(s, i, ty)))
+
+    fn finish(mut self) -> Vec<Read> {
+        let mut out = Vec::new();
+        for s in self.order {
+            // Invariant: every signal in `order` has its entry (`signal` adds both).
+            let used = self.uses.remove(&s).unwrap_or_default();
+            if used.whole || used.names > used.prefixes || used.elements.is_empty() {
+                out.push(Read::Whole(s));
+            } else {
+                out.extend((used.elements.into_iter()).map(|(i, ty)| Read::Element(s, i, ty)));
             }
-            _ => out.push(Read::Whole(s)),
         }
+        out
     }
-    out
+}
+
+/// The signal reads of `exprs`, in order of first appearance.
+pub(super) fn reads<'e>(exprs: impl IntoIterator<Item = &'e Expr>) -> Vec<Read> {
+    let mut set = ReadSet::default();
+    for e in exprs {
+        set.add(e);
+    }
+    set.finish()
 }
 
 /// The signal reads of `code` (a wait's own condition is not part of a process's implicit
 /// sensitivity).
 pub(super) fn reads_of_code(code: &[Instr]) -> Vec<Read> {
-    let mut exprs: Vec<Expr> = Vec::new();
+    let mut set = ReadSet::default();
     for i in code {
         match i {
             Instr::Wait { .. } => {}
-            Instr::Call { sub, signals, .. } => {
-                i.visit_exprs(&mut |e| exprs.push(e.clone()));
-                // The signal actuals, as one expression that reads them all.
-                exprs.push(Expr::FnCall {
-                    sub: *sub,
-                    args: Vec::new(),
-                    signals: signals.clone(),
-                });
+            Instr::Call { signals, .. } => {
+                i.visit_exprs(&mut |e| set.add(e));
+                // The signal actuals are read whole.
+                for s in signals {
+                    set.signal(*s).whole = true;
+                }
             }
-            _ => i.visit_exprs(&mut |e| exprs.push(e.clone())),
+            _ => i.visit_exprs(&mut |e| set.add(e)),
         }
     }
-    reads(&exprs)
+    set.finish()
 }
 
 impl Elab<'_> {
