@@ -163,6 +163,26 @@ fn csv_column(text: &str, name: &str) -> Vec<(f64, f64)> {
         .collect()
 }
 
+/// Every quantity is a default probe, whatever its name: a quantity array named `v` (whose
+/// elements are named `v(1)`, as SPICE names a node voltage) is recorded like any other.
+#[test]
+fn quantities_named_like_node_voltages_are_default_probes() {
+    let (dir, path) = model_file(
+        "named.vhd",
+        "entity named is end;\narchitecture a of named is\n  quantity v : real_vector(1 to 2);\n  quantity potential : real;\nbegin\n  v == (1.0, 2.0);\n  potential == 3.0;\nend;\n",
+    );
+    let csv = dir.path().join("named.csv");
+    vams()
+        .args(["run", "--stop", "1ms", "-o"])
+        .arg(&csv)
+        .arg(&path)
+        .assert()
+        .success();
+    let text = std::fs::read_to_string(&csv).unwrap();
+    assert_eq!(text.lines().next(), Some("time,v(1),v(2),potential"));
+    assert_eq!(csv_column(&text, "v(2)").last().map(|p| p.1), Some(2.0));
+}
+
 #[test]
 fn rc_step_matches_its_closed_form_in_every_output() {
     let dir = tempfile::tempdir().unwrap();

@@ -21,6 +21,15 @@ type Arm<'s> = (Option<(Expr, Span)>, &'s [ConcStmt]);
 /// its own arm: it also applies to derivatives).
 const ELEMENTWISE: [&str; 6] = ["integ", "slew", "ltf", "zoh", "ztf", "delayed"];
 
+/// What a composite side knows of the other side of its equation: its number of scalar
+/// elements and, when it names a quantity array, that array's left bound and direction (an
+/// aggregate with `others` and named choices places its elements by them).
+#[derive(Clone, Copy)]
+struct Extent {
+    len: usize,
+    bounds: Option<(i64, bool)>,
+}
+
 /// An equation before it is placed in the design.
 struct Eqn {
     residual: Expr,
@@ -72,45 +81,12 @@ impl<'a> Elab<'a> {
         &mut self,
         sc: &Scope<'a>,
         e: &'a ast::Expr,
-        len: Option<usize>,
+        len: Option<Extent>,
     ) -> R<Option<Vec<Expr>>> {
         use ast::ExprKind;
         match &e.kind {
             ExprKind::Paren(inner) => self.composite_side(sc, inner, len),
-            ExprKind::Aggregate(elems) => {
-                let mut out = Vec::new();
-                let mut others = None;
-                for el in elems {
-                    match el.choices.as_slice() {
-                        [] => out.push(self.analog(sc, &el.value, &Ty::Real)?),
-                        [Choice::Others(_)] => others = Some(&el.value),
-                        _ => {
-                            return Err(self.error(ElabError::unsupported(
-                                el.span,
-                                "named choices in an aggregate of an equation",
-                                "write the elements in order, with `others` last",
-                            )));
-                        }
-                    }
-                }
-                if let Some(o) = others {
-                    let Some(n) = len else {
-                        return Err(self.error(ElabError::invalid(
-                            e.span,
-                            "the length of this aggregate is not known here",
-                            Some(
-                                "put the quantity array on the left: `v == (others => 0.0);`"
-                                    .into(),
-                            ),
-                        )));
-                    };
-                    let v = self.analog(sc, o, &Ty::Real)?;
-                    while out.len() < n {
-                        out.push(v.clone());
-                    }
-                }
-                Ok(Some(out))
-            }
+            ExprKind::Aggregate(elems) => self.equation_aggregate(sc, e, elems, len).map(Some),
             ExprKind::Attribute(prefix, attr) if attr.name == "dot" => {
                 let Some(inner) = self.composite_side(sc, prefix, len)? else {
                     return Ok(None);
@@ -207,6 +183,154 @@ impl<'a> Elab<'a> {
         }
     }
 
+    /// The elements of an aggregate side of an equation, in order: positional (`(1.0, x)`),
+    /// named (`(1 => x, 2 to 3 => 0.0)`, in ascending index order, as the aggregate's own
+    /// bounds are when the other side gives none) or either with `others`, which fills the
+    /// other side's length, named choices placed by its bounds (`len`).
+    fn equation_aggregate(
+        &mut self,
+        sc: &Scope<'a>,
+        e: &'a ast::Expr,
+        elems: &'a [ast::ElementAssoc],
+        len: Option<Extent>,
+    ) -> R<Vec<Expr>> {
+        let mut positional = Vec::new();
+        let mut named: Vec<(i64, Expr, Span)> = Vec::new();
+        let mut others = None;
+        for el in elems {
+            if el.choices.is_empty() {
+                positional.push(self.analog(sc, &el.value, &Ty::Real)?);
+                continue;
+            }
+            if let [Choice::Others(_)] = el.choices.as_slice() {
+                others = Some(&el.value);
+                continue;
+            }
+            let v = self.analog(sc, &el.value, &Ty::Real)?;
+            for c in &el.choices {
+                match c {
+                    Choice::Expr(ce) => {
+                        let i = match self.static_value(
+                            sc,
+                            ce,
+                            &Ty::Integer,
+                            "an aggregate choice",
+                        )? {
+                            Value::Integer(i) => i,
+                            _ => {
+                                return Err(self.error(ElabError::invalid(
+                                    ce.span,
+                                    "an aggregate choice of a quantity array must be an integer index",
+                                    None,
+                                )));
+                            }
+                        };
+                        named.push((i, v.clone(), ce.span));
+                    }
+                    Choice::Range(r) => {
+                        let (l, rr, asc) = self.range_bounds(sc, r)?;
+                        let (lo, hi) = if asc { (l, rr) } else { (rr, l) };
+                        for i in lo..=hi {
+                            named.push((i, v.clone(), choice_span(c)));
+                        }
+                    }
+                    Choice::Others(s) => {
+                        return Err(self.error(ElabError::invalid(
+                            *s,
+                            "`others` stands alone as the last choice of an aggregate",
+                            None,
+                        )));
+                    }
+                }
+            }
+        }
+        if !named.is_empty() && !positional.is_empty() {
+            return Err(self.error(ElabError::invalid(
+                e.span,
+                "an aggregate mixes positional and named elements",
+                Some(
+                    "write all elements by position or all by name (`others` may end either)"
+                        .into(),
+                ),
+            )));
+        }
+        let Some(o) = others else {
+            if named.is_empty() {
+                return Ok(positional);
+            }
+            // No `others`: the aggregate's bounds are its choices', ascending.
+            named.sort_by_key(|n| n.0);
+            for w in named.windows(2) {
+                if w[1].0 != w[0].0 + 1 {
+                    let (what, span) = if w[1].0 == w[0].0 {
+                        (format!("index {} is given twice", w[1].0), w[1].2)
+                    } else {
+                        (
+                            format!("no element is given for index {}", w[0].0 + 1),
+                            e.span,
+                        )
+                    };
+                    return Err(self.error(ElabError::invalid(
+                        span,
+                        format!("this aggregate's choices do not cover one range: {what}"),
+                        Some("give each index once, or end with `others => ...`".into()),
+                    )));
+                }
+            }
+            return Ok(named.into_iter().map(|n| n.1).collect());
+        };
+        let Some(extent) = len else {
+            return Err(self.error(ElabError::invalid(
+                e.span,
+                "the length of this aggregate is not known here",
+                Some("put the quantity array on the left: `v == (others => 0.0);`".into()),
+            )));
+        };
+        let fill = self.analog(sc, o, &Ty::Real)?;
+        let mut out = positional;
+        if out.len() < extent.len {
+            out.resize(extent.len, fill);
+        }
+        if named.is_empty() {
+            return Ok(out);
+        }
+        let Some((left, ascending)) = extent.bounds else {
+            return Err(self.error(ElabError::invalid(
+                e.span,
+                "the bounds of this aggregate are not known here",
+                Some("put a quantity array on the left (`v == (1 => x, others => 0.0);`), or write the elements in order".into()),
+            )));
+        };
+        for (i, v, span) in named {
+            let pos = if ascending { i - left } else { left - i };
+            match usize::try_from(pos).ok().filter(|&p| p < out.len()) {
+                Some(p) => out[p] = v,
+                None => {
+                    return Err(self.error(ElabError::invalid(
+                        span,
+                        format!("index {i} is outside the other side's bounds"),
+                        None,
+                    )));
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    /// The left bound and direction of `e` when it names a whole quantity array.
+    fn quantity_array_bounds(&mut self, sc: &Scope<'a>, e: &'a ast::Expr) -> Option<(i64, bool)> {
+        match &e.kind {
+            ast::ExprKind::Paren(inner) => self.quantity_array_bounds(sc, inner),
+            ast::ExprKind::Name(_) | ast::ExprKind::Selected(..) => {
+                match self.lookup(sc, e).ok()?.first() {
+                    Some(Item::QuantityArray(a)) => Some((a.left, a.ascending)),
+                    _ => None,
+                }
+            }
+            _ => None,
+        }
+    }
+
     /// `prefix'attr(args)` applied to each element of a quantity array `prefix`; `None` when
     /// `prefix` is scalar.
     fn elementwise_attribute(
@@ -216,7 +340,7 @@ impl<'a> Elab<'a> {
         attr: &ast::Ident,
         args: &[ast::Assoc],
         span: Span,
-        len: Option<usize>,
+        len: Option<Extent>,
     ) -> R<Option<Vec<Expr>>> {
         let Some(elements) = self.composite_side(sc, prefix, len)? else {
             return Ok(None);
@@ -296,7 +420,11 @@ impl<'a> Elab<'a> {
                 // A composite statement (`v == (1.0, 2.0, 3.0)`, `w == v(2 to 3)`): one
                 // equation per scalar subelement (LRM 1076.1 15.1).
                 let l = self.composite_side(sc, lhs, None)?;
-                let r = self.composite_side(sc, rhs, l.as_ref().map(Vec::len))?;
+                let extent = l.as_ref().map(|l| Extent {
+                    len: l.len(),
+                    bounds: self.quantity_array_bounds(sc, lhs),
+                });
+                let r = self.composite_side(sc, rhs, extent)?;
                 if l.is_some() || r.is_some() {
                     return self.composite_equations(stmt, lhs, rhs, l, r);
                 }

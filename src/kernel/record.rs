@@ -24,8 +24,7 @@ pub(crate) struct Recorder<'s> {
 
 impl<'s> Recorder<'s> {
     /// Resolves `names` and tells `sink` the columns; without names, every quantity except
-    /// terminal potentials and auxiliary quantities (names with a `'`), and every explicit
-    /// scalar signal.
+    /// auxiliary quantities (names with a `'`), and every explicit scalar signal.
     pub fn new(
         design: &Design,
         names: &[String],
@@ -114,7 +113,7 @@ fn default_probes(design: &Design) -> Vec<Probe> {
         .quantities
         .iter()
         .enumerate()
-        .filter(|(_, q)| !q.name.contains('\'') && !is_potential(&q.name))
+        .filter(|(_, q)| !q.name.contains('\''))
         .map(|(i, _)| Probe::Quantity(QuantityId(i as u32)));
     let signals = design
         .signals
@@ -131,12 +130,6 @@ fn default_probes(design: &Design) -> Vec<Probe> {
         .filter(|&s| Some(s) != domain)
         .map(Probe::Signal);
     quantities.chain(signals).collect()
-}
-
-/// `v(node)` and `potential(node)` style names of terminal potentials.
-fn is_potential(name: &str) -> bool {
-    let last = name.rsplit('.').next().unwrap_or(name);
-    (last.starts_with("v(") || last.starts_with("potential(")) && last.ends_with(')')
 }
 
 fn find(design: &Design, name: &str) -> Result<Probe, SimError> {
@@ -165,16 +158,4 @@ fn find(design: &Design, name: &str) -> Result<Probe, SimError> {
         name: name.to_string(),
         help,
     })
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn potentials_are_not_default_probes() {
-        assert!(is_potential("dut.v(out1)"));
-        assert!(is_potential("potential(n1)"));
-        assert!(!is_potential("v_motor"));
-    }
 }
