@@ -47,6 +47,7 @@ mod resolution;
 mod sampled;
 mod scope;
 mod sensitivity;
+mod signal_slices;
 mod simultaneous;
 mod slew;
 mod subprogram;

@@ -498,6 +498,12 @@ fn array_lengths_that_differ_stop_the_run() {
             "a value of 3 element(s) assigned to the function's result of 4 element(s)",
             "length_check.vhd:46:17",
         ),
+        // A slice of a signal whose bounds are known only at run time.
+        (
+            "6",
+            "a value of 4 element(s) assigned to signal `s(n downto 0)` of 3 element(s)",
+            "length_check.vhd:47:17",
+        ),
     ];
     for (which, message, at) in cases {
         vams()

@@ -65,11 +65,11 @@ impl Proc {
         self.code.len() - 1
     }
 
-    fn here(&self) -> usize {
+    pub(super) fn here(&self) -> usize {
         self.code.len()
     }
 
-    fn patch(&mut self, at: usize, target: usize) {
+    pub(super) fn patch(&mut self, at: usize, target: usize) {
         match &mut self.code[at] {
             Instr::Jump(t) | Instr::JumpIfNot { target: t, .. } => *t = target,
             _ => {}
@@ -96,7 +96,7 @@ impl Proc {
 
 /// The index, in the object's own type `own`, of the element at index `i` of the view
 /// `view` (an alias with other bounds: the same position); `i` itself when the bounds agree.
-fn own_index(i: Expr, view: &ArrayTy, own: Option<&crate::design::Type>) -> Expr {
+pub(super) fn own_index(i: Expr, view: &ArrayTy, own: Option<&crate::design::Type>) -> Expr {
     let (
         Some((vl, _, vasc)),
         Some(&crate::design::Type::Array {
@@ -541,6 +541,9 @@ impl<'a> Elab<'a> {
                 delay,
                 waveform,
             } => {
+                if let Some(slice) = self.runtime_signal_slice(sc, target)? {
+                    return self.assign_runtime_slice(sc, p, target, slice, delay, waveform);
+                }
                 for i in self.assign(sc, target, delay, waveform)? {
                     p.emit(i);
                 }
@@ -965,6 +968,24 @@ impl<'a> Elab<'a> {
         Ok(())
     }
 
+    /// The delay mechanism of a signal assignment (`transport`, `[reject t] inertial`).
+    pub(super) fn delay_mechanism(
+        &mut self,
+        sc: &Scope<'a>,
+        delay: &AstDelay,
+    ) -> R<DelayMechanism> {
+        Ok(match delay {
+            AstDelay::Default => DelayMechanism::Inertial { reject: None },
+            AstDelay::Transport => DelayMechanism::Transport,
+            AstDelay::Inertial { reject } => DelayMechanism::Inertial {
+                reject: match reject {
+                    Some(r) => Some(self.expr_of(sc, r, &Ty::Time)?.e),
+                    None => None,
+                },
+            },
+        })
+    }
+
     /// A signal assignment: one `Assign` for a signal target, one per element for an
     /// aggregate of signals (`(c_out, s) <= v;`: each takes its element of the value, which is
     /// evaluated once per target; nothing between them can change it). None for a `null`
@@ -987,16 +1008,7 @@ impl<'a> Elab<'a> {
         let Waveform::Elements(elems) = waveform else {
             return Ok(Vec::new());
         };
-        let mechanism = match delay {
-            AstDelay::Default => DelayMechanism::Inertial { reject: None },
-            AstDelay::Transport => DelayMechanism::Transport,
-            AstDelay::Inertial { reject } => DelayMechanism::Inertial {
-                reject: match reject {
-                    Some(r) => Some(self.expr_of(sc, r, &Ty::Time)?.e),
-                    None => None,
-                },
-            },
-        };
+        let mechanism = self.delay_mechanism(sc, delay)?;
         let aggregate = matches!(target.kind, ast::ExprKind::Aggregate(_));
         let types: Vec<Ty> = sigs.iter().map(|s| s.1.clone()).collect();
         // Each waveform element's value (the whole array for an aggregate target) and delay.

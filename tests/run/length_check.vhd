@@ -44,6 +44,7 @@ begin
       when 3 => v(7 downto 4) := low(n);
       when 4 => copy(n, w);
       when 5 => w := as_nibble(n);
+      when 6 => s(n downto 0) <= low(n + 1);
       when others => null;
     end case;
     wait for 10 ns;
