@@ -455,6 +455,13 @@ pub enum SignalKind {
     Gather {
         elements: Vec<(SignalId, Option<usize>)>,
     },
+    /// A signal whose value is a conversion of another's (LRM 4.3.2.2): a port of mode `in`
+    /// associated with `to_bit(s)` (`source` the actual `s`), or the actual `yb` of a port
+    /// of mode `out` associated as `to_bool(y) => yb` (`source` the port `y`). `conversion`
+    /// is the function call or type conversion of `Expr::Signal(source)`. Nothing drives it:
+    /// the kernel updates it in the cycle its source is active, without a delta cycle, so
+    /// the port and the actual change together.
+    Converted { source: SignalId, conversion: Expr },
 }
 
 /// A process (explicit, or the equivalent process of a concurrent statement: signal

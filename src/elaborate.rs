@@ -40,6 +40,7 @@ mod io;
 mod lengths;
 mod library;
 mod ltf;
+mod port_conversions;
 mod process;
 mod protected;
 mod record_natures;
@@ -93,6 +94,7 @@ pub fn elaborate_analysed(
 ) -> Result<Design, Vec<ElabError>> {
     let mut elab = Elab::new(analysis, sources, files);
     elab.top(options);
+    elab.check_converted_actuals();
     if elab.errors.is_empty() {
         elab.resolve_signals();
         elab.contribution_equations();
@@ -235,6 +237,9 @@ struct Elab<'a> {
     /// (`Elab::resolve_signals`).
     resolvers: Vec<Rc<scope::Subprogram<'a>>>,
     resolved_signals: Vec<(SignalId, usize)>,
+    /// The actuals converted from `out` ports (`to_bool(y) => yb`), checked for other
+    /// drivers once every process is known.
+    converted_actuals: Vec<(SignalId, Span)>,
     /// The implicit signals of `s'delayed(t)`, by signal and delay (its bits).
     delayed_signals: FxHashMap<(SignalId, u64), SignalId>,
     /// `S'transaction` signals by `S`.
@@ -346,6 +351,7 @@ impl<'a> Elab<'a> {
             process_label: None,
             resolvers: Vec::new(),
             resolved_signals: Vec::new(),
+            converted_actuals: Vec::new(),
             disconnect_delays: FxHashMap::default(),
             delayed_signals: FxHashMap::default(),
             transaction_signals: FxHashMap::default(),

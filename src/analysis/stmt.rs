@@ -477,6 +477,28 @@ impl Analyzer<'_> {
     ) {
         for (assocs, what) in [(generics, "generic"), (ports, "port")] {
             for a in assocs {
+                // `to_bool(y) => yb`: a conversion of the port `y`, read where the instance
+                // is, with the interface's names visible; it gives a value of the actual's
+                // type.
+                if let (
+                    Some(
+                        f @ Expr {
+                            kind: ExprKind::Apply(prefix, _),
+                            ..
+                        },
+                    ),
+                    Some(r),
+                    Actual::Expr(x),
+                ) = (&a.formal, region, &a.actual)
+                    && what == "port"
+                    && !matches!(&prefix.kind, ExprKind::Name(p) if self.lookup_in(r, &p.name).is_some())
+                {
+                    let actual_ty = self.expr(x, UNKNOWN);
+                    self.scope.push(r);
+                    self.expr(f, actual_ty);
+                    self.scope.pop();
+                    continue;
+                }
                 let formal_ty = match (&a.formal, region) {
                     (
                         Some(Expr {

@@ -36,6 +36,9 @@ enum Actuals<'x, 'a> {
 /// Element associations of port arrays (`t(1) => a, t(2) => b`), by formal name.
 type Elementwise<'x> = FxHashMap<String, Vec<&'x Assoc>>;
 
+/// The conversions on formals (`to_bool(y) => yb`), by port name: the whole formal.
+type FormalConversions<'x> = FxHashMap<String, &'x ast::Expr>;
+
 /// What a port is associated with: the whole formal (or nothing), or its elements one by one.
 enum PortActual<'x> {
     Whole(Option<&'x Assoc>),
@@ -160,9 +163,14 @@ impl<'a> Elab<'a> {
         map: &'x [Assoc],
         what: &'static str,
         unit: &str,
-    ) -> (FxHashMap<String, &'x Assoc>, Elementwise<'x>) {
+    ) -> (
+        FxHashMap<String, &'x Assoc>,
+        Elementwise<'x>,
+        FormalConversions<'x>,
+    ) {
         let mut out = FxHashMap::default();
         let mut elementwise: Elementwise<'x> = FxHashMap::default();
+        let mut conversions: FormalConversions<'x> = FxHashMap::default();
         let names: Vec<String> = formals.iter().map(|(n, _)| n.name.clone()).collect();
         for (k, a) in map.iter().enumerate() {
             let name = match &a.formal {
@@ -178,13 +186,32 @@ impl<'a> Elab<'a> {
                         continue;
                     }
                     // `to_bool(y) => yb`: a conversion of an `out` port's value.
-                    ast::ExprKind::Apply(..) => {
-                        self.error(ElabError::unsupported(
-                            f.span,
-                            "a conversion function or type conversion on a formal",
-                            "associate the port with a signal of its own type and convert in a signal assignment (`yb <= to_bool(y_bit);`, one delta cycle later)",
-                        ));
-                        continue;
+                    ast::ExprKind::Apply(_, args) if what == "port" => {
+                        let port = match args.as_slice() {
+                            [
+                                ast::Assoc {
+                                    formal: None,
+                                    actual: Actual::Expr(x),
+                                    ..
+                                },
+                            ] => match &x.kind {
+                                ast::ExprKind::Name(id) if names.contains(&id.name) => {
+                                    Some(id.name.clone())
+                                }
+                                _ => None,
+                            },
+                            _ => None,
+                        };
+                        let Some(port) = port else {
+                            self.error(ElabError::invalid(
+                                f.span,
+                                "a converted formal names one port: `to_bool(y) => yb`",
+                                Some(format!("its ports are {}", list_names(&names))),
+                            ));
+                            continue;
+                        };
+                        conversions.insert(port.clone(), f);
+                        port
                     }
                     _ => {
                         self.error(ElabError::unsupported(
@@ -233,7 +260,7 @@ impl<'a> Elab<'a> {
             }
             out.insert(name, a);
         }
-        (out, elementwise)
+        (out, elementwise, conversions)
     }
 
     fn instance_body(
@@ -268,14 +295,14 @@ impl<'a> Elab<'a> {
         sc.push();
         let generics = flatten(&ent.generics);
         let ports = flatten(&ent.ports);
-        let (gmap, (pmap, elementwise), parent) = match &actuals {
+        let (gmap, (pmap, elementwise, conversions), parent) = match &actuals {
             Actuals::Top(_) => (FxHashMap::default(), Default::default(), None),
             Actuals::Map {
                 parent,
                 generics: g,
                 ports: p,
             } => {
-                let (gm, _) = self.associate(&generics, g, "generic", &ent.name.name);
+                let (gm, ..) = self.associate(&generics, g, "generic", &ent.name.name);
                 let pm = self.associate(&ports, p, "port", &ent.name.name);
                 (gm, pm, Some(*parent))
             }
@@ -314,7 +341,10 @@ impl<'a> Elab<'a> {
                 (Some(elements), None) => PortActual::Elements(elements),
                 (None, whole) => PortActual::Whole(whole.copied()),
             };
-            ok &= self.port(&mut sc, name, decl, actual, parent).is_ok();
+            let conversion = conversions.get(&name.name).copied();
+            ok &= self
+                .port(&mut sc, name, decl, actual, conversion, parent)
+                .is_ok();
         }
         if !ok {
             return Err(Reported);
@@ -483,6 +513,7 @@ impl<'a> Elab<'a> {
         name: &ast::Ident,
         decl: &InterfaceDecl,
         actual: PortActual<'_>,
+        conversion: Option<&ast::Expr>,
         parent: Option<&Scope<'a>>,
     ) -> R<()> {
         let actual = match (actual, parent) {
@@ -691,6 +722,19 @@ impl<'a> Elab<'a> {
             }
             ObjectClass::Signal => {
                 let sub = self.subtype_indication(sc, &decl.subtype)?;
+                if let (Some(c), Some(p)) = (conversion, parent) {
+                    let e = actual_expr.map(|(e, _)| e);
+                    let item = self.converted_out_port(p, name, &sub, decl.mode, c, e)?;
+                    sc.declare_at(&name.name, name.span, item);
+                    return Ok(());
+                }
+                if let Some((e, p)) = actual_expr
+                    && matches!(decl.mode, None | Some(ast::Mode::In))
+                    && let Some(item) = self.converted_in_port(p, name, &sub, e)?
+                {
+                    sc.declare_at(&name.name, name.span, item);
+                    return Ok(());
+                }
                 // An `in` port's actual may be a static expression (LRM 1.1.1.2): the port
                 // is then a signal of that constant value.
                 let constant = actual_expr.filter(|(e, p)| {
@@ -705,6 +749,17 @@ impl<'a> Elab<'a> {
                             | ast::ExprKind::Unary(..)
                             | ast::ExprKind::Binary(..)
                             | ast::ExprKind::Paren(_) => true,
+                            // A function call or type conversion of static values
+                            // (`a => to_bit(enabled)`); of a signal it is converted above.
+                            ast::ExprKind::Apply(prefix, _) => match &prefix.kind {
+                                ast::ExprKind::Name(id) | ast::ExprKind::Selected(_, id) => {
+                                    matches!(
+                                        self.resolved_item(p, id),
+                                        Some(Item::Subprogram(_) | Item::Type(_))
+                                    )
+                                }
+                                _ => false,
+                            },
                             _ => false,
                         }
                 });
@@ -929,8 +984,9 @@ impl<'a> Elab<'a> {
             .to_string();
         let generics = flatten(&header.generics);
         let ports = flatten(&header.ports);
-        let (gmap, _) = self.associate(&generics, &header.generic_map, "generic", &label);
-        let (pmap, elementwise) = self.associate(&ports, &header.port_map, "port", &label);
+        let (gmap, ..) = self.associate(&generics, &header.generic_map, "generic", &label);
+        let (pmap, elementwise, conversions) =
+            self.associate(&ports, &header.port_map, "port", &label);
         if let Some((name, _)) = elementwise.iter().next() {
             let span = header.port_map.first().map_or(s.span, |a| a.span);
             return Err(self.error(ElabError::unsupported(
@@ -959,7 +1015,10 @@ impl<'a> Elab<'a> {
         }
         for (name, decl) in &ports {
             let actual = PortActual::Whole(pmap.get(&name.name).copied());
-            ok &= self.port(sc, name, decl, actual, Some(&parent)).is_ok();
+            let conversion = conversions.get(&name.name).copied();
+            ok &= self
+                .port(sc, name, decl, actual, conversion, Some(&parent))
+                .is_ok();
         }
         if ok {
             self.decls(sc, decls);

@@ -89,8 +89,9 @@ impl Coupling {
             .map(|s| read_by_equations(SignalId(s as u32)))
             .collect();
         let mut coupled: Vec<bool> = reaches.iter().map(|r| r.analog).collect();
-        // The signals an event on a signal causes events on: its views, gathers and
-        // `'transaction`, `'stable` and `'quiet` (their own drivers are their parents').
+        // The signals an event on a signal causes events on: its views, gathers,
+        // conversions and `'transaction`, `'stable` and `'quiet` (their own drivers are
+        // their parents').
         let mut sources: Vec<Vec<usize>> = vec![Vec::new(); n];
         for (k, s) in design.signals.iter().enumerate() {
             match &s.kind {
@@ -98,9 +99,9 @@ impl Coupling {
                 SignalKind::Gather { elements } => {
                     sources[k].extend(elements.iter().map(|(p, _)| p.index()));
                 }
-                SignalKind::Transaction { source } | SignalKind::Stable { source, .. } => {
-                    sources[k].push(source.index())
-                }
+                SignalKind::Transaction { source }
+                | SignalKind::Stable { source, .. }
+                | SignalKind::Converted { source, .. } => sources[k].push(source.index()),
                 _ => {}
             }
         }

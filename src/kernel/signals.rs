@@ -83,6 +83,8 @@ type GatherElement = (SignalId, Option<usize>);
 type DriverKey = (SignalId, Option<usize>);
 
 /// Every signal's state and every driver.
+mod converted;
+
 pub(crate) struct Signals {
     pub states: Vec<SignalState>,
     drivers: Vec<Driver>,
@@ -115,6 +117,11 @@ pub(crate) struct Signals {
     gather_of: Vec<Option<Vec<GatherElement>>>,
     /// The gathered ports, in increasing order.
     gathers: Vec<SignalId>,
+    /// `(signal, source)` of the converted signals ([`SignalKind::Converted`]), in
+    /// increasing order.
+    converted: Vec<(SignalId, SignalId)>,
+    /// The views whose parent is a converted signal, in increasing order: updated after it.
+    views_of_converted: Vec<SignalId>,
     /// `(S'transaction, S)` pairs ([`SignalKind::Transaction`]).
     transactions: Vec<(SignalId, SignalId)>,
     /// `S'stable(T)` and `S'quiet(T)` ([`SignalKind::Stable`]), in signal order, each with
@@ -421,6 +428,8 @@ impl Signals {
                 .map(|s| SignalId(s as u32))
                 .collect(),
             gather_of,
+            converted: converted::of(design),
+            views_of_converted: Vec::new(),
             transactions: design
                 .signals
                 .iter()
@@ -436,6 +445,15 @@ impl Signals {
             changed: vec![false; n],
             changed_list: Vec::new(),
         };
+        signals.views_of_converted = signals
+            .views
+            .iter()
+            .copied()
+            .filter(|v| {
+                signals.view_of[v.index()]
+                    .is_some_and(|(parent, ..)| signals.converted.iter().any(|&(c, _)| c == parent))
+            })
+            .collect();
         signals.initialize(design)?;
         Ok(signals)
     }
@@ -470,7 +488,7 @@ impl Signals {
             st.last_value = value.clone();
             st.value = value;
         }
-        Ok(())
+        self.initialize_converted(design)
     }
 
     /// The value of gathered port `g` from its parents' current values.
@@ -695,19 +713,7 @@ impl Signals {
         }
         // Views follow their parents (never views themselves) after these are updated.
         for i in 0..self.views.len() {
-            let v = self.views[i];
-            let Some((parent, first, len)) = self.view_of[v.index()] else {
-                continue;
-            };
-            let p = &self.states[parent.index()];
-            if !p.active {
-                continue;
-            }
-            // Elaboration placed the view within its parent's bounds.
-            if let Some(value) = p.value.view(first, len) {
-                self.activate(v, now);
-                self.set(v, value, now);
-            }
+            self.follow_view(self.views[i], now);
         }
         // Gathered ports follow theirs the same way.
         for k in 0..self.gathers.len() {
@@ -720,6 +726,7 @@ impl Signals {
             self.activate(g, now);
             self.set(g, value, now);
         }
+        self.update_converted(now, design)?;
         // `S'transaction` toggles whenever `S` is active; in signal order, so the transaction
         // signal of a transaction signal follows its source.
         for k in 0..self.transactions.len() {
@@ -760,6 +767,22 @@ impl Signals {
             self.set(st.signal, Value::Boolean(value), now);
         }
         Ok(())
+    }
+
+    /// View `v` takes its elements of its parent's value, when the parent is active.
+    fn follow_view(&mut self, v: SignalId, now: f64) {
+        let Some((parent, first, len)) = self.view_of[v.index()] else {
+            return;
+        };
+        let p = &self.states[parent.index()];
+        if !p.active {
+            return;
+        }
+        // Elaboration placed the view within its parent's bounds.
+        if let Some(value) = p.value.view(first, len) {
+            self.activate(v, now);
+            self.set(v, value, now);
+        }
     }
 
     fn set(&mut self, s: SignalId, value: Value, now: f64) {

@@ -1,5 +1,6 @@
--- Conversion functions in port maps (VHDL-93 style) are not supported yet: each gets a
--- located diagnostic with the workaround.
+-- Conversions in port maps that VHDL refuses or vams cannot combine: the actual of a
+-- converted `out` port driven by a process too (two sources), and a conversion on the
+-- formal of an `in` port (it converts on the actual side).
 entity inverter is
   port ( a : in bit;  y : out bit );
 end entity inverter;
@@ -27,6 +28,7 @@ architecture test of port_conversions is
   signal b, yb : boolean;
   signal y : bit;
 begin
-  u1 : entity work.inverter port map ( a => to_bit(b), y => y );
-  u2 : entity work.inverter port map ( a => y, to_bool(y) => yb );
+  u1 : entity work.inverter port map ( a => to_bit(b), to_bool(y) => yb );
+  u2 : entity work.inverter port map ( to_bool(a) => b, y => y );
+  yb <= true after 5 ns;
 end architecture test;
