@@ -15,8 +15,6 @@ use super::scope::{Item, Scope};
 use super::types::{Sub, Ty, index_value, position};
 use super::{Elab, R, Reported};
 
-const ANALOG_UNSUPPORTED: &[&str] = &["across", "through"];
-
 impl<'a> Elab<'a> {
     pub(super) fn type_mark(&mut self, sc: &Scope<'a>, e: &ast::Expr) -> R<Rc<Sub>> {
         let items = self.lookup(sc, e)?;
@@ -39,7 +37,6 @@ impl<'a> Elab<'a> {
         attr: &Ident,
         args: &[ast::Assoc],
         span: Span,
-        want: Option<&Ty>,
     ) -> R<Typed> {
         let name = attr.name.as_str();
         if let Some(Item::Attribute(_)) = sc.lookup(name).and_then(|items| items.first()) {
@@ -262,14 +259,18 @@ impl<'a> Elab<'a> {
                 };
                 self.position_attribute(sc, prefix, name, x, span)
             }
-            _ if ANALOG_UNSUPPORTED.contains(&name) => {
-                let _ = want;
-                Err(self.error(ElabError::unsupported(
-                    attr.span,
-                    format!("the attribute `'{name}`"),
-                    "vams supports 'dot, 'integ, 'above, 'delayed, 'slew, 'ltf, 'zoh and 'ztf on quantities and 'event, 'active, 'last_value, 'last_event, 'last_active, 'transaction, 'driving, 'driving_value, 'delayed, 'stable, 'quiet, 'ramp and 'slew on signals",
-                )))
+            // `electrical'across(x)`: a conversion to the nature's subtype.
+            "across" | "through" if !args.is_empty() => {
+                let sub = self.nature_subtype(sc, prefix, attr, span)?;
+                self.conversion(sc, &sub.ty, args, span)
             }
+            "across" | "through" => Err(self.error(ElabError::invalid(
+                span,
+                format!("`N'{name}` is a subtype, not a value"),
+                Some(format!(
+                    "convert a value to it, `N'{name}(x)`, or qualify one, `N'{name}'(1.0)`"
+                )),
+            ))),
             _ => Err(self.error(ElabError::unsupported(
                 attr.span,
                 format!("the attribute `'{name}`"),

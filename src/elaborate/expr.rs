@@ -181,6 +181,14 @@ impl<'a> Elab<'a> {
             {
                 return Ok(vec![Item::RefTerminal { nature }]);
             }
+            // `electrical'across`, `electrical'through`: the nature's subtypes, as type marks
+            // (`electrical'across(x)`, `electrical'through'(1.0)`, `electrical'across'high`).
+            if let ExprKind::Attribute(prefix, attr) = &e.kind
+                && (attr.name == "across" || attr.name == "through")
+            {
+                let sub = self.nature_subtype(sc, prefix, attr, e.span)?;
+                return Ok(vec![Item::Type(sub)]);
+            }
             return Err(self.error(ElabError::invalid(e.span, "expected a name", None)));
         };
         if let ExprKind::Selected(prefix, suffix) = &e.kind
@@ -376,11 +384,11 @@ impl<'a> Elab<'a> {
                 self.binary(sc, op, l, r, e.span, want)
             }
             ExprKind::Attribute(prefix, attr) => {
-                self.attribute(sc, prefix, attr, &[], e.span, want)
+                self.attribute(sc, prefix, attr, &[], e.span)
             }
             ExprKind::Apply(prefix, args) => {
                 if let ExprKind::Attribute(p, attr) = &prefix.kind {
-                    return self.attribute(sc, p, attr, args, e.span, want);
+                    return self.attribute(sc, p, attr, args, e.span);
                 }
                 let field = matches!(&prefix.kind,
                     ExprKind::Selected(_, s) if !self.resolved.contains_key(&s.span))
@@ -1087,7 +1095,7 @@ impl<'a> Elab<'a> {
     }
 
     /// `real(i)`, `integer(x)` and conversions between closely related types.
-    fn conversion(
+    pub(super) fn conversion(
         &mut self,
         sc: &Scope<'a>,
         target: &Ty,

@@ -213,12 +213,13 @@ impl<'a> Elab<'a> {
                         if !matches!(self.errors.get(before), Some(ElabError::NotStatic { .. })) {
                             return Err(e);
                         }
+                        // A signal named here must be a static name (LRM 6.1): as an
+                        // assignment target a slice may have run-time bounds, not here.
                         self.errors.truncate(before);
-                        return Err(self.error(ElabError::unsupported(
-                            arg.span,
-                            format!("a slice `{name}` of a signal whose bounds are known only at run time"),
-                            "assign or read the elements in a loop: `for k in lo to hi loop s(k) <= v(k); end loop;`",
-                        )));
+                        return Err(self.error(ElabError::NotStatic {
+                            span: arg.span,
+                            what: format!("the bounds of `{name}` (it names a signal slice here)"),
+                        }));
                     }
                 };
                 let n = bounds_len(l, rr, dir);

@@ -1,4 +1,5 @@
--- A signal slice target whose bounds depend on a variable: not supported yet, said so.
+-- A slice of a signal whose bounds depend on a variable, where a static signal name is
+-- needed (a sensitivity list, LRM 6.1): an error. (As an assignment target it runs.)
 entity t is
 end entity t;
 
@@ -9,6 +10,6 @@ begin
     variable n : integer := 2;
   begin
     b(n + 1 downto n - 1) <= "111";
-    wait;
+    wait on b(n + 1 downto n - 1);
   end process;
 end architecture a;
