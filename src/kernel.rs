@@ -26,6 +26,7 @@ mod cycle;
 mod error;
 mod eval;
 mod events;
+mod fast;
 mod image;
 mod io;
 mod ops;

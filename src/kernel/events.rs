@@ -4,7 +4,7 @@
 use crate::design::{Design, QuantityId, SignalId, Value};
 
 use super::error::SimError;
-use super::eval::{Env, truth};
+use super::eval::Env;
 use super::io::{Files, Heap, Io};
 use super::process::{self, Context, ProcState, Suspend};
 use super::signals::Signals;
@@ -186,8 +186,7 @@ impl<'d> EventKernel<'d> {
                     drivers: Some((&self.signals, i)),
                 };
                 let process = &self.design.processes[i];
-                let holds = super::eval::eval(cond, &env)
-                    .and_then(|v| truth(&v))
+                let holds = super::fast::condition(cond, &env)
                     .map_err(|e| SimError::Runtime {
                         process: process.name.clone(),
                         time: now,

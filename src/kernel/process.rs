@@ -260,7 +260,7 @@ pub(crate) fn run(
         match instr {
             Instr::SetVar { var, value } => {
                 let env = env!();
-                let v = eval(value, &env).map_err(at)?;
+                let v = super::fast::value(value, &env).map_err(at)?;
                 if let Some(decl) = decls.get(var.index()) {
                     in_range(&v, decl.range, "variable", &decl.name).map_err(at)?;
                 }
@@ -280,7 +280,7 @@ pub(crate) fn run(
                 for (value, delay) in waveform {
                     let v = match value {
                         Some(value) => {
-                            let v = eval(value, &env).map_err(at)?;
+                            let v = super::fast::value(value, &env).map_err(at)?;
                             if let Some(s) = signal {
                                 in_range(&v, s.range, "signal", &s.name).map_err(at)?;
                             }
@@ -390,7 +390,7 @@ pub(crate) fn run(
             Instr::Jump(target) => state.pc = *target,
             Instr::JumpIfNot { cond, target } => {
                 let env = env!();
-                if !truth(&eval(cond, &env).map_err(at)?).map_err(at)? {
+                if !super::fast::condition(cond, &env).map_err(at)? {
                     state.pc = *target;
                 }
             }
