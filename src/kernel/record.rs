@@ -20,6 +20,8 @@ pub(crate) struct Recorder<'s> {
     /// The row being handed over, reused.
     row: Vec<f64>,
     last: Option<f64>,
+    /// False when the sink drops every row ([`WaveformSink::wants_rows`]).
+    wanted: bool,
 }
 
 impl<'s> Recorder<'s> {
@@ -66,6 +68,7 @@ impl<'s> Recorder<'s> {
         sink.start(&Header { columns, stop })
             .map_err(output_error)?;
         Ok(Recorder {
+            wanted: sink.wants_rows(),
             row: Vec::with_capacity(probes.len()),
             probes,
             sink,
@@ -80,12 +83,15 @@ impl<'s> Recorder<'s> {
         quantities: &[f64],
         signals: &[SignalState],
     ) -> Result<(), SimError> {
+        self.last = Some(t);
+        if !self.wanted {
+            return Ok(());
+        }
         self.row.clear();
         self.row.extend(self.probes.iter().map(|p| match *p {
             Probe::Quantity(q) => quantities[q.index()],
             Probe::Signal(s) => signals[s.index()].value.as_f64().unwrap_or(f64::NAN),
         }));
-        self.last = Some(t);
         self.sink.row(t, &self.row).map_err(output_error)
     }
 
