@@ -103,6 +103,12 @@ impl<'s> Recorder<'s> {
         })
     }
 
+    /// False when the sink drops every row: what only the rows would show need not be
+    /// computed.
+    pub fn wanted(&self) -> bool {
+        self.wanted
+    }
+
     /// Time of the last row.
     pub fn last_time(&self) -> Option<f64> {
         self.last
