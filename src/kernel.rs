@@ -6,7 +6,7 @@
 //! streams them to its files) and the run gives a [`SimEnd`].
 //!
 //! Submodules: `signals` (drivers, projected waveforms, resolution), `process` (the
-//! instruction interpreter), `eval`/`ops`/`image` (expressions to values), `events` (delta
+//! instruction interpreter), `eval`/`ops`/`image` (expressions to values), `fast` (integer expressions without values), `events` (delta
 //! cycles), `cycle` (the mixed-signal loop and the quiescent point), `record` (probes and
 //! output rows), `analog_model` (what the loop needs from the analog system).
 //!
@@ -26,6 +26,7 @@ mod cycle;
 mod error;
 mod eval;
 mod events;
+mod fast;
 mod image;
 mod io;
 mod ops;

@@ -19,6 +19,11 @@ pub trait WaveformSink {
     fn start(&mut self, header: &Header) -> Result<(), SinkError>;
     /// One row: `values[c]` for column `c`. An error stops the run.
     fn row(&mut self, time: f64, values: &[f64]) -> Result<(), SinkError>;
+    /// False when the sink would drop every row (`vams run` without an output file or a
+    /// plot): the kernel then builds none. Asked once, after [`WaveformSink::start`].
+    fn wants_rows(&self) -> bool {
+        true
+    }
 }
 
 /// What a sink learns before the first row.

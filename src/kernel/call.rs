@@ -96,7 +96,7 @@ pub(crate) fn call_function(
         pc += 1;
         match instr {
             Instr::SetVar { var, value } => {
-                let v = eval(value, &inner)?;
+                let v = super::fast::value(value, &inner)?;
                 vars[var.index()] = v;
             }
             Instr::SetVarElement { var, index, value } => {
@@ -118,11 +118,11 @@ pub(crate) fn call_function(
             }
             Instr::Jump(target) => pc = *target,
             Instr::JumpIfNot { cond, target } => {
-                if !truth(&eval(cond, &inner)?)? {
+                if !super::fast::condition(cond, &inner)? {
                     pc = *target;
                 }
             }
-            Instr::Return(Some(e)) => return eval(e, &inner),
+            Instr::Return(Some(e)) => return super::fast::value(e, &inner),
             Instr::Return(None) => return Err(no_return(sub)),
             Instr::Assert {
                 cond,

@@ -497,7 +497,8 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
     /// Runs the digital-only time points due before `until` (the time the integrator just
     /// reached), each recorded with the quantities interpolated inside the step: their
     /// processes read no quantity and their events change nothing the equations read, so
-    /// the analog solution needs no point of its own there.
+    /// the analog solution needs no point of its own there (nor an interpolation, when no
+    /// row is wanted).
     fn digital_between(
         &mut self,
         until: f64,
@@ -506,16 +507,18 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
     ) -> Result<(), SimError> {
         let mut values = Vec::new();
         let mut derivatives = Vec::new();
+        let interpolate = recorder.wanted();
         loop {
             let td = self.kernel.next_time(until);
             if td >= until || self.outcome.is_some() {
                 return Ok(());
             }
-            if values.is_empty() {
+            if interpolate && values.is_empty() {
                 values = self.values.clone();
                 derivatives = self.derivatives.clone();
             }
-            if let Some(a) = self.analog.as_mut()
+            if interpolate
+                && let Some(a) = self.analog.as_mut()
                 && a.integ
                     .interpolate_with_derivative(td, &mut a.xi, &mut a.xdi)
                     .is_ok()
@@ -527,9 +530,16 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                 recorder.record(td, &values, &self.kernel.signals.states)?;
             }
             let events = self.kernel.events;
-            let view = AnalogView {
-                values: &values,
-                derivatives: &derivatives,
+            // Without interpolation, the values at the step's start: read by no process here.
+            let view = match interpolate {
+                true => AnalogView {
+                    values: &values,
+                    derivatives: &derivatives,
+                },
+                false => AnalogView {
+                    values: &self.values,
+                    derivatives: &self.derivatives,
+                },
             };
             self.outcome = self.kernel.run_time_point(td, &view, on_report)?;
             if self.kernel.events != events {

@@ -4,7 +4,7 @@
 use crate::design::{Design, QuantityId, SignalId, Value};
 
 use super::error::SimError;
-use super::eval::{Env, truth};
+use super::eval::Env;
 use super::io::{Files, Heap, Io};
 use super::process::{self, Context, ProcState, Suspend};
 use super::signals::Signals;
@@ -30,6 +30,10 @@ pub(crate) struct EventKernel<'d> {
     pub reports: Vec<Report>,
     waveform: Vec<(Option<Value>, f64)>,
     resume: Vec<usize>,
+    /// The earliest time anything is due, as the last time point found it when it ended
+    /// (`None`: not known). Only a time point's cycles change transactions and timeouts, so
+    /// the loop's look at the next time between two time points need not scan again.
+    next_due: Option<f64>,
     last_process: usize,
     /// Time of the last simulation cycle (initialisation counts as one at 0).
     last_cycle: f64,
@@ -60,6 +64,7 @@ impl<'d> EventKernel<'d> {
             reports: Vec::new(),
             waveform: Vec::new(),
             resume: Vec::with_capacity(design.processes.len()),
+            next_due: None,
             last_process: 0,
             last_cycle: 0.0,
             events: 0,
@@ -88,6 +93,7 @@ impl<'d> EventKernel<'d> {
     ) -> Result<Option<Outcome>, SimError> {
         self.resume.clear();
         self.resume.extend(0..self.procs.len());
+        self.next_due = None;
         self.run_resumed(0.0, analog, on_report)
     }
 
@@ -96,6 +102,14 @@ impl<'d> EventKernel<'d> {
         if self.signals.has_forced() {
             return now;
         }
+        match self.next_due {
+            Some(t) => t,
+            None => self.scan_next_time(),
+        }
+    }
+
+    /// [`EventKernel::next_time`] from the pending transactions and the timeouts.
+    fn scan_next_time(&self) -> f64 {
         self.procs
             .iter()
             .filter(|p| !p.halted)
@@ -134,10 +148,16 @@ impl<'d> EventKernel<'d> {
                 self.delta_cycles += 1;
             }
             self.last_cycle = now;
+            self.next_due = None;
             if let Some(outcome) = self.cycle(now, analog, on_report)? {
                 return Ok(Some(outcome));
             }
-            if self.next_time(now) > now {
+            if self.signals.has_forced() {
+                continue;
+            }
+            let next = self.scan_next_time();
+            if next > now {
+                self.next_due = Some(next);
                 return Ok(None);
             }
         }
@@ -186,15 +206,13 @@ impl<'d> EventKernel<'d> {
                     drivers: Some((&self.signals, i)),
                 };
                 let process = &self.design.processes[i];
-                let holds = super::eval::eval(cond, &env)
-                    .and_then(|v| truth(&v))
-                    .map_err(|e| SimError::Runtime {
-                        process: process.name.clone(),
-                        time: now,
-                        message: e.message,
-                        span: process.span,
-                        help: e.help.to_string(),
-                    })?;
+                let holds = super::fast::condition(cond, &env).map_err(|e| SimError::Runtime {
+                    process: process.name.clone(),
+                    time: now,
+                    message: e.message,
+                    span: process.span,
+                    help: e.help.to_string(),
+                })?;
                 if !holds {
                     continue;
                 }

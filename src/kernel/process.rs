@@ -41,6 +41,9 @@ pub(crate) struct ProcState {
     /// Signals the wait at each instruction index of the process is sensitive to (empty
     /// elsewhere).
     sensitivity: Vec<Vec<SignalId>>,
+    /// The driver of the whole-signal assignment at each instruction index of the process,
+    /// once its first execution has found it (a process's drivers never change).
+    driver_at: Vec<Option<usize>>,
     /// Signals a wait inside a procedure is sensitive to (filled when it suspends).
     procedure_sensitivity: Vec<SignalId>,
     /// Index in the running code of the `Wait` the process is suspended at.
@@ -72,6 +75,7 @@ impl ProcState {
             vars: process.vars.iter().map(|v| v.init.clone()).collect(),
             running: None,
             stack: Vec::new(),
+            driver_at: vec![None; process.code.len()],
             sensitivity,
             procedure_sensitivity: Vec::new(),
             waiting_at: None,
@@ -260,7 +264,7 @@ pub(crate) fn run(
         match instr {
             Instr::SetVar { var, value } => {
                 let env = env!();
-                let v = eval(value, &env).map_err(at)?;
+                let v = super::fast::value(value, &env).map_err(at)?;
                 if let Some(decl) = decls.get(var.index()) {
                     in_range(&v, decl.range, "variable", &decl.name).map_err(at)?;
                 }
@@ -280,7 +284,7 @@ pub(crate) fn run(
                 for (value, delay) in waveform {
                     let v = match value {
                         Some(value) => {
-                            let v = eval(value, &env).map_err(at)?;
+                            let v = super::fast::value(value, &env).map_err(at)?;
                             if let Some(s) = signal {
                                 in_range(&v, s.range, "signal", &s.name).map_err(at)?;
                             }
@@ -323,12 +327,26 @@ pub(crate) fn run(
                         "this is a kernel bug",
                     ))
                 };
+                // The process's own whole-signal assignment seen before: its driver as found.
+                let known = match state.running {
+                    None => state.driver_at.get(pc).copied().flatten(),
+                    Some(_) => None,
+                };
+                if let Some(d) = known {
+                    cx.signals.assign(d, cx.waveform, delay);
+                    continue;
+                }
                 match (element_index, cx.signals.split(*target)) {
                     (None, None) => {
                         let d = cx
                             .signals
                             .driver(index, *target, None)
                             .ok_or_else(no_driver)?;
+                        if state.running.is_none()
+                            && let Some(slot) = state.driver_at.get_mut(pc)
+                        {
+                            *slot = Some(d);
+                        }
                         cx.signals.assign(d, cx.waveform, delay);
                     }
                     (Some(i), Some(n)) => {
@@ -390,7 +408,7 @@ pub(crate) fn run(
             Instr::Jump(target) => state.pc = *target,
             Instr::JumpIfNot { cond, target } => {
                 let env = env!();
-                if !truth(&eval(cond, &env).map_err(at)?).map_err(at)? {
+                if !super::fast::condition(cond, &env).map_err(at)? {
                     state.pc = *target;
                 }
             }
@@ -625,11 +643,17 @@ fn assign_elements(
 
 /// The value of delay or timeout `e` in seconds; a literal one (`after 5 ns`, `wait for
 /// 1 ns`, the usual case) is read without evaluating it.
+#[inline(always)]
 fn seconds_of(e: &Expr, env: &Env) -> Result<f64, EvalError> {
     match e {
         Expr::Const(Value::Time(t) | Value::Real(t)) => Ok(*t),
-        _ => seconds(&eval(e, env)?),
+        _ => evaluated_seconds(e, env),
     }
+}
+
+#[inline(never)]
+fn evaluated_seconds(e: &Expr, env: &Env) -> Result<f64, EvalError> {
+    seconds(&eval(e, env)?)
 }
 
 /// A delay or timeout in seconds.

@@ -20,6 +20,8 @@ pub(crate) struct Recorder<'s> {
     /// The row being handed over, reused.
     row: Vec<f64>,
     last: Option<f64>,
+    /// False when the sink drops every row ([`WaveformSink::wants_rows`]).
+    wanted: bool,
 }
 
 impl<'s> Recorder<'s> {
@@ -65,6 +67,7 @@ impl<'s> Recorder<'s> {
         sink.start(&Header { columns, stop })
             .map_err(output_error)?;
         Ok(Recorder {
+            wanted: sink.wants_rows(),
             row: Vec::with_capacity(probes.len()),
             probes,
             sink,
@@ -79,12 +82,15 @@ impl<'s> Recorder<'s> {
         quantities: &[f64],
         signals: &[SignalState],
     ) -> Result<(), SimError> {
+        self.last = Some(t);
+        if !self.wanted {
+            return Ok(());
+        }
         self.row.clear();
         self.row.extend(self.probes.iter().map(|p| match *p {
             Probe::Quantity(q) => quantities[q.index()],
             Probe::Signal(s) => signals[s.index()].value.as_f64().unwrap_or(f64::NAN),
         }));
-        self.last = Some(t);
         self.sink.row(t, &self.row).map_err(output_error)
     }
 
@@ -94,6 +100,12 @@ impl<'s> Recorder<'s> {
             Probe::Quantity(q) => Some(q),
             Probe::Signal(_) => None,
         })
+    }
+
+    /// False when the sink drops every row: what only the rows would show need not be
+    /// computed.
+    pub fn wanted(&self) -> bool {
+        self.wanted
     }
 
     /// Time of the last row.

@@ -695,8 +695,10 @@ impl Signals {
             let s = self.active[k].index();
             // Without the `Result` of the general case, which is large.
             if let Some(d) = self.single_driver(s) {
-                let value = self.drivers[d].current.clone();
-                self.set(SignalId(s as u32), value, now);
+                // Read in place: a scalar driving value is copied, not cloned.
+                if store(&mut self.states[s], &self.drivers[d].current) {
+                    self.event(SignalId(s as u32), now);
+                }
                 continue;
             }
             if let Some(value) = self.effective(s, design, now)? {
@@ -787,15 +789,28 @@ impl Signals {
 
     fn set(&mut self, s: SignalId, value: Value, now: f64) {
         let st = &mut self.states[s.index()];
-        if st.value != value {
-            st.last_value = std::mem::replace(&mut st.value, value);
-            st.last_event = Some(now);
-            st.event = true;
-            self.events.push(s);
-            if !self.changed[s.index()] {
-                self.changed[s.index()] = true;
-                self.changed_list.push(s);
+        let changed = match store_scalar(st, &value) {
+            Some(changed) => changed,
+            None if st.value != value => {
+                st.last_value = std::mem::replace(&mut st.value, value);
+                true
             }
+            None => false,
+        };
+        if changed {
+            self.event(s, now);
+        }
+    }
+
+    /// Signal `s`, given a new value by [`store`], has an event at `now`.
+    fn event(&mut self, s: SignalId, now: f64) {
+        let st = &mut self.states[s.index()];
+        st.last_event = Some(now);
+        st.event = true;
+        self.events.push(s);
+        if !self.changed[s.index()] {
+            self.changed[s.index()] = true;
+            self.changed_list.push(s);
         }
     }
 
@@ -920,6 +935,53 @@ impl Signals {
             out.push(s);
         }
     }
+}
+
+/// Gives `st` the value `v`, its old value becoming `last_value` when it changes; true if it
+/// changed.
+#[inline]
+fn store(st: &mut SignalState, v: &Value) -> bool {
+    match store_scalar(st, v) {
+        Some(changed) => changed,
+        None => store_general(st, v),
+    }
+}
+
+/// [`store`] of a scalar replacing a scalar of its kind (the usual transaction), written in
+/// place without comparing, cloning or dropping a general `Value` (the comparison is
+/// `Value`'s `==` all the same); `None` for other values.
+#[inline]
+fn store_scalar(st: &mut SignalState, v: &Value) -> Option<bool> {
+    macro_rules! scalar {
+        ($variant:ident, $old:expr, $new:expr) => {{
+            if *$old == *$new {
+                return Some(false);
+            }
+            let previous = std::mem::replace($old, *$new);
+            match &mut st.last_value {
+                Value::$variant(last) => *last = previous,
+                last => *last = Value::$variant(previous),
+            }
+            Some(true)
+        }};
+    }
+    match (&mut st.value, v) {
+        (Value::Integer(old), Value::Integer(new)) => scalar!(Integer, old, new),
+        (Value::Enum(old), Value::Enum(new)) => scalar!(Enum, old, new),
+        (Value::Boolean(old), Value::Boolean(new)) => scalar!(Boolean, old, new),
+        (Value::Real(old), Value::Real(new)) => scalar!(Real, old, new),
+        (Value::Time(old), Value::Time(new)) => scalar!(Time, old, new),
+        _ => None,
+    }
+}
+
+#[inline(never)]
+fn store_general(st: &mut SignalState, v: &Value) -> bool {
+    if st.value == *v {
+        return false;
+    }
+    st.last_value = std::mem::replace(&mut st.value, v.clone());
+    true
 }
 
 fn is_std_ulogic(ty: &Type) -> bool {

@@ -328,6 +328,10 @@ impl WaveformSink for Streams {
         Ok(())
     }
 
+    fn wants_rows(&self) -> bool {
+        !self.files.is_empty() || self.plot.is_some()
+    }
+
     fn row(&mut self, time: f64, values: &[f64]) -> Result<(), SinkError> {
         self.rows += 1;
         self.last = Some(time);
