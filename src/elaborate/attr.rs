@@ -264,13 +264,17 @@ impl<'a> Elab<'a> {
                 let sub = self.nature_subtype(sc, prefix, attr, span)?;
                 self.conversion(sc, &sub.ty, args, span)
             }
-            "across" | "through" => Err(self.error(ElabError::invalid(
-                span,
-                format!("`N'{name}` is a subtype, not a value"),
-                Some(format!(
-                    "convert a value to it, `N'{name}(x)`, or qualify one, `N'{name}'(1.0)`"
-                )),
-            ))),
+            "across" | "through" => {
+                // Of anything but a nature this says what the prefix must be.
+                self.nature_subtype(sc, prefix, attr, span)?;
+                Err(self.error(ElabError::invalid(
+                    span,
+                    format!("`N'{name}` is a subtype, not a value"),
+                    Some(format!(
+                        "convert a value to it, `N'{name}(x)`, or qualify one, `N'{name}'(1.0)`"
+                    )),
+                )))
+            }
             _ => Err(self.error(ElabError::unsupported(
                 attr.span,
                 format!("the attribute `'{name}`"),

@@ -1,5 +1,6 @@
 //! Tests of the numerical core against closed forms, with stated tolerances.
 
+mod accuracy;
 mod events;
 mod init;
 mod linear;
