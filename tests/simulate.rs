@@ -180,8 +180,9 @@ fn thermostat_switches_at_the_analytic_times() {
 }
 
 /// At the default tolerance (issue 15): the first switch within 0.05 % (order 2 alone switched
-/// 1.1 % late: each restart climbed from order 1 in long steps), the bouncing ball's impacts
-/// within 0.3 ms (6 ms before).
+/// 1.1 % late: each restart climbed from order 1 in long steps; measured 0.010 %), the
+/// bouncing ball's impacts within 0.1 ms (6 ms with order 2 alone; 0.21 ms at the fourth when
+/// the start-up after each impact doubled its steps at orders 4 and 5; measured 1e-6 s now).
 #[test]
 fn events_at_the_default_tolerance_land_near_the_analytic_times() {
     let result = run(
@@ -212,7 +213,7 @@ fn events_at_the_default_tolerance_land_near_the_analytic_times() {
     let impacts = report_times(&result, "impact");
     assert_eq!(impacts.len(), expected.len(), "impacts {impacts:?}");
     for (t, x) in impacts.iter().zip(&expected) {
-        assert!((t - x).abs() < 3e-4, "impact at {t}, analytic {x}");
+        assert!((t - x).abs() < 1e-4, "impact at {t}, analytic {x}");
     }
 }
 
