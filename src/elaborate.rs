@@ -240,6 +240,9 @@ struct Elab<'a> {
     /// The actuals converted from `out` ports (`to_bool(y) => yb`), checked for other
     /// drivers once every process is known.
     converted_actuals: Vec<(SignalId, Span)>,
+    /// While a simultaneous procedural is lowered: the variable standing for each `q'dot`
+    /// it assigns (`x(1)'dot := ...`); empty elsewhere.
+    dot_targets: FxHashMap<crate::design::QuantityId, crate::design::VarId>,
     /// The implicit signals of `s'delayed(t)`, by signal and delay (its bits).
     delayed_signals: FxHashMap<(SignalId, u64), SignalId>,
     /// `S'transaction` signals by `S`.
@@ -352,6 +355,7 @@ impl<'a> Elab<'a> {
             resolvers: Vec::new(),
             resolved_signals: Vec::new(),
             converted_actuals: Vec::new(),
+            dot_targets: FxHashMap::default(),
             disconnect_delays: FxHashMap::default(),
             delayed_signals: FxHashMap::default(),
             transaction_signals: FxHashMap::default(),

@@ -58,7 +58,12 @@ impl<'a> Elab<'a> {
                     _ => return Err(self.wrong_class(prefix, &p, "a quantity", name)),
                 };
                 if name == "dot" {
-                    Ok(Typed { e: Expr::Dot(q), ty: Ty::Real })
+                    // In a procedural that assigns `q'dot`, reads see the assigned value.
+                    let e = match self.dot_targets.get(&q) {
+                        Some(&var) => Expr::Var(var),
+                        None => Expr::Dot(q),
+                    };
+                    Ok(Typed { e, ty: Ty::Real })
                 } else {
                     Ok(Typed { e: Expr::Quantity(self.integ_quantity(q)), ty: Ty::Real })
                 }

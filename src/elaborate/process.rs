@@ -1075,6 +1075,15 @@ impl<'a> Elab<'a> {
         vars: &[Variable],
         target: &ast::Expr,
     ) -> R<(VarId, Vec<Part>, Ty)> {
+        // `x(1)'dot := ...` in a simultaneous procedural: the variable standing for it.
+        if let ast::ExprKind::Attribute(prefix, attr) = &target.kind
+            && attr.name == "dot"
+            && !self.dot_targets.is_empty()
+            && let Some(Item::Quantity(q)) = self.lookup(sc, prefix)?.first()
+            && let Some(&var) = self.dot_targets.get(q)
+        {
+            return Ok((var, Vec::new(), Ty::Real));
+        }
         match &target.kind {
             ast::ExprKind::Selected(prefix, suffix)
                 if !self.resolved.contains_key(&suffix.span) =>

@@ -545,7 +545,31 @@ impl<'a> Elab<'a> {
             outputs.push((quantities, var));
             frame_of.push((var, start));
         }
-        if outputs.is_empty() {
+        // `x(1)'dot := ...`: a variable for each derivative assigned, its equation
+        // `x(1)'dot == value`.
+        let mut dot_prefixes = Vec::new();
+        dot_targets(stmts, &mut dot_prefixes);
+        let mut derivatives: Vec<(QuantityId, VarId)> = Vec::new();
+        for prefix in dot_prefixes {
+            let q = match self.lookup(sc, prefix)?.first() {
+                Some(Item::Quantity(q)) => *q,
+                _ => {
+                    return Err(self.error(ElabError::invalid(
+                        prefix.span,
+                        "`'dot` assigned in a procedural must be of one quantity, `q'dot` or `q(1)'dot`",
+                        None,
+                    )));
+                }
+            };
+            if derivatives.iter().any(|&(d, _)| d == q) {
+                continue;
+            }
+            let name = format!("{}'dot", self.text(prefix.span));
+            let var = p.new_var(&name, &Ty::Real, Value::Real(0.0));
+            derivatives.push((q, var));
+            frame_of.push((var, Expr::Dot(q)));
+        }
+        if outputs.is_empty() && derivatives.is_empty() {
             return Err(self.error(ElabError::invalid(
                 stmt.span,
                 "this procedural assigns no quantity, so it gives no equation",
@@ -553,8 +577,11 @@ impl<'a> Elab<'a> {
             )));
         }
         let before = self.errors.len();
+        let outer_dots =
+            std::mem::replace(&mut self.dot_targets, derivatives.iter().copied().collect());
         let decls_ok = self.process_decls(&mut inner, &mut p, decls).is_ok();
         self.seq(&mut inner, &mut p, stmts);
+        self.dot_targets = outer_dots;
         p.emit(Instr::Return(None));
         if !decls_ok || self.errors.len() > before {
             return Err(super::Reported);
@@ -573,7 +600,9 @@ impl<'a> Elab<'a> {
             spans,
             span: stmt.span,
         };
-        let vars: Vec<VarId> = outputs.iter().map(|&(_, v)| v).collect();
+        let vars: Vec<VarId> = (outputs.iter().map(|&(_, v)| v))
+            .chain(derivatives.iter().map(|&(_, v)| v))
+            .collect();
         let values = match super::inline::procedural_values(&self.design, &body, &frame, &vars) {
             Ok(values) => values,
             Err(e) => {
@@ -586,7 +615,28 @@ impl<'a> Elab<'a> {
         };
         let text = self.text(stmt.span);
         let mut eqns = Vec::new();
-        for ((quantities, _), value) in outputs.into_iter().zip(values) {
+        let (values, derivative_values) = values.split_at(outputs.len());
+        for (&(q, _), value) in derivatives.iter().zip(derivative_values) {
+            let residual = Expr::Binary(
+                BinaryOp::Sub,
+                Box::new(Expr::Dot(q)),
+                Box::new(value.clone()),
+            );
+            if !value.is_analog() {
+                return Err(self.error(ElabError::invalid(
+                    stmt.span,
+                    "this procedural computes a value an equation cannot hold",
+                    Some("equations read quantities, signals, constants and `now`".into()),
+                )));
+            }
+            let residual = self.folded(residual, Ty::Real, stmt.span)?.e;
+            eqns.push(Eqn {
+                residual,
+                span: stmt.span,
+                text: format!("{}'dot := ... in {text}", self.qname(q)),
+            });
+        }
+        for ((quantities, _), value) in outputs.into_iter().zip(values.iter().cloned()) {
             let parts = match quantities.len() {
                 1 if !is_array_value(&value) => Some(vec![value]),
                 n => array_elements(value, n),
@@ -824,6 +874,20 @@ fn assigned_names<'s>(stmts: &'s [ast::SeqStmt], out: &mut Vec<&'s ast::Ident>) 
                 if let ast::ExprKind::Name(id) = &e.kind {
                     out.push(id);
                 }
+            }
+        });
+    }
+}
+
+/// The prefixes of the `'dot` targets of a procedural's body (`x(1)` of `x(1)'dot := ...`).
+fn dot_targets<'s>(stmts: &'s [ast::SeqStmt], out: &mut Vec<&'s ast::Expr>) {
+    for s in stmts {
+        s.walk(&mut |s| {
+            if let ast::SeqKind::VariableAssign { target, .. } = &s.kind
+                && let ast::ExprKind::Attribute(prefix, attr) = &target.kind
+                && attr.name == "dot"
+            {
+                out.push(prefix);
             }
         });
     }
