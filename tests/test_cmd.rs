@@ -263,7 +263,8 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_port_conversions ... ok"))
         .stdout(contains("test tb_nature_subtypes ... ok"))
         .stdout(contains("test tb_procedural_derivatives ... ok"))
-        .stdout(contains("118 passed, 0 failed"));
+        .stdout(contains("test tb_quantity_array_arguments ... ok"))
+        .stdout(contains("119 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

@@ -764,6 +764,27 @@ impl<'a> Elab<'a> {
             Item::Constant { value, ty } => Typed::new(Expr::Const(value), ty),
             Item::Signal { id, ty } => Typed::new(Expr::Signal(id), ty),
             Item::Quantity(id) => Typed::new(Expr::Quantity(id), Ty::Real),
+            // A whole quantity array as a value (`vector_multiply(source_position, k)`): the
+            // array of its quantities' values.
+            Item::QuantityArray(elements) => {
+                let elems = elements.ids.iter().map(|&q| Expr::Quantity(q)).collect();
+                // Of type `real_vector` (the quantity array's own declared type is not kept),
+                // with its bounds.
+                let ty = match (self.standard_type("real_vector"), elements.ty()) {
+                    (Some(Ty::Array(rv)), Ty::Array(own)) => match own.bounds {
+                        Some(b) => rv.with_bounds(Some(b)),
+                        None => Ty::Array(own),
+                    },
+                    (_, own) => own,
+                };
+                Typed::new(
+                    Expr::Aggregate {
+                        elems,
+                        string: false,
+                    },
+                    ty,
+                )
+            }
             Item::Variable { id, ty, path, .. } => {
                 let e = path.iter().fold(Expr::Var(id), |e, part| part.of(e));
                 Typed::new(e, ty)
