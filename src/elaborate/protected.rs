@@ -61,6 +61,16 @@ impl<'a> Elab<'a> {
         Ok(())
     }
 
+    /// The declarations of protected body `name` in the body of the package being
+    /// elaborated, if it has one there.
+    fn protected_body_in_package_body(&self, name: &str) -> Option<&'a [Decl]> {
+        let body = self.lib.bodies.get(&self.unit_at)?;
+        body.unit.decls.iter().find_map(|d| match &d.kind {
+            DeclKind::ProtectedBody { name: n, decls } if n.name == name => Some(decls.as_slice()),
+            _ => None,
+        })
+    }
+
     /// A shared variable of a type that is not protected: a record of one field on the heap
     /// (so that it is read and written as a protected type's private variable is), with the
     /// declaration's initial value.
@@ -113,6 +123,9 @@ impl<'a> Elab<'a> {
         let Some(&(methods, body)) = self.protected.get(&p.decl) else {
             return Err(super::Reported);
         };
+        // A shared variable of a package declaration whose type's body is in the package
+        // body (the usual layout): that body, elaborated where the variable is declared.
+        let body = body.or_else(|| self.protected_body_in_package_body(&p.name));
         let Some(body) = body else {
             return Err(self.error(ElabError::invalid(
                 span,
