@@ -332,17 +332,15 @@ impl<'a> Elab<'a> {
                 if r.is_err() {
                     result = r;
                 }
-            } else if let (
-                Some(_),
-                ast::DeclKind::Constant {
-                    names,
-                    subtype,
-                    value: Some(value),
-                },
-            ) = (&p.subprogram, &d.kind)
+            } else if let ast::DeclKind::Constant {
+                names,
+                subtype,
+                value: Some(value),
+            } = &d.kind
             {
-                // A subprogram's constant may depend on the parameters (then it is a read-only
-                // variable assigned when the call starts).
+                // A subprogram's constant may depend on the parameters, a process's on what it
+                // reads when it starts (a file a function loads, LRM 12.3.1.4): then it is a
+                // read-only variable assigned when the call or the process starts.
                 let r = (|| {
                     let sub = self.subtype_indication(sc, subtype)?;
                     let t = self.expr_of(sc, value, &sub.ty)?;
@@ -351,6 +349,10 @@ impl<'a> Elab<'a> {
                         _ => "the constants declared here".to_string(),
                     };
                     let e = self.fit_length(t, &sub.ty, what, value.span)?;
+                    let e = match super::inline::static_call_value(&self.design, &e) {
+                        Some(v) => Expr::Const(v),
+                        None => e,
+                    };
                     for n in names {
                         let item = match &e {
                             Expr::Const(v) => Item::Constant {
