@@ -911,7 +911,22 @@ impl Signals {
         let character = matches!(&signal.ty, Type::Enum { name, .. } if name == "character");
         let values =
             crate::design::aggregate_value(on.iter().map(|v| (*v).clone()).collect(), character);
-        let env = super::eval::Env {
+        // A resolution function's objects live for its call only.
+        let io = super::io::Io::default();
+        let env = self.update_env(design, now, &io);
+        super::call::call_function(function, &[Expr::Const(values)], &env)
+            .map_err(|e| fail(format!("in `{}`: {}", r.name, e.message), e.help))
+    }
+
+    /// Where a function that the update phase calls (a resolution function, a conversion)
+    /// is evaluated: the signals' current values, no variables, quantities or drivers.
+    fn update_env<'e>(
+        &'e self,
+        design: &'e Design,
+        now: f64,
+        io: &'e super::io::Io,
+    ) -> super::eval::Env<'e> {
+        super::eval::Env {
             signals: &self.states,
             vars: &[],
             quantities: &[],
@@ -919,12 +934,9 @@ impl Signals {
             now,
             subprograms: &design.subprograms,
             depth: 0,
-            // A resolution function's objects live for its call only.
-            io: &super::io::Io::default(),
+            io,
             drivers: None,
-        };
-        super::call::call_function(function, &[Expr::Const(values)], &env)
-            .map_err(|e| fail(format!("in `{}`: {}", r.name, e.message), e.help))
+        }
     }
 
     /// Moves the signals with an event since the last call into `out` (cleared first).

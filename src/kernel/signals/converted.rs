@@ -71,18 +71,9 @@ impl Signals {
             // `converted` lists the signals of this kind only.
             return Ok(self.states[s.index()].value.clone());
         };
-        let env = super::super::eval::Env {
-            signals: &self.states,
-            vars: &[],
-            quantities: &[],
-            derivatives: &[],
-            now,
-            subprograms: &design.subprograms,
-            depth: 0,
-            // A conversion function's objects live for its call only.
-            io: &super::super::io::Io::default(),
-            drivers: None,
-        };
+        // A conversion function's objects live for its call only.
+        let io = super::super::io::Io::default();
+        let env = self.update_env(design, now, &io);
         let value: Result<Value, _> = super::super::eval::eval(conversion, &env);
         value.map_err(|e| SimError::Runtime {
             process: format!("conversion of `{}`", signal.name),
