@@ -185,6 +185,34 @@ architecture behavioral of reg is begin end architecture;
         .stdout(predicates::str::contains("1 passed, 0 failed"));
 }
 
+/// A file with syntax errors among others is left out, with a note naming it; the other
+/// files are still analysed and elaborated, so their errors are reported in the same run.
+#[test]
+fn a_file_with_syntax_errors_does_not_hide_the_others_errors() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("broken.vhd"),
+        "entity broken is end;\narchitecture a of broken is\n  type t is . . .;\nbegin end;\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.path().join("undriven.vhd"),
+        "entity free is end;\narchitecture a of free is\n  quantity x, y : real;\nbegin\n  x == 1.0;\nend;\n",
+    )
+    .unwrap();
+    vams()
+        .arg("check")
+        .arg(dir.path())
+        .assert()
+        .code(1)
+        .stderr(predicates::str::contains("syntax error"))
+        .stderr(predicates::str::contains(
+            "1 file(s) with syntax errors left out of the analysis",
+        ))
+        .stderr(predicates::str::contains("broken.vhd"))
+        .stderr(predicates::str::contains("1 equations for 2 unknowns"));
+}
+
 #[test]
 fn bad_input_of_every_kind_exits_1() {
     let dir = tempfile::tempdir().unwrap();

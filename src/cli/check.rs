@@ -20,11 +20,12 @@ use miette::Report;
 
 use crate::analog::AnalogSystem;
 use crate::analysis::{Analysis, analyse};
+use crate::ast::DesignFile;
 use crate::diagnostics::Located;
 use crate::elaborate::{
     ElabOptions, ElabWarning, TopCandidate, elaborate_analysed, top_candidates,
 };
-use crate::source::Span;
+use crate::source::{FileId, Span};
 
 use super::error::CliError;
 use super::load::{Loaded, load_with_libraries};
@@ -111,18 +112,42 @@ pub fn run(args: &CheckArgs) -> Result<(), Report> {
         syntax: loaded.error_count(),
         ..Tally::default()
     };
-    if tally.syntax == 0 {
-        // Every unit of every file, whether or not a top reaches it.
-        let analysis = analyse(&loaded.sources, &loaded.files);
-        for unit in &analysis.units {
-            tally.analysis += tally.print(&unit.errors, &loaded, args.max_errors);
-        }
-        tally.analysed_spans = analysis.errors().map(|e| e.primary_span()).collect();
-        for candidate in top_candidates(&analysis, &loaded.files) {
-            check_top(&candidate, &analysis, &loaded, args.max_errors, &mut tally);
-        }
+    // A file with syntax errors is left out; the others are analysed and elaborated, so
+    // that one broken file among many does not hide the rest's errors.
+    let kept: Vec<(FileId, DesignFile)>;
+    let files = if tally.syntax == 0 {
+        loaded.files.as_slice()
     } else {
-        eprintln!("note: nothing was elaborated because of the syntax errors");
+        kept = (loaded.files.iter())
+            .filter(|(id, _)| !loaded.has_errors(*id))
+            .cloned()
+            .collect();
+        let left_out: Vec<&str> = (loaded.syntax_errors.iter())
+            .map(|(id, _)| loaded.sources.file(*id).name.as_str())
+            .collect();
+        eprintln!(
+            "note: {} file(s) with syntax errors left out of the analysis ({}); what they \
+             declare is missing to the other files",
+            left_out.len(),
+            left_out.join(", ")
+        );
+        kept.as_slice()
+    };
+    // Every unit of every file, whether or not a top reaches it.
+    let analysis = analyse(&loaded.sources, files);
+    for unit in &analysis.units {
+        tally.analysis += tally.print(&unit.errors, &loaded, args.max_errors);
+    }
+    tally.analysed_spans = analysis.errors().map(|e| e.primary_span()).collect();
+    for candidate in top_candidates(&analysis, files) {
+        check_top(
+            &candidate,
+            &analysis,
+            &loaded,
+            files,
+            args.max_errors,
+            &mut tally,
+        );
     }
     eprintln!("{}", summary(&loaded, &tally));
     match tally.errors() {
@@ -136,6 +161,7 @@ fn check_top(
     top: &TopCandidate,
     analysis: &Analysis,
     loaded: &Loaded,
+    files: &[(FileId, DesignFile)],
     max: usize,
     tally: &mut Tally,
 ) {
@@ -162,7 +188,7 @@ fn check_top(
         configurations => configurations,
     };
     for name in names {
-        check_elaborated(name, top, analysis, loaded, max, tally);
+        check_elaborated(name, top, analysis, loaded, files, max, tally);
     }
 }
 
@@ -173,6 +199,7 @@ fn check_elaborated(
     top: &TopCandidate,
     analysis: &Analysis,
     loaded: &Loaded,
+    files: &[(FileId, DesignFile)],
     max: usize,
     tally: &mut Tally,
 ) {
@@ -181,7 +208,7 @@ fn check_elaborated(
         generics: Vec::new(),
     };
     tally.elaborated += 1;
-    let design = match elaborate_analysed(analysis, &loaded.sources, &loaded.files, &options) {
+    let design = match elaborate_analysed(analysis, &loaded.sources, files, &options) {
         Ok(design) => design,
         Err(errors) => {
             tally.elaboration += tally.print(&errors, loaded, max);
