@@ -379,6 +379,21 @@ impl<'a> Elab<'a> {
         Reported
     }
 
+    /// What `f` computes, or `None` where it failed only because a value it needed is not
+    /// static (its error withdrawn): for constructs that are legal with run-time values and
+    /// that the caller handles another way (a slice target with run-time bounds).
+    fn where_static<T>(&mut self, f: impl FnOnce(&mut Self) -> R<T>) -> R<Option<T>> {
+        let before = self.errors.len();
+        match f(self) {
+            Ok(v) => Ok(Some(v)),
+            Err(_) if matches!(self.errors.get(before), Some(ElabError::NotStatic { .. })) => {
+                self.errors.truncate(before);
+                Ok(None)
+            }
+            Err(e) => Err(e),
+        }
+    }
+
     /// `path.name`, or `name` at the top.
     fn hier_name(&self, name: &str) -> String {
         if self.path.is_empty() {

@@ -298,22 +298,14 @@ impl<'a> Elab<'a> {
                     tolerance: None,
                     span: inner.span,
                 };
-                let before = self.errors.len();
-                let sub = match self.subtype_indication(sc, &si) {
-                    Ok(sub) => sub,
-                    // `new store_array(0 to size - 1)`: legal, but the object's bounds would
-                    // be known only at run time.
-                    Err(e) => {
-                        if !matches!(self.errors.get(before), Some(ElabError::NotStatic { .. })) {
-                            return Err(e);
-                        }
-                        self.errors.truncate(before);
-                        return Err(self.error(ElabError::unsupported(
-                            inner.span,
-                            "an allocator of an array whose bounds are known only at run time",
-                            "give the allocated array bounds known before the run (constants or generics)",
-                        )));
-                    }
+                // `new store_array(0 to size - 1)`: legal, but the object's bounds would be
+                // known only at run time.
+                let Some(sub) = self.where_static(|me| me.subtype_indication(sc, &si))? else {
+                    return Err(self.error(ElabError::unsupported(
+                        inner.span,
+                        "an allocator of an array whose bounds are known only at run time",
+                        "give the allocated array bounds known before the run (constants or generics)",
+                    )));
                 };
                 Typed::new(
                     design::Expr::Const(super::decls::default_value(&sub)),

@@ -78,21 +78,14 @@ impl<'a> Elab<'a> {
             }) => (*id, a.clone()),
             _ => return Ok(None),
         };
-        let before = self.errors.len();
-        match self.range_bounds(sc, range) {
-            Ok(_) => Ok(None),
-            Err(e) => {
-                if !matches!(self.errors.get(before), Some(ElabError::NotStatic { .. })) {
-                    return Err(e);
-                }
-                self.errors.truncate(before);
-                Ok(Some(RuntimeSlice {
-                    signal,
-                    array,
-                    range,
-                }))
-            }
-        }
+        Ok(match self.where_static(|me| me.range_bounds(sc, range))? {
+            Some(_) => None,
+            None => Some(RuntimeSlice {
+                signal,
+                array,
+                range,
+            }),
+        })
     }
 
     /// Lowers `target <= waveform` for the run-time slice `slice` of `target` into `p`.

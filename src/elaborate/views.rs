@@ -206,21 +206,13 @@ impl<'a> Elab<'a> {
                 (k, None, a.element.clone(), ie.span)
             }
             Actual::Range(r) => {
-                let before = self.errors.len();
-                let (l, rr, dir) = match self.range_bounds(sc, r) {
-                    Ok(bounds) => bounds,
-                    Err(e) => {
-                        if !matches!(self.errors.get(before), Some(ElabError::NotStatic { .. })) {
-                            return Err(e);
-                        }
-                        // A signal named here must be a static name (LRM 6.1): as an
-                        // assignment target a slice may have run-time bounds, not here.
-                        self.errors.truncate(before);
-                        return Err(self.error(ElabError::NotStatic {
-                            span: arg.span,
-                            what: format!("the bounds of `{name}` (it names a signal slice here)"),
-                        }));
-                    }
+                // A signal named here must be a static name (LRM 6.1): as an assignment
+                // target a slice may have run-time bounds, not here.
+                let Some((l, rr, dir)) = self.where_static(|me| me.range_bounds(sc, r))? else {
+                    return Err(self.error(ElabError::NotStatic {
+                        span: arg.span,
+                        what: format!("the bounds of `{name}` (it names a signal slice here)"),
+                    }));
                 };
                 let n = bounds_len(l, rr, dir);
                 let (Some(k), Some(_)) = (position(l), position(rr)) else {
