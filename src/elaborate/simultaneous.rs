@@ -2,6 +2,8 @@
 //! a simultaneous if or case gives one equation per position whose residual is a chain of
 //! [`Expr::If`] over its branches.
 
+use rustc_hash::FxHashMap;
+
 use crate::ast::{self, Choice, ConcKind, ConcStmt, SimKind};
 use crate::design::{
     BinaryOp, Equation, Expr, Instr, QuantityId, Subprogram, SubprogramKind, UnaryOp, Value, VarId,
@@ -510,21 +512,25 @@ impl<'a> Elab<'a> {
             ret: None,
             returned: Vec::new(),
         });
-        // Each assigned quantity, or quantity array, with the variable standing for it.
-        let mut outputs: Vec<(Vec<QuantityId>, VarId)> = Vec::new();
+        // Each assigned quantity, quantity array or derivative (`x(1)'dot := ...`), as the
+        // unknowns its value gives (`Expr::Quantity`, `Expr::Dot`), with the variable
+        // standing for it.
+        let mut outputs: Vec<(Vec<Expr>, VarId)> = Vec::new();
         let mut frame_of: Vec<(VarId, Expr)> = Vec::new();
         for id in targets {
             let Some(decl) = self.resolved.get(&id.span).copied() else {
                 continue;
             };
             let (quantities, ty, start) = match self.resolved_item(sc, id) {
-                Some(Item::Quantity(q)) => (vec![q], Ty::Real, Expr::Quantity(q)),
+                Some(Item::Quantity(q)) => (vec![Expr::Quantity(q)], Ty::Real, Expr::Quantity(q)),
                 Some(Item::QuantityArray(elements)) => {
+                    let elems: Vec<Expr> =
+                        elements.ids.iter().map(|&q| Expr::Quantity(q)).collect();
                     let start = Expr::Aggregate {
-                        elems: elements.ids.iter().map(|&q| Expr::Quantity(q)).collect(),
+                        elems: elems.clone(),
                         string: false,
                     };
-                    (elements.ids.clone(), elements.ty(), start)
+                    (elems, elements.ty(), start)
                 }
                 _ => continue,
             };
@@ -549,7 +555,7 @@ impl<'a> Elab<'a> {
         // `x(1)'dot == value`.
         let mut dot_prefixes = Vec::new();
         dot_targets(stmts, &mut dot_prefixes);
-        let mut derivatives: Vec<(QuantityId, VarId)> = Vec::new();
+        let mut derivatives: FxHashMap<QuantityId, VarId> = FxHashMap::default();
         for prefix in dot_prefixes {
             let q = match self.lookup(sc, prefix)?.first() {
                 Some(Item::Quantity(q)) => *q,
@@ -561,15 +567,16 @@ impl<'a> Elab<'a> {
                     )));
                 }
             };
-            if derivatives.iter().any(|&(d, _)| d == q) {
+            if derivatives.contains_key(&q) {
                 continue;
             }
             let name = format!("{}'dot", self.text(prefix.span));
             let var = p.new_var(&name, &Ty::Real, Value::Real(0.0));
-            derivatives.push((q, var));
+            derivatives.insert(q, var);
+            outputs.push((vec![Expr::Dot(q)], var));
             frame_of.push((var, Expr::Dot(q)));
         }
-        if outputs.is_empty() && derivatives.is_empty() {
+        if outputs.is_empty() {
             return Err(self.error(ElabError::invalid(
                 stmt.span,
                 "this procedural assigns no quantity, so it gives no equation",
@@ -577,8 +584,7 @@ impl<'a> Elab<'a> {
             )));
         }
         let before = self.errors.len();
-        let outer_dots =
-            std::mem::replace(&mut self.dot_targets, derivatives.iter().copied().collect());
+        let outer_dots = std::mem::replace(&mut self.dot_targets, derivatives);
         let decls_ok = self.process_decls(&mut inner, &mut p, decls).is_ok();
         self.seq(&mut inner, &mut p, stmts);
         self.dot_targets = outer_dots;
@@ -600,9 +606,7 @@ impl<'a> Elab<'a> {
             spans,
             span: stmt.span,
         };
-        let vars: Vec<VarId> = (outputs.iter().map(|&(_, v)| v))
-            .chain(derivatives.iter().map(|&(_, v)| v))
-            .collect();
+        let vars: Vec<VarId> = outputs.iter().map(|&(_, v)| v).collect();
         let values = match super::inline::procedural_values(&self.design, &body, &frame, &vars) {
             Ok(values) => values,
             Err(e) => {
@@ -615,29 +619,8 @@ impl<'a> Elab<'a> {
         };
         let text = self.text(stmt.span);
         let mut eqns = Vec::new();
-        let (values, derivative_values) = values.split_at(outputs.len());
-        for (&(q, _), value) in derivatives.iter().zip(derivative_values) {
-            let residual = Expr::Binary(
-                BinaryOp::Sub,
-                Box::new(Expr::Dot(q)),
-                Box::new(value.clone()),
-            );
-            if !value.is_analog() {
-                return Err(self.error(ElabError::invalid(
-                    stmt.span,
-                    "this procedural computes a value an equation cannot hold",
-                    Some("equations read quantities, signals, constants and `now`".into()),
-                )));
-            }
-            let residual = self.folded(residual, Ty::Real, stmt.span)?.e;
-            eqns.push(Eqn {
-                residual,
-                span: stmt.span,
-                text: format!("{}'dot := ... in {text}", self.qname(q)),
-            });
-        }
-        for ((quantities, _), value) in outputs.into_iter().zip(values.iter().cloned()) {
-            let parts = match quantities.len() {
+        for ((unknowns, _), value) in outputs.into_iter().zip(values) {
+            let parts = match unknowns.len() {
                 1 if !is_array_value(&value) => Some(vec![value]),
                 n => array_elements(value, n),
             };
@@ -648,14 +631,19 @@ impl<'a> Elab<'a> {
                     Some("equations read quantities, signals, constants and `now`".into()),
                 )));
             };
-            for (q, value) in quantities.into_iter().zip(parts) {
-                let residual =
-                    Expr::Binary(BinaryOp::Sub, Box::new(Expr::Quantity(q)), Box::new(value));
+            for (unknown, value) in unknowns.into_iter().zip(parts) {
+                let target = match unknown {
+                    Expr::Dot(q) => format!("{}'dot", self.qname(q)),
+                    Expr::Quantity(q) => self.qname(q),
+                    // `outputs` holds these two forms only.
+                    _ => String::new(),
+                };
+                let residual = Expr::Binary(BinaryOp::Sub, Box::new(unknown), Box::new(value));
                 let residual = self.folded(residual, Ty::Real, stmt.span)?.e;
                 eqns.push(Eqn {
                     residual,
                     span: stmt.span,
-                    text: format!("{} := ... in {text}", self.qname(q)),
+                    text: format!("{target} := ... in {text}"),
                 });
             }
         }
