@@ -19,6 +19,7 @@ mod build;
 mod delay;
 mod deriv;
 mod error;
+mod index;
 mod listing;
 mod lower;
 mod quiescent;
@@ -101,6 +102,12 @@ pub struct AnalogSystem {
     linear: bool,
     /// Lone across quantities given an implicit through quantity ([`Unknown::Flow`]).
     implicit_flows: Vec<QuantityId>,
+    /// What index reduction did, if the model needed it.
+    index_reduced: Option<IndexReduced>,
+    /// The options this system was built with (a new choice of states rebuilds it).
+    options: AnalogOptions,
+    /// The quantities last asked for ([`AnalogSystem::select_quantities`]).
+    wanted: Option<Vec<bool>>,
 }
 
 /// The incidence of the assembled residuals (the unknowns each one names).
@@ -159,16 +166,23 @@ fn scale_sources(e: Sym, scale: usize) -> Sym {
 }
 
 /// Choices made when compiling a design.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct AnalogOptions {
     /// Solve equations for unknowns they give explicitly and substitute them (see
     /// `reduce`): branch quantities of circuits disappear from the solver's system.
     pub eliminate: bool,
+    /// The initial break values (by `QuantityId`), where index reduction chooses its states:
+    /// a quantity not given counts at its initial guess, and one given stays a state where
+    /// the point allows ([`AnalogSystem::choose_states`]).
+    pub state_point: Vec<(QuantityId, f64)>,
 }
 
 impl Default for AnalogOptions {
     fn default() -> Self {
-        AnalogOptions { eliminate: true }
+        AnalogOptions {
+            eliminate: true,
+            state_point: Vec::new(),
+        }
     }
 }
 
@@ -223,6 +237,131 @@ fn derivatives(residuals: &[Sym], n: usize) -> Derivatives {
         differential,
         exprs,
     }
+}
+
+/// What index reduction did, for `vams dae`.
+pub struct IndexReduced {
+    /// The structural index of the model as written.
+    pub index: usize,
+    /// Every unknown of the reduced system (the model's, then the derivatives made unknowns).
+    pub names: Vec<String>,
+    /// The equations it added: derivatives of the model's and state chains, with origins.
+    pub equations: Vec<(String, Sym)>,
+    /// The derivatives made algebraic unknowns (dummy derivatives).
+    pub dummies: Vec<String>,
+    /// The unknowns whose derivatives remain: the states.
+    pub states: Vec<String>,
+}
+
+/// Pantelides and dummy derivatives on the assembled system (`index`): the system unchanged
+/// when its index is 0 or 1, else with the hidden constraints differentiated and a state
+/// chosen at `options.state_point`.
+fn reduce_index(
+    design: &Design,
+    asm: build::Assembled,
+    options: &AnalogOptions,
+) -> Result<(build::Assembled, Option<IndexReduced>), Vec<AnalogError>> {
+    let history_from = delay::history_slot(design.signals.len(), 0);
+    let time_slot = delay::time_slot(design.signals.len());
+    let describe = |k: usize| asm.origins[k].describe(design);
+    let found = index::Reduction::find(&asm.residuals, asm.unknowns.len(), history_from, time_slot);
+    let reduction = match found {
+        // Index 2 is integrated as written: BDF handles it, the higher-index algebraic
+        // unknowns sitting out the error test (`structure::higher_index_algebraic`), and the
+        // rigid couplings of mechanics disappear in elimination. Reducing it is not safe on
+        // circuits: a cluster of nodes joined only by capacitors (two in parallel, a loop)
+        // has a common-mode potential that Kirchhoff's laws fix algebraically through a
+        // cancellation no structural method sees, and dummy derivatives would make it a state
+        // (a singular Jacobian a few steps in). From index 3 on (a mechanism's position
+        // constraint) BDF cannot start at all, and the reduction is the way.
+        Ok(Some(r)) if r.index() >= 3 => r,
+        Ok(_) => return Ok((asm, None)),
+        Err(e) => {
+            let (k, reason, help) = match e {
+                index::IndexError::Singular { equation } => (
+                    equation,
+                    format!(
+                        "{} reads no unknown of its own however often it is differentiated",
+                        describe(equation)
+                    ),
+                    "the equations are structurally singular: check that each constraint                      leaves some quantity free to satisfy it",
+                ),
+                index::IndexError::Delayed { equation } => (
+                    equation,
+                    format!(
+                        "{} must be differentiated, and it reads a 'delayed value",
+                        describe(equation)
+                    ),
+                    "write the constraint without 'delayed, or give the delayed value a                      quantity of its own with a derivative",
+                ),
+            };
+            return Err(vec![AnalogError::Index {
+                span: asm.origins[k].span(design),
+                reason,
+                help,
+            }]);
+        }
+    };
+    let mut point: Vec<f64> = asm
+        .unknowns
+        .iter()
+        .map(|u| match u {
+            Unknown::Quantity(q) => design.quantities[q.index()].initial_guess.unwrap_or(0.0),
+            _ => 0.0,
+        })
+        .collect();
+    let mut held = vec![false; point.len()];
+    for &(q, v) in &options.state_point {
+        if let Some(&slot) = asm.quantity_slot.get(q.index()) {
+            point[slot] = v;
+            held[slot] = true;
+        }
+    }
+    let mut signals: Vec<f64> = design
+        .signals
+        .iter()
+        .map(|s| s.init.as_f64().unwrap_or(0.0))
+        .collect();
+    signals.extend([1.0, 0.0, 1.0]);
+    signals.extend(design.delays.iter().map(|_| 0.0));
+    let selection = reduction.select(&point, &held, &signals);
+    let reduced = reduction.assemble(&asm, &selection);
+    let names = Unknown::names(&reduced.unknowns, design);
+    let equations = (asm.residuals.len()..reduced.residuals.len())
+        .map(|k| {
+            let from = build::Origin::describe_among(&reduced.origins, &names, k, design);
+            (from, reduced.residuals[k].clone())
+        })
+        .collect();
+    let dummies = (asm.unknowns.len()..reduced.unknowns.len())
+        .filter(|&j| {
+            !reduced
+                .residuals
+                .iter()
+                .any(|r| r.any(|e| *e == Sym::Dot(j)))
+        })
+        .map(|j| names[j].clone())
+        .collect();
+    let mut differential = vec![false; reduced.unknowns.len()];
+    for r in &reduced.residuals {
+        r.visit(&mut |e| {
+            if let Sym::Dot(j) = e {
+                differential[*j] = true;
+            }
+        });
+    }
+    let states = (0..differential.len())
+        .filter(|&j| differential[j])
+        .map(|j| names[j].clone())
+        .collect();
+    let info = IndexReduced {
+        index: reduction.index(),
+        names,
+        equations,
+        dummies,
+        states,
+    };
+    Ok((reduced, Some(info)))
 }
 
 /// Unknowns the elimination must keep: break targets (their value is set from outside), the
@@ -307,6 +446,7 @@ impl AnalogSystem {
                 }
             }
         };
+        let (asm, reduction) = reduce_index(design, asm, options)?;
         let n = asm.unknowns.len();
 
         let mut reads = vec![false; design.signals.len()];
@@ -373,10 +513,11 @@ impl AnalogSystem {
         let mut names = Vec::new();
         let mut unknowns = Vec::new();
         let all_unknowns = asm.unknowns.clone();
+        let mut all_names = Unknown::names(&all_unknowns, design);
         for (j, unknown) in asm.unknowns.into_iter().enumerate() {
             if elim.replacement[j].is_none() {
                 live[j] = unknowns.len();
-                names.push(unknown.name(design));
+                names.push(std::mem::take(&mut all_names[j]));
                 unknowns.push(unknown);
             }
         }
@@ -413,10 +554,15 @@ impl AnalogSystem {
             })
             .map(|(&entry, _)| entry)
             .collect();
-        let error_exempt = structure::higher_index_algebraic(
+        let mut error_exempt = structure::higher_index_algebraic(
             &structure::Incidence::new(n_eq, n, &index1_pattern),
             &differential,
         );
+        // A derivative made an unknown follows its state's accuracy (a constraint's
+        // derivative gives it); its own scale is not known to judge it on.
+        for (exempt, unknown) in error_exempt.iter_mut().zip(&unknowns) {
+            *exempt |= matches!(unknown, Unknown::Derivative { .. });
+        }
         let matching = structure::maximum_matching(&inc);
         let order: Vec<usize> = match matching.col_match.iter().copied().collect() {
             Some(rows) if n == n_eq => rows,
@@ -510,6 +656,8 @@ impl AnalogSystem {
         signals.push(1.0);
         // History not ready: `Q'delayed(T) = Q` (the quiescent domain).
         signals.push(0.0);
+        // Time runs, except while `quiescent` solves.
+        signals.push(1.0);
         signals.extend(design.delays.iter().map(|_| 0.0));
         // Delay inputs are protected, so they survive elimination.
         let delay_lines = design
@@ -555,7 +703,9 @@ impl AnalogSystem {
                     unknown: j,
                     quantity: match all_unknowns[j] {
                         Unknown::Quantity(q) => Some(q),
-                        Unknown::Potential(_) | Unknown::Flow(_) => None,
+                        Unknown::Potential(_) | Unknown::Flow(_) | Unknown::Derivative { .. } => {
+                            None
+                        }
                     },
                     solved_from: solved_from[j].unwrap_or(usize::MAX),
                     replacement,
@@ -592,6 +742,9 @@ impl AnalogSystem {
             design_signals: design.signals.len(),
             linear,
             implicit_flows,
+            index_reduced: reduction,
+            options: options.clone(),
+            wanted: None,
         };
         Ok(system)
     }
@@ -600,6 +753,7 @@ impl AnalogSystem {
     /// default): eliminated quantities cost an evaluation at every accepted step, so a run
     /// asks only for those it records or its processes read.
     pub fn select_quantities(&mut self, wanted: &[bool]) {
+        self.wanted = Some(wanted.to_vec());
         let mut ob = TapeBuilder::default();
         let mut output = vec![None; self.quantity_slot.len()];
         for e in &self.eliminated {
@@ -632,6 +786,34 @@ impl AnalogSystem {
                 .collect(),
         );
         self.outputs_tape = ob.finish();
+    }
+
+    /// Index reduction's choice of states made again at the initial break values `point`
+    /// (by `QuantityId`; other quantities at their initial guesses): a pendulum's states
+    /// are the coordinates its constraint does not pin down there. Rebuilds the system when
+    /// the choice changes; a model of index 0 or 1 is left as it is.
+    pub fn choose_states(&mut self, design: &Design, point: &[(QuantityId, f64)]) {
+        if self.index_reduced.is_none() {
+            return;
+        }
+        let options = AnalogOptions {
+            state_point: point.to_vec(),
+            ..self.options.clone()
+        };
+        // Built once already from the same design: only the states can differ, and a failure
+        // leaves the first choice in place.
+        let Ok(mut rebuilt) = AnalogSystem::with_options(design, &options) else {
+            return;
+        };
+        if let Some(wanted) = &self.wanted {
+            rebuilt.select_quantities(wanted);
+        }
+        *self = rebuilt;
+    }
+
+    /// What index reduction did, `None` for a model of index 0 or 1.
+    pub fn index_reduced(&self) -> Option<&IndexReduced> {
+        self.index_reduced.as_ref()
     }
 
     /// What the system accepted with a warning: each lone across quantity given an implicit
@@ -677,8 +859,16 @@ impl AnalogSystem {
         design: &Design,
         row: usize,
     ) -> Option<(String, crate::source::Span)> {
-        let origin = *self.origins.get(*self.row_source.get(row)?)?;
-        Some((origin.describe(design), origin.span(design)))
+        let k = *self.row_source.get(row)?;
+        self.origins.get(k)?;
+        let names = self
+            .index_reduced
+            .as_ref()
+            .map_or(&[][..], |r| &r.names[..]);
+        Some((
+            Origin::describe_among(&self.origins, names, k, design),
+            Origin::span_among(&self.origins, k, design),
+        ))
     }
 
     /// Name and declaration span of unknown `col` (a [`SolveError`]'s column index).
@@ -807,7 +997,11 @@ impl AnalogSystem {
         abstol: &[f64],
         options: &OpOptions,
     ) -> Result<(Vec<f64>, Vec<f64>), SolveError> {
-        quiescent::solve(self, t, guess, fixed, reltol, abstol, options)
+        let time = delay::time_slot(self.design_signals);
+        self.signals[time] = 0.0;
+        let point = quiescent::solve(self, t, guess, fixed, reltol, abstol, options);
+        self.signals[time] = 1.0;
+        point
     }
 
     /// The equation system as text for `vams dae`: unknowns, then each equation with its

@@ -309,6 +309,7 @@ fn analog_system(design: &Design, options: &SimOptions) -> Result<Option<AnalogS
     }
     let analog = AnalogOptions {
         eliminate: !options.keep_unknowns,
+        ..AnalogOptions::default()
     };
     AnalogSystem::with_options(design, &analog)
         .map(Some)

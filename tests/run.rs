@@ -349,6 +349,21 @@ fn op_prints_the_quiescent_point_and_dae_the_equations() {
         .stdout(contains("rc.vhd:"));
 }
 
+/// `vams dae` on a model of index 3 shows the equations index reduction added (the
+/// constraint's first and second derivatives, those of the velocities' definitions), the
+/// derivatives made algebraic unknowns and the states, for teaching.
+#[test]
+fn dae_shows_what_index_reduction_differentiated() {
+    let out = vams()
+        .args(["dae", "tests/analog/pendulum.vhd"])
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    insta::assert_snapshot!(String::from_utf8_lossy(&out));
+}
+
 /// Every unit of every file given is analysed before the top is elaborated, as a VHDL tool
 /// analyses each file first: an error in a package the top never uses fails the run, with
 /// its location, and nothing is simulated.

@@ -28,6 +28,13 @@ pub enum Unknown {
     /// a voltage source): the branch's flow from `plus` to `minus`, an unknown of the
     /// conservation laws at both ends, as if the declaration had named a through quantity.
     Flow(QuantityId),
+    /// The `order`-th time derivative of assembled unknown `of`, an unknown of its own after
+    /// index reduction (`analog::index`): a dummy derivative, or a state between a second
+    /// derivative and its unknown.
+    Derivative {
+        of: u32,
+        order: u8,
+    },
 }
 
 /// Where an equation comes from.
@@ -42,6 +49,10 @@ pub enum Origin {
     /// Index into [`Design::delays`]: `output - input(t - delay) = 0` (`output - input` at the
     /// quiescent point).
     Delayed(usize),
+    /// The `order`-th time derivative of assembled equation `of` (index reduction).
+    Differentiated { of: u32, order: u8 },
+    /// `x'dot - x1 = 0`: an intermediate derivative of assembled unknown `of` kept as a state.
+    StateChain { of: u32 },
 }
 
 /// Unknowns and residuals, not yet compiled. Names are made on demand ([`Unknown::name`]):
@@ -62,6 +73,36 @@ impl Origin {
             Origin::Across(q) => design.quantities[q.index()].span,
             Origin::Conservation(t) => design.terminals[t.index()].span,
             Origin::Delayed(k) => design.delays[k].span,
+            Origin::Differentiated { .. } | Origin::StateChain { .. } => Span::default(),
+        }
+    }
+
+    /// [`Origin::span`] of equation `k` among `origins`, a derivative's that of its equation.
+    pub fn span_among(origins: &[Origin], k: usize, design: &Design) -> Span {
+        match origins[k] {
+            Origin::Differentiated { of, .. } => origins[of as usize].span(design),
+            other => other.span(design),
+        }
+    }
+
+    /// [`Origin::describe`] of equation `k` among `origins`.
+    pub fn describe_among(
+        origins: &[Origin],
+        unknowns: &[String],
+        k: usize,
+        design: &Design,
+    ) -> String {
+        match origins[k] {
+            Origin::Differentiated { of, order } => format!(
+                "{} of {}",
+                derivative_words(order),
+                origins[of as usize].describe(design)
+            ),
+            Origin::StateChain { of } => format!(
+                "state {}'dot",
+                unknowns.get(of as usize).map_or("?", String::as_str)
+            ),
+            other => other.describe(design),
         }
     }
 
@@ -84,7 +125,21 @@ impl Origin {
                 let d = &design.delays[k];
                 format!("history of {}", design.quantities[d.output.index()].name)
             }
+            Origin::Differentiated { of, order } => {
+                format!("{} of equation {of}", derivative_words(order))
+            }
+            Origin::StateChain { of } => format!("state chain of unknown {of}"),
         }
+    }
+}
+
+/// "the derivative", "the 2nd derivative", ...
+fn derivative_words(order: u8) -> String {
+    match order {
+        1 => "the derivative".to_string(),
+        2 => "the 2nd derivative".to_string(),
+        3 => "the 3rd derivative".to_string(),
+        k => format!("the {k}th derivative"),
     }
 }
 
@@ -95,13 +150,29 @@ impl Unknown {
             Unknown::Potential(t) => format!("v({})", design.terminals[t.index()].name),
             Unknown::Quantity(q) => design.quantities[q.index()].name.clone(),
             Unknown::Flow(q) => format!("through({})", design.quantities[q.index()].name),
+            Unknown::Derivative { of, order } => format!("#{of}{}", "'dot".repeat(order.into())),
         }
     }
 
+    /// The names of `unknowns`, a derivative's from its unknown's: `x'dot'dot`.
+    pub fn names(unknowns: &[Unknown], design: &Design) -> Vec<String> {
+        let mut names: Vec<String> = unknowns.iter().map(|u| u.name(design)).collect();
+        for (j, u) in unknowns.iter().enumerate() {
+            if let Unknown::Derivative { of, order } = *u
+                && let Some(base) = unknowns.get(of as usize).map(|b| b.name(design))
+            {
+                names[j] = format!("{base}{}", "'dot".repeat(order.into()));
+            }
+        }
+        names
+    }
+
+    /// The span of the declaration; a derivative has none of its own.
     pub fn span(self, design: &Design) -> Span {
         match self {
             Unknown::Potential(t) => design.terminals[t.index()].span,
             Unknown::Quantity(q) | Unknown::Flow(q) => design.quantities[q.index()].span,
+            Unknown::Derivative { .. } => Span::default(),
         }
     }
 }

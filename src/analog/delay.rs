@@ -80,14 +80,20 @@ fn hermite(ta: f64, xa: f64, da: f64, tb: f64, xb: f64, db: f64, tau: f64) -> f6
 }
 
 /// Signal-slot layout after the design's signals: the source scale, then the "history
-/// ready" flag (0 at the quiescent point, where `Q'delayed(T) = Q`), then one slot per line
-/// holding its delayed value at the time being evaluated.
+/// ready" flag (0 at the quiescent point, where `Q'delayed(T) = Q`), then the "time runs"
+/// flag (0 while the quiescent point is solved, where time stands still: the explicit time
+/// derivative of a differentiated equation vanishes there), then one slot per line holding
+/// its delayed value at the time being evaluated.
 pub fn ready_slot(design_signals: usize) -> usize {
     design_signals + 1
 }
 
+pub fn time_slot(design_signals: usize) -> usize {
+    design_signals + 2
+}
+
 pub fn history_slot(design_signals: usize, line: usize) -> usize {
-    design_signals + 2 + line
+    design_signals + 3 + line
 }
 
 #[cfg(test)]

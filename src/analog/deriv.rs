@@ -12,6 +12,8 @@ use super::sym::{Bin, Sym, Un};
 pub enum Var {
     X(usize),
     Dot(usize),
+    /// The time `now` (for a derivative in time of an equation with sources).
+    Now,
 }
 
 fn c(v: f64) -> Sym {
@@ -21,7 +23,8 @@ fn c(v: f64) -> Sym {
 /// `d e / d var`.
 pub fn derivative(e: &Sym, var: Var) -> Sym {
     match e {
-        Sym::Const(_) | Sym::Signal(_) | Sym::Now => c(0.0),
+        Sym::Const(_) | Sym::Signal(_) => c(0.0),
+        Sym::Now => c(if var == Var::Now { 1.0 } else { 0.0 }),
         Sym::X(j) => c(if var == Var::X(*j) { 1.0 } else { 0.0 }),
         Sym::Dot(j) => c(if var == Var::Dot(*j) { 1.0 } else { 0.0 }),
         Sym::Un(op, a) => {

@@ -64,6 +64,17 @@ pub enum AnalogError {
         equations: String,
     },
 
+    /// Index reduction found no unknown for an equation however often it is differentiated,
+    /// or would differentiate a `'delayed` value.
+    #[error("cannot reduce the index: {reason}")]
+    #[diagnostic(code(vams::analog::index), help("{help}"))]
+    Index {
+        #[label("this equation")]
+        span: Span,
+        reason: String,
+        help: &'static str,
+    },
+
     /// Terminals with no branch path to their nature's reference: their potentials float.
     ///
     /// Example: a capacitor between `a` and `b`, neither connected to anything else.
@@ -116,6 +127,7 @@ impl Located for AnalogError {
             | AnalogError::Overdetermined { span, .. }
             | AnalogError::Underdetermined { span, .. }
             | AnalogError::Floating { span, .. }
+            | AnalogError::Index { span, .. }
             | AnalogError::NotAnalog { span, .. }
             | AnalogError::Malformed { span, .. } => *span,
         }

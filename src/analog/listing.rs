@@ -69,6 +69,46 @@ pub fn listing(sys: &AnalogSystem, design: &Design, sources: &SourceMap) -> Stri
         printer.print(r, 0, &mut formula);
         let _ = writeln!(out, "  {i:>3}  {from:<width$}  {formula} = 0");
     }
+    let names = match &sys.index_reduced {
+        Some(reduced) => {
+            let _ = writeln!(
+                out,
+                "index reduction (the model has index {}): {} equation(s) added",
+                reduced.index,
+                reduced.equations.len()
+            );
+            let printer = Printer {
+                names: &reduced.names,
+                design,
+            };
+            let width = reduced
+                .equations
+                .iter()
+                .map(|(f, _)| f.len())
+                .max()
+                .unwrap_or(0);
+            for (i, (from, r)) in reduced.equations.iter().enumerate() {
+                let mut formula = String::new();
+                printer.print(r, 0, &mut formula);
+                let i = i + asm.residuals.len();
+                let _ = writeln!(out, "  {i:>3}  {from:<width$}  {formula} = 0");
+            }
+            let _ = writeln!(
+                out,
+                "  dummy derivatives (algebraic unknowns): {}",
+                reduced.dummies.join(", ")
+            );
+            let _ = writeln!(
+                out,
+                "  states: {} (chosen at the initial guesses; a run chooses again at its \
+                 initial break values)",
+                reduced.states.join(", ")
+            );
+            reduced.names.clone()
+        }
+        None => names,
+    };
+    let n = names.len();
     if sys.eliminated.is_empty() {
         return out;
     }
@@ -214,7 +254,8 @@ impl Printer<'_> {
                 None => match *s - self.design.signals.len() {
                     0 => out.push_str("<source scale>"),
                     1 => out.push_str("<history ready>"),
-                    k => out.push_str(&format!("<history {}>", k - 2)),
+                    2 => out.push_str("<time runs>"),
+                    k => out.push_str(&format!("<history {}>", k - 3)),
                 },
             },
             Sym::Now => out.push_str("now"),

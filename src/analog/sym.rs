@@ -349,8 +349,8 @@ impl Sym {
         }
     }
 
-    /// Evaluates the tree directly (tests and reference values; the simulator uses the tape).
-    #[cfg(test)]
+    /// Evaluates the tree directly (tests, reference values and index reduction's choice of
+    /// states; the simulator uses the tape).
     pub fn eval(&self, t: f64, x: &[f64], xdot: &[f64], signals: &[f64]) -> f64 {
         match self {
             Sym::Const(v) => *v,

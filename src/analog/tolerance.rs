@@ -81,6 +81,8 @@ pub fn per_unknown(design: &Design, unknowns: &[Unknown]) -> Vec<Option<f64>> {
                         QuantityKind::Free => None,
                     })
                 }
+                // A derivative's scale is not its unknown's: judged on the default.
+                Unknown::Derivative { .. } => None,
             };
             let group = group?;
             match last {

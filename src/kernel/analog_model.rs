@@ -41,6 +41,9 @@ pub(crate) trait AnalogModel: DaeSystem {
     fn shortest_delay(&self) -> Option<f64> {
         None
     }
+    /// Index reduction's states chosen again at the initial break values (by `QuantityId`);
+    /// may renumber the unknowns, so slots are looked up after it.
+    fn choose_states(&mut self, _design: &Design, _point: &[(QuantityId, f64)]) {}
     #[allow(clippy::too_many_arguments)]
     fn quiescent_point(
         &mut self,
@@ -84,6 +87,9 @@ impl AnalogModel for AnalogSystem {
     }
     fn equation_site(&self, design: &Design, row: usize) -> Option<(String, Span)> {
         AnalogSystem::equation_site(self, design, row)
+    }
+    fn choose_states(&mut self, design: &Design, point: &[(QuantityId, f64)]) {
+        AnalogSystem::choose_states(self, design, point)
     }
     fn record_history(&mut self, t: f64, x: &[f64], xdot: &[f64]) {
         AnalogSystem::record_history(self, t, x, xdot)

@@ -132,6 +132,9 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
 
     fn quiescent(&mut self, mut sys: A, options: &SimOptions) -> Result<Analog<A>, SimError> {
         let design = self.design;
+        self.kernel.take_breaks(&mut self.breaks);
+        // Where index reduction chooses its states: the initial break values.
+        sys.choose_states(design, &self.breaks);
         for s in 0..design.signals.len() {
             let s = SignalId(s as u32);
             if sys.reads_signal(s) {
@@ -148,7 +151,6 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                 guess[slot] = q.initial_guess.unwrap_or(0.0);
             }
         }
-        self.kernel.take_breaks(&mut self.breaks);
         // A later break value for the same quantity replaces an earlier one.
         // (A position per slot keeps this linear: a ladder has one break per capacitor.)
         let mut fixed: Vec<(usize, f64)> = Vec::new();

@@ -208,7 +208,13 @@ pub fn call(f: Builtin, a: Expr) -> Expr {
 
 /// Builds the system or fails the test with the diagnostics.
 pub fn system(design: &Design) -> AnalogSystem {
-    match AnalogSystem::with_options(design, &AnalogOptions { eliminate: false }) {
+    match AnalogSystem::with_options(
+        design,
+        &AnalogOptions {
+            eliminate: false,
+            ..AnalogOptions::default()
+        },
+    ) {
         Ok(s) => s,
         Err(e) => panic!("analog system rejected: {e:?}"),
     }

@@ -56,12 +56,13 @@ fn expr() -> impl Strategy<Value = Expr> {
 /// Central difference of `e` in `var` at `(x, xdot)` with step `h`.
 fn central(e: &Sym, var: Var, x: [f64; 2], xdot: [f64; 2], h: f64) -> f64 {
     let at = |d: f64| {
-        let (mut x, mut xdot) = (x, xdot);
+        let (mut x, mut xdot, mut t) = (x, xdot, 0.0);
         match var {
             Var::X(i) => x[i] += d,
             Var::Dot(i) => xdot[i] += d,
+            Var::Now => t += d,
         }
-        e.eval(0.0, &x, &xdot, &[])
+        e.eval(t, &x, &xdot, &[])
     };
     (at(h) - at(-h)) / (2.0 * h)
 }
@@ -79,7 +80,7 @@ proptest! {
         if !value.is_finite() || value.abs() > 1e6 {
             return Ok(());
         }
-        for var in [Var::X(0), Var::X(1), Var::Dot(0)] {
+        for var in [Var::X(0), Var::X(1), Var::Dot(0), Var::Now] {
             let d = derivative(&sym, var);
             // The residual as a section of its own, evaluated first (after a full evaluation
             // elsewhere), then the rest at the same point, as Newton does.
@@ -95,7 +96,7 @@ proptest! {
             let exact = d.eval(0.0, &x, &xdot, &[]);
             prop_assert!(tape.output(0) == value || (tape.output(0).is_nan() && value.is_nan()));
             prop_assert!(tape.output(1).to_bits() == exact.to_bits());
-            let coord = match var { Var::X(i) => x[i], Var::Dot(i) => xdot[i] };
+            let coord = match var { Var::X(i) => x[i], Var::Dot(i) => xdot[i], Var::Now => 0.0 };
             let h = 1e-5 * (1.0 + coord.abs());
             let fd = central(&sym, var, x, xdot, h);
             let fd_half = central(&sym, var, x, xdot, h / 2.0);
