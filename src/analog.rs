@@ -175,6 +175,9 @@ pub struct AnalogOptions {
     /// a quantity not given counts at its initial guess, and one given stays a state where
     /// the point allows ([`AnalogSystem::choose_states`]).
     pub state_point: Vec<(QuantityId, f64)>,
+    /// The values of the model's own unknowns (assembled order) where index reduction
+    /// chooses its states during a run ([`AnalogSystem::choose_states_again`]).
+    pub state_values: Vec<f64>,
 }
 
 impl Default for AnalogOptions {
@@ -182,6 +185,7 @@ impl Default for AnalogOptions {
         AnalogOptions {
             eliminate: true,
             state_point: Vec::new(),
+            state_values: Vec::new(),
         }
     }
 }
@@ -251,7 +255,17 @@ pub struct IndexReduced {
     pub dummies: Vec<String>,
     /// The unknowns whose derivatives remain: the states.
     pub states: Vec<String>,
+    reduction: index::Reduction,
+    selection: index::Selection,
+    /// Assembled unknowns before reduction (the model's own).
+    base_unknowns: usize,
+    /// The solver slot of each of them, `None` where eliminated (set once eliminated).
+    base_slot: Vec<Option<usize>>,
 }
+
+/// A choice of states is kept while its blocks' Hadamard ratio ([`index::Reduction::grip`])
+/// stays above this; below, another choice is taken if it grips at least twice as firmly.
+const FIRM_GRIP: f64 = 0.5;
 
 /// Pantelides and dummy derivatives on the assembled system (`index`): the system unchanged
 /// when its index is 0 or 1, else with the hidden constraints differentiated and a state
@@ -317,6 +331,9 @@ fn reduce_index(
             held[slot] = true;
         }
     }
+    for (p, &v) in point.iter_mut().zip(&options.state_values) {
+        *p = v;
+    }
     let mut signals: Vec<f64> = design
         .signals
         .iter()
@@ -360,6 +377,10 @@ fn reduce_index(
         equations,
         dummies,
         states,
+        base_unknowns: asm.unknowns.len(),
+        base_slot: Vec::new(),
+        reduction,
+        selection,
     };
     Ok((reduced, Some(info)))
 }
@@ -522,6 +543,12 @@ impl AnalogSystem {
             }
         }
         let n = unknowns.len();
+        let mut reduction = reduction;
+        if let Some(r) = &mut reduction {
+            r.base_slot = (live[..r.base_unknowns].iter())
+                .map(|&k| (k != usize::MAX).then_some(k))
+                .collect();
+        }
         let kept_rows: Vec<usize> = elim.kept.iter().map(|(row, _)| *row).collect();
         let residuals: Vec<Sym> = std::mem::take(&mut elim.kept)
             .into_iter()
@@ -809,6 +836,68 @@ impl AnalogSystem {
             rebuilt.select_quantities(wanted);
         }
         *self = rebuilt;
+    }
+
+    /// Index reduction's states chosen again at the state `(t, x, x')` of a run, where the
+    /// current choice loses its grip (a pendulum's rod nearing the horizontal while `y` is
+    /// the dummy) and another holds at least twice as firmly: the system is rebuilt around
+    /// the new choice and the new state vector returned, for the integrator to restart from
+    /// (its differential unknowns are the model's own, at their values now). `None`: keep
+    /// going as is (always, for a model of index 0 to 2).
+    pub fn choose_states_again(
+        &mut self,
+        design: &Design,
+        t: f64,
+        x: &[f64],
+        xdot: &[f64],
+    ) -> Option<Vec<f64>> {
+        let r = self.index_reduced.as_ref()?;
+        let mut values = vec![0.0; r.base_unknowns];
+        let mut derivatives = vec![0.0; r.base_unknowns];
+        for (j, slot) in r.base_slot.iter().enumerate() {
+            if let Some(k) = *slot {
+                values[j] = x[k];
+                derivatives[j] = xdot[k];
+            }
+        }
+        for e in &self.eliminated {
+            if e.unknown < r.base_unknowns {
+                values[e.unknown] = e.replacement.eval(t, x, xdot, &self.signals);
+            }
+        }
+        let grip = r
+            .reduction
+            .grip(&r.selection, &values, &derivatives, &self.signals);
+        if grip >= FIRM_GRIP {
+            return None;
+        }
+        let other = r.reduction.select(&values, &[], &self.signals);
+        if other == r.selection
+            || r.reduction
+                .grip(&other, &values, &derivatives, &self.signals)
+                < 2.0 * grip
+        {
+            return None;
+        }
+        let options = AnalogOptions {
+            state_point: Vec::new(),
+            state_values: values.clone(),
+            ..self.options.clone()
+        };
+        let mut rebuilt = AnalogSystem::with_options(design, &options).ok()?;
+        if let Some(wanted) = &self.wanted {
+            rebuilt.select_quantities(wanted);
+        }
+        rebuilt.signals.clone_from(&self.signals);
+        let base_slot = rebuilt.index_reduced.as_ref()?.base_slot.clone();
+        let mut state = vec![0.0; rebuilt.len()];
+        for (j, slot) in base_slot.iter().enumerate() {
+            if let Some(k) = *slot {
+                state[k] = values[j];
+            }
+        }
+        *self = rebuilt;
+        Some(state)
     }
 
     /// What index reduction did, `None` for a model of index 0 or 1.

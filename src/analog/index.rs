@@ -368,13 +368,56 @@ impl Reduction {
     /// `held`: per assembled unknown, whether a break sets it at the start; such unknowns
     /// stay states where the point allows (the break says where the model starts).
     pub fn select(&self, unknown_values: &[f64], held: &[bool], signals: &[f64]) -> Selection {
-        let mut values = vec![0.0; self.variables.len()];
-        for (v, var) in self.variables.iter().enumerate() {
-            if var.order == 0 {
-                values[v] = unknown_values.get(var.unknown).copied().unwrap_or(0.0);
-            }
-        }
+        let values = self.variable_values(unknown_values, &[]);
         let mut dummy = vec![false; self.variables.len()];
+        self.levels(|rows, cols| {
+            let chosen = self.regular_columns(rows, cols, &values, held, signals);
+            for &c in &chosen {
+                dummy[c] = true;
+            }
+            chosen
+        });
+        Selection(dummy)
+    }
+
+    /// How firmly `selection` determines its dummies at the point: the smallest over the
+    /// levels of `|det M| / prod(row norms of M)` for the chosen block `M` (1 for orthogonal
+    /// rows, 0 when singular). A pendulum's choice of `y` as the dummy loses its grip as the
+    /// rod nears the horizontal.
+    pub fn grip(
+        &self,
+        selection: &Selection,
+        unknown_values: &[f64],
+        unknown_derivatives: &[f64],
+        signals: &[f64],
+    ) -> f64 {
+        let values = self.variable_values(unknown_values, unknown_derivatives);
+        let mut grip = 1.0_f64;
+        self.levels(|rows, cols| {
+            let chosen: Vec<usize> = cols.iter().copied().filter(|&c| selection.0[c]).collect();
+            grip = grip.min(det_ratio(self.jacobian(rows, &chosen, &values, signals)));
+            chosen
+        });
+        grip
+    }
+
+    /// The value of every variable: the unknowns' and their first derivatives' where given,
+    /// higher derivatives zero.
+    fn variable_values(&self, unknowns: &[f64], derivatives: &[f64]) -> Vec<f64> {
+        (self.variables.iter())
+            .map(|var| match var.order {
+                0 => unknowns.get(var.unknown).copied().unwrap_or(0.0),
+                1 => derivatives.get(var.unknown).copied().unwrap_or(0.0),
+                _ => 0.0,
+            })
+            .collect()
+    }
+
+    /// Mattsson and Söderlind's levels: `choose(rows, cols)` picks the dummies among `cols`
+    /// for the differentiated equations `rows`, from the most differentiated down; the next
+    /// level has the equations these are derivatives of and the variables the chosen ones
+    /// are derivatives of, both while still differentiated.
+    fn levels(&self, mut choose: impl FnMut(&[usize], &[usize]) -> Vec<usize>) {
         let mut rows: Vec<usize> = (0..self.equations.len())
             .filter(|&e| self.equations[e].order > 0 && self.differentiated[e].is_none())
             .collect();
@@ -382,12 +425,7 @@ impl Reduction {
             .filter(|&v| self.variables[v].order > 0 && self.is_highest(v))
             .collect();
         while !rows.is_empty() {
-            let chosen = self.regular_columns(&rows, &cols, &values, held, signals);
-            for &c in &chosen {
-                dummy[c] = true;
-            }
-            // One order down: the equations these are derivatives of, and the variables the
-            // chosen ones are derivatives of, both while still differentiated.
+            let chosen = choose(&rows, &cols);
             rows = rows
                 .iter()
                 .filter_map(|&e| self.integrated[e])
@@ -399,7 +437,27 @@ impl Reduction {
                 .filter(|&p| self.variables[p].order > 0)
                 .collect();
         }
-        Selection(dummy)
+    }
+
+    /// The Jacobian of equations `rows` by variables `cols` at `values`.
+    fn jacobian(
+        &self,
+        rows: &[usize],
+        cols: &[usize],
+        values: &[f64],
+        signals: &[f64],
+    ) -> Vec<Vec<f64>> {
+        rows.iter()
+            .map(|&e| {
+                cols.iter()
+                    .map(|&v| {
+                        let d = derivative(&self.equations[e].residual, Var::X(v));
+                        let value = d.eval(0.0, values, &[], signals);
+                        if value.is_finite() { value } else { 0.0 }
+                    })
+                    .collect()
+            })
+            .collect()
     }
 
     /// `rows.len()` columns of `cols` whose block of the Jacobian is regular at `values`.
@@ -413,18 +471,7 @@ impl Reduction {
         held: &[bool],
         signals: &[f64],
     ) -> Vec<usize> {
-        let numeric: Vec<Vec<f64>> = rows
-            .iter()
-            .map(|&e| {
-                cols.iter()
-                    .map(|&v| {
-                        let d = derivative(&self.equations[e].residual, Var::X(v));
-                        let value = d.eval(0.0, values, &[], signals);
-                        if value.is_finite() { value } else { 0.0 }
-                    })
-                    .collect()
-            })
-            .collect();
+        let numeric = self.jacobian(rows, cols, values, signals);
         // Dummies are taken first from derivatives of unknowns no break sets, and among those
         // from the derivatives differentiation created before those the model wrote: the
         // model's own states stay states where the point allows it (the pendulum keeps x, u
@@ -563,6 +610,38 @@ impl Touched {
             colored_var[v] = false;
         }
     }
+}
+
+/// `|det a| / prod(row norms)` of a square matrix (Hadamard's ratio: 1 for orthogonal rows,
+/// 0 for singular ones), by elimination with partial pivoting.
+fn det_ratio(mut a: Vec<Vec<f64>>) -> f64 {
+    let norms: f64 = a
+        .iter()
+        .map(|row| row.iter().map(|v| v * v).sum::<f64>().sqrt())
+        .product();
+    if norms == 0.0 || !norms.is_finite() {
+        return 0.0;
+    }
+    let n = a.len();
+    let mut det = 1.0;
+    for k in 0..n {
+        let Some(p) = (k..n).max_by(|&i, &j| a[i][k].abs().total_cmp(&a[j][k].abs())) else {
+            return 0.0;
+        };
+        if a[p][k] == 0.0 {
+            return 0.0;
+        }
+        a.swap(k, p);
+        det *= a[k][k];
+        let pivot = a[k].clone();
+        for row in a.iter_mut().skip(k + 1) {
+            let f = row[k] / pivot[k];
+            for (x, p) in row.iter_mut().zip(&pivot).skip(k) {
+                *x -= f * p;
+            }
+        }
+    }
+    (det / norms).abs()
 }
 
 /// A pivot in a more preferred column is taken when it is at least this fraction of the best

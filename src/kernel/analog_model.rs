@@ -44,6 +44,17 @@ pub(crate) trait AnalogModel: DaeSystem {
     /// Index reduction's states chosen again at the initial break values (by `QuantityId`);
     /// may renumber the unknowns, so slots are looked up after it.
     fn choose_states(&mut self, _design: &Design, _point: &[(QuantityId, f64)]) {}
+    /// Index reduction's states chosen again at the run's state where the current ones lose
+    /// their grip: the rebuilt system's state vector to restart from, `None` to go on.
+    fn choose_states_again(
+        &mut self,
+        _design: &Design,
+        _t: f64,
+        _x: &[f64],
+        _xdot: &[f64],
+    ) -> Option<Vec<f64>> {
+        None
+    }
     #[allow(clippy::too_many_arguments)]
     fn quiescent_point(
         &mut self,
@@ -90,6 +101,15 @@ impl AnalogModel for AnalogSystem {
     }
     fn choose_states(&mut self, design: &Design, point: &[(QuantityId, f64)]) {
         AnalogSystem::choose_states(self, design, point)
+    }
+    fn choose_states_again(
+        &mut self,
+        design: &Design,
+        t: f64,
+        x: &[f64],
+        xdot: &[f64],
+    ) -> Option<Vec<f64>> {
+        AnalogSystem::choose_states_again(self, design, t, x, xdot)
     }
     fn record_history(&mut self, t: f64, x: &[f64], xdot: &[f64]) {
         AnalogSystem::record_history(self, t, x, xdot)

@@ -50,6 +50,12 @@ struct Analog<A> {
     /// Interpolation buffers for the points of digital-only activity.
     xi: Vec<f64>,
     xdi: Vec<f64>,
+    /// The integrator's options (a new choice of states starts a new integrator).
+    topts: TransientOptions,
+    /// `--abstol`, if given (else each unknown's tolerance group).
+    abstol: Option<f64>,
+    /// The counters of integrators replaced by a new choice of states.
+    earlier: crate::solver::Stats,
 }
 
 pub(crate) struct Simulation<'d, A> {
@@ -226,7 +232,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             norm: crate::solver::ErrorNorm::Bounded,
             ..TransientOptions::default()
         };
-        let integ = Transient::new(&mut sys, 0.0, &x, topts);
+        let integ = Transient::new(&mut sys, 0.0, &x, topts.clone());
         let mut integ = integ.map_err(|e| solve_error(e, 0.0, &sys, &slots, design))?;
         for (i, (&s, &band)) in above.iter().zip(&root_band).enumerate() {
             let now = matches!(self.kernel.value(s), Value::Boolean(true));
@@ -248,6 +254,9 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             x: vec![0.0; n],
             g,
             quiescent: x,
+            topts,
+            abstol: options.abstol,
+            earlier: crate::solver::Stats::default(),
         })
     }
 
@@ -468,7 +477,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
                     recorder.record(t1, &self.values, &self.kernel.signals.states)?;
                     self.progress.tick(t1);
                     self.check_cancelled(t1)?;
-                    if crossed {
+                    if crossed || self.choose_states_again(t1)? {
                         return Ok(t1);
                     }
                 }
@@ -650,11 +659,50 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         Ok(true)
     }
 
+    /// A model whose index was reduced may need other states as it moves (a pendulum's rod
+    /// passing the horizontal, see `AnalogSystem::choose_states_again`): the system is
+    /// rebuilt and a new integrator starts at `t` from the state reached, at order 1 as
+    /// after a break. True when it did.
+    fn choose_states_again(&mut self, t: f64) -> Result<bool, SimError> {
+        let design = self.design;
+        let Some(a) = self.analog.as_mut() else {
+            return Ok(false);
+        };
+        let Some(x) = a
+            .sys
+            .choose_states_again(design, t, a.integ.state(), a.integ.derivative())
+        else {
+            return Ok(false);
+        };
+        let n = x.len();
+        a.slots = (0..design.quantities.len())
+            .map(|q| a.sys.quantity_slot(QuantityId(q as u32)))
+            .collect();
+        let mut topts = a.topts.clone();
+        topts.abstol_per_unknown = match a.abstol {
+            Some(tol) => vec![tol; n],
+            None => a.sys.abstol(DEFAULT_ABSTOL),
+        };
+        topts.abstol = (topts.abstol_per_unknown.iter().copied()).fold(DEFAULT_ABSTOL, f64::min);
+        let mut integ = Transient::new(&mut a.sys, t, &x, topts)
+            .map_err(|e| solve_error(e, t, &a.sys, &a.slots, design))?;
+        for i in 0..a.above.len() {
+            integ.set_root_offset(i, a.integ.root_offset(i));
+        }
+        let old = std::mem::replace(&mut a.integ, integ);
+        a.earlier = add_stats(a.earlier, old.stats());
+        a.x = vec![0.0; n];
+        a.xi = vec![0.0; n];
+        a.xdi = vec![0.0; n];
+        self.refresh()?;
+        Ok(true)
+    }
+
     fn stats(&self) -> SimStats {
         let solver = self
             .analog
             .as_ref()
-            .map(|a| a.integ.stats())
+            .map(|a| add_stats(a.earlier, a.integ.stats()))
             .unwrap_or_default();
         SimStats {
             accepted_steps: solver.accepted_steps,
@@ -697,6 +745,20 @@ impl<A> Analog<A> {
 /// (a limiter in a feedback loop, a diode at its knee held by an inductor: each state's
 /// equations put it a hair on the other side) does not flip the signal at every step, and a
 /// crossing is located to within the quantity's own tolerance.
+/// The sum of two integrators' counters.
+fn add_stats(a: crate::solver::Stats, b: crate::solver::Stats) -> crate::solver::Stats {
+    crate::solver::Stats {
+        accepted_steps: a.accepted_steps + b.accepted_steps,
+        rejected_steps: a.rejected_steps + b.rejected_steps,
+        newton_failures: a.newton_failures + b.newton_failures,
+        newton_iterations: a.newton_iterations + b.newton_iterations,
+        factorizations: a.factorizations + b.factorizations,
+        pivot_searches: a.pivot_searches + b.pivot_searches,
+        residual_evals: a.residual_evals + b.residual_evals,
+        root_evals: a.root_evals + b.root_evals,
+    }
+}
+
 fn hysteresis(above: bool, band: f64) -> f64 {
     if above { band } else { -band }
 }
