@@ -280,6 +280,10 @@ fn wanted_quantities(design: &Design, recorder: &Recorder) -> Vec<bool> {
     for l in &design.limits {
         mark(&l.max_step);
     }
+    // Checked at every accepted point (`Simulation::check_branch_covers`).
+    for cover in &design.branch_covers {
+        mark(&cover.condition);
+    }
     wanted
 }
 

@@ -280,11 +280,22 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
 
     /// `e` (of signals, quantities and `now`, outside any process) at time `now`.
     fn eval_at(&self, e: &Expr, now: f64) -> Result<Value, super::eval::EvalError> {
+        self.eval_with(e, now, &self.values, &self.derivatives)
+    }
+
+    /// [`Simulation::eval_at`] with the quantities' `values` and `derivatives` given.
+    fn eval_with(
+        &self,
+        e: &Expr,
+        now: f64,
+        values: &[f64],
+        derivatives: &[f64],
+    ) -> Result<Value, super::eval::EvalError> {
         let env = Env {
             signals: &self.kernel.signals.states,
             vars: &[],
-            quantities: &self.values,
-            derivatives: &self.derivatives,
+            quantities: values,
+            derivatives,
             now,
             subprograms: &self.design.subprograms,
             depth: 0,
@@ -314,17 +325,51 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
     }
 
     /// A simultaneous if without `else` none of whose conditions holds at the accepted
-    /// point `t` gives no equations there: the run stops, naming it.
-    fn check_branch_covers(&self, t: f64) -> Result<(), SimError> {
-        for cover in &self.design.branch_covers {
+    /// point `t` gives no equations there: the run stops, naming it and the first time in
+    /// the step where it held no more.
+    fn check_branch_covers(&mut self, t: f64) -> Result<(), SimError> {
+        let design = self.design;
+        for cover in &design.branch_covers {
             if let Ok(Value::Boolean(false)) = self.eval_at(&cover.condition, t) {
                 return Err(SimError::NoBranch {
-                    time: t,
+                    time: self.first_uncovered(&cover.condition, t),
                     span: cover.span,
                 });
             }
         }
         Ok(())
+    }
+
+    /// Where in the step that ended at `t` the cover `condition` turned false, by bisection
+    /// on the integrator's dense output (to 1e-9 of the step, or rounding).
+    fn first_uncovered(&mut self, condition: &Expr, t: f64) -> f64 {
+        let (mut values, mut derivatives) = (self.values.clone(), self.derivatives.clone());
+        let Some(start) = self.analog.as_ref().and_then(|a| a.integ.last_step_start()) else {
+            return t;
+        };
+        let (mut covered, mut uncovered) = (start, t);
+        for _ in 0..32 {
+            let mid = 0.5 * (covered + uncovered);
+            if mid <= covered || mid >= uncovered {
+                break;
+            }
+            let Some(a) = self.analog.as_mut() else {
+                break;
+            };
+            if a.integ
+                .interpolate_with_derivative(mid, &mut a.xi, &mut a.xdi)
+                .is_err()
+            {
+                break;
+            }
+            a.sys
+                .quantity_values(mid, &a.xi, &a.xdi, &mut values, &mut derivatives);
+            match self.eval_with(condition, mid, &values, &derivatives) {
+                Ok(Value::Boolean(false)) => uncovered = mid,
+                _ => covered = mid,
+            }
+        }
+        uncovered
     }
 
     /// The quiescent point by name: every quantity, then every explicit signal.

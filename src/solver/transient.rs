@@ -317,6 +317,12 @@ impl Transient {
         &self.xdot
     }
 
+    /// Where the last accepted step began, while dense output covers it (`None` right after
+    /// a start or restart).
+    pub fn last_step_start(&self) -> Option<f64> {
+        self.int_valid.then_some(self.int_t0)
+    }
+
     /// The step the integrator will try next (0 before the first `advance`).
     pub fn step_size(&self) -> f64 {
         self.h
