@@ -331,6 +331,17 @@ fn a_pendulum_swinging_past_the_horizontal_changes_its_states() {
 }
 
 #[test]
+fn a_mass_on_a_prescribed_path_is_held_by_the_force_of_the_closed_form() {
+    let (m, g, a, w): (f64, f64, f64, f64) = (0.5, 9.81, 0.1, 6.0);
+    let result = run("pinned_mass", &[], 2.0);
+    check(&result, "x", 1e-9, |t| a * (w * t).sin());
+    check(&result, "v", 1e-6 * a * w, |t| a * w * (w * t).cos());
+    check(&result, "f", 1e-6 * m * a * w * w, |t| {
+        m * (g - a * w * w * (w * t).sin())
+    });
+}
+
+#[test]
 fn mass_spring_damper_with_integ_follows_the_closed_form() {
     let (m, c, k, f): (f64, f64, f64, f64) = (0.5, 0.8, 200.0, 2.0);
     let a = c / (2.0 * m);

@@ -331,6 +331,8 @@ impl Reduction {
         reads.dedup();
         let mut residual = match derivative(&eq.residual, Var::Now) {
             d if d.is_const(0.0) => d,
+            // Already under the flag (a second derivative): flag * flag is the flag.
+            d if d.any(|n| *n == Sym::Signal(time_slot)) => d,
             d => Sym::mul(Sym::Signal(time_slot), d),
         };
         for v in reads {

@@ -102,7 +102,10 @@ pub fn listing(sys: &AnalogSystem, design: &Design, sources: &SourceMap) -> Stri
                 out,
                 "  states: {} (chosen at the initial guesses; a run chooses again at its \
                  initial break values)",
-                reduced.states.join(", ")
+                match reduced.states.is_empty() {
+                    true => "none".to_string(),
+                    false => reduced.states.join(", "),
+                }
             );
             reduced.names.clone()
         }
