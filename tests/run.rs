@@ -349,6 +349,34 @@ fn op_prints_the_quiescent_point_and_dae_the_equations() {
         .stdout(contains("rc.vhd:"));
 }
 
+/// `--accuracy fine` is `--reltol 1e-6` by name (the same waveforms); with `--reltol` it is a
+/// usage error.
+#[test]
+fn accuracy_names_a_relative_tolerance() {
+    let dir = tempfile::tempdir().unwrap();
+    let (named, given) = (dir.path().join("named.csv"), dir.path().join("given.csv"));
+    for (args, out) in [
+        (["--accuracy", "fine"], &named),
+        (["--reltol", "1e-6"], &given),
+    ] {
+        vams()
+            .args(["run", "tests/analog/msd_integ.vhd", "--stop", "0.5 s"])
+            .args(args)
+            .arg("-o")
+            .arg(out)
+            .assert()
+            .success();
+    }
+    let text = |p: &std::path::Path| std::fs::read_to_string(p).unwrap();
+    assert_eq!(text(&named), text(&given));
+    vams()
+        .args(["run", "tests/analog/msd_integ.vhd", "--stop", "0.5 s"])
+        .args(["--accuracy", "draft", "--reltol", "1e-3"])
+        .assert()
+        .code(2)
+        .stderr(contains("cannot be used with"));
+}
+
 /// `vams dae` on a model of index 3 shows the equations index reduction added (the
 /// constraint's first and second derivatives, those of the velocities' definitions), the
 /// derivatives made algebraic unknowns and the states, for teaching.
