@@ -6,6 +6,7 @@ use crate::design::{Design, QuantityId, SignalId, Value};
 use super::error::SimError;
 use super::eval::Env;
 use super::io::{Files, Heap, Io};
+use super::lower::{self, Op, Ran, lower};
 use super::process::{self, Context, ProcState, Suspend};
 use super::signals::Signals;
 use super::{Outcome, Report};
@@ -24,6 +25,8 @@ pub(crate) struct EventKernel<'d> {
     design: &'d Design,
     pub signals: Signals,
     procs: Vec<ProcState>,
+    /// Each process's code lowered ([`super::lower`]).
+    lowered: Vec<Vec<Op<'d>>>,
     /// Break values executed since the last [`EventKernel::take_breaks`].
     breaks: Vec<(QuantityId, f64)>,
     break_count: usize,
@@ -55,10 +58,15 @@ impl<'d> EventKernel<'d> {
                 .alloc(object.clone())
                 .map_err(|e| SimError::BadOption { message: e.message })?;
         }
+        let signals = Signals::new(design)?;
+        let lowered = (design.processes.iter().enumerate())
+            .map(|(i, p)| lower(design, &signals, i, p))
+            .collect();
         Ok(EventKernel {
             design,
-            signals: Signals::new(design)?,
+            signals,
             procs: design.processes.iter().map(ProcState::new).collect(),
+            lowered,
             breaks: Vec::new(),
             break_count: 0,
             reports: Vec::new(),
@@ -230,26 +238,42 @@ impl<'d> EventKernel<'d> {
     ) -> Result<Option<Outcome>, SimError> {
         let before = self.break_count;
         let mut outcome = None;
-        for k in 0..self.resume.len() {
-            let i = self.resume[k];
+        for &i in &self.resume {
             self.last_process = i;
-            let mut cx = Context {
-                signals: &mut self.signals,
-                quantities: analog.values,
-                derivatives: analog.derivatives,
-                now,
-                breaks: &mut self.breaks,
-                break_count: &mut self.break_count,
-                reports: &mut self.reports,
-                on_report,
-                waveform: &mut self.waveform,
-                subprograms: &self.design.subprograms,
-                design_signals: &self.design.signals,
-                io: &self.io,
+            let process = &self.design.processes[i];
+            let lowered = &self.lowered[i];
+            // The lowered instructions first, without the interpreter's context.
+            let ran = lower::run(lowered, &mut self.procs[i], &mut self.signals, now);
+            let suspend = match ran {
+                Ran::Suspended(s) if self.io.function_reports.borrow().is_empty() => Ok(s),
+                ran => {
+                    let mut cx = Context {
+                        signals: &mut self.signals,
+                        quantities: analog.values,
+                        derivatives: analog.derivatives,
+                        now,
+                        breaks: &mut self.breaks,
+                        break_count: &mut self.break_count,
+                        reports: &mut self.reports,
+                        on_report: &mut *on_report,
+                        waveform: &mut self.waveform,
+                        subprograms: &self.design.subprograms,
+                        design_signals: &self.design.signals,
+                        io: &self.io,
+                    };
+                    let suspend = match ran {
+                        Ran::Suspended(s) => Ok(s),
+                        Ran::Declined { steps } => {
+                            let state = &mut self.procs[i];
+                            process::run(i, process, lowered, state, &mut cx, steps)
+                        }
+                    };
+                    // What the instruction the process suspended at (`wait until f(x)`)
+                    // reported, and what the conditions of the waits reported.
+                    process::emit_function_reports(&mut cx, &process.name);
+                    suspend
+                }
             };
-            let suspend = process::run(i, &self.design.processes[i], &mut self.procs[i], &mut cx);
-            // What the instruction the process suspended at (`wait until f(x)`) reported.
-            process::emit_function_reports(&mut cx, &self.design.processes[i].name);
             match suspend? {
                 Suspend::Wait | Suspend::Halt => {}
                 Suspend::Stop => {

@@ -9,6 +9,7 @@ use crate::source::Span;
 use super::call::{assertion_report, call_depth_limit, frame, too_deep};
 use super::error::SimError;
 use super::eval::{Env, EvalError, eval, integer, offset, set_element, truth};
+use super::lower::{Flow, Op};
 use super::signals::{Delay, Signals};
 use super::{Report, Severity};
 
@@ -221,12 +222,16 @@ macro_rules! process_env {
     };
 }
 
-/// Runs process `index` until it suspends.
+/// Runs process `index` until it suspends; `lowered` is its code lowered
+/// ([`super::lower`]), instruction by instruction, and `first_step` the number of
+/// instructions [`super::lower::run`] ran before it declined (0 without it).
 pub(crate) fn run(
     index: usize,
     process: &Process,
+    lowered: &[Op],
     state: &mut ProcState,
     cx: &mut Context,
+    first_step: usize,
 ) -> Result<Suspend, SimError> {
     let now = cx.now;
     let fail = |e: EvalError, span: Span| runtime_error(process, now, e, span);
@@ -235,6 +240,11 @@ pub(crate) fn run(
     let subs = cx.subprograms;
     // The running code changes only at `Call` and `Return`, which look it up again.
     let (mut code, mut decls, mut spans) = code_of(process, subs, state.running);
+    // The lowered instructions of the running code: none in a procedure.
+    let mut ops = match state.running {
+        None => lowered,
+        Some(_) => &[],
+    };
     // What an instruction's expressions read; built where used, since assignments change
     // the signals and variables it borrows.
     macro_rules! env {
@@ -242,12 +252,22 @@ pub(crate) fn run(
             process_env!(cx, state, subs, index)
         };
     }
-    for step in 0..INSTRUCTION_LIMIT {
+    for step in first_step..INSTRUCTION_LIMIT {
         cx.io
             .check_cancel(step)
             .map_err(|e| fail(e, process.span))?;
-        emit_function_reports(cx, &process.name);
         let pc = state.pc;
+        // A lowered instruction, unless it declines (then the interpreter runs it below).
+        if let Some(op) = ops.get(pc) {
+            match super::lower::step(op, state, cx.signals, now) {
+                Some(Flow::Next) => continue,
+                Some(Flow::Suspend(s)) => return Ok(s),
+                None => {}
+            }
+        }
+        // What functions reported during the previous instructions (lowered instructions
+        // call none).
+        emit_function_reports(cx, &process.name);
         let Some(instr) = code.get(pc) else {
             // Elaboration guarantees every path ends in a wait; stop here rather than panic.
             return Err(fail(
@@ -423,6 +443,10 @@ pub(crate) fn run(
                     return Ok(suspend);
                 }
                 (code, decls, spans) = code_of(process, subs, state.running);
+                ops = match state.running {
+                    None => lowered,
+                    Some(_) => &[],
+                };
             }
         }
     }

@@ -577,36 +577,8 @@ impl Signals {
             return;
         };
         let driver = &mut self.drivers[d];
+        edit(driver, first_value, first_time, delay);
         let w = &mut driver.waveform;
-        // Old transactions at or after the first new one are deleted (both mechanisms).
-        while w.back().is_some_and(|tr| tr.time >= first_time) {
-            w.pop_back();
-        }
-        // With no old transaction left there is nothing to reject (the usual case).
-        if let Delay::Inertial(start) = delay
-            && !w.is_empty()
-        {
-            let by_element = first_value
-                .as_ref()
-                .is_some_and(|new| reject_by_element(w, start, new, &driver.current));
-            if !by_element {
-                // Within the rejection interval, keep only the run of old transactions
-                // directly before the new one that already carries its value; delete the rest.
-                let mut kept = VecDeque::with_capacity(w.len());
-                let mut chain = true;
-                while let Some(tr) = w.pop_back() {
-                    if tr.time < start {
-                        w.push_back(tr);
-                        break;
-                    }
-                    chain = chain && tr.value == *first_value;
-                    if chain {
-                        kept.push_front(tr);
-                    }
-                }
-                w.extend(kept);
-            }
-        }
         if let [(value, time)] = elements.as_mut_slice() {
             // One element (the usual case): moved without a drain.
             let value = value.take();
@@ -617,6 +589,20 @@ impl Signals {
                 w.push_back(Transaction { time, value });
             }
         }
+        if !driver.pending {
+            driver.pending = true;
+            self.pending.push(d);
+        }
+    }
+
+    /// [`Signals::assign`] of a one-element waveform of a scalar value (a lowered
+    /// assignment's), without the waveform's vector.
+    #[inline]
+    pub fn assign_scalar(&mut self, d: usize, value: Value, time: f64, delay: Delay) {
+        let driver = &mut self.drivers[d];
+        let value = Some(value);
+        edit(driver, &value, time, delay);
+        driver.waveform.push_back(Transaction { time, value });
         if !driver.pending {
             driver.pending = true;
             self.pending.push(d);
@@ -946,6 +932,49 @@ impl Signals {
             self.changed[s.index()] = false;
             out.push(s);
         }
+    }
+}
+
+/// The projected waveform of `driver` edited for a new waveform whose first element is
+/// `first_value` at `first_time` (LRM 10.5.2.2), before its elements are appended.
+#[inline]
+fn edit(driver: &mut Driver, first_value: &Option<Value>, first_time: f64, delay: Delay) {
+    let w = &mut driver.waveform;
+    // Old transactions at or after the first new one are deleted (both mechanisms).
+    while w.back().is_some_and(|tr| tr.time >= first_time) {
+        w.pop_back();
+    }
+    // With no old transaction left there is nothing to reject (the usual case).
+    if let Delay::Inertial(start) = delay
+        && !w.is_empty()
+    {
+        reject(w, start, first_value, &driver.current);
+    }
+}
+
+/// Inertial rejection (LRM 10.5.2.2) in `w`, none of whose transactions is at or after the
+/// new waveform's first element `first_value`; `start` is the rejection interval's start.
+#[inline(never)]
+fn reject(w: &mut VecDeque<Transaction>, start: f64, first_value: &Option<Value>, current: &Value) {
+    let by_element = first_value
+        .as_ref()
+        .is_some_and(|new| reject_by_element(w, start, new, current));
+    if !by_element {
+        // Within the rejection interval, keep only the run of old transactions directly
+        // before the new one that already carries its value; delete the rest.
+        let mut kept = VecDeque::with_capacity(w.len());
+        let mut chain = true;
+        while let Some(tr) = w.pop_back() {
+            if tr.time < start {
+                w.push_back(tr);
+                break;
+            }
+            chain = chain && tr.value == *first_value;
+            if chain {
+                kept.push_front(tr);
+            }
+        }
+        w.extend(kept);
     }
 }
 
