@@ -1,7 +1,7 @@
 //! The event-driven half of the simulation cycle: signal update, process resumption and
 //! execution, delta cycles at one time point, and the next time anything digital is due.
 
-use crate::design::{Design, QuantityId, SignalId, Value};
+use crate::design::{Design, Instr, QuantityId, SignalId, Value};
 
 use super::error::SimError;
 use super::eval::Env;
@@ -11,6 +11,32 @@ use super::process::{self, Context, ProcState, Suspend};
 use super::signals::Signals;
 use super::{Outcome, Report};
 use std::cell::RefCell;
+use std::cmp::{Ordering, Reverse};
+use std::collections::BinaryHeap;
+
+/// A process's timeout: its time and the process, ordered by time then process.
+#[derive(Clone, Copy, Debug)]
+struct Due(f64, usize);
+
+impl PartialEq for Due {
+    fn eq(&self, other: &Due) -> bool {
+        self.cmp(other) == Ordering::Equal
+    }
+}
+
+impl Eq for Due {}
+
+impl PartialOrd for Due {
+    fn partial_cmp(&self, other: &Due) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Due {
+    fn cmp(&self, other: &Due) -> Ordering {
+        self.0.total_cmp(&other.0).then(self.1.cmp(&other.1))
+    }
+}
 
 /// Delta cycles allowed at one time point before the run counts as an endless zero-delay loop.
 pub(crate) const DELTA_LIMIT: usize = 10_000;
@@ -33,6 +59,15 @@ pub(crate) struct EventKernel<'d> {
     pub reports: Vec<Report>,
     waveform: Vec<(Option<Value>, f64)>,
     resume: Vec<usize>,
+    /// The timeouts of the waiting processes, earliest first; an entry whose process no
+    /// longer waits with that timeout (it resumed on an event) is stale, and dropped when it
+    /// comes to the top.
+    timeouts: BinaryHeap<Reverse<Due>>,
+    /// Per signal, the processes with a wait of their own code sensitive to it.
+    waiters: Vec<Vec<usize>>,
+    /// The processes that call procedures, whose waits (on their signal parameters) are known
+    /// only when they suspend: looked at in every cycle.
+    dynamic: Vec<usize>,
     /// The earliest time anything is due, as the last time point found it when it ended
     /// (`None`: not known). Only a time point's cycles change transactions and timeouts, so
     /// the loop's look at the next time between two time points need not scan again.
@@ -62,11 +97,28 @@ impl<'d> EventKernel<'d> {
         let lowered = (design.processes.iter().enumerate())
             .map(|(i, p)| lower(design, &signals, i, p))
             .collect();
+        let procs: Vec<ProcState> = design.processes.iter().map(ProcState::new).collect();
+        let mut waiters = vec![Vec::new(); design.signals.len()];
+        for (i, p) in procs.iter().enumerate() {
+            let mut on: Vec<SignalId> = p.own_sensitivity().collect();
+            on.sort_unstable();
+            on.dedup();
+            for s in on {
+                waiters[s.index()].push(i);
+            }
+        }
+        let dynamic = (design.processes.iter().enumerate())
+            .filter(|(_, p)| p.code.iter().any(|c| matches!(c, Instr::Call { .. })))
+            .map(|(i, _)| i)
+            .collect();
         Ok(EventKernel {
             design,
             signals,
-            procs: design.processes.iter().map(ProcState::new).collect(),
+            procs,
             lowered,
+            timeouts: BinaryHeap::new(),
+            waiters,
+            dynamic,
             breaks: Vec::new(),
             break_count: 0,
             reports: Vec::new(),
@@ -106,7 +158,7 @@ impl<'d> EventKernel<'d> {
     }
 
     /// The earliest time at which a transaction or a timeout is due (infinity if none).
-    pub fn next_time(&self, now: f64) -> f64 {
+    pub fn next_time(&mut self, now: f64) -> f64 {
         if self.signals.has_forced() {
             return now;
         }
@@ -117,12 +169,29 @@ impl<'d> EventKernel<'d> {
     }
 
     /// [`EventKernel::next_time`] from the pending transactions and the timeouts.
-    fn scan_next_time(&self) -> f64 {
-        self.procs
-            .iter()
-            .filter(|p| !p.halted)
-            .filter_map(|p| p.timeout_at)
-            .fold(self.signals.next_time(), f64::min)
+    #[inline]
+    fn scan_next_time(&mut self) -> f64 {
+        self.signals.next_time().min(self.next_timeout())
+    }
+
+    /// The earliest timeout of a waiting process (infinity if none), the stale entries
+    /// before it dropped.
+    #[inline]
+    fn next_timeout(&mut self) -> f64 {
+        while let Some(Reverse(Due(t, i))) = self.timeouts.peek() {
+            if self.waits_until(*i, *t) {
+                return *t;
+            }
+            self.timeouts.pop();
+        }
+        f64::INFINITY
+    }
+
+    /// Whether process `i` waits with timeout `t`.
+    #[inline]
+    fn waits_until(&self, i: usize, t: f64) -> bool {
+        let p = &self.procs[i];
+        !p.halted && p.waiting_at.is_some() && p.timeout_at == Some(t)
     }
 
     /// The earliest time at which something due needs the analog solution (see
@@ -187,13 +256,36 @@ impl<'d> EventKernel<'d> {
     ) -> Result<Option<Outcome>, SimError> {
         self.signals.update(now, self.design)?;
         self.events += self.signals.events.len();
+        // The processes that may resume: those whose timeout is due, those waiting on a
+        // signal with an event, those whose waits are known only at run time; in process
+        // order, as the LRM's "each process" reads in every simulator.
         self.resume.clear();
-        for (i, p) in self.procs.iter().enumerate() {
+        while let Some(&Reverse(Due(t, i))) = self.timeouts.peek()
+            && t <= now
+        {
+            self.timeouts.pop();
+            if self.waits_until(i, t) {
+                self.resume.push(i);
+            }
+        }
+        for s in &self.signals.events {
+            self.resume.extend_from_slice(&self.waiters[s.index()]);
+        }
+        self.resume.extend_from_slice(&self.dynamic);
+        if self.resume.len() > 1 {
+            self.resume.sort_unstable();
+            self.resume.dedup();
+        }
+        let mut k = 0;
+        for j in 0..self.resume.len() {
+            let i = self.resume[j];
+            let p = &self.procs[i];
             if p.halted || p.waiting_at.is_none() {
                 continue;
             }
             if p.timeout_at.is_some_and(|t| t <= now) {
-                self.resume.push(i);
+                self.resume[k] = i;
+                k += 1;
                 continue;
             }
             let states = &self.signals.states;
@@ -225,7 +317,12 @@ impl<'d> EventKernel<'d> {
                     continue;
                 }
             }
-            self.resume.push(i);
+            self.resume[k] = i;
+            k += 1;
+        }
+        self.resume.truncate(k);
+        if self.resume.is_empty() {
+            return Ok(None);
         }
         self.run_resumed(now, analog, on_report)
     }
@@ -275,7 +372,12 @@ impl<'d> EventKernel<'d> {
                 }
             };
             match suspend? {
-                Suspend::Wait | Suspend::Halt => {}
+                Suspend::Wait => {
+                    if let Some(t) = self.procs[i].timeout_at {
+                        self.timeouts.push(Reverse(Due(t, i)));
+                    }
+                }
+                Suspend::Halt => {}
                 Suspend::Stop => {
                     outcome = Some(Outcome::Stopped { time: now });
                     break;

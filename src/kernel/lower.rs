@@ -432,8 +432,7 @@ pub(crate) fn step(
                 Mechanism::Transport => Delay::Transport,
                 Mechanism::Inertial(start) => Delay::Inertial(later(now, start)),
             };
-            let v = value.kind.value(v);
-            signals.assign_scalar(*driver, v, later(now, *delay), mechanism);
+            signals.assign_scalar(*driver, value.kind, v, later(now, *delay), mechanism);
             state.pc = pc + 1;
             Some(Flow::Next)
         }

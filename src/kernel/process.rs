@@ -96,6 +96,11 @@ impl ProcState {
         }
     }
 
+    /// Every signal a wait of the process's own code is sensitive to (with repeats).
+    pub fn own_sensitivity(&self) -> impl Iterator<Item = SignalId> + '_ {
+        self.sensitivity.iter().flatten().copied()
+    }
+
     /// The signals the current wait is sensitive to.
     pub fn sensitivity(&self) -> &[SignalId] {
         match self.waiting_at {

@@ -16,6 +16,7 @@ use crate::ast::GuardedKind;
 use crate::design::{Design, Expr, Resolution, SignalId, SignalKind, Type, Value};
 
 use super::error::SimError;
+use super::lower::Kind;
 
 /// A signal's visible state.
 #[derive(Clone, Debug)]
@@ -596,13 +597,26 @@ impl Signals {
     }
 
     /// [`Signals::assign`] of a one-element waveform of a scalar value (a lowered
-    /// assignment's), without the waveform's vector.
+    /// assignment's: `x` of kind `kind`), without the waveform's vector; the value is built
+    /// where the transaction is stored (a value built by the caller and read back here whole
+    /// stalled on its parts' stores).
     #[inline]
-    pub fn assign_scalar(&mut self, d: usize, value: Value, time: f64, delay: Delay) {
+    pub fn assign_scalar(&mut self, d: usize, kind: Kind, x: i64, time: f64, delay: Delay) {
         let driver = &mut self.drivers[d];
-        let value = Some(value);
-        edit(driver, &value, time, delay);
-        driver.waveform.push_back(Transaction { time, value });
+        let w = &mut driver.waveform;
+        // Old transactions at or after the new one are deleted (both mechanisms).
+        while w.back().is_some_and(|tr| tr.time >= time) {
+            w.pop_back();
+        }
+        if let Delay::Inertial(start) = delay
+            && !w.is_empty()
+        {
+            reject(w, start, &Some(kind.value(x)), &driver.current);
+        }
+        w.push_back(Transaction {
+            time,
+            value: Some(kind.value(x)),
+        });
         if !driver.pending {
             driver.pending = true;
             self.pending.push(d);
@@ -610,7 +624,17 @@ impl Signals {
     }
 
     /// The earliest pending transaction, or infinity.
+    #[inline]
     pub fn next_time(&self) -> f64 {
+        let mut next = f64::INFINITY;
+        for &d in &self.pending {
+            if let Some(tr) = self.drivers[d].waveform.front() {
+                next = next.min(tr.time);
+            }
+        }
+        if self.stables.is_empty() {
+            return next;
+        }
         self.next_time_where(|_| true)
     }
 
@@ -655,13 +679,24 @@ impl Signals {
         while k < self.pending.len() {
             let driver = &mut self.drivers[self.pending[k]];
             let mut due = false;
-            while driver.waveform.front().is_some_and(|t| t.time <= now) {
-                // The loop condition guarantees an element.
-                let tr = driver.waveform.pop_front().unwrap();
-                driver.connected = tr.value.is_some();
-                if let Some(v) = tr.value {
-                    driver.current = v;
+            let Driver {
+                waveform,
+                current,
+                connected,
+                ..
+            } = driver;
+            while let Some(tr) = waveform.front_mut()
+                && tr.time <= now
+            {
+                *connected = tr.value.is_some();
+                // Read in place, not moved out whole through the stack (its parts' stores
+                // stalled the load of the whole).
+                if let Some(v) = &mut tr.value
+                    && !copy_scalar(current, v)
+                {
+                    *current = std::mem::replace(v, Value::Boolean(false));
                 }
+                waveform.pop_front();
                 due = true;
             }
             let signal = driver.signal;
@@ -976,6 +1011,21 @@ fn reject(w: &mut VecDeque<Transaction>, start: f64, first_value: &Option<Value>
         }
         w.extend(kept);
     }
+}
+
+/// `*to = *from` for two scalars of one kind, in place; false (having done nothing) for other
+/// values.
+#[inline(always)]
+fn copy_scalar(to: &mut Value, from: &Value) -> bool {
+    match (to, from) {
+        (Value::Integer(a), Value::Integer(b)) => *a = *b,
+        (Value::Enum(a), Value::Enum(b)) => *a = *b,
+        (Value::Boolean(a), Value::Boolean(b)) => *a = *b,
+        (Value::Real(a), Value::Real(b)) => *a = *b,
+        (Value::Time(a), Value::Time(b)) => *a = *b,
+        _ => return false,
+    }
+    true
 }
 
 /// Gives `st` the value `v`, its old value becoming `last_value` when it changes; true if it
