@@ -110,6 +110,9 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         }
         // Signal changes from here on count as discontinuities; initial values are pushed.
         this.kernel.signals.take_changed(&mut this.changed);
+        if this.analog.is_none() {
+            this.kernel.signals.stop_tracking_changes();
+        }
         this.enter_time_domain();
         Ok(this)
     }
@@ -613,6 +616,11 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
     /// After the delta cycles at `t`: pushes changed signals the equations read, applies break
     /// values and restarts the integrator if either happened. True on a restart.
     fn synchronise(&mut self, t: f64) -> Result<bool, SimError> {
+        if self.analog.is_none() {
+            // Nothing to push the changes and breaks to (the changes are not recorded).
+            self.kernel.discard_breaks();
+            return Ok(false);
+        }
         self.kernel.signals.take_changed(&mut self.changed);
         let broke = self.kernel.take_breaks(&mut self.breaks);
         let design = self.design;

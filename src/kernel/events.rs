@@ -400,6 +400,15 @@ impl<'d> EventKernel<'d> {
         std::mem::replace(&mut self.break_count, 0) > 0
     }
 
+    /// Forgets the breaks executed since the last call (a run without an analog side).
+    #[inline]
+    pub fn discard_breaks(&mut self) {
+        if self.break_count > 0 || !self.breaks.is_empty() {
+            self.breaks.clear();
+            self.break_count = 0;
+        }
+    }
+
     /// Current value of signal `s`.
     pub fn value(&self, s: SignalId) -> &Value {
         &self.signals.states[s.index()].value

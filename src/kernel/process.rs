@@ -177,12 +177,29 @@ pub(crate) fn later(now: f64, d: f64) -> f64 {
         return now;
     }
     let t = now + d;
-    let n = (t * FS).round();
-    if n.abs() < 9.0e15 {
-        (n / FS).max(now)
+    let x = t * FS;
+    if x.abs() < 9.0e15 {
+        (round(x) / FS).max(now)
     } else {
         t
     }
+}
+
+/// `x.round()` (half away from zero) for `|x| < 2^53`, without the library call that the
+/// baseline x86-64 target makes of `f64::round` (it has no rounding instruction): `x` less
+/// its truncation is exact at these magnitudes.
+#[inline(always)]
+fn round(x: f64) -> f64 {
+    let n = x as i64;
+    let f = x - n as f64;
+    let n = if f >= 0.5 {
+        n + 1
+    } else if f <= -0.5 {
+        n - 1
+    } else {
+        n
+    };
+    n as f64
 }
 
 /// Tells the reports that functions made while `process` evaluated their calls.
@@ -699,6 +716,23 @@ fn seconds(v: &Value) -> Result<f64, EvalError> {
 #[cfg(test)]
 mod tests {
     use super::later;
+
+    #[test]
+    fn rounding_is_the_library_s() {
+        let mut x = 0.123_456_789f64;
+        let mut checked = 0;
+        while x < 9.0e15 {
+            for v in [x, -x, x.floor() + 0.5, -(x.floor() + 0.5), x.floor() + 0.49999999999999994] {
+                assert_eq!(super::round(v), v.round(), "{v}");
+                checked += 1;
+            }
+            x *= 1.37;
+        }
+        for v in [0.0, -0.0, 0.5, -0.5, 1.5, 2.5, 0.49999999999999994, 4503599627370495.5] {
+            assert_eq!(super::round(v), v.round(), "{v}");
+        }
+        assert!(checked > 400);
+    }
 
     #[test]
     fn times_stay_on_the_femtosecond_grid_whatever_the_sum() {

@@ -130,6 +130,11 @@ pub(crate) struct Signals {
     stables: Vec<Stable>,
     /// `'above` values to apply in the next update phase.
     forced: Vec<(SignalId, Value)>,
+    /// Whether there are views, gathered ports, converted signals, `S'transaction`,
+    /// `S'stable` or `S'quiet` signals (which [`Signals::update_derived`] updates).
+    derived: bool,
+    /// Whether events are recorded for [`Signals::take_changed`].
+    track_changes: bool,
     /// Signals with an event in the last update phase.
     pub events: Vec<SignalId>,
     /// Signals with an event since [`Signals::take_changed`] was last called.
@@ -442,10 +447,17 @@ impl Signals {
                 .collect(),
             stables,
             forced: Vec::new(),
+            derived: false,
+            track_changes: true,
             events: Vec::new(),
             changed: vec![false; n],
             changed_list: Vec::new(),
         };
+        signals.derived = !(signals.views.is_empty()
+            && signals.gathers.is_empty()
+            && signals.converted.is_empty()
+            && signals.transactions.is_empty()
+            && signals.stables.is_empty());
         signals.views_of_converted = signals
             .views
             .iter()
@@ -734,6 +746,16 @@ impl Signals {
             }
             self.forced = forced;
         }
+        if self.derived {
+            self.update_derived(now, design)?;
+        }
+        Ok(())
+    }
+
+    /// The rest of the update phase: the signals whose values follow others' (views,
+    /// gathered ports, converted signals, `S'transaction`, `S'stable(T)` and `S'quiet(T)`).
+    #[inline(never)]
+    fn update_derived(&mut self, now: f64, design: &Design) -> Result<(), SimError> {
         // Views follow their parents (never views themselves) after these are updated.
         for i in 0..self.views.len() {
             self.follow_view(self.views[i], now);
@@ -829,7 +851,7 @@ impl Signals {
         st.last_event = Some(now);
         st.event = true;
         self.events.push(s);
-        if !self.changed[s.index()] {
+        if self.track_changes && !self.changed[s.index()] {
             self.changed[s.index()] = true;
             self.changed_list.push(s);
         }
@@ -958,6 +980,14 @@ impl Signals {
             io,
             drivers: None,
         }
+    }
+
+    /// Stops recording the signals with an event for [`Signals::take_changed`] (a run
+    /// without an analog side, which takes none).
+    pub fn stop_tracking_changes(&mut self) {
+        self.track_changes = false;
+        self.changed_list.clear();
+        self.changed.fill(false);
     }
 
     /// Moves the signals with an event since the last call into `out` (cleared first).
