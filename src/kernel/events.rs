@@ -63,6 +63,9 @@ pub(crate) struct EventKernel<'d> {
     /// longer waits with that timeout (it resumed on an event) is stale, and dropped when it
     /// comes to the top.
     timeouts: BinaryHeap<Reverse<Due>>,
+    /// Per process, the timeout it waits with (infinity when none): what makes an entry of
+    /// `timeouts` current, kept beside the processes' states for a cheap look.
+    timeout_of: Vec<f64>,
     /// Per signal, the processes with a wait of their own code sensitive to it.
     waiters: Vec<Vec<usize>>,
     /// The processes that call procedures, whose waits (on their signal parameters) are known
@@ -117,6 +120,7 @@ impl<'d> EventKernel<'d> {
             procs,
             lowered,
             timeouts: BinaryHeap::new(),
+            timeout_of: vec![f64::INFINITY; design.processes.len()],
             waiters,
             dynamic,
             breaks: Vec::new(),
@@ -190,8 +194,7 @@ impl<'d> EventKernel<'d> {
     /// Whether process `i` waits with timeout `t`.
     #[inline]
     fn waits_until(&self, i: usize, t: f64) -> bool {
-        let p = &self.procs[i];
-        !p.halted && p.waiting_at.is_some() && p.timeout_at == Some(t)
+        self.timeout_of[i] == t
     }
 
     /// The earliest time at which something due needs the analog solution (see
@@ -269,9 +272,14 @@ impl<'d> EventKernel<'d> {
             }
         }
         for s in &self.signals.events {
-            self.resume.extend_from_slice(&self.waiters[s.index()]);
+            let waiters = &self.waiters[s.index()];
+            if !waiters.is_empty() {
+                self.resume.extend_from_slice(waiters);
+            }
         }
-        self.resume.extend_from_slice(&self.dynamic);
+        if !self.dynamic.is_empty() {
+            self.resume.extend_from_slice(&self.dynamic);
+        }
         if self.resume.len() > 1 {
             self.resume.sort_unstable();
             self.resume.dedup();
@@ -335,45 +343,20 @@ impl<'d> EventKernel<'d> {
     ) -> Result<Option<Outcome>, SimError> {
         let before = self.break_count;
         let mut outcome = None;
-        for &i in &self.resume {
+        for k in 0..self.resume.len() {
+            let i = self.resume[k];
             self.last_process = i;
-            let process = &self.design.processes[i];
-            let lowered = &self.lowered[i];
+            self.timeout_of[i] = f64::INFINITY;
             // The lowered instructions first, without the interpreter's context.
-            let ran = lower::run(lowered, &mut self.procs[i], &mut self.signals, now);
+            let ran = lower::run(&self.lowered[i], &mut self.procs[i], &mut self.signals, now);
             let suspend = match ran {
-                Ran::Suspended(s) if self.io.function_reports.borrow().is_empty() => Ok(s),
-                ran => {
-                    let mut cx = Context {
-                        signals: &mut self.signals,
-                        quantities: analog.values,
-                        derivatives: analog.derivatives,
-                        now,
-                        breaks: &mut self.breaks,
-                        break_count: &mut self.break_count,
-                        reports: &mut self.reports,
-                        on_report: &mut *on_report,
-                        waveform: &mut self.waveform,
-                        subprograms: &self.design.subprograms,
-                        design_signals: &self.design.signals,
-                        io: &self.io,
-                    };
-                    let suspend = match ran {
-                        Ran::Suspended(s) => Ok(s),
-                        Ran::Declined { steps } => {
-                            let state = &mut self.procs[i];
-                            process::run(i, process, lowered, state, &mut cx, steps)
-                        }
-                    };
-                    // What the instruction the process suspended at (`wait until f(x)`)
-                    // reported, and what the conditions of the waits reported.
-                    process::emit_function_reports(&mut cx, &process.name);
-                    suspend
-                }
+                Ran::Suspended(s) if self.io.function_reports.borrow().is_empty() => s,
+                ran => self.run_general(i, ran, now, analog, on_report)?,
             };
-            match suspend? {
+            match suspend {
                 Suspend::Wait => {
                     if let Some(t) = self.procs[i].timeout_at {
+                        self.timeout_of[i] = t;
                         self.timeouts.push(Reverse(Due(t, i)));
                     }
                 }
@@ -390,6 +373,46 @@ impl<'d> EventKernel<'d> {
         }
         self.breaks_total += self.break_count - before;
         Ok(outcome)
+    }
+
+    /// Process `i` after [`lower::run`]: the interpreter from where that declined, and the
+    /// reports of the functions called since the last process ran. Out of
+    /// [`EventKernel::run_resumed`]'s loop, whose frame stays small.
+    #[inline(never)]
+    fn run_general(
+        &mut self,
+        i: usize,
+        ran: Ran,
+        now: f64,
+        analog: &AnalogView,
+        on_report: &mut dyn FnMut(&Report),
+    ) -> Result<Suspend, SimError> {
+        let process = &self.design.processes[i];
+        let mut cx = Context {
+            signals: &mut self.signals,
+            quantities: analog.values,
+            derivatives: analog.derivatives,
+            now,
+            breaks: &mut self.breaks,
+            break_count: &mut self.break_count,
+            reports: &mut self.reports,
+            on_report,
+            waveform: &mut self.waveform,
+            subprograms: &self.design.subprograms,
+            design_signals: &self.design.signals,
+            io: &self.io,
+        };
+        let suspend = match ran {
+            Ran::Suspended(s) => Ok(s),
+            Ran::Declined { steps } => {
+                let state = &mut self.procs[i];
+                process::run(i, process, &self.lowered[i], state, &mut cx, steps)
+            }
+        };
+        // What the instruction the process suspended at (`wait until f(x)`) reported, and
+        // what the conditions of the waits reported.
+        process::emit_function_reports(&mut cx, &process.name);
+        suspend
     }
 
     /// True when a break statement ran since the last call; `out` receives the reinitialisation

@@ -135,6 +135,10 @@ pub(crate) struct Signals {
     derived: bool,
     /// Whether events are recorded for [`Signals::take_changed`].
     track_changes: bool,
+    /// The earliest transaction of the pending drivers, unless `next_stale` (an inertial
+    /// rejection deleted transactions since it was found).
+    next: f64,
+    next_stale: bool,
     /// Signals with an event in the last update phase.
     pub events: Vec<SignalId>,
     /// Signals with an event since [`Signals::take_changed`] was last called.
@@ -449,6 +453,8 @@ impl Signals {
             forced: Vec::new(),
             derived: false,
             track_changes: true,
+            next: f64::INFINITY,
+            next_stale: false,
             events: Vec::new(),
             changed: vec![false; n],
             changed_list: Vec::new(),
@@ -590,7 +596,8 @@ impl Signals {
             return;
         };
         let driver = &mut self.drivers[d];
-        edit(driver, first_value, first_time, delay);
+        self.next_stale |= edit(driver, first_value, first_time, delay);
+        self.next = self.next.min(first_time);
         let w = &mut driver.waveform;
         if let [(value, time)] = elements.as_mut_slice() {
             // One element (the usual case): moved without a drain.
@@ -624,11 +631,13 @@ impl Signals {
             && !w.is_empty()
         {
             reject(w, start, &Some(kind.value(x)), &driver.current);
+            self.next_stale = true;
         }
         w.push_back(Transaction {
             time,
             value: Some(kind.value(x)),
         });
+        self.next = self.next.min(time);
         if !driver.pending {
             driver.pending = true;
             self.pending.push(d);
@@ -638,16 +647,10 @@ impl Signals {
     /// The earliest pending transaction, or infinity.
     #[inline]
     pub fn next_time(&self) -> f64 {
-        let mut next = f64::INFINITY;
-        for &d in &self.pending {
-            if let Some(tr) = self.drivers[d].waveform.front() {
-                next = next.min(tr.time);
-            }
+        if self.next_stale || !self.stables.is_empty() {
+            return self.next_time_where(|_| true);
         }
-        if self.stables.is_empty() {
-            return next;
-        }
-        self.next_time_where(|_| true)
+        self.next
     }
 
     /// The earliest transaction due on a signal for which `counts` holds.
@@ -688,6 +691,8 @@ impl Signals {
         self.active.clear();
         self.events.clear();
         let mut k = 0;
+        // The earliest transaction left.
+        let mut next = f64::INFINITY;
         while k < self.pending.len() {
             let driver = &mut self.drivers[self.pending[k]];
             let mut due = false;
@@ -712,16 +717,22 @@ impl Signals {
                 due = true;
             }
             let signal = driver.signal;
-            if driver.waveform.is_empty() {
-                driver.pending = false;
-                self.pending.swap_remove(k);
-            } else {
-                k += 1;
+            match driver.waveform.front() {
+                None => {
+                    driver.pending = false;
+                    self.pending.swap_remove(k);
+                }
+                Some(tr) => {
+                    next = next.min(tr.time);
+                    k += 1;
+                }
             }
             if due {
                 self.activate(signal, now);
             }
         }
+        self.next = next;
+        self.next_stale = false;
         // Effective values in signal order, as the events list them.
         self.active.sort_unstable();
         for k in 0..self.active.len() {
@@ -1001,9 +1012,10 @@ impl Signals {
 }
 
 /// The projected waveform of `driver` edited for a new waveform whose first element is
-/// `first_value` at `first_time` (LRM 10.5.2.2), before its elements are appended.
+/// `first_value` at `first_time` (LRM 10.5.2.2), before its elements are appended; true if
+/// transactions before the new ones may have gone (an inertial rejection).
 #[inline]
-fn edit(driver: &mut Driver, first_value: &Option<Value>, first_time: f64, delay: Delay) {
+fn edit(driver: &mut Driver, first_value: &Option<Value>, first_time: f64, delay: Delay) -> bool {
     let w = &mut driver.waveform;
     // Old transactions at or after the first new one are deleted (both mechanisms).
     while w.back().is_some_and(|tr| tr.time >= first_time) {
@@ -1014,7 +1026,9 @@ fn edit(driver: &mut Driver, first_value: &Option<Value>, first_time: f64, delay
         && !w.is_empty()
     {
         reject(w, start, first_value, &driver.current);
+        return true;
     }
+    false
 }
 
 /// Inertial rejection (LRM 10.5.2.2) in `w`, none of whose transactions is at or after the
