@@ -80,7 +80,7 @@ fn operand(e: &Expr, env: &Env) -> Option<i64> {
 
 /// `x op y` as `ops::binary` computes it for two integers; `None` for an error or another
 /// operator.
-pub(crate) fn arithmetic(op: BinaryOp, x: i64, y: i64) -> Option<i64> {
+fn arithmetic(op: BinaryOp, x: i64, y: i64) -> Option<i64> {
     use BinaryOp::*;
     match op {
         Add => x.checked_add(y),

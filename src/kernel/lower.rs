@@ -113,60 +113,84 @@ impl Leaf {
 /// and bits.
 #[derive(Clone, Copy, Debug)]
 enum Operator {
-    Arithmetic(BinaryOp),
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Mod,
+    Rem,
     Eq,
     Ne,
     Lt,
     Le,
     Gt,
     Ge,
-    Logic(BinaryOp),
+    And,
+    Or,
+    Nand,
+    Nor,
+    Xor,
+    Xnor,
 }
 
 impl Operator {
     /// `op` on operands of `kind`, with the kind of its result.
     fn of(op: BinaryOp, kind: Kind) -> Option<(Operator, Kind)> {
-        use BinaryOp::*;
-        Some(match (op, kind) {
-            (Add | Sub | Mul | Div | Mod | Rem, Kind::Int) => (Operator::Arithmetic(op), Kind::Int),
-            (Eq, _) => (Operator::Eq, Kind::Bool),
-            (Ne, _) => (Operator::Ne, Kind::Bool),
-            (Lt, _) => (Operator::Lt, Kind::Bool),
-            (Le, _) => (Operator::Le, Kind::Bool),
-            (Gt, _) => (Operator::Gt, Kind::Bool),
-            (Ge, _) => (Operator::Ge, Kind::Bool),
-            (And | Or | Nand | Nor | Xor | Xnor, Kind::Bool | Kind::Enum) => {
-                (Operator::Logic(op), kind)
-            }
+        use Kind::*;
+        let logic = matches!(kind, Bool | Enum);
+        Some(match op {
+            BinaryOp::Add if kind == Int => (Operator::Add, Int),
+            BinaryOp::Sub if kind == Int => (Operator::Sub, Int),
+            BinaryOp::Mul if kind == Int => (Operator::Mul, Int),
+            BinaryOp::Div if kind == Int => (Operator::Div, Int),
+            BinaryOp::Mod if kind == Int => (Operator::Mod, Int),
+            BinaryOp::Rem if kind == Int => (Operator::Rem, Int),
+            BinaryOp::Eq => (Operator::Eq, Bool),
+            BinaryOp::Ne => (Operator::Ne, Bool),
+            BinaryOp::Lt => (Operator::Lt, Bool),
+            BinaryOp::Le => (Operator::Le, Bool),
+            BinaryOp::Gt => (Operator::Gt, Bool),
+            BinaryOp::Ge => (Operator::Ge, Bool),
+            BinaryOp::And if logic => (Operator::And, kind),
+            BinaryOp::Or if logic => (Operator::Or, kind),
+            BinaryOp::Nand if logic => (Operator::Nand, kind),
+            BinaryOp::Nor if logic => (Operator::Nor, kind),
+            BinaryOp::Xor if logic => (Operator::Xor, kind),
+            BinaryOp::Xnor if logic => (Operator::Xnor, kind),
             _ => return None,
         })
     }
 
     /// `x op y` as `ops::binary` computes it for two values of the operator's kind; `None`
-    /// for an arithmetic error.
+    /// for an arithmetic error (overflow, division by zero).
     #[inline(always)]
     fn apply(self, x: i64, y: i64) -> Option<i64> {
-        use BinaryOp::*;
+        // `ops::logic`: booleans, and `bit` with '0' as 0 and '1' as 1.
+        let (p, q) = (x != 0, y != 0);
         Some(match self {
-            Operator::Arithmetic(op) => return super::fast::arithmetic(op, x, y),
+            Operator::Add => x.checked_add(y)?,
+            Operator::Sub => x.checked_sub(y)?,
+            Operator::Mul => x.checked_mul(y)?,
+            // Rust's `/` truncates towards zero, as VHDL's does.
+            Operator::Div => x.checked_div(y)?,
+            // `rem` has the sign of the left operand (Rust's `%`), `mod` that of the right.
+            Operator::Rem => x.checked_rem(y)?,
+            Operator::Mod => {
+                let r = x.checked_rem(y)?;
+                if r != 0 && (r < 0) != (y < 0) { r + y } else { r }
+            }
             Operator::Eq => i64::from(x == y),
             Operator::Ne => i64::from(x != y),
             Operator::Lt => i64::from(x < y),
             Operator::Le => i64::from(x <= y),
             Operator::Gt => i64::from(x > y),
             Operator::Ge => i64::from(x >= y),
-            // `ops::logic`: booleans, and `bit` with '0' as 0 and '1' as 1.
-            Operator::Logic(op) => {
-                let (x, y) = (x != 0, y != 0);
-                i64::from(match op {
-                    And => x && y,
-                    Or => x || y,
-                    Nand => !(x && y),
-                    Nor => !(x || y),
-                    Xor => x != y,
-                    _ => x == y,
-                })
-            }
+            Operator::And => i64::from(p && q),
+            Operator::Or => i64::from(p || q),
+            Operator::Nand => i64::from(!(p && q)),
+            Operator::Nor => i64::from(!(p || q)),
+            Operator::Xor => i64::from(p != q),
+            Operator::Xnor => i64::from(p == q),
         })
     }
 }
@@ -178,6 +202,8 @@ enum Step<'d> {
     Load(Leaf),
     /// `acc := acc op operand`.
     With(Operator, Leaf),
+    /// `acc := acc op constant`.
+    WithConst(Operator, i64),
     /// `acc := popped op acc`.
     Pop(Operator),
     /// Integer negation and `abs`.
@@ -235,6 +261,7 @@ impl<'d> Node<'d> {
         let mut sp = 0;
         for step in &self.steps {
             acc = match step {
+                Step::WithConst(op, c) => op.apply(acc, *c)?,
                 Step::With(op, leaf) => op.apply(acc, leaf.read(signals, vars)?)?,
                 Step::Load(leaf) => {
                     stack[sp] = acc;
@@ -303,7 +330,11 @@ fn compile<'d>(
             let kind = compile(a, cx, steps, depth, sp)?;
             let right = match Leaf::lower(b, cx) {
                 Some((leaf, right)) => {
-                    steps.push(Step::With(Operator::of(*op, kind)?.0, leaf));
+                    let operator = Operator::of(*op, kind)?.0;
+                    steps.push(match leaf {
+                        Leaf::Const(c) => Step::WithConst(operator, c),
+                        leaf => Step::With(operator, leaf),
+                    });
                     right
                 }
                 None => {

@@ -8,6 +8,7 @@
 //! several drivers act on a `std_ulogic` signal). `'above` signals have no driver: the analog
 //! side forces their values at threshold crossings.
 
+use std::borrow::Cow;
 use std::collections::VecDeque;
 
 use rustc_hash::FxHashMap;
@@ -135,6 +136,13 @@ pub(crate) struct Signals {
     derived: bool,
     /// Whether events are recorded for [`Signals::take_changed`].
     track_changes: bool,
+    /// Per signal driven element by element, unguarded, without a resolution function and
+    /// with at most one driver per element: each element's driver (`u32::MAX`: none, the
+    /// element keeps its value).
+    element_drivers: Vec<Option<Vec<u32>>>,
+    /// Per signal, its one driver when it has one, drives it whole and has no resolution
+    /// function (`u32::MAX` otherwise): [`Signals::single_driver`] when that is connected.
+    sole: Vec<u32>,
     /// The earliest transaction of the pending drivers, unless `next_stale` (an inertial
     /// rejection deleted transactions since it was found).
     next: f64,
@@ -210,7 +218,7 @@ impl Signals {
         // An assignment to a view drives its elements of the parent (statically known ones).
         // Each target comes with its driver's initial value: the default of the port the
         // process drives it through, else the signal's own (an element's for a position).
-        let assigned: Vec<Vec<(SignalId, Driven, Value)>> = design
+        let assigned: Vec<Vec<(SignalId, Driven, Cow<Value>)>> = design
             .processes
             .iter()
             .map(|p| {
@@ -243,7 +251,8 @@ impl Signals {
                         for k in slots {
                             let (parent, position) = parts[k];
                             let v = own.get(k).cloned().unwrap_or_else(|| init.clone());
-                            out.push((parent, position.map_or(Driven::Whole, Driven::Position), v));
+                            let driven = position.map_or(Driven::Whole, Driven::Position);
+                            out.push((parent, driven, Cow::Owned(v)));
                         }
                         continue;
                     }
@@ -260,10 +269,12 @@ impl Signals {
                                         .or_else(|| parent_init.view(k, None))
                                         .unwrap_or_else(|| init.clone()),
                                 };
-                                out.push((parent, Driven::Position(k), v));
+                                out.push((parent, Driven::Position(k), Cow::Owned(v)));
                             }
                         }
-                        None => out.push((target, driven, init.clone())),
+                        // Borrowed: n processes driving one element each of an n-element
+                        // signal would copy it n times.
+                        None => out.push((target, driven, Cow::Borrowed(init))),
                     }
                 }
                 out
@@ -292,18 +303,18 @@ impl Signals {
                     (Some(_), Driven::Position(k)) => vec![Some(k)],
                     (Some(n), _) => (0..n).map(Some).collect(),
                 };
-                let initial = match (split[target.index()], driven) {
-                    (_, Driven::Position(_)) | (None, _) => None,
-                    (Some(_), _) => Some(init.elements()),
-                };
+                // Element k of the initial value (not the whole value split into a vector
+                // for each process: a generate of n processes each driving one element of an
+                // n-element signal took n^2 copies).
+                let whole = matches!(driven, Driven::Position(_)) || split[target.index()].is_none();
                 for element in slots {
                     index.entry((p, target, element)).or_insert_with(|| {
                         by_signal[target.index()].push(drivers.len());
-                        let current = match (&initial, element) {
-                            (Some(elements), Some(k)) => {
-                                elements.get(k).cloned().unwrap_or_else(|| init.clone())
+                        let current = match element {
+                            Some(k) if !whole => {
+                                element_of(init, k).unwrap_or_else(|| Value::clone(init))
                             }
-                            _ => init.clone(),
+                            _ => Value::clone(init),
                         };
                         drivers.push(Driver {
                             signal: target,
@@ -453,12 +464,43 @@ impl Signals {
             forced: Vec::new(),
             derived: false,
             track_changes: true,
+            element_drivers: Vec::new(),
+            sole: Vec::new(),
             next: f64::INFINITY,
             next_stale: false,
             events: Vec::new(),
             changed: vec![false; n],
             changed_list: Vec::new(),
         };
+        signals.element_drivers = (0..n)
+            .map(|s| {
+                let n = signals.split[s]?;
+                if signals.resolution[s].is_some()
+                    || signals.guarded[s].is_some()
+                    || !matches!(&signals.states[s].value, Value::Array(items) if items.len() == n)
+                {
+                    return None;
+                }
+                let mut of = vec![u32::MAX; n];
+                for &d in &signals.by_signal[s] {
+                    let k = signals.drivers[d].element?;
+                    let slot = of.get_mut(k)?;
+                    if *slot != u32::MAX {
+                        return None;
+                    }
+                    *slot = u32::try_from(d).ok()?;
+                }
+                Some(of)
+            })
+            .collect();
+        signals.sole = (0..n)
+            .map(|s| match signals.by_signal[s].as_slice() {
+                [d] if signals.split[s].is_none() && signals.resolution[s].is_none() => {
+                    u32::try_from(*d).unwrap_or(u32::MAX)
+                }
+                _ => u32::MAX,
+            })
+            .collect();
         signals.derived = !(signals.views.is_empty()
             && signals.gathers.is_empty()
             && signals.converted.is_empty()
@@ -745,6 +787,10 @@ impl Signals {
                 }
                 continue;
             }
+            if self.element_drivers[s].is_some() {
+                self.update_elements(s, now);
+                continue;
+            }
             if let Some(value) = self.effective(s, design, now)? {
                 self.set(SignalId(s as u32), value, now);
             }
@@ -868,20 +914,45 @@ impl Signals {
         }
     }
 
+    /// [`Signals::effective`] and [`Signals::set`] of a signal driven element by element
+    /// with at most one driver per element (`element_drivers`): the elements written in
+    /// place, the array copied into `last_value` only when one changes.
+    fn update_elements(&mut self, s: usize, now: f64) {
+        let Some(ds) = &self.element_drivers[s] else {
+            return;
+        };
+        let Value::Array(items) = &self.states[s].value else {
+            return;
+        };
+        let differs = |(k, &d): (usize, &u32)| {
+            (self.drivers.get(d as usize)).is_some_and(|d| d.current != items[k])
+        };
+        if !ds.iter().enumerate().any(differs) {
+            return;
+        }
+        let st = &mut self.states[s];
+        // Into the old `last_value`'s storage when it is an array of the same length.
+        match (&mut st.last_value, &st.value) {
+            (Value::Array(last), Value::Array(items)) => last.clone_from(items),
+            (last, value) => *last = value.clone(),
+        }
+        if let Value::Array(items) = &mut st.value {
+            for (item, &d) in items.iter_mut().zip(ds) {
+                if let Some(d) = self.drivers.get(d as usize) {
+                    item.clone_from(&d.current);
+                }
+            }
+        }
+        self.event(SignalId(s as u32), now);
+    }
+
     /// The common case of [`Signals::effective`], a signal driven whole by one connected
     /// driver without a resolution function: that driver, whose value is the signal's (this
     /// runs at every transaction).
     #[inline]
     fn single_driver(&self, s: usize) -> Option<usize> {
-        match self.by_signal[s].as_slice() {
-            [d] if self.split[s].is_none()
-                && self.drivers[*d].connected
-                && self.resolution[s].is_none() =>
-            {
-                Some(*d)
-            }
-            _ => None,
-        }
+        let d = self.sole[s] as usize;
+        (d < self.drivers.len() && self.drivers[d].connected).then_some(d)
     }
 
     /// The effective value of signal `s` from its connected drivers (LRM 12.6.2): `None`
@@ -1054,6 +1125,15 @@ fn reject(w: &mut VecDeque<Transaction>, start: f64, first_value: &Option<Value>
             }
         }
         w.extend(kept);
+    }
+}
+
+/// Element `k` of `v` as [`Value::elements`] lists them, without copying the others.
+fn element_of(v: &Value, k: usize) -> Option<Value> {
+    match v {
+        Value::Array(items) => items.get(k).cloned(),
+        Value::String(s) => s.chars().nth(k).map(|c| Value::Enum(c as u32)),
+        other => (k == 0).then(|| other.clone()),
     }
 }
 
