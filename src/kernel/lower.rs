@@ -177,7 +177,11 @@ impl Operator {
             Operator::Rem => x.checked_rem(y)?,
             Operator::Mod => {
                 let r = x.checked_rem(y)?;
-                if r != 0 && (r < 0) != (y < 0) { r + y } else { r }
+                if r != 0 && (r < 0) != (y < 0) {
+                    r + y
+                } else {
+                    r
+                }
             }
             Operator::Eq => i64::from(x == y),
             Operator::Ne => i64::from(x != y),
@@ -297,22 +301,23 @@ fn compile<'d>(
             if compile(index, cx, steps, depth, sp)? != Kind::Int {
                 return None;
             }
-            let (step, init): (fn(usize, &'d Type, Kind) -> Step<'d>, &Value) = match **array {
-                Expr::Signal(s) => (Step::SignalElement, &cx.design.signals.get(s.index())?.init),
-                Expr::Var(v) => (Step::VarElement, &cx.process.vars.get(v.index())?.init),
-                _ => return None,
-            };
             // The kind of the array's elements, from its initial value.
-            let Value::Array(items) = init else {
-                return None;
+            let element_kind = |init: &Value| match init {
+                Value::Array(items) => Kind::of(items.first()?),
+                _ => None,
             };
-            let kind = Kind::of(items.first()?)?;
-            let id = match **array {
-                Expr::Signal(s) => s.index(),
-                Expr::Var(v) => v.index(),
+            let (step, kind) = match **array {
+                Expr::Signal(s) => {
+                    let kind = element_kind(&cx.design.signals.get(s.index())?.init)?;
+                    (Step::SignalElement(s.index(), ty, kind), kind)
+                }
+                Expr::Var(v) => {
+                    let kind = element_kind(&cx.process.vars.get(v.index())?.init)?;
+                    (Step::VarElement(v.index(), ty, kind), kind)
+                }
                 _ => return None,
             };
-            steps.push(step(id, ty, kind));
+            steps.push(step);
             kind
         }
         Expr::Unary(op, a) => {
@@ -387,7 +392,10 @@ pub(crate) enum Op<'d> {
     General,
     Jump(usize),
     /// `JumpIfNot`.
-    Branch { cond: Node<'d>, target: usize },
+    Branch {
+        cond: Node<'d>,
+        target: usize,
+    },
     /// A wait of the process's own code: its timeout in seconds, literal and not negative.
     Wait {
         timeout: Option<f64>,
@@ -493,12 +501,15 @@ fn in_range(v: i64, range: Option<(i64, i64)>) -> bool {
 pub(crate) enum Ran {
     Suspended(Suspend),
     /// At an instruction it leaves to the interpreter, after `steps` instructions.
-    Declined { steps: usize },
+    Declined {
+        steps: usize,
+    },
 }
 
 /// Runs the process from `state.pc` through its lowered instructions: to its suspension, or
 /// to the first instruction that is not lowered or declines, or (leaving the cancel check to
 /// the interpreter) to the step before the interpreter's first look at the cancel flag.
+#[inline(always)]
 pub(crate) fn run(ops: &[Op], state: &mut ProcState, signals: &mut Signals, now: f64) -> Ran {
     state.waiting_at = None;
     state.timeout_at = None;
@@ -506,7 +517,10 @@ pub(crate) fn run(ops: &[Op], state: &mut ProcState, signals: &mut Signals, now:
         return Ran::Declined { steps: 0 };
     }
     for steps in 0..CANCEL_CHECK - 1 {
-        match ops.get(state.pc).and_then(|op| step(op, state, signals, now)) {
+        match ops
+            .get(state.pc)
+            .and_then(|op| step(op, state, signals, now))
+        {
             Some(Flow::Next) => {}
             Some(Flow::Suspend(s)) => return Ran::Suspended(s),
             None => return Ran::Declined { steps },
@@ -575,7 +589,11 @@ fn lower_one<'d>(
             let value = Node::lower(value, cx)?;
             Op::SetVar {
                 var: var.index(),
-                range: process.vars.get(var.index())?.range.filter(|_| value.kind == Kind::Int),
+                range: process
+                    .vars
+                    .get(var.index())?
+                    .range
+                    .filter(|_| value.kind == Kind::Int),
                 value,
             }
         }
@@ -677,7 +695,10 @@ mod tests {
         let leaves: Vec<Expr> = (0..inits.len())
             .map(|v| Expr::Var(crate::design::VarId(v as u32)))
             .chain([0, 1, -1, 3, i64::MAX, i64::MIN].map(|i| Expr::Const(Value::Integer(i))))
-            .chain([Expr::Const(Value::Enum(1)), Expr::Const(Value::Boolean(true))])
+            .chain([
+                Expr::Const(Value::Enum(1)),
+                Expr::Const(Value::Boolean(true)),
+            ])
             .collect();
         let ops = [
             Add, Sub, Mul, Div, Mod, Rem, Eq, Ne, Lt, Le, Gt, Ge, And, Or, Nand, Nor, Xor, Xnor,
@@ -714,7 +735,11 @@ mod tests {
                         check(&e);
                         // Nested on either side, with the stack.
                         let plus = Expr::Binary(Add, Box::new(a.clone()), Box::new(b.clone()));
-                        check(&Expr::Binary(op, Box::new(plus.clone()), Box::new(b.clone())));
+                        check(&Expr::Binary(
+                            op,
+                            Box::new(plus.clone()),
+                            Box::new(b.clone()),
+                        ));
                         check(&Expr::Binary(op, Box::new(a.clone()), Box::new(plus)));
                     }
                 }

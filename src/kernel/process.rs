@@ -722,13 +722,28 @@ mod tests {
         let mut x = 0.123_456_789f64;
         let mut checked = 0;
         while x < 9.0e15 {
-            for v in [x, -x, x.floor() + 0.5, -(x.floor() + 0.5), x.floor() + 0.49999999999999994] {
+            for v in [
+                x,
+                -x,
+                x.floor() + 0.5,
+                -(x.floor() + 0.5),
+                x.floor() + 0.49999999999999994,
+            ] {
                 assert_eq!(super::round(v), v.round(), "{v}");
                 checked += 1;
             }
             x *= 1.37;
         }
-        for v in [0.0, -0.0, 0.5, -0.5, 1.5, 2.5, 0.49999999999999994, 4503599627370495.5] {
+        for v in [
+            0.0,
+            -0.0,
+            0.5,
+            -0.5,
+            1.5,
+            2.5,
+            0.49999999999999994,
+            4503599627370495.5,
+        ] {
             assert_eq!(super::round(v), v.round(), "{v}");
         }
         assert!(checked > 400);

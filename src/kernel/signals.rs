@@ -306,7 +306,8 @@ impl Signals {
                 // Element k of the initial value (not the whole value split into a vector
                 // for each process: a generate of n processes each driving one element of an
                 // n-element signal took n^2 copies).
-                let whole = matches!(driven, Driven::Position(_)) || split[target.index()].is_none();
+                let whole =
+                    matches!(driven, Driven::Position(_)) || split[target.index()].is_none();
                 for element in slots {
                     index.entry((p, target, element)).or_insert_with(|| {
                         by_signal[target.index()].push(drivers.len());
@@ -639,7 +640,9 @@ impl Signals {
         };
         let driver = &mut self.drivers[d];
         self.next_stale |= edit(driver, first_value, first_time, delay);
-        self.next = self.next.min(first_time);
+        if first_time < self.next {
+            self.next = first_time;
+        }
         let w = &mut driver.waveform;
         if let [(value, time)] = elements.as_mut_slice() {
             // One element (the usual case): moved without a drain.
@@ -679,7 +682,10 @@ impl Signals {
             time,
             value: Some(kind.value(x)),
         });
-        self.next = self.next.min(time);
+        // Not `f64::min`, whose NaN handling costs more: times are numbers.
+        if time < self.next {
+            self.next = time;
+        }
         if !driver.pending {
             driver.pending = true;
             self.pending.push(d);
@@ -722,6 +728,7 @@ impl Signals {
 
     /// The update phase at `now`: transactions due become driving values; effective values are
     /// recomputed; `events` lists the signals whose value changed.
+    #[inline]
     pub fn update(&mut self, now: f64, design: &Design) -> Result<(), SimError> {
         // Only the signals active in the last phase have flags set (`set` gives an event
         // to active signals only).
@@ -765,7 +772,9 @@ impl Signals {
                     self.pending.swap_remove(k);
                 }
                 Some(tr) => {
-                    next = next.min(tr.time);
+                    if tr.time < next {
+                        next = tr.time;
+                    }
                     k += 1;
                 }
             }
@@ -917,6 +926,7 @@ impl Signals {
     /// [`Signals::effective`] and [`Signals::set`] of a signal driven element by element
     /// with at most one driver per element (`element_drivers`): the elements written in
     /// place, the array copied into `last_value` only when one changes.
+    #[inline(never)]
     fn update_elements(&mut self, s: usize, now: f64) {
         let Some(ds) = &self.element_drivers[s] else {
             return;
