@@ -29,6 +29,7 @@ mod events;
 mod fast;
 mod image;
 mod io;
+mod lower;
 mod ops;
 mod process;
 mod progress;

@@ -116,6 +116,9 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         }
         // Signal changes from here on count as discontinuities; initial values are pushed.
         this.kernel.signals.take_changed(&mut this.changed);
+        if this.analog.is_none() {
+            this.kernel.signals.stop_tracking_changes();
+        }
         this.enter_time_domain();
         Ok(this)
     }
@@ -423,6 +426,12 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
     ) -> Result<(), SimError> {
         let mut t = 0.0;
         recorder.record(t, &self.values, &self.kernel.signals.states)?;
+        if self.analog.is_none() && !recorder.wanted() {
+            // Nothing to synchronise and no rows: the time points back to back.
+            t = self.run_digital(on_report)?;
+            recorder.record(t, &self.values, &self.kernel.signals.states)?;
+            return Ok(());
+        }
         // Synchronisations at the current time point: a crossing that flips back at every
         // analog restart would otherwise loop here forever.
         let mut settling = (t, 0usize);
@@ -489,6 +498,32 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             recorder.record(t, &self.values, &self.kernel.signals.states)?;
         }
         Ok(())
+    }
+
+    /// The loop of [`Simulation::run_recording`] for a design without an analog side whose
+    /// rows nobody wants: every time point up to the stop time, nothing recorded; returns
+    /// the time reached.
+    fn run_digital(&mut self, on_report: &mut dyn FnMut(&Report)) -> Result<f64, SimError> {
+        let mut t = 0.0;
+        let view = AnalogView {
+            values: &self.values,
+            derivatives: &self.derivatives,
+        };
+        while self.outcome.is_none() {
+            let next = self.kernel.next_time(t);
+            if next <= t {
+                self.outcome = self.kernel.run_time_point(t, &view, on_report)?;
+                self.kernel.discard_breaks();
+                continue;
+            }
+            if t >= self.stop {
+                break;
+            }
+            t = next.min(self.stop);
+            self.progress.tick(t);
+            self.check_cancelled(t)?;
+        }
+        Ok(t)
     }
 
     /// Integrates from `t` towards `target`, recording every accepted step; stops early at a
@@ -669,6 +704,11 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
     /// After the delta cycles at `t`: pushes changed signals the equations read, applies break
     /// values and restarts the integrator if either happened. True on a restart.
     fn synchronise(&mut self, t: f64) -> Result<bool, SimError> {
+        if self.analog.is_none() {
+            // Nothing to push the changes and breaks to (the changes are not recorded).
+            self.kernel.discard_breaks();
+            return Ok(false);
+        }
         self.kernel.signals.take_changed(&mut self.changed);
         let broke = self.kernel.take_breaks(&mut self.breaks);
         let design = self.design;

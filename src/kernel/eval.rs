@@ -1,6 +1,8 @@
 //! Expression evaluation in processes: [`Expr`] to [`Value`] against the current signal values,
 //! the process's variables, the analog solution at the current time and `now`.
 
+use std::borrow::Cow;
+
 use crate::design::{BinaryOp, Builtin, Expr, SignalAttr, Subprogram, Type, Value};
 
 use super::image::image;
@@ -116,11 +118,15 @@ fn eval_other(e: &Expr, env: &Env) -> Result<Value, EvalError> {
                 eval(b, env)?
             }
         }
-        Expr::Index { array, index, ty } => {
-            let array = eval(array, env)?;
-            let i = integer(&eval(index, env)?)?;
-            element(array, i, ty)?
-        }
+        Expr::Index { array, index, ty } => match place(e, env)? {
+            // An element of a signal or variable read in place: the array is not copied.
+            Some(v) => v.into_owned(),
+            None => {
+                let array = eval(array, env)?;
+                let i = integer(&eval(index, env)?)?;
+                element(array, i, ty)?
+            }
+        },
         Expr::Image(ty, x) => Value::String(image(ty, &eval(x, env)?)),
         Expr::Aggregate { elems, string } => {
             let vals = elems
@@ -262,6 +268,42 @@ pub(crate) fn set_element(
             "element assignment to a variable that is not an array",
             "only array variables can be assigned element by element",
         )),
+    }
+}
+
+/// The value `e` names in place, when it is a constant, a signal, a variable or an element
+/// of one (`a(i)(j)`), read without copying the arrays around it; `None`, having evaluated
+/// nothing, for other expressions.
+fn place<'v>(e: &'v Expr, env: &'v Env<'_>) -> Result<Option<Cow<'v, Value>>, EvalError> {
+    Ok(Some(match e {
+        Expr::Const(v) => Cow::Borrowed(v),
+        Expr::Signal(s) => Cow::Borrowed(&env.signals[s.index()].value),
+        Expr::Var(v) => Cow::Borrowed(&env.vars[v.index()]),
+        Expr::Index { array, index, ty } => {
+            let Some(array) = place(array, env)? else {
+                return Ok(None);
+            };
+            let i = integer(&eval(index, env)?)?;
+            match array {
+                Cow::Borrowed(Value::Array(items)) => {
+                    Cow::Borrowed(&items[offset(ty, i, items.len())?])
+                }
+                array => Cow::Owned(element_of(&array, i, ty)?),
+            }
+        }
+        _ => return Ok(None),
+    }))
+}
+
+/// Element `i` of `array` (of type `ty`), read in place: [`element`] without consuming it.
+fn element_of(array: &Value, i: i64, ty: &Type) -> Result<Value, EvalError> {
+    match array {
+        Value::Array(items) => Ok(items[offset(ty, i, items.len())?].clone()),
+        Value::String(s) if s.is_ascii() => {
+            let pos = offset(ty, i, s.len())?;
+            Ok(Value::Enum(u32::from(s.as_bytes()[pos])))
+        }
+        other => element(other.clone(), i, ty),
     }
 }
 

@@ -1,15 +1,42 @@
 //! The event-driven half of the simulation cycle: signal update, process resumption and
 //! execution, delta cycles at one time point, and the next time anything digital is due.
 
-use crate::design::{Design, QuantityId, SignalId, Value};
+use crate::design::{Design, Instr, QuantityId, SignalId, Value};
 
 use super::error::SimError;
 use super::eval::Env;
 use super::io::{Files, Heap, Io};
+use super::lower::{self, Op, Ran, lower};
 use super::process::{self, Context, ProcState, Suspend};
 use super::signals::Signals;
 use super::{Outcome, Report};
 use std::cell::RefCell;
+use std::cmp::{Ordering, Reverse};
+use std::collections::BinaryHeap;
+
+/// A process's timeout: its time and the process, ordered by time then process.
+#[derive(Clone, Copy, Debug)]
+struct Due(f64, usize);
+
+impl PartialEq for Due {
+    fn eq(&self, other: &Due) -> bool {
+        self.cmp(other) == Ordering::Equal
+    }
+}
+
+impl Eq for Due {}
+
+impl PartialOrd for Due {
+    fn partial_cmp(&self, other: &Due) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Due {
+    fn cmp(&self, other: &Due) -> Ordering {
+        self.0.total_cmp(&other.0).then(self.1.cmp(&other.1))
+    }
+}
 
 /// Delta cycles allowed at one time point before the run counts as an endless zero-delay loop.
 pub(crate) const DELTA_LIMIT: usize = 10_000;
@@ -24,12 +51,26 @@ pub(crate) struct EventKernel<'d> {
     design: &'d Design,
     pub signals: Signals,
     procs: Vec<ProcState>,
+    /// Each process's code lowered ([`super::lower`]).
+    lowered: Vec<Vec<Op<'d>>>,
     /// Break values executed since the last [`EventKernel::take_breaks`].
     breaks: Vec<(QuantityId, f64)>,
     break_count: usize,
     pub reports: Vec<Report>,
     waveform: Vec<(Option<Value>, f64)>,
     resume: Vec<usize>,
+    /// The timeouts of the waiting processes, earliest first; an entry whose process no
+    /// longer waits with that timeout (it resumed on an event) is stale, and dropped when it
+    /// comes to the top.
+    timeouts: BinaryHeap<Reverse<Due>>,
+    /// Per process, the timeout it waits with (infinity when none): what makes an entry of
+    /// `timeouts` current, kept beside the processes' states for a cheap look.
+    timeout_of: Vec<f64>,
+    /// Per signal, the processes with a wait of their own code sensitive to it.
+    waiters: Vec<Vec<usize>>,
+    /// The processes that call procedures, whose waits (on their signal parameters) are known
+    /// only when they suspend: looked at in every cycle.
+    dynamic: Vec<usize>,
     /// The earliest time anything is due, as the last time point found it when it ended
     /// (`None`: not known). Only a time point's cycles change transactions and timeouts, so
     /// the loop's look at the next time between two time points need not scan again.
@@ -55,10 +96,33 @@ impl<'d> EventKernel<'d> {
                 .alloc(object.clone())
                 .map_err(|e| SimError::BadOption { message: e.message })?;
         }
+        let signals = Signals::new(design)?;
+        let lowered = (design.processes.iter().enumerate())
+            .map(|(i, p)| lower(design, &signals, i, p))
+            .collect();
+        let procs: Vec<ProcState> = design.processes.iter().map(ProcState::new).collect();
+        let mut waiters = vec![Vec::new(); design.signals.len()];
+        for (i, p) in procs.iter().enumerate() {
+            let mut on: Vec<SignalId> = p.own_sensitivity().collect();
+            on.sort_unstable();
+            on.dedup();
+            for s in on {
+                waiters[s.index()].push(i);
+            }
+        }
+        let dynamic = (design.processes.iter().enumerate())
+            .filter(|(_, p)| p.code.iter().any(|c| matches!(c, Instr::Call { .. })))
+            .map(|(i, _)| i)
+            .collect();
         Ok(EventKernel {
             design,
-            signals: Signals::new(design)?,
-            procs: design.processes.iter().map(ProcState::new).collect(),
+            signals,
+            procs,
+            lowered,
+            timeouts: BinaryHeap::new(),
+            timeout_of: vec![f64::INFINITY; design.processes.len()],
+            waiters,
+            dynamic,
             breaks: Vec::new(),
             break_count: 0,
             reports: Vec::new(),
@@ -98,7 +162,7 @@ impl<'d> EventKernel<'d> {
     }
 
     /// The earliest time at which a transaction or a timeout is due (infinity if none).
-    pub fn next_time(&self, now: f64) -> f64 {
+    pub fn next_time(&mut self, now: f64) -> f64 {
         if self.signals.has_forced() {
             return now;
         }
@@ -109,12 +173,28 @@ impl<'d> EventKernel<'d> {
     }
 
     /// [`EventKernel::next_time`] from the pending transactions and the timeouts.
-    fn scan_next_time(&self) -> f64 {
-        self.procs
-            .iter()
-            .filter(|p| !p.halted)
-            .filter_map(|p| p.timeout_at)
-            .fold(self.signals.next_time(), f64::min)
+    #[inline]
+    fn scan_next_time(&mut self) -> f64 {
+        self.signals.next_time().min(self.next_timeout())
+    }
+
+    /// The earliest timeout of a waiting process (infinity if none), the stale entries
+    /// before it dropped.
+    #[inline]
+    fn next_timeout(&mut self) -> f64 {
+        while let Some(Reverse(Due(t, i))) = self.timeouts.peek() {
+            if self.waits_until(*i, *t) {
+                return *t;
+            }
+            self.timeouts.pop();
+        }
+        f64::INFINITY
+    }
+
+    /// Whether process `i` waits with timeout `t`.
+    #[inline]
+    fn waits_until(&self, i: usize, t: f64) -> bool {
+        self.timeout_of[i] == t
     }
 
     /// The earliest time at which something due needs the analog solution (see
@@ -179,13 +259,41 @@ impl<'d> EventKernel<'d> {
     ) -> Result<Option<Outcome>, SimError> {
         self.signals.update(now, self.design)?;
         self.events += self.signals.events.len();
+        // The processes that may resume: those whose timeout is due, those waiting on a
+        // signal with an event, those whose waits are known only at run time; in process
+        // order, as the LRM's "each process" reads in every simulator.
         self.resume.clear();
-        for (i, p) in self.procs.iter().enumerate() {
+        while let Some(&Reverse(Due(t, i))) = self.timeouts.peek()
+            && t <= now
+        {
+            self.timeouts.pop();
+            if self.waits_until(i, t) {
+                self.resume.push(i);
+            }
+        }
+        for s in &self.signals.events {
+            let waiters = &self.waiters[s.index()];
+            if !waiters.is_empty() {
+                self.resume.extend_from_slice(waiters);
+            }
+        }
+        if !self.dynamic.is_empty() {
+            self.resume.extend_from_slice(&self.dynamic);
+        }
+        if self.resume.len() > 1 {
+            self.resume.sort_unstable();
+            self.resume.dedup();
+        }
+        let mut k = 0;
+        for j in 0..self.resume.len() {
+            let i = self.resume[j];
+            let p = &self.procs[i];
             if p.halted || p.waiting_at.is_none() {
                 continue;
             }
             if p.timeout_at.is_some_and(|t| t <= now) {
-                self.resume.push(i);
+                self.resume[k] = i;
+                k += 1;
                 continue;
             }
             let states = &self.signals.states;
@@ -217,7 +325,12 @@ impl<'d> EventKernel<'d> {
                     continue;
                 }
             }
-            self.resume.push(i);
+            self.resume[k] = i;
+            k += 1;
+        }
+        self.resume.truncate(k);
+        if self.resume.is_empty() {
+            return Ok(None);
         }
         self.run_resumed(now, analog, on_report)
     }
@@ -233,25 +346,21 @@ impl<'d> EventKernel<'d> {
         for k in 0..self.resume.len() {
             let i = self.resume[k];
             self.last_process = i;
-            let mut cx = Context {
-                signals: &mut self.signals,
-                quantities: analog.values,
-                derivatives: analog.derivatives,
-                now,
-                breaks: &mut self.breaks,
-                break_count: &mut self.break_count,
-                reports: &mut self.reports,
-                on_report,
-                waveform: &mut self.waveform,
-                subprograms: &self.design.subprograms,
-                design_signals: &self.design.signals,
-                io: &self.io,
+            self.timeout_of[i] = f64::INFINITY;
+            // The lowered instructions first, without the interpreter's context.
+            let ran = lower::run(&self.lowered[i], &mut self.procs[i], &mut self.signals, now);
+            let suspend = match ran {
+                Ran::Suspended(s) if self.io.function_reports.borrow().is_empty() => s,
+                ran => self.run_general(i, ran, now, analog, on_report)?,
             };
-            let suspend = process::run(i, &self.design.processes[i], &mut self.procs[i], &mut cx);
-            // What the instruction the process suspended at (`wait until f(x)`) reported.
-            process::emit_function_reports(&mut cx, &self.design.processes[i].name);
-            match suspend? {
-                Suspend::Wait | Suspend::Halt => {}
+            match suspend {
+                Suspend::Wait => {
+                    if let Some(t) = self.procs[i].timeout_at {
+                        self.timeout_of[i] = t;
+                        self.timeouts.push(Reverse(Due(t, i)));
+                    }
+                }
+                Suspend::Halt => {}
                 Suspend::Stop => {
                     outcome = Some(Outcome::Stopped { time: now });
                     break;
@@ -266,12 +375,61 @@ impl<'d> EventKernel<'d> {
         Ok(outcome)
     }
 
+    /// Process `i` after [`lower::run`]: the interpreter from where that declined, and the
+    /// reports of the functions called since the last process ran. Out of
+    /// [`EventKernel::run_resumed`]'s loop, whose frame stays small.
+    #[inline(never)]
+    fn run_general(
+        &mut self,
+        i: usize,
+        ran: Ran,
+        now: f64,
+        analog: &AnalogView,
+        on_report: &mut dyn FnMut(&Report),
+    ) -> Result<Suspend, SimError> {
+        let process = &self.design.processes[i];
+        let mut cx = Context {
+            signals: &mut self.signals,
+            quantities: analog.values,
+            derivatives: analog.derivatives,
+            now,
+            breaks: &mut self.breaks,
+            break_count: &mut self.break_count,
+            reports: &mut self.reports,
+            on_report,
+            waveform: &mut self.waveform,
+            subprograms: &self.design.subprograms,
+            design_signals: &self.design.signals,
+            io: &self.io,
+        };
+        let suspend = match ran {
+            Ran::Suspended(s) => Ok(s),
+            Ran::Declined { steps } => {
+                let state = &mut self.procs[i];
+                process::run(i, process, &self.lowered[i], state, &mut cx, steps)
+            }
+        };
+        // What the instruction the process suspended at (`wait until f(x)`) reported, and
+        // what the conditions of the waits reported.
+        process::emit_function_reports(&mut cx, &process.name);
+        suspend
+    }
+
     /// True when a break statement ran since the last call; `out` receives the reinitialisation
     /// values in execution order (a later value for the same quantity wins).
     pub fn take_breaks(&mut self, out: &mut Vec<(QuantityId, f64)>) -> bool {
         out.clear();
         out.append(&mut self.breaks);
         std::mem::replace(&mut self.break_count, 0) > 0
+    }
+
+    /// Forgets the breaks executed since the last call (a run without an analog side).
+    #[inline]
+    pub fn discard_breaks(&mut self) {
+        if self.break_count > 0 || !self.breaks.is_empty() {
+            self.breaks.clear();
+            self.break_count = 0;
+        }
     }
 
     /// Current value of signal `s`.

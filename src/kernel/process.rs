@@ -9,6 +9,7 @@ use crate::source::Span;
 use super::call::{assertion_report, call_depth_limit, frame, too_deep};
 use super::error::SimError;
 use super::eval::{Env, EvalError, eval, integer, offset, set_element, truth};
+use super::lower::{Flow, Op};
 use super::signals::{Delay, Signals};
 use super::{Report, Severity};
 
@@ -95,6 +96,11 @@ impl ProcState {
         }
     }
 
+    /// Every signal a wait of the process's own code is sensitive to (with repeats).
+    pub fn own_sensitivity(&self) -> impl Iterator<Item = SignalId> + '_ {
+        self.sensitivity.iter().flatten().copied()
+    }
+
     /// The signals the current wait is sensitive to.
     pub fn sensitivity(&self) -> &[SignalId] {
         match self.waiting_at {
@@ -171,12 +177,29 @@ pub(crate) fn later(now: f64, d: f64) -> f64 {
         return now;
     }
     let t = now + d;
-    let n = (t * FS).round();
-    if n.abs() < 9.0e15 {
-        (n / FS).max(now)
+    let x = t * FS;
+    if x.abs() < 9.0e15 {
+        (round(x) / FS).max(now)
     } else {
         t
     }
+}
+
+/// `x.round()` (half away from zero) for `|x| < 2^53`, without the library call that the
+/// baseline x86-64 target makes of `f64::round` (it has no rounding instruction): `x` less
+/// its truncation is exact at these magnitudes.
+#[inline(always)]
+fn round(x: f64) -> f64 {
+    let n = x as i64;
+    let f = x - n as f64;
+    let n = if f >= 0.5 {
+        n + 1
+    } else if f <= -0.5 {
+        n - 1
+    } else {
+        n
+    };
+    n as f64
 }
 
 /// Tells the reports that functions made while `process` evaluated their calls.
@@ -221,12 +244,16 @@ macro_rules! process_env {
     };
 }
 
-/// Runs process `index` until it suspends.
+/// Runs process `index` until it suspends; `lowered` is its code lowered
+/// ([`super::lower`]), instruction by instruction, and `first_step` the number of
+/// instructions [`super::lower::run`] ran before it declined (0 without it).
 pub(crate) fn run(
     index: usize,
     process: &Process,
+    lowered: &[Op],
     state: &mut ProcState,
     cx: &mut Context,
+    first_step: usize,
 ) -> Result<Suspend, SimError> {
     let now = cx.now;
     let fail = |e: EvalError, span: Span| runtime_error(process, now, e, span);
@@ -235,6 +262,11 @@ pub(crate) fn run(
     let subs = cx.subprograms;
     // The running code changes only at `Call` and `Return`, which look it up again.
     let (mut code, mut decls, mut spans) = code_of(process, subs, state.running);
+    // The lowered instructions of the running code: none in a procedure.
+    let mut ops = match state.running {
+        None => lowered,
+        Some(_) => &[],
+    };
     // What an instruction's expressions read; built where used, since assignments change
     // the signals and variables it borrows.
     macro_rules! env {
@@ -242,12 +274,22 @@ pub(crate) fn run(
             process_env!(cx, state, subs, index)
         };
     }
-    for step in 0..INSTRUCTION_LIMIT {
+    for step in first_step..INSTRUCTION_LIMIT {
         cx.io
             .check_cancel(step)
             .map_err(|e| fail(e, process.span))?;
-        emit_function_reports(cx, &process.name);
         let pc = state.pc;
+        // A lowered instruction, unless it declines (then the interpreter runs it below).
+        if let Some(op) = ops.get(pc) {
+            match super::lower::step(op, state, cx.signals, now) {
+                Some(Flow::Next) => continue,
+                Some(Flow::Suspend(s)) => return Ok(s),
+                None => {}
+            }
+        }
+        // What functions reported during the previous instructions (lowered instructions
+        // call none).
+        emit_function_reports(cx, &process.name);
         let Some(instr) = code.get(pc) else {
             // Elaboration guarantees every path ends in a wait; stop here rather than panic.
             return Err(fail(
@@ -423,6 +465,10 @@ pub(crate) fn run(
                     return Ok(suspend);
                 }
                 (code, decls, spans) = code_of(process, subs, state.running);
+                ops = match state.running {
+                    None => lowered,
+                    Some(_) => &[],
+                };
             }
         }
     }
@@ -670,6 +716,38 @@ fn seconds(v: &Value) -> Result<f64, EvalError> {
 #[cfg(test)]
 mod tests {
     use super::later;
+
+    #[test]
+    fn rounding_is_the_library_s() {
+        let mut x = 0.123_456_789f64;
+        let mut checked = 0;
+        while x < 9.0e15 {
+            for v in [
+                x,
+                -x,
+                x.floor() + 0.5,
+                -(x.floor() + 0.5),
+                x.floor() + 0.49999999999999994,
+            ] {
+                assert_eq!(super::round(v), v.round(), "{v}");
+                checked += 1;
+            }
+            x *= 1.37;
+        }
+        for v in [
+            0.0,
+            -0.0,
+            0.5,
+            -0.5,
+            1.5,
+            2.5,
+            0.49999999999999994,
+            4503599627370495.5,
+        ] {
+            assert_eq!(super::round(v), v.round(), "{v}");
+        }
+        assert!(checked > 400);
+    }
 
     #[test]
     fn times_stay_on_the_femtosecond_grid_whatever_the_sum() {

@@ -8,6 +8,7 @@
 //! several drivers act on a `std_ulogic` signal). `'above` signals have no driver: the analog
 //! side forces their values at threshold crossings.
 
+use std::borrow::Cow;
 use std::collections::VecDeque;
 
 use rustc_hash::FxHashMap;
@@ -16,6 +17,7 @@ use crate::ast::GuardedKind;
 use crate::design::{Design, Expr, Resolution, SignalId, SignalKind, Type, Value};
 
 use super::error::SimError;
+use super::lower::Kind;
 
 /// A signal's visible state.
 #[derive(Clone, Debug)]
@@ -129,6 +131,22 @@ pub(crate) struct Signals {
     stables: Vec<Stable>,
     /// `'above` values to apply in the next update phase.
     forced: Vec<(SignalId, Value)>,
+    /// Whether there are views, gathered ports, converted signals, `S'transaction`,
+    /// `S'stable` or `S'quiet` signals (which [`Signals::update_derived`] updates).
+    derived: bool,
+    /// Whether events are recorded for [`Signals::take_changed`].
+    track_changes: bool,
+    /// Per signal driven element by element, unguarded, without a resolution function and
+    /// with at most one driver per element: each element's driver (`u32::MAX`: none, the
+    /// element keeps its value).
+    element_drivers: Vec<Option<Vec<u32>>>,
+    /// Per signal, its one driver when it has one, drives it whole and has no resolution
+    /// function (`u32::MAX` otherwise): [`Signals::single_driver`] when that is connected.
+    sole: Vec<u32>,
+    /// The earliest transaction of the pending drivers, unless `next_stale` (an inertial
+    /// rejection deleted transactions since it was found).
+    next: f64,
+    next_stale: bool,
     /// Signals with an event in the last update phase.
     pub events: Vec<SignalId>,
     /// Signals with an event since [`Signals::take_changed`] was last called.
@@ -200,7 +218,7 @@ impl Signals {
         // An assignment to a view drives its elements of the parent (statically known ones).
         // Each target comes with its driver's initial value: the default of the port the
         // process drives it through, else the signal's own (an element's for a position).
-        let assigned: Vec<Vec<(SignalId, Driven, Value)>> = design
+        let assigned: Vec<Vec<(SignalId, Driven, Cow<Value>)>> = design
             .processes
             .iter()
             .map(|p| {
@@ -233,7 +251,8 @@ impl Signals {
                         for k in slots {
                             let (parent, position) = parts[k];
                             let v = own.get(k).cloned().unwrap_or_else(|| init.clone());
-                            out.push((parent, position.map_or(Driven::Whole, Driven::Position), v));
+                            let driven = position.map_or(Driven::Whole, Driven::Position);
+                            out.push((parent, driven, Cow::Owned(v)));
                         }
                         continue;
                     }
@@ -250,10 +269,12 @@ impl Signals {
                                         .or_else(|| parent_init.view(k, None))
                                         .unwrap_or_else(|| init.clone()),
                                 };
-                                out.push((parent, Driven::Position(k), v));
+                                out.push((parent, Driven::Position(k), Cow::Owned(v)));
                             }
                         }
-                        None => out.push((target, driven, init.clone())),
+                        // Borrowed: n processes driving one element each of an n-element
+                        // signal would copy it n times.
+                        None => out.push((target, driven, Cow::Borrowed(init))),
                     }
                 }
                 out
@@ -282,18 +303,19 @@ impl Signals {
                     (Some(_), Driven::Position(k)) => vec![Some(k)],
                     (Some(n), _) => (0..n).map(Some).collect(),
                 };
-                let initial = match (split[target.index()], driven) {
-                    (_, Driven::Position(_)) | (None, _) => None,
-                    (Some(_), _) => Some(init.elements()),
-                };
+                // Element k of the initial value (not the whole value split into a vector
+                // for each process: a generate of n processes each driving one element of an
+                // n-element signal took n^2 copies).
+                let whole =
+                    matches!(driven, Driven::Position(_)) || split[target.index()].is_none();
                 for element in slots {
                     index.entry((p, target, element)).or_insert_with(|| {
                         by_signal[target.index()].push(drivers.len());
-                        let current = match (&initial, element) {
-                            (Some(elements), Some(k)) => {
-                                elements.get(k).cloned().unwrap_or_else(|| init.clone())
+                        let current = match element {
+                            Some(k) if !whole => {
+                                element_of(init, k).unwrap_or_else(|| Value::clone(init))
                             }
-                            _ => init.clone(),
+                            _ => Value::clone(init),
                         };
                         drivers.push(Driver {
                             signal: target,
@@ -441,10 +463,50 @@ impl Signals {
                 .collect(),
             stables,
             forced: Vec::new(),
+            derived: false,
+            track_changes: true,
+            element_drivers: Vec::new(),
+            sole: Vec::new(),
+            next: f64::INFINITY,
+            next_stale: false,
             events: Vec::new(),
             changed: vec![false; n],
             changed_list: Vec::new(),
         };
+        signals.element_drivers = (0..n)
+            .map(|s| {
+                let n = signals.split[s]?;
+                if signals.resolution[s].is_some()
+                    || signals.guarded[s].is_some()
+                    || !matches!(&signals.states[s].value, Value::Array(items) if items.len() == n)
+                {
+                    return None;
+                }
+                let mut of = vec![u32::MAX; n];
+                for &d in &signals.by_signal[s] {
+                    let k = signals.drivers[d].element?;
+                    let slot = of.get_mut(k)?;
+                    if *slot != u32::MAX {
+                        return None;
+                    }
+                    *slot = u32::try_from(d).ok()?;
+                }
+                Some(of)
+            })
+            .collect();
+        signals.sole = (0..n)
+            .map(|s| match signals.by_signal[s].as_slice() {
+                [d] if signals.split[s].is_none() && signals.resolution[s].is_none() => {
+                    u32::try_from(*d).unwrap_or(u32::MAX)
+                }
+                _ => u32::MAX,
+            })
+            .collect();
+        signals.derived = !(signals.views.is_empty()
+            && signals.gathers.is_empty()
+            && signals.converted.is_empty()
+            && signals.transactions.is_empty()
+            && signals.stables.is_empty());
         signals.views_of_converted = signals
             .views
             .iter()
@@ -577,36 +639,11 @@ impl Signals {
             return;
         };
         let driver = &mut self.drivers[d];
+        self.next_stale |= edit(driver, first_value, first_time, delay);
+        if first_time < self.next {
+            self.next = first_time;
+        }
         let w = &mut driver.waveform;
-        // Old transactions at or after the first new one are deleted (both mechanisms).
-        while w.back().is_some_and(|tr| tr.time >= first_time) {
-            w.pop_back();
-        }
-        // With no old transaction left there is nothing to reject (the usual case).
-        if let Delay::Inertial(start) = delay
-            && !w.is_empty()
-        {
-            let by_element = first_value
-                .as_ref()
-                .is_some_and(|new| reject_by_element(w, start, new, &driver.current));
-            if !by_element {
-                // Within the rejection interval, keep only the run of old transactions
-                // directly before the new one that already carries its value; delete the rest.
-                let mut kept = VecDeque::with_capacity(w.len());
-                let mut chain = true;
-                while let Some(tr) = w.pop_back() {
-                    if tr.time < start {
-                        w.push_back(tr);
-                        break;
-                    }
-                    chain = chain && tr.value == *first_value;
-                    if chain {
-                        kept.push_front(tr);
-                    }
-                }
-                w.extend(kept);
-            }
-        }
         if let [(value, time)] = elements.as_mut_slice() {
             // One element (the usual case): moved without a drain.
             let value = value.take();
@@ -623,9 +660,45 @@ impl Signals {
         }
     }
 
+    /// [`Signals::assign`] of a one-element waveform of a scalar value (a lowered
+    /// assignment's: `x` of kind `kind`), without the waveform's vector; the value is built
+    /// where the transaction is stored (a value built by the caller and read back here whole
+    /// stalled on its parts' stores).
+    #[inline]
+    pub fn assign_scalar(&mut self, d: usize, kind: Kind, x: i64, time: f64, delay: Delay) {
+        let driver = &mut self.drivers[d];
+        let w = &mut driver.waveform;
+        // Old transactions at or after the new one are deleted (both mechanisms).
+        while w.back().is_some_and(|tr| tr.time >= time) {
+            w.pop_back();
+        }
+        if let Delay::Inertial(start) = delay
+            && !w.is_empty()
+        {
+            reject(w, start, &Some(kind.value(x)), &driver.current);
+            self.next_stale = true;
+        }
+        w.push_back(Transaction {
+            time,
+            value: Some(kind.value(x)),
+        });
+        // Not `f64::min`, whose NaN handling costs more: times are numbers.
+        if time < self.next {
+            self.next = time;
+        }
+        if !driver.pending {
+            driver.pending = true;
+            self.pending.push(d);
+        }
+    }
+
     /// The earliest pending transaction, or infinity.
+    #[inline]
     pub fn next_time(&self) -> f64 {
-        self.next_time_where(|_| true)
+        if self.next_stale || !self.stables.is_empty() {
+            return self.next_time_where(|_| true);
+        }
+        self.next
     }
 
     /// The earliest transaction due on a signal for which `counts` holds.
@@ -655,6 +728,7 @@ impl Signals {
 
     /// The update phase at `now`: transactions due become driving values; effective values are
     /// recomputed; `events` lists the signals whose value changed.
+    #[inline]
     pub fn update(&mut self, now: f64, design: &Design) -> Result<(), SimError> {
         // Only the signals active in the last phase have flags set (`set` gives an event
         // to active signals only).
@@ -666,29 +740,50 @@ impl Signals {
         self.active.clear();
         self.events.clear();
         let mut k = 0;
+        // The earliest transaction left.
+        let mut next = f64::INFINITY;
         while k < self.pending.len() {
             let driver = &mut self.drivers[self.pending[k]];
             let mut due = false;
-            while driver.waveform.front().is_some_and(|t| t.time <= now) {
-                // The loop condition guarantees an element.
-                let tr = driver.waveform.pop_front().unwrap();
-                driver.connected = tr.value.is_some();
-                if let Some(v) = tr.value {
-                    driver.current = v;
+            let Driver {
+                waveform,
+                current,
+                connected,
+                ..
+            } = driver;
+            while let Some(tr) = waveform.front_mut()
+                && tr.time <= now
+            {
+                *connected = tr.value.is_some();
+                // Read in place, not moved out whole through the stack (its parts' stores
+                // stalled the load of the whole).
+                if let Some(v) = &mut tr.value
+                    && !copy_scalar(current, v)
+                {
+                    *current = std::mem::replace(v, Value::Boolean(false));
                 }
+                waveform.pop_front();
                 due = true;
             }
             let signal = driver.signal;
-            if driver.waveform.is_empty() {
-                driver.pending = false;
-                self.pending.swap_remove(k);
-            } else {
-                k += 1;
+            match driver.waveform.front() {
+                None => {
+                    driver.pending = false;
+                    self.pending.swap_remove(k);
+                }
+                Some(tr) => {
+                    if tr.time < next {
+                        next = tr.time;
+                    }
+                    k += 1;
+                }
             }
             if due {
                 self.activate(signal, now);
             }
         }
+        self.next = next;
+        self.next_stale = false;
         // Effective values in signal order, as the events list them.
         self.active.sort_unstable();
         for k in 0..self.active.len() {
@@ -699,6 +794,10 @@ impl Signals {
                 if store(&mut self.states[s], &self.drivers[d].current) {
                     self.event(SignalId(s as u32), now);
                 }
+                continue;
+            }
+            if self.element_drivers[s].is_some() {
+                self.update_elements(s, now);
                 continue;
             }
             if let Some(value) = self.effective(s, design, now)? {
@@ -713,6 +812,16 @@ impl Signals {
             }
             self.forced = forced;
         }
+        if self.derived {
+            self.update_derived(now, design)?;
+        }
+        Ok(())
+    }
+
+    /// The rest of the update phase: the signals whose values follow others' (views,
+    /// gathered ports, converted signals, `S'transaction`, `S'stable(T)` and `S'quiet(T)`).
+    #[inline(never)]
+    fn update_derived(&mut self, now: f64, design: &Design) -> Result<(), SimError> {
         // Views follow their parents (never views themselves) after these are updated.
         for i in 0..self.views.len() {
             self.follow_view(self.views[i], now);
@@ -808,10 +917,43 @@ impl Signals {
         st.last_event = Some(now);
         st.event = true;
         self.events.push(s);
-        if !self.changed[s.index()] {
+        if self.track_changes && !self.changed[s.index()] {
             self.changed[s.index()] = true;
             self.changed_list.push(s);
         }
+    }
+
+    /// [`Signals::effective`] and [`Signals::set`] of a signal driven element by element
+    /// with at most one driver per element (`element_drivers`): the elements written in
+    /// place, the array copied into `last_value` only when one changes.
+    #[inline(never)]
+    fn update_elements(&mut self, s: usize, now: f64) {
+        let Some(ds) = &self.element_drivers[s] else {
+            return;
+        };
+        let Value::Array(items) = &self.states[s].value else {
+            return;
+        };
+        let differs = |(k, &d): (usize, &u32)| {
+            (self.drivers.get(d as usize)).is_some_and(|d| d.current != items[k])
+        };
+        if !ds.iter().enumerate().any(differs) {
+            return;
+        }
+        let st = &mut self.states[s];
+        // Into the old `last_value`'s storage when it is an array of the same length.
+        match (&mut st.last_value, &st.value) {
+            (Value::Array(last), Value::Array(items)) => last.clone_from(items),
+            (last, value) => *last = value.clone(),
+        }
+        if let Value::Array(items) = &mut st.value {
+            for (item, &d) in items.iter_mut().zip(ds) {
+                if let Some(d) = self.drivers.get(d as usize) {
+                    item.clone_from(&d.current);
+                }
+            }
+        }
+        self.event(SignalId(s as u32), now);
     }
 
     /// The common case of [`Signals::effective`], a signal driven whole by one connected
@@ -819,15 +961,8 @@ impl Signals {
     /// runs at every transaction).
     #[inline]
     fn single_driver(&self, s: usize) -> Option<usize> {
-        match self.by_signal[s].as_slice() {
-            [d] if self.split[s].is_none()
-                && self.drivers[*d].connected
-                && self.resolution[s].is_none() =>
-            {
-                Some(*d)
-            }
-            _ => None,
-        }
+        let d = self.sole[s] as usize;
+        (d < self.drivers.len() && self.drivers[d].connected).then_some(d)
     }
 
     /// The effective value of signal `s` from its connected drivers (LRM 12.6.2): `None`
@@ -939,6 +1074,14 @@ impl Signals {
         }
     }
 
+    /// Stops recording the signals with an event for [`Signals::take_changed`] (a run
+    /// without an analog side, which takes none).
+    pub fn stop_tracking_changes(&mut self) {
+        self.track_changes = false;
+        self.changed_list.clear();
+        self.changed.fill(false);
+    }
+
     /// Moves the signals with an event since the last call into `out` (cleared first).
     pub fn take_changed(&mut self, out: &mut Vec<SignalId>) {
         out.clear();
@@ -947,6 +1090,76 @@ impl Signals {
             out.push(s);
         }
     }
+}
+
+/// The projected waveform of `driver` edited for a new waveform whose first element is
+/// `first_value` at `first_time` (LRM 10.5.2.2), before its elements are appended; true if
+/// transactions before the new ones may have gone (an inertial rejection).
+#[inline]
+fn edit(driver: &mut Driver, first_value: &Option<Value>, first_time: f64, delay: Delay) -> bool {
+    let w = &mut driver.waveform;
+    // Old transactions at or after the first new one are deleted (both mechanisms).
+    while w.back().is_some_and(|tr| tr.time >= first_time) {
+        w.pop_back();
+    }
+    // With no old transaction left there is nothing to reject (the usual case).
+    if let Delay::Inertial(start) = delay
+        && !w.is_empty()
+    {
+        reject(w, start, first_value, &driver.current);
+        return true;
+    }
+    false
+}
+
+/// Inertial rejection (LRM 10.5.2.2) in `w`, none of whose transactions is at or after the
+/// new waveform's first element `first_value`; `start` is the rejection interval's start.
+#[inline(never)]
+fn reject(w: &mut VecDeque<Transaction>, start: f64, first_value: &Option<Value>, current: &Value) {
+    let by_element = first_value
+        .as_ref()
+        .is_some_and(|new| reject_by_element(w, start, new, current));
+    if !by_element {
+        // Within the rejection interval, keep only the run of old transactions directly
+        // before the new one that already carries its value; delete the rest.
+        let mut kept = VecDeque::with_capacity(w.len());
+        let mut chain = true;
+        while let Some(tr) = w.pop_back() {
+            if tr.time < start {
+                w.push_back(tr);
+                break;
+            }
+            chain = chain && tr.value == *first_value;
+            if chain {
+                kept.push_front(tr);
+            }
+        }
+        w.extend(kept);
+    }
+}
+
+/// Element `k` of `v` as [`Value::elements`] lists them, without copying the others.
+fn element_of(v: &Value, k: usize) -> Option<Value> {
+    match v {
+        Value::Array(items) => items.get(k).cloned(),
+        Value::String(s) => s.chars().nth(k).map(|c| Value::Enum(c as u32)),
+        other => (k == 0).then(|| other.clone()),
+    }
+}
+
+/// `*to = *from` for two scalars of one kind, in place; false (having done nothing) for other
+/// values.
+#[inline(always)]
+fn copy_scalar(to: &mut Value, from: &Value) -> bool {
+    match (to, from) {
+        (Value::Integer(a), Value::Integer(b)) => *a = *b,
+        (Value::Enum(a), Value::Enum(b)) => *a = *b,
+        (Value::Boolean(a), Value::Boolean(b)) => *a = *b,
+        (Value::Real(a), Value::Real(b)) => *a = *b,
+        (Value::Time(a), Value::Time(b)) => *a = *b,
+        _ => return false,
+    }
+    true
 }
 
 /// Gives `st` the value `v`, its old value becoming `last_value` when it changes; true if it
