@@ -253,14 +253,7 @@ fn a_cartesian_pendulum_of_index_three_keeps_its_period_and_its_rod() {
         .map(|(x, y)| (x * x + y * y - l * l).abs())
         .fold(0.0, f64::max);
     assert!(drift < 1e-5, "the rod's length drifts by {drift}");
-    // Upward zero crossings of x, interpolated.
-    let mut crossings = Vec::new();
-    for k in 1..w.times.len() {
-        if x[k - 1] < 0.0 && x[k] >= 0.0 {
-            let (t0, t1) = (w.times[k - 1], w.times[k]);
-            crossings.push(t0 + (t1 - t0) * -x[k - 1] / (x[k] - x[k - 1]));
-        }
-    }
+    let crossings = upward_crossings(&w.times, x);
     assert_eq!(crossings.len(), 100);
     let measured = (crossings[99] - crossings[0]) / 99.0;
     assert!(
@@ -276,6 +269,17 @@ fn a_cartesian_pendulum_of_index_three_keeps_its_period_and_its_rod() {
         "energy {} of {swing}",
         energy(last)
     );
+}
+
+/// The times where `x` crosses zero upwards, interpolated linearly between samples.
+fn upward_crossings(times: &[f64], x: &[f64]) -> Vec<f64> {
+    (1..times.len())
+        .filter(|&k| x[k - 1] < 0.0 && x[k] >= 0.0)
+        .map(|k| {
+            let (t0, t1) = (times[k - 1], times[k]);
+            t0 + (t1 - t0) * -x[k - 1] / (x[k] - x[k - 1])
+        })
+        .collect()
 }
 
 /// The exact period of a pendulum of length `l` released at `theta0`:
@@ -315,13 +319,7 @@ fn a_pendulum_swinging_past_the_horizontal_changes_its_states() {
         .map(|(x, y)| (x * x + y * y - l * l).abs())
         .fold(0.0, f64::max);
     assert!(drift < 1e-8, "the rod's length drifts by {drift}");
-    let mut crossings = Vec::new();
-    for k in 1..w.times.len() {
-        if x[k - 1] < 0.0 && x[k] >= 0.0 {
-            let (t0, t1) = (w.times[k - 1], w.times[k]);
-            crossings.push(t0 + (t1 - t0) * -x[k - 1] / (x[k] - x[k - 1]));
-        }
-    }
+    let crossings = upward_crossings(&w.times, x);
     assert_eq!(crossings.len(), 7);
     let measured = (crossings[6] - crossings[0]) / 6.0;
     assert!(

@@ -758,6 +758,21 @@ mod tests {
         ]
     }
 
+    /// The unknowns read as `'dot`.
+    fn states(asm: &Assembled) -> Vec<usize> {
+        let mut states = Vec::new();
+        for r in &asm.residuals {
+            r.visit(&mut |e| {
+                if let Sym::Dot(j) = e {
+                    states.push(*j);
+                }
+            });
+        }
+        states.sort_unstable();
+        states.dedup();
+        states
+    }
+
     #[test]
     fn an_index_one_system_needs_no_reduction() {
         // x' = -x + y, 0 = y - 2.
@@ -793,31 +808,11 @@ mod tests {
         let out = red.assemble(&asm, &sel);
         assert_eq!(out.unknowns.len(), out.residuals.len());
         assert_eq!(out.residuals.len(), 9);
-        let mut states = Vec::new();
-        for r in &out.residuals {
-            r.visit(&mut |e| {
-                if let Sym::Dot(j) = e {
-                    states.push(*j);
-                }
-            });
-        }
-        states.sort_unstable();
-        states.dedup();
-        assert_eq!(states, vec![0, 2], "x and u are the states");
+        assert_eq!(states(&out), vec![0, 2], "x and u are the states");
         // Lying mostly sideways, the choice turns round.
         let sel = red.select(&[0.95, -0.3, 0.0, 0.0, 0.0], &[], &[]);
         let out = red.assemble(&asm, &sel);
-        let mut states = Vec::new();
-        for r in &out.residuals {
-            r.visit(&mut |e| {
-                if let Sym::Dot(j) = e {
-                    states.push(*j);
-                }
-            });
-        }
-        states.sort_unstable();
-        states.dedup();
-        assert_eq!(states, vec![1, 3], "y and v are the states");
+        assert_eq!(states(&out), vec![1, 3], "y and v are the states");
     }
 
     #[test]
