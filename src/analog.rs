@@ -243,6 +243,18 @@ fn derivatives(residuals: &[Sym], n: usize) -> Derivatives {
     }
 }
 
+/// The signal slots at the start (see `delay::ready_slot`): the design's signals at their
+/// initial values, the source scale 1, history not ready (`Q'delayed(T) = Q`, the quiescent
+/// domain), time running (0 only while `quiescent` solves), and no delayed values yet.
+fn initial_signals(design: &Design) -> Vec<f64> {
+    let mut signals: Vec<f64> = (design.signals.iter())
+        .map(|s| s.init.as_f64().unwrap_or(0.0))
+        .collect();
+    signals.extend([1.0, 0.0, 1.0]);
+    signals.extend(design.delays.iter().map(|_| 0.0));
+    signals
+}
+
 /// What index reduction did, for `vams dae`.
 pub struct IndexReduced {
     /// The structural index of the model as written.
@@ -334,14 +346,7 @@ fn reduce_index(
     for (p, &v) in point.iter_mut().zip(&options.state_values) {
         *p = v;
     }
-    let mut signals: Vec<f64> = design
-        .signals
-        .iter()
-        .map(|s| s.init.as_f64().unwrap_or(0.0))
-        .collect();
-    signals.extend([1.0, 0.0, 1.0]);
-    signals.extend(design.delays.iter().map(|_| 0.0));
-    let selection = reduction.select(&point, &held, &signals);
+    let selection = reduction.select(&point, &held, &initial_signals(design));
     let reduced = reduction.assemble(&asm, &selection);
     let names = Unknown::names(&reduced.unknowns, design);
     let equations = (asm.residuals.len()..reduced.residuals.len())
@@ -349,15 +354,6 @@ fn reduce_index(
             let from = build::Origin::describe_among(&reduced.origins, &names, k, design);
             (from, reduced.residuals[k].clone())
         })
-        .collect();
-    let dummies = (asm.unknowns.len()..reduced.unknowns.len())
-        .filter(|&j| {
-            !reduced
-                .residuals
-                .iter()
-                .any(|r| r.any(|e| *e == Sym::Dot(j)))
-        })
-        .map(|j| names[j].clone())
         .collect();
     let mut differential = vec![false; reduced.unknowns.len()];
     for r in &reduced.residuals {
@@ -367,6 +363,11 @@ fn reduce_index(
             }
         });
     }
+    // The derivatives made unknowns that are not states themselves.
+    let dummies = (asm.unknowns.len()..reduced.unknowns.len())
+        .filter(|&j| !differential[j])
+        .map(|j| names[j].clone())
+        .collect();
     let states = (0..differential.len())
         .filter(|&j| differential[j])
         .map(|j| names[j].clone())
@@ -675,17 +676,7 @@ impl AnalogSystem {
             return Err(errors);
         }
 
-        let mut signals: Vec<f64> = design
-            .signals
-            .iter()
-            .map(|s| s.init.as_f64().unwrap_or(0.0))
-            .collect();
-        signals.push(1.0);
-        // History not ready: `Q'delayed(T) = Q` (the quiescent domain).
-        signals.push(0.0);
-        // Time runs, except while `quiescent` solves.
-        signals.push(1.0);
-        signals.extend(design.delays.iter().map(|_| 0.0));
+        let signals = initial_signals(design);
         // Delay inputs are protected, so they survive elimination.
         let delay_lines = design
             .delays
@@ -817,8 +808,8 @@ impl AnalogSystem {
 
     /// Index reduction's choice of states made again at the initial break values `point`
     /// (by `QuantityId`; other quantities at their initial guesses): a pendulum's states
-    /// are the coordinates its constraint does not pin down there. Rebuilds the system when
-    /// the choice changes; a model of index 0 or 1 is left as it is.
+    /// are the coordinates its constraint does not pin down there. Rebuilds a reduced
+    /// system; a model of index 0 to 2 is left as it is.
     pub fn choose_states(&mut self, design: &Design, point: &[(QuantityId, f64)]) {
         if self.index_reduced.is_none() {
             return;
@@ -827,15 +818,22 @@ impl AnalogSystem {
             state_point: point.to_vec(),
             ..self.options.clone()
         };
-        // Built once already from the same design: only the states can differ, and a failure
-        // leaves the first choice in place.
-        let Ok(mut rebuilt) = AnalogSystem::with_options(design, &options) else {
-            return;
-        };
+        // A failure leaves the first choice in place.
+        if let Some(rebuilt) = self.rebuilt(design, &options) {
+            *self = rebuilt;
+        }
+    }
+
+    /// This system built again from `design` with other index-reduction `options` (only the
+    /// states can differ: it was built once from the same design), with the quantities asked
+    /// for and the signal slots as they are now.
+    fn rebuilt(&self, design: &Design, options: &AnalogOptions) -> Option<AnalogSystem> {
+        let mut rebuilt = AnalogSystem::with_options(design, options).ok()?;
         if let Some(wanted) = &self.wanted {
             rebuilt.select_quantities(wanted);
         }
-        *self = rebuilt;
+        rebuilt.signals.clone_from(&self.signals);
+        Some(rebuilt)
     }
 
     /// Index reduction's states chosen again at the state `(t, x, x')` of a run, where the
@@ -884,11 +882,7 @@ impl AnalogSystem {
             state_values: values.clone(),
             ..self.options.clone()
         };
-        let mut rebuilt = AnalogSystem::with_options(design, &options).ok()?;
-        if let Some(wanted) = &self.wanted {
-            rebuilt.select_quantities(wanted);
-        }
-        rebuilt.signals.clone_from(&self.signals);
+        let rebuilt = self.rebuilt(design, &options)?;
         let base_slot = rebuilt.index_reduced.as_ref()?.base_slot.clone();
         let mut state = vec![0.0; rebuilt.len()];
         for (j, slot) in base_slot.iter().enumerate() {

@@ -247,19 +247,9 @@ fn a_cartesian_pendulum_of_index_three_keeps_its_period_and_its_rod() {
         "lam(0) = {}",
         lam[0]
     );
-    let drift = x
-        .iter()
-        .zip(y)
-        .map(|(x, y)| (x * x + y * y - l * l).abs())
-        .fold(0.0, f64::max);
+    let drift = rod_drift(x, y, l);
     assert!(drift < 1e-5, "the rod's length drifts by {drift}");
-    let crossings = upward_crossings(&w.times, x);
-    assert_eq!(crossings.len(), 100);
-    let measured = (crossings[99] - crossings[0]) / 99.0;
-    assert!(
-        ((measured - period) / period).abs() < 1e-4,
-        "period {measured}, exact {period}"
-    );
+    check_period(&w.times, x, 100, period, 1e-4);
     // The swing's energy (above the lowest point) within 10 % after 100 periods.
     let swing = m * g * l * (1.0 - theta0.cos());
     let energy = |k: usize| 0.5 * m * (u[k] * u[k] + v[k] * v[k]) + m * g * (y[k] + l);
@@ -271,15 +261,31 @@ fn a_cartesian_pendulum_of_index_three_keeps_its_period_and_its_rod() {
     );
 }
 
-/// The times where `x` crosses zero upwards, interpolated linearly between samples.
-fn upward_crossings(times: &[f64], x: &[f64]) -> Vec<f64> {
-    (1..times.len())
+/// The largest distance of the pendulum's `(x, y)` from the circle of radius `l`, as
+/// `|x^2 + y^2 - l^2|`.
+fn rod_drift(x: &[f64], y: &[f64], l: f64) -> f64 {
+    x.iter()
+        .zip(y)
+        .map(|(x, y)| (x * x + y * y - l * l).abs())
+        .fold(0.0, f64::max)
+}
+
+/// `x` crosses zero upwards `count` times (crossings interpolated linearly between
+/// samples), and the mean time between the first and the last is `period` within `rel`.
+fn check_period(times: &[f64], x: &[f64], count: usize, period: f64, rel: f64) {
+    let crossings: Vec<f64> = (1..times.len())
         .filter(|&k| x[k - 1] < 0.0 && x[k] >= 0.0)
         .map(|k| {
             let (t0, t1) = (times[k - 1], times[k]);
             t0 + (t1 - t0) * -x[k - 1] / (x[k] - x[k - 1])
         })
-        .collect()
+        .collect();
+    assert_eq!(crossings.len(), count);
+    let measured = (crossings[count - 1] - crossings[0]) / (count - 1) as f64;
+    assert!(
+        ((measured - period) / period).abs() < rel,
+        "period {measured}, exact {period}"
+    );
 }
 
 /// The exact period of a pendulum of length `l` released at `theta0`:
@@ -313,19 +319,9 @@ fn a_pendulum_swinging_past_the_horizontal_changes_its_states() {
     let col = |name: &str| &w.column(name).expect("recorded").values;
     let (x, y) = (col("x"), col("y"));
     assert!(y.iter().any(|&y| y > 0.3), "it swings above the pivot");
-    let drift = x
-        .iter()
-        .zip(y)
-        .map(|(x, y)| (x * x + y * y - l * l).abs())
-        .fold(0.0, f64::max);
+    let drift = rod_drift(x, y, l);
     assert!(drift < 1e-8, "the rod's length drifts by {drift}");
-    let crossings = upward_crossings(&w.times, x);
-    assert_eq!(crossings.len(), 7);
-    let measured = (crossings[6] - crossings[0]) / 6.0;
-    assert!(
-        ((measured - period) / period).abs() < 1e-4,
-        "period {measured}, exact {period}"
-    );
+    check_period(&w.times, x, 7, period, 1e-4);
 }
 
 #[test]

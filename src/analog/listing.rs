@@ -63,13 +63,8 @@ pub fn listing(sys: &AnalogSystem, design: &Design, sources: &SourceMap) -> Stri
             other => other.describe(design),
         })
         .collect();
-    let width = origins.iter().map(String::len).max().unwrap_or(0);
-    for (i, (r, from)) in asm.residuals.iter().zip(&origins).enumerate() {
-        let mut formula = String::new();
-        printer.print(r, 0, &mut formula);
-        let _ = writeln!(out, "  {i:>3}  {from:<width$}  {formula} = 0");
-    }
-    let names = match &sys.index_reduced {
+    write_equations(&mut out, &printer, 0, origins.iter().zip(&asm.residuals));
+    let names: &[String] = match &sys.index_reduced {
         Some(reduced) => {
             let _ = writeln!(
                 out,
@@ -81,18 +76,8 @@ pub fn listing(sys: &AnalogSystem, design: &Design, sources: &SourceMap) -> Stri
                 names: &reduced.names,
                 design,
             };
-            let width = reduced
-                .equations
-                .iter()
-                .map(|(f, _)| f.len())
-                .max()
-                .unwrap_or(0);
-            for (i, (from, r)) in reduced.equations.iter().enumerate() {
-                let mut formula = String::new();
-                printer.print(r, 0, &mut formula);
-                let i = i + asm.residuals.len();
-                let _ = writeln!(out, "  {i:>3}  {from:<width$}  {formula} = 0");
-            }
+            let added = reduced.equations.iter().map(|(from, r)| (from, r));
+            write_equations(&mut out, &printer, asm.residuals.len(), added);
             let _ = writeln!(
                 out,
                 "  dummy derivatives (algebraic unknowns): {}",
@@ -107,9 +92,9 @@ pub fn listing(sys: &AnalogSystem, design: &Design, sources: &SourceMap) -> Stri
                     false => reduced.states.join(", "),
                 }
             );
-            reduced.names.clone()
+            &reduced.names
         }
-        None => names,
+        None => &names,
     };
     let n = names.len();
     if sys.eliminated.is_empty() {
@@ -143,6 +128,28 @@ pub fn listing(sys: &AnalogSystem, design: &Design, sources: &SourceMap) -> Stri
         );
     }
     out
+}
+
+/// One line per equation, numbered from `first`: number, origin (padded to the widest) and
+/// formula.
+fn write_equations<'e>(
+    out: &mut String,
+    printer: &Printer,
+    first: usize,
+    equations: impl Iterator<Item = (&'e String, &'e Sym)> + Clone,
+) {
+    let width = equations
+        .clone()
+        .map(|(from, _)| from.len())
+        .max()
+        .unwrap_or(0);
+    for (i, (from, r)) in equations.enumerate() {
+        let mut formula = String::new();
+        printer.print(r, 0, &mut formula);
+        let i = i + first;
+        // Writing into a String cannot fail.
+        let _ = writeln!(out, "  {i:>3}  {from:<width$}  {formula} = 0");
+    }
 }
 
 struct Printer<'a> {
