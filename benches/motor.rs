@@ -3,7 +3,10 @@
 //! electrical analogue in `ngspice -b` (back-EMF a B source, inertia a capacitor, friction a
 //! resistor). Both against the exact solution of the linear second-order system, at each
 //! simulator's own time points, at reltol 1e-3 and 1e-6; then the loosest ngspice reltol whose
-//! error is no larger than vams's at 1e-3. Then criterion times the vams runs alone.
+//! error is no larger than vams's at 1e-3. Then, at equal accuracy, the loosest reltol (and
+//! its time and points) at which vams with BDF up to order 2 (what it had before issue 15),
+//! vams up to order 5 (the default) and ngspice reach an error of 1e-6 and 1e-8 against the
+//! closed form. Then criterion times the vams runs alone.
 //!
 //! Run: `cargo bench --bench motor`.
 
@@ -80,11 +83,27 @@ fn motor() -> Design {
 }
 
 fn run_vams(design: &Design, reltol: f64) -> SimResult {
+    run_vams_with(design, reltol, SimOptions::default())
+}
+
+/// A run for the equal-accuracy table: BDF up to `max_order`, and an absolute tolerance far
+/// below the errors asked for (1e-8 of 3 A and of 8 000 rad/s), so that `reltol` alone sets
+/// the accuracy.
+fn run_vams_at_order(design: &Design, reltol: f64, max_order: usize) -> SimResult {
+    let options = SimOptions {
+        max_order,
+        abstol: Some(1e-13),
+        ..SimOptions::default()
+    };
+    run_vams_with(design, reltol, options)
+}
+
+fn run_vams_with(design: &Design, reltol: f64, options: SimOptions) -> SimResult {
     let options = SimOptions {
         stop: STOP,
         reltol,
         probes: vec!["motor.i".into(), "motor.w".into()],
-        ..SimOptions::default()
+        ..options
     };
     simulate(design, &options, &mut |_| {}).expect("the motor simulates")
 }
@@ -173,9 +192,67 @@ fn table(design: &Design) {
     }
 }
 
+/// Reltols tried for the equal-accuracy table, loosest first (half decades).
+const FINE_SWEEP: [f64; 17] = [
+    1e-3, 3e-4, 1e-4, 3e-5, 1e-5, 3e-6, 1e-6, 3e-7, 1e-7, 3e-8, 1e-8, 3e-9, 1e-9, 3e-10, 1e-10,
+    3e-11, 1e-11,
+];
+
+/// Runs per timing in the equal-accuracy table (the tight runs are longer).
+const FINE_RUNS: usize = 20;
+
+/// For each error target, the loosest reltol of [`FINE_SWEEP`] at which each simulator's
+/// larger error (current or speed) is within it, with its time and points.
+fn equal_accuracy(design: &Design) {
+    println!(
+        "At equal accuracy: the loosest reltol whose larger error is within the target, mean of          {FINE_RUNS} runs\n  {:<10} {:>8} {:>8} {:>10} {:>8} {:>12}",
+        "", "target", "reltol", "time [ms]", "points", "error"
+    );
+    let vams = |order: usize, reltol: f64| {
+        let result = run_vams_at_order(design, reltol, order);
+        let (ei, ew) = vams_errors(&result);
+        (ei.max(ew), result.stats.accepted_steps)
+    };
+    for target in [1e-6, 1e-8] {
+        for (name, order) in [("vams BDF2", 2), ("vams BDF5", vams::solver::MAX_ORDER)] {
+            let found = FINE_SWEEP
+                .iter()
+                .find(|&&reltol| vams(order, reltol).0 <= target);
+            match found {
+                Some(&reltol) => {
+                    let (time, (err, points)) = mean_of(FINE_RUNS, || vams(order, reltol));
+                    fine_line(name, target, reltol, time.as_secs_f64(), points, err);
+                }
+                None => println!("  {name:<10} {target:>8.0e}  not reached down to reltol 1e-11"),
+            }
+        }
+        let found = FINE_SWEEP.iter().find_map(|&reltol| {
+            let (secs, points, (ei, ew)) = ngspice(reltol).ok()?;
+            (ei.max(ew) <= target).then_some((reltol, secs, points, ei.max(ew)))
+        });
+        match found {
+            Some((reltol, secs, points, err)) => {
+                fine_line("ngspice", target, reltol, secs, points, err)
+            }
+            None => println!(
+                "  {:<10} {target:>8.0e}  not reached down to reltol 1e-11 (or not installed)",
+                "ngspice"
+            ),
+        }
+    }
+}
+
+fn fine_line(name: &str, target: f64, reltol: f64, secs: f64, points: usize, err: f64) {
+    println!(
+        "  {name:<10} {target:>8.0e} {reltol:>8.0e} {:>10.3} {points:>8} {err:>12.2e}",
+        secs * 1e3
+    );
+}
+
 fn bench(c: &mut Criterion) {
     let design = motor();
     table(&design);
+    equal_accuracy(&design);
     let mut group = c.benchmark_group("motor");
     group
         .sample_size(20)

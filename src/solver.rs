@@ -24,7 +24,7 @@ pub use error::SolveError;
 pub use linear::{DEFAULT_DENSE_MAX, LinearOptions, LinearSolver, PivotCounts};
 pub use newton::{ErrorNorm, Newton, NewtonOptions, NewtonReport, NonlinearProblem, Tolerances};
 pub use op::{OpOptions, OpReport, OpStrategy, operating_point};
-pub use transient::{Advance, MAX_ORDER, Stats, Transient, TransientOptions};
+pub use transient::{Advance, MAX_ORDER, Stats, Transient, TransientOptions, local_reltol};
 
 /// A DAE `F(x', x, t) = 0` as the solver sees it. Unknown `i` is "differential" when `x'_i`
 /// appears in some equation.

@@ -226,7 +226,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
             })
             .collect::<Vec<f64>>();
         let topts = TransientOptions {
-            reltol: options.reltol,
+            reltol: crate::solver::local_reltol(options.reltol),
             abstol: abstol.iter().copied().fold(DEFAULT_ABSTOL, f64::min),
             abstol_per_unknown: abstol,
             max_step,

@@ -43,7 +43,7 @@ mod types;
 
 use super::newton::{ErrorNorm, Newton, NewtonOptions, Tolerances};
 use super::{DaeSystem, SolveError};
-pub use types::{Advance, Stats, TransientOptions};
+pub use types::{Advance, Stats, TransientOptions, local_reltol};
 
 /// The BDF integrator's state. See the module documentation for the method.
 pub struct Transient {
