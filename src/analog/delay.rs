@@ -44,6 +44,13 @@ impl DelayLine {
         }
     }
 
+    /// Takes `other`'s recorded points (the same quantity and delay, its input in another
+    /// slot of a rebuilt system).
+    pub fn take_history(&mut self, other: &DelayLine) {
+        debug_assert_eq!(self.delay, other.delay);
+        self.points.clone_from(&other.points);
+    }
+
     pub fn is_empty(&self) -> bool {
         self.points.is_empty()
     }
