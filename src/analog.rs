@@ -24,6 +24,7 @@ mod listing;
 mod lower;
 mod quiescent;
 mod reduce;
+mod small_signal;
 mod structure;
 mod sym;
 mod tape;
@@ -34,6 +35,7 @@ mod tests;
 
 pub use build::{Origin, Unknown};
 pub use error::{AnalogError, AnalogWarning};
+pub use small_signal::SmallSignalModel;
 pub use tolerance::TOLERANCE_GROUPS;
 
 /// The absolute tolerance of quantity `q` from its tolerance group (its own, else its
