@@ -1,6 +1,7 @@
 -- attributes: the frequency-domain meaning of 'delayed, 'ltf and 'integ, driven by a spectral
 -- source whose magnitude reads FREQUENCY: u = (f / 1 kHz) e^(j pi/4);
 -- y_delayed = e^(-jw 0.1 ms) u, y_ltf = u / (1 + 2 zeta s / w0 + s^2 / w0^2), y_integ = 1e3 u / (jw).
+-- vams: stop 1 ms
 library ieee;
 use ieee.math_real.all;
 entity tb_attributes is end entity;

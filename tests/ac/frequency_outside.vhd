@@ -1,6 +1,6 @@
 -- frequency_outside: FREQUENCY read in an ordinary equation, which the LRM does not allow.
-entity tb_frequency_outside is end entity;
-architecture bench of tb_frequency_outside is
+entity frequency_outside is end entity;
+architecture bench of frequency_outside is
   quantity x : real;
 begin
   x == frequency;

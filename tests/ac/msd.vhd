@@ -2,6 +2,7 @@
 -- pushed by a spectral force. X / F = 1 / (k - m w^2 + j w d); resonance near
 -- sqrt(k / m) / (2 pi) = 5.033 Hz.
 -- Analyse: vams ac msd.vhd --from 0.1Hz --to 100Hz --probe x
+-- vams: stop 1 ms
 library ieee;
 use ieee.mechanical_systems.all;
 entity tb_msd is

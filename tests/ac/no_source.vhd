@@ -1,4 +1,5 @@
 -- no_source: an RC low-pass without a spectral source: `vams ac` has nothing to excite.
+-- vams: stop 1 ms
 library ieee;
 use ieee.electrical_systems.all;
 entity tb_no_source is end entity;

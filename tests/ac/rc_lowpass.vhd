@@ -1,6 +1,7 @@
 -- rc_lowpass: a first-order RC low-pass driven by a 1 V spectral source plus a 2 V bias.
 -- |H| = 1 / sqrt(1 + (w R C)^2), phase -atan(w R C); the corner is at 1 / (2 pi R C) = 1591.55 Hz.
 -- Analyse: vams ac rc_lowpass.vhd --top tb_rc_lowpass --from 1Hz --to 1MHz --probe vout
+-- vams: stop 1 ms
 library ieee;
 use ieee.electrical_systems.all;
 entity tb_rc_lowpass is

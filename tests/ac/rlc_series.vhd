@@ -2,6 +2,7 @@
 -- f0 = 1 / (2 pi sqrt(L C)) = 5032.92 Hz with quality factor Q = sqrt(L / C) / R = 3.162;
 -- the capacitor voltage is H(jw) = 1 / (1 - w^2 L C + j w R C).
 -- Analyse: vams ac rlc_series.vhd --from 100Hz --to 100kHz --probe vc --probe il
+-- vams: stop 1 ms
 library ieee;
 use ieee.electrical_systems.all;
 entity tb_rlc_series is
