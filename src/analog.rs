@@ -432,6 +432,11 @@ fn protected_unknowns(design: &Design, quantity_slot: &[usize], n: usize) -> Vec
     for d in &design.delays {
         protect(d.input);
     }
+    // A spectral source keeps its equation `q == 0.0`: the small-signal analysis puts its
+    // phasor in that row (substituted, the constant 0 would leave no trace of it).
+    for s in &design.spectral_sources {
+        protect(s.quantity);
+    }
     for q in dots {
         protect(q);
     }

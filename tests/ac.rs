@@ -117,6 +117,22 @@ fn rc_low_pass_matches_its_closed_form() {
     let err = worst(&points, |w| Z(1.0, 0.0).div(Z(1.0, w * r * c)));
     println!("RC low-pass, vout: largest relative error {err:.2e}");
     assert!(err < 1e-9, "{err:e}");
+    // The capacitor's current, eliminated as `c * v'dot`: jwC times vout.
+    let t = ac(
+        "rc_lowpass",
+        &[
+            "--from",
+            "1Hz",
+            "--to",
+            "1MHz",
+            "--probe",
+            "ic",
+            "--complex",
+        ],
+    );
+    let err = worst(&t.complex("ic"), |w| Z(0.0, w * c).div(Z(1.0, w * r * c)));
+    println!("RC low-pass, ic: largest relative error {err:.2e}");
+    assert!(err < 1e-9, "{err:e}");
 
     // Magnitude (dB) and phase (degrees): -3.0103 dB and -45 degrees at the corner.
     let corner = 1.0 / (TAU * r * c);

@@ -2,12 +2,14 @@
 //! system linearised about its quiescent point, `(G + jw C) X = B`, with `B` from the
 //! spectral source quantities.
 //!
-//! The linearised system is the one as written, not the reduced one: build the system with
-//! `AnalogOptions { eliminate: false, .. }`, so that every quantity a user names is an
-//! unknown of its own and no substitution has to be linearised after the fact (an eliminated
-//! quantity's formula would need its own derivatives by the survivors and their `'dot`s). A
-//! spectral source's generated equation `q == 0.0` becomes `q == S(f)` there: its row of `B`
-//! is `dF/dq * S`, whatever sign the residual was written with.
+//! The linearised system is the solver's (reduced) one, as the kernel builds it: a spectral
+//! source quantity is never eliminated, so its generated equation `q == 0.0` is a row of its
+//! own, which becomes `q == S(f)` there (its row of `B` is `dF/dq * S`, whatever sign the
+//! residual was written with). An eliminated quantity a user probes is the linearisation of
+//! its formula in the survivors: `X_q = sum_j (d r/d x_j + jw d r/d x'_j) X_j`
+//! ([`AnalogSystem::linear_output`]), exact as the formula's symbolic derivatives are. A design
+//! with `'delayed` is analysed unreduced (`eliminate: false`): an eliminated delayed output's
+//! formula would read its input as it stands at the quiescent point, without `e^{-jwT}`.
 //!
 //! What the frequency domain changes: `Q'dot` is `jw Q` (`C`), so `'integ` and `'ltf`, which
 //! elaboration realises with derivatives, follow exactly; `Q'delayed(T)` is `e^{-jwT} Q`
@@ -18,7 +20,8 @@
 //! signals of `'zoh`, `'ztf`, `'slew` or `S'ramp` (generated processes that sample or shape
 //! in time, whose frequency response the small-signal model would get wrong).
 
-use super::{AnalogError, AnalogSystem, Origin, Sym, lower};
+use super::deriv::{Var, derivative};
+use super::{AnalogError, AnalogSystem, Origin, Sym, delay, lower};
 use crate::design::{Design, QuantityId, SignalId, SignalKind, Type};
 use crate::solver::ac::SmallSignal;
 use crate::solver::{DaeSystem, OpOptions, SolveError};
@@ -117,7 +120,7 @@ impl AnalogSystem {
     }
 
     /// The small-signal model at `(x, x')` (see the module comment). `design` must be the one
-    /// this system was built from, with `eliminate: false`.
+    /// this system was built from (with `eliminate: false` if it reads `'delayed`).
     pub fn small_signal(
         &mut self,
         design: &Design,
@@ -146,14 +149,13 @@ impl AnalogSystem {
             let site = |what: &str| AnalogError::FrequencyDomain {
                 span: source.span,
                 what: what.into(),
-                help:
-                    "this is a bug in vams: the small-signal model is built on the unreduced system"
-                        .into(),
+                help: "this is a bug in vams: spectral sources are never eliminated".into(),
             };
             let (Some(slot), Some(row)) = (
                 self.quantity_slot(source.quantity),
                 self.solver_row(Origin::User(source.equation)),
             ) else {
+                // `protected_unknowns` keeps every spectral source and its equation.
                 errors.push(site("a spectral source quantity that was eliminated"));
                 continue;
             };
@@ -213,6 +215,51 @@ impl AnalogSystem {
             signals: self.signals.clone(),
             frequency_slot: design.frequency_signal.map(SignalId::index),
         })
+    }
+
+    /// Quantity `q` as a linear combination of the solver's unknowns in the frequency domain,
+    /// `(unknown, dq/dx, dq/dx')` (its phasor is `sum (a + jw b) X_j`), at the point `(x, x')`
+    /// with the signals as [`AnalogSystem::small_signal`] left them: a survivor is itself, an
+    /// eliminated quantity the derivatives of its formula. `None` for a quantity of another
+    /// design, or one whose formula reads a `'delayed` history (never: such designs are
+    /// analysed unreduced).
+    pub fn linear_output(
+        &self,
+        q: QuantityId,
+        x: &[f64],
+        xdot: &[f64],
+    ) -> Option<Vec<(usize, f64, f64)>> {
+        if let Some(slot) = self.quantity_slot(q) {
+            return Some(vec![(slot, 1.0, 0.0)]);
+        }
+        let formula = &self
+            .eliminated
+            .iter()
+            .find(|e| e.quantity == Some(q))?
+            .replacement;
+        let history = delay::history_slot(self.design_signals, 0);
+        if formula.any(|e| matches!(e, Sym::Signal(s) if *s >= history)) {
+            return None;
+        }
+        let mut columns = Vec::new();
+        formula.visit(&mut |e| {
+            if let Sym::X(j) | Sym::Dot(j) = e {
+                columns.push(*j);
+            }
+        });
+        columns.sort_unstable();
+        columns.dedup();
+        let at = |d: Sym| d.eval(0.0, x, xdot, &self.signals);
+        Some(
+            columns
+                .into_iter()
+                .map(|j| {
+                    let a = at(derivative(formula, Var::X(j)));
+                    let b = at(derivative(formula, Var::Dot(j)));
+                    (j, a, b)
+                })
+                .collect(),
+        )
     }
 
     /// The solver row of the equation from `origin`.

@@ -1,5 +1,6 @@
 //! `vams ac`: small-signal frequency response. The quiescent point as `vams op` finds it, the
-//! model linearised about it (`analog::small_signal`), `(G + jw C) X = B` solved at each
+//! model linearised about it (`analog::small_signal`, on the solver's reduced system; probes
+//! of eliminated quantities through their formulas' derivatives), `(G + jw C) X = B` solved at each
 //! frequency (`solver::ac`), the probed quantities written as CSV (magnitude in dB and phase
 //! in degrees, or real and imaginary parts) and drawn as a Bode plot.
 
@@ -181,9 +182,10 @@ fn analyse(
         .zip(point.iter().skip(nq).map(|(_, v)| *v))
         .filter(|(_, v)| v.is_finite())
         .collect();
-    // The unreduced system: every quantity is an unknown of its own (`analog::small_signal`).
+    // The solver's reduced system, as the kernel builds it; unreduced where `'delayed` is
+    // read (see `analog::small_signal`).
     let options = AnalogOptions {
-        eliminate: false,
+        eliminate: design.delays.is_empty(),
         ..AnalogOptions::default()
     };
     let mut system = AnalogSystem::with_options(design, &options).map_err(|errors| {
@@ -208,8 +210,10 @@ fn analyse(
             count: errors.len(),
         }
     })?;
-    let slots: Vec<usize> = (probes.iter())
-        .map(|&q| system.quantity_slot(q).unwrap_or(usize::MAX))
+    // Each probe as a combination of the solver's unknowns (an eliminated quantity by the
+    // linearisation of its formula); the frequency-domain signals are set by now.
+    let outputs: Vec<Vec<(usize, f64, f64)>> = (probes.iter())
+        .map(|&q| system.linear_output(q, &x, &xdot).unwrap_or_default())
         .collect();
     let n = model.system.n;
     let solver = AcSolver::new(model.system.clone()).map_err(|e| CliError::AcSolve {
@@ -227,9 +231,19 @@ fn analyse(
             top: top(),
             reason: e.to_string(),
         })?;
-        for (column, &slot) in values.iter_mut().zip(&slots) {
-            // Every quantity has a slot in the unreduced system; NaN marks the impossible.
-            column.push(x.get(slot).copied().unwrap_or(c64::new(f64::NAN, f64::NAN)));
+        let omega = std::f64::consts::TAU * f;
+        for (column, output) in values.iter_mut().zip(&outputs) {
+            let mut z = c64::default();
+            for &(j, a, b) in output {
+                // The slots come from the same system as the solution.
+                z += c64::new(a, omega * b) * x.get(j).copied().unwrap_or(c64::new(f64::NAN, 0.0));
+            }
+            // A quantity without an expression (never expected) reads NaN, not 0.
+            column.push(if output.is_empty() {
+                c64::new(f64::NAN, f64::NAN)
+            } else {
+                z
+            });
         }
     }
     Ok(Response {

@@ -113,3 +113,38 @@ fn a_generated_sampling_signal_is_refused_with_its_span() {
         "{errors:?}"
     );
 }
+
+#[test]
+fn an_eliminated_quantity_is_the_linearisation_of_its_formula() {
+    // v + 1e-3 v'dot == 3 + u; i == 2 v'dot + v * v, eliminated: I = (2 v0 + 2 jw) V at v0 = 3.
+    let mut b = Builder::new();
+    let (u, v, i) = (b.free("u"), b.free("v"), b.free("i"));
+    b.equation("u == 0.0;", q(u), c(0.0));
+    b.equation(
+        "v + 1.0e-3 * v'dot == 3.0 + u;",
+        add(q(v), mul(c(1e-3), dot(v))),
+        add(c(3.0), q(u)),
+    );
+    b.equation(
+        "i == 2.0 * v'dot + v * v;",
+        q(i),
+        add(mul(c(2.0), dot(v)), mul(q(v), q(v))),
+    );
+    let (mut d, _) = b.finish();
+    spectral(&mut d, u, 1.0, 0.0, 0);
+    let mut sys = crate::analog::AnalogSystem::new(&d).expect("a system");
+    assert!(sys.quantity_slot(i).is_none(), "i is eliminated");
+    let (x, xdot) = sys
+        .point_from_quantities(&[0.0, 3.0, 9.0], &[])
+        .expect("a point");
+    sys.small_signal(&d, &x, &xdot).expect("a model");
+    let slot = sys.quantity_slot(v).expect("v survives");
+    assert_eq!(
+        sys.linear_output(i, &x, &xdot),
+        Some(vec![(slot, 6.0, 2.0)])
+    );
+    assert_eq!(
+        sys.linear_output(v, &x, &xdot),
+        Some(vec![(slot, 1.0, 0.0)])
+    );
+}
