@@ -1,8 +1,8 @@
 //! `vams ac` end to end on the models in `tests/ac/`: closed forms (RC low-pass, series RLC
-//! resonance and Q, a mass-spring-damper in the translational nature, `'delayed`, `'ltf`,
-//! `'integ`, a spectrum that reads `frequency`) to 1e-9 relative, the refusals (no spectral
-//! source, `'zoh`), the outputs, and ngspice's `.ac` on the RC and RLC when ngspice is
-//! installed.
+//! resonance and Q, a mass-spring-damper in the translational nature, a biased diode,
+//! `'delayed`, `'ltf`, `'integ`, a spectrum that reads `frequency`, equations switched on
+//! `domain`) to 1e-9 relative, the refusals (no spectral source, `'zoh`), the outputs, and
+//! ngspice's `.ac` on the RC, the RLC and the diode stage when ngspice is installed.
 
 use std::f64::consts::{PI, TAU};
 use std::path::Path;
@@ -311,6 +311,28 @@ fn delayed_ltf_integ_and_a_frequency_dependent_spectrum() {
         mul(u(w), Z(1.0e3, 0.0).div(Z(0.0, w)))
     });
     println!("'integ: {err:.2e}");
+    assert!(err < 1e-9, "{err:e}");
+}
+
+#[test]
+fn a_model_switches_its_equations_on_the_frequency_domain() {
+    // y == u outside the frequency domain; in it, y / 2 has a pole at 1 kHz.
+    let t = ac(
+        "domain_switch",
+        &[
+            "--from",
+            "10Hz",
+            "--to",
+            "100kHz",
+            "--probe",
+            "y",
+            "--complex",
+        ],
+    );
+    let err = worst(&t.complex("y"), |w| {
+        Z(2.0, 0.0).div(Z(1.0, w / (TAU * 1e3)))
+    });
+    println!("domain switch: largest relative error {err:.2e}");
     assert!(err < 1e-9, "{err:e}");
 }
 

@@ -269,7 +269,7 @@ fn the_repository_testbenches_pass_by_default() {
         // tests/ac/: the AC models also run in the time domain (spectral sources are zero).
         .stdout(contains("test tb_rc_lowpass ... ok"))
         .stdout(contains("test tb_attributes ... ok"))
-        .stdout(contains("128 passed, 0 failed"));
+        .stdout(contains("129 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

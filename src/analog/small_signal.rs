@@ -82,8 +82,8 @@ impl AnalogSystem {
     /// The quiescent point as the unknowns of this system, from the quantities' values at the
     /// quiescent point the kernel found (`quantities`, by `QuantityId`) and the signals' values
     /// there: every differential quantity is held at its value (its `x'` solved, zero at an
-    /// equilibrium, as the kernel's break values leave it otherwise), the rest solved by
-    /// Newton from those values (terminal potentials and implicit flows start at 0; the
+    /// equilibrium, as the kernel's break values leave it otherwise; if that is singular,
+    /// none is), the rest solved by Newton from those values (terminal potentials and implicit flows start at 0; the
     /// across definitions give them in one step). Returns `(x, x')`.
     pub fn point_from_quantities(
         &mut self,
@@ -109,14 +109,28 @@ impl AnalogSystem {
             }
         }
         // Tight tolerances first: the response is linear in the point's errors; looser ones
-        // if rounding keeps Newton from the tight ones.
-        let mut attempt = |reltol: f64, scale: f64| {
+        // if rounding keeps Newton from the tight ones. Holding every differential quantity
+        // reproduces break values; where a held quantity's `x'` appears in no equation of the
+        // quiescent branch (`if domain = quiescent_domain use y == u; else ... y'dot ...`) it
+        // is singular, and the plain quiescent point (`x' = 0`, the undetermined held at
+        // their values) is the one the kernel found.
+        let mut attempt = |fixed: &[(usize, f64)], reltol: f64, scale: f64| {
             let abstol: Vec<f64> = self.abstol(1e-9).iter().map(|a| a * scale).collect();
-            self.quiescent_point(0.0, &guess, &fixed, reltol, &abstol, &OpOptions::default())
+            self.quiescent_point(0.0, &guess, fixed, reltol, &abstol, &OpOptions::default())
         };
-        attempt(1e-10, 1e-4)
-            .or_else(|_| attempt(1e-6, 1e-2))
-            .or_else(|_| attempt(1e-3, 1.0))
+        let mut result = Err(SolveError::InvalidSystem {
+            reason: "no attempt",
+            index: 0,
+        });
+        for held in [&fixed[..], &[]] {
+            for (reltol, scale) in [(1e-10, 1e-4), (1e-6, 1e-2), (1e-3, 1.0)] {
+                result = attempt(held, reltol, scale);
+                if result.is_ok() {
+                    return result;
+                }
+            }
+        }
+        result
     }
 
     /// The small-signal model at `(x, x')` (see the module comment). `design` must be the one
