@@ -24,6 +24,7 @@ mod listing;
 mod lower;
 mod quiescent;
 mod reduce;
+mod small_signal;
 mod structure;
 mod sym;
 mod tape;
@@ -34,6 +35,7 @@ mod tests;
 
 pub use build::{Origin, Unknown};
 pub use error::{AnalogError, AnalogWarning};
+pub use small_signal::SmallSignalModel;
 pub use tolerance::TOLERANCE_GROUPS;
 
 /// The absolute tolerance of quantity `q` from its tolerance group (its own, else its
@@ -429,6 +431,11 @@ fn protected_unknowns(design: &Design, quantity_slot: &[usize], n: usize) -> Vec
     }
     for d in &design.delays {
         protect(d.input);
+    }
+    // A spectral source keeps its equation `q == 0.0`: the small-signal analysis puts its
+    // phasor in that row (substituted, the constant 0 would leave no trace of it).
+    for s in &design.spectral_sources {
+        protect(s.quantity);
     }
     for q in dots {
         protect(q);

@@ -5,6 +5,7 @@
 //! arguments and its run function in `cli/<name>.rs`; the shared steps (loading sources,
 //! elaborating, stop times, printing diagnostics and reports) have modules of their own.
 
+pub mod ac;
 pub mod check;
 pub mod compile;
 pub mod dae;
@@ -46,6 +47,9 @@ pub enum Command {
     Run(run::RunArgs),
     /// Print the quiescent operating point: every quantity and signal with its unit.
     Op(op::OpArgs),
+    /// Small-signal AC analysis: the frequency response of the quantities to the design's
+    /// spectral sources about its quiescent point, as CSV and a Bode plot.
+    Ac(ac::AcArgs),
     /// Print the analog equation system of a design (unknowns and equations with their source).
     Dae(dae::DaeArgs),
     /// Run every testbench (port-less entity named tb_* or test_*) and report pass or fail.
@@ -62,6 +66,7 @@ pub fn run() -> ExitCode {
         Command::Check(args) => check::run(&args),
         Command::Run(args) => run::run(&args),
         Command::Op(args) => op::run(&args),
+        Command::Ac(args) => ac::run(&args),
         Command::Dae(args) => dae::run(&args),
         Command::Test(args) => test::run(&args),
         Command::Extract(args) => extract::run(&args),

@@ -89,6 +89,27 @@ pub struct Design {
     /// What elaboration accepted but a user should hear about (an unbound component
     /// instance, a bodiless function standing in for a built-in one).
     pub warnings: Vec<DesignWarning>,
+    /// Spectral source quantities (`quantity ac : real spectrum mag, phase;`): zero in the
+    /// quiescent and time domains (each has its generated equation `q == 0.0`), the phasor
+    /// `mag * e^(j phase)` in a small-signal frequency-domain analysis.
+    pub spectral_sources: Vec<SpectralSource>,
+    /// The signal standing for `std.standard.frequency` in spectral expressions (an implicit
+    /// real signal nothing drives: 0 outside the frequency domain, where no expression that
+    /// reads it is evaluated); `None` when no spectral expression calls `frequency`.
+    pub frequency_signal: Option<SignalId>,
+}
+
+/// A spectral source quantity (LRM 1076.1 4.3.1.6, 12.6.4).
+#[derive(Clone, Debug)]
+pub struct SpectralSource {
+    pub quantity: QuantityId,
+    /// The magnitude and the phase (radians) as analog expressions; they may read
+    /// [`Design::frequency_signal`] (hertz) and constants.
+    pub magnitude: Expr,
+    pub phase: Expr,
+    /// Index into [`Design::equations`] of its generated equation `q == 0.0`.
+    pub equation: usize,
+    pub span: Span,
 }
 
 /// `if c1 use ... elsif c2 use ... end use;` without `else`: its equations exist only while

@@ -256,6 +256,9 @@ struct Elab<'a> {
     guards: Vec<SignalId>,
     /// Auxiliary quantities of `Q'dot'dot` and `Q'integ`, by the quantity they derive from.
     dot_aux: FxHashMap<QuantityId, QuantityId>,
+    /// True while a spectral source's magnitude and phase are lowered: only there may
+    /// `frequency` be called (LRM 1076.1 14.2).
+    in_spectrum: bool,
     /// `T'reference` quantities, one per terminal (no region), and `T'contribution` ones, one
     /// per terminal and instance path.
     terminal_attrs: FxHashMap<(crate::design::TerminalId, Option<String>), QuantityId>,
@@ -362,6 +365,7 @@ impl<'a> Elab<'a> {
             stable_signals: FxHashMap::default(),
             guards: Vec::new(),
             dot_aux: FxHashMap::default(),
+            in_spectrum: false,
             terminal_attrs: FxHashMap::default(),
             contributions: Vec::new(),
             integ_aux: FxHashMap::default(),

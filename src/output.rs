@@ -6,6 +6,7 @@
 //! panels); never reaches into the solver, the kernel or the extractor.
 
 pub mod atomic;
+pub mod bode;
 pub mod csv;
 pub mod decimate;
 pub mod levels;

@@ -11,6 +11,7 @@
 //! equation and unknown indices, which the caller maps back to the model. It never invents a
 //! value on failure, never panics on any input, and never allocates inside the time-step loop.
 
+pub mod ac;
 mod error;
 mod linear;
 mod newton;

@@ -107,6 +107,19 @@ pub enum AnalogError {
         what: String,
     },
 
+    /// A small-signal (frequency-domain) analysis meets a construct whose frequency response
+    /// vams does not compute; it refuses rather than give a wrong number.
+    ///
+    /// Example: an equation reading `v'zoh(1.0e-3)` in `vams ac`.
+    #[error("the frequency-domain analysis does not support {what}")]
+    #[diagnostic(code(vams::analog::frequency_domain), help("{help}"))]
+    FrequencyDomain {
+        #[label("here")]
+        span: Span,
+        what: String,
+        help: String,
+    },
+
     /// The design breaks an index invariant of the IR (an elaboration bug, not a model error).
     #[error("malformed design: {what}")]
     #[diagnostic(
@@ -129,6 +142,7 @@ impl Located for AnalogError {
             | AnalogError::Floating { span, .. }
             | AnalogError::Index { span, .. }
             | AnalogError::NotAnalog { span, .. }
+            | AnalogError::FrequencyDomain { span, .. }
             | AnalogError::Malformed { span, .. } => *span,
         }
     }

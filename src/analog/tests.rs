@@ -6,4 +6,5 @@ mod jacobian;
 mod listing;
 mod mechanics;
 mod perf;
+mod small_signal;
 mod structural;

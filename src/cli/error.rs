@@ -100,6 +100,52 @@ pub enum CliError {
     )]
     RunFailed { time: String, message: String },
 
+    /// `vams ac` on a design without a spectral source: nothing excites the small-signal model.
+    #[error("`{top}` has no spectral source quantity: an AC analysis has nothing to excite")]
+    #[diagnostic(
+        code(vams::cli::no_spectral_source),
+        help(
+            "declare one and add it where the stimulus enters, e.g. `quantity ac_in : real spectrum 1.0, 0.0;` and `vin == 2.0 + ac_in;` (magnitude 1, phase 0 radians; zero in the quiescent and time domains)"
+        )
+    )]
+    NoSpectralSource { top: String },
+
+    /// `vams ac --probe` names no quantity.
+    #[error("--probe `{name}`: {problem}")]
+    #[diagnostic(code(vams::cli::ac_probe), help("{help}"))]
+    AcProbe {
+        name: String,
+        problem: String,
+        help: String,
+    },
+
+    /// `vams ac --from F1 --to F2` with F2 below F1.
+    #[error("the frequency range is empty: --to {to} Hz is below --from {from} Hz")]
+    #[diagnostic(
+        code(vams::cli::frequency_range),
+        help("give --from the lower frequency")
+    )]
+    FrequencyRange { from: f64, to: f64 },
+
+    /// The small-signal model uses what the frequency domain does not support; the errors
+    /// were printed.
+    #[error("{count} construct(s) the frequency-domain analysis does not support")]
+    #[diagnostic(
+        code(vams::cli::frequency_domain),
+        help("see the errors above; `vams run` simulates these in the time domain")
+    )]
+    FrequencyDomain { count: usize },
+
+    /// A frequency point had no solution.
+    #[error("the AC analysis of `{top}` failed: {reason}")]
+    #[diagnostic(
+        code(vams::cli::ac_solve),
+        help(
+            "a singular small-signal matrix means some quantity is not fixed at that frequency (a capacitor-only node at 0 Hz, an ideal LC tank exactly at resonance): add a leak, or move the frequency"
+        )
+    )]
+    AcSolve { top: String, reason: String },
+
     /// `vams test`: some testbenches failed.
     #[error("{failed} of {total} testbench(es) failed")]
     #[diagnostic(code(vams::cli::tests_failed))]

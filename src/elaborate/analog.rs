@@ -8,7 +8,8 @@ use std::sync::Arc;
 use crate::ast::{self, EntityNames, Ident, NatureDef, QuantityDecl};
 use crate::design::{
     BinaryOp, BreakReinit, Equation, Expr, Instr, Limit, Nature, NatureId, Process, Quantity,
-    QuantityId, QuantityKind, Signal, SignalId, SignalKind, Terminal, TerminalId, Value,
+    QuantityId, QuantityKind, Signal, SignalId, SignalKind, SpectralSource, Terminal, TerminalId,
+    Value,
 };
 use crate::source::Span;
 
@@ -565,9 +566,15 @@ impl<'a> Elab<'a> {
                 Ok(())
             }
             // A spectral or noise source quantity is zero in the quiescent and time domains
-            // (LRM 1076.1 12.6.4): it contributes only to a frequency-domain analysis, which
-            // vams does not run yet, so its magnitude, phase and density are not evaluated.
-            QuantityDecl::Source { names, subtype, .. } => {
+            // (LRM 1076.1 12.6.4). A spectral one's magnitude and phase are kept for the
+            // small-signal analysis (`vams ac`); a noise source's density is not evaluated
+            // (no noise analysis yet).
+            QuantityDecl::Source {
+                names,
+                subtype,
+                spectrum,
+                ..
+            } => {
                 let sub = self.subtype_indication(sc, subtype)?;
                 if sub.ty != Ty::Real {
                     return Err(self.error(ElabError::unsupported(
@@ -576,6 +583,10 @@ impl<'a> Elab<'a> {
                         "source quantities are scalar reals in vams",
                     )));
                 }
+                let spectrum = match spectrum {
+                    Some((magnitude, phase)) => Some(self.spectrum(sc, magnitude, phase)?),
+                    None => None,
+                };
                 for n in names {
                     let id =
                         self.new_quantity(&n.name, QuantityKind::Free, &sub, None, None, n.span);
@@ -589,11 +600,45 @@ impl<'a> Elab<'a> {
                         "{} == 0.0 (a source quantity outside the frequency domain)",
                         n.name
                     );
+                    if let Some((magnitude, phase)) = &spectrum {
+                        self.design.spectral_sources.push(SpectralSource {
+                            quantity: id,
+                            magnitude: magnitude.clone(),
+                            phase: phase.clone(),
+                            equation: self.design.equations.len(),
+                            span: n.span,
+                        });
+                    }
                     self.generated_equation(Expr::Quantity(id), n.span, text);
                 }
                 Ok(())
             }
         }
+    }
+
+    /// A spectral source's magnitude and phase as real expressions, in which `frequency`
+    /// may be called.
+    fn spectrum(
+        &mut self,
+        sc: &Scope<'a>,
+        magnitude: &ast::Expr,
+        phase: &ast::Expr,
+    ) -> R<(Expr, Expr)> {
+        self.in_spectrum = true;
+        let m = self.expr_of(sc, magnitude, &Ty::Real);
+        let p = self.expr_of(sc, phase, &Ty::Real);
+        self.in_spectrum = false;
+        Ok((m?.e, p?.e))
+    }
+
+    /// The implicit signal standing for `frequency` (made at its first call).
+    pub(super) fn frequency_signal(&mut self, span: Span) -> SignalId {
+        if let Some(s) = self.design.frequency_signal {
+            return s;
+        }
+        let s = self.implicit_signal("frequency".into(), 0.0, span);
+        self.design.frequency_signal = Some(s);
+        s
     }
 
     pub(super) fn limit(

@@ -59,6 +59,7 @@ pub(super) fn native(name: &str, arity: usize, is_function: bool) -> Native {
     use Builtin::*;
     let b = match (name, arity) {
         ("now", 0) => return Native::Now,
+        ("frequency", 0) if is_function => return Native::Frequency,
         ("stop", _) if !is_function => return Native::Stop,
         ("finish", _) if !is_function => return Native::Finish,
         ("log2", 1) => return Native::Log2,

@@ -1080,6 +1080,14 @@ impl<'a> Elab<'a> {
             // VHDL-AMS's `now return real` (seconds) beside `now return delay_length`.
             Native::Now if ret == Ty::Real => super::synth::now_seconds(),
             Native::Now => Expr::Now,
+            Native::Frequency if self.in_spectrum => Expr::Signal(self.frequency_signal(span)),
+            Native::Frequency => {
+                return Err(self.error(ElabError::invalid(
+                    name_span,
+                    "`frequency` is readable only in the magnitude and phase of a spectral source quantity",
+                    Some("LRM 1076.1: FREQUENCY is the small-signal analysis's frequency; declare `quantity ac : real spectrum mag, phase;` and use it there".into()),
+                )));
+            }
             // `"**"(x, y)` called by name.
             Native::Pow => {
                 let mut it = args.into_iter();

@@ -314,6 +314,8 @@ pub enum Native {
     /// `log(x, base)`, lowered to `log(x) / log(base)`.
     LogBase,
     Now,
+    /// `frequency`: the analysis frequency in hertz, in spectral source expressions only.
+    Frequency,
     Stop,
     Finish,
     /// math_real's `"**"` of a real or integer base and a real exponent.

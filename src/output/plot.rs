@@ -134,8 +134,8 @@ pub enum PlotError {
 
 const WIDTH: u32 = 1100;
 const PANEL_HEIGHT: u32 = 240;
-const FONT: &str = "sans-serif";
-const COLORS: [RGBColor; 6] = [
+pub(super) const FONT: &str = "sans-serif";
+pub(super) const COLORS: [RGBColor; 6] = [
     RGBColor(31, 119, 180),
     RGBColor(214, 39, 40),
     RGBColor(44, 160, 44),
@@ -144,7 +144,7 @@ const COLORS: [RGBColor; 6] = [
     RGBColor(23, 190, 207),
 ];
 
-fn register_font() {
+pub(super) fn register_font() {
     static REGISTER: Once = Once::new();
     REGISTER.call_once(|| {
         // The font is committed with the crate; a parse failure would only lose text.

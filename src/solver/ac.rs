@@ -1,0 +1,295 @@
+//! Small-signal (AC) analysis: a DAE `F(x', x, t) = 0` linearised about a point, then
+//! `(G + jw C) X = B` solved at each frequency with faer's complex sparse LU.
+//!
+//! `G = dF/dx` and `C = dF/dx'` come from [`DaeSystem::jacobian_parts`] at the point, with
+//! every column read as `x` and then every column read as `x'`: two evaluations of the
+//! system's own derivatives, exact where the system differentiates symbolically (no finite
+//! differences, and no difference of two `dF/dx + alpha dF/dx'` matrices, which would lose
+//! `C`'s digits beside a large `G`). An entry may also carry a pure delay `T` (the system's
+//! `Q'delayed(T)`): its value is then multiplied by `e^{-jwT}`.
+//!
+//! Knows nothing of VHDL: rows and columns are the system's indices, and the caller builds
+//! the right side.
+
+use faer::c64;
+use faer::sparse::linalg::solvers::{Lu, SymbolicLu};
+use faer::sparse::{Argsort, Pair, SparseColMat, SymbolicSparseColMat};
+use thiserror::Error;
+
+use super::DaeSystem;
+
+/// `G` and `C` of a linearised system on its sparsity pattern.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SmallSignal {
+    pub n: usize,
+    /// Structural entries `(row, column)`, no duplicates.
+    pub pattern: Vec<(usize, usize)>,
+    /// `dF/dx` per pattern entry.
+    pub g: Vec<f64>,
+    /// `dF/dx'` per pattern entry.
+    pub c: Vec<f64>,
+    /// Pattern entries multiplied by `e^{-jwT}`: `(entry, T)`.
+    pub delays: Vec<(usize, f64)>,
+}
+
+impl SmallSignal {
+    /// `G` and `C` of `sys` at `(t, x, x')`.
+    pub fn linearise(sys: &mut dyn DaeSystem, t: f64, x: &[f64], xdot: &[f64]) -> SmallSignal {
+        let n = sys.len();
+        let pattern = sys.pattern().to_vec();
+        let mut g = vec![0.0; pattern.len()];
+        let mut c = vec![0.0; pattern.len()];
+        let mut scratch = vec![0.0; pattern.len()];
+        sys.jacobian_parts(t, x, xdot, &vec![false; n], &mut g, &mut scratch);
+        sys.jacobian_parts(t, x, xdot, &vec![true; n], &mut c, &mut scratch);
+        // A column that is never read as `x'` has no `dF/dx'`: `jacobian_parts` gave its `dF/dx`.
+        let mut differential = vec![false; n];
+        for (j, &d) in sys.differential().iter().enumerate() {
+            differential[j] = d;
+        }
+        for (cv, &(_, col)) in c.iter_mut().zip(&pattern) {
+            if !differential[col] {
+                *cv = 0.0;
+            }
+        }
+        SmallSignal {
+            n,
+            pattern,
+            g,
+            c,
+            delays: Vec::new(),
+        }
+    }
+
+    /// The value of `G + jw C` (delays applied) at each pattern entry.
+    pub fn matrix_values(&self, omega: f64) -> Vec<c64> {
+        let mut values: Vec<c64> = (self.g.iter().zip(&self.c))
+            .map(|(&g, &c)| c64::new(g, omega * c))
+            .collect();
+        for &(k, delay) in &self.delays {
+            values[k] *= c64::from_polar(1.0, -omega * delay);
+        }
+        values
+    }
+}
+
+/// Why a frequency point has no solution.
+#[derive(Debug, Error, Clone, PartialEq)]
+pub enum AcSolveError {
+    /// The matrix is singular (structurally, or a pivot vanished) at this frequency.
+    #[error("the linearised system is singular at {frequency} Hz")]
+    Singular { frequency: f64 },
+    /// faer could not allocate or build the matrix.
+    #[error("the sparse solver failed: {0}")]
+    Solver(String),
+}
+
+/// Solves `(G + jw C) X = B` frequency after frequency on one symbolic factorisation (the
+/// pattern and its fill-reducing order do not change with the frequency).
+pub struct AcSolver {
+    system: SmallSignal,
+    symbolic_matrix: SymbolicSparseColMat<usize>,
+    argsort: Argsort<usize>,
+    symbolic_lu: SymbolicLu<usize>,
+}
+
+impl AcSolver {
+    pub fn new(system: SmallSignal) -> Result<AcSolver, AcSolveError> {
+        let indices: Vec<Pair<usize, usize>> = (system.pattern.iter())
+            .map(|&(row, col)| Pair::new(row, col))
+            .collect();
+        let (symbolic_matrix, argsort) =
+            SymbolicSparseColMat::try_new_from_indices(system.n, system.n, &indices)
+                .map_err(|e| AcSolveError::Solver(format!("{e:?}")))?;
+        let symbolic_lu = SymbolicLu::try_new(symbolic_matrix.as_ref())
+            .map_err(|e| AcSolveError::Solver(format!("{e:?}")))?;
+        Ok(AcSolver {
+            system,
+            symbolic_matrix,
+            argsort,
+            symbolic_lu,
+        })
+    }
+
+    pub fn system(&self) -> &SmallSignal {
+        &self.system
+    }
+
+    /// `X` at `frequency` (hertz) for the right side `rhs`.
+    pub fn solve(&self, frequency: f64, rhs: &[c64]) -> Result<Vec<c64>, AcSolveError> {
+        let n = self.system.n;
+        if n == 0 {
+            return Ok(Vec::new());
+        }
+        let omega = std::f64::consts::TAU * frequency;
+        let mut values = self.system.matrix_values(omega);
+        // Rows equilibrated to a largest entry of 1 (a power of two, so exactly): a force
+        // balance beside a displacement definition spans many decades, and partial pivoting
+        // compares rows' entries as they stand.
+        let mut row_max = vec![0.0_f64; n];
+        for (v, &(row, _)) in values.iter().zip(&self.system.pattern) {
+            row_max[row] = row_max[row].max(v.norm());
+        }
+        let row_scale: Vec<f64> = (row_max.iter())
+            .map(|&m| {
+                if m > 0.0 && m.is_finite() {
+                    2f64.powi(-m.log2().round() as i32)
+                } else {
+                    1.0
+                }
+            })
+            .collect();
+        for (v, &(row, _)) in values.iter_mut().zip(&self.system.pattern) {
+            *v *= row_scale[row];
+        }
+        let matrix =
+            SparseColMat::new_from_argsort(self.symbolic_matrix.clone(), &self.argsort, &values)
+                .map_err(|e| AcSolveError::Solver(format!("{e:?}")))?;
+        let lu = Lu::try_new_with_symbolic(self.symbolic_lu.clone(), matrix.as_ref())
+            .map_err(|_| AcSolveError::Singular { frequency })?;
+        let mut x = faer::Mat::<c64>::from_fn(n, 1, |i, _| {
+            rhs.get(i).copied().unwrap_or_default() * row_scale[i]
+        });
+        use faer::linalg::solvers::SolveCore;
+        lu.solve_in_place_with_conj(faer::Conj::No, x.as_mut());
+        let x: Vec<c64> = (0..n).map(|i| x[(i, 0)]).collect();
+        // A vanished pivot shows as an infinite or undefined solution.
+        if x.iter().any(|v| !(v.re.is_finite() && v.im.is_finite())) {
+            return Err(AcSolveError::Singular { frequency });
+        }
+        Ok(x)
+    }
+}
+
+/// How the analysis frequencies are spaced.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Spacing {
+    /// This many points per decade, logarithmically spaced (both ends included).
+    PerDecade(usize),
+    /// This many points, evenly spaced (both ends included).
+    Linear(usize),
+}
+
+/// The frequencies from `from` to `to` (hertz, `0 < from <= to`). A decade sweep's points
+/// are `from * 10^(k / per_decade)` (computed from the index, not accumulated, so whole
+/// decades of `from` are exact) and it ends at `to` itself.
+pub fn frequencies(from: f64, to: f64, spacing: Spacing) -> Vec<f64> {
+    if from >= to {
+        return vec![from];
+    }
+    match spacing {
+        Spacing::Linear(points) => {
+            let points = points.max(2);
+            let step = (to - from) / (points - 1) as f64;
+            (0..points)
+                .map(|k| {
+                    if k + 1 == points {
+                        to
+                    } else {
+                        from + step * k as f64
+                    }
+                })
+                .collect()
+        }
+        Spacing::PerDecade(per_decade) => {
+            let per_decade = per_decade.max(1) as f64;
+            let (start, end) = (from.log10(), to.log10());
+            // Points at `start + k / per_decade` decades; the last below `to` (by more than
+            // rounding) is followed by `to`.
+            let count = ((end - start) * per_decade * (1.0 + 1e-12)).floor() as usize;
+            let mut out: Vec<f64> = (0..=count)
+                .map(|k| from * 10f64.powf(k as f64 / per_decade))
+                .collect();
+            if let Some(last) = out.last_mut()
+                && (*last / to - 1.0).abs() < 1e-9
+            {
+                *last = to;
+            } else {
+                out.push(to);
+            }
+            out
+        }
+    }
+}
+
+/// Magnitude in decibels (`20 log10 |z|`).
+pub fn db(z: c64) -> f64 {
+    20.0 * z.norm().log10()
+}
+
+/// Phase in degrees, in `(-180, 180]`.
+pub fn degrees(z: c64) -> f64 {
+    z.arg().to_degrees()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn decade_sweep_lands_on_decades_and_ends() {
+        let f = frequencies(1.0, 1e6, Spacing::PerDecade(20));
+        assert_eq!(f.len(), 121);
+        assert_eq!(f[0], 1.0);
+        assert_eq!(f[120], 1e6);
+        assert!((f[20] / 10.0 - 1.0).abs() < 1e-14);
+        let f = frequencies(2.0, 30.0, Spacing::PerDecade(1));
+        assert_eq!(f, vec![2.0, 20.0, 30.0]);
+        let f = frequencies(10.0, 20.0, Spacing::Linear(3));
+        assert_eq!(f, vec![10.0, 15.0, 20.0]);
+        assert_eq!(frequencies(5.0, 5.0, Spacing::Linear(10)), vec![5.0]);
+    }
+
+    /// `x0 - b = 0` (a source) and `c x1' + (x1 - x0) / r = 0`: an RC low-pass.
+    fn rc(r: f64, c: f64) -> SmallSignal {
+        SmallSignal {
+            n: 2,
+            pattern: vec![(0, 0), (1, 0), (1, 1)],
+            g: vec![1.0, -1.0 / r, 1.0 / r],
+            c: vec![0.0, 0.0, c],
+            delays: Vec::new(),
+        }
+    }
+
+    #[test]
+    fn rc_low_pass_matches_its_closed_form() {
+        let (r, c) = (1e3, 1e-7);
+        let solver = AcSolver::new(rc(r, c)).unwrap();
+        for f in [1.0, 100.0, 1591.5494309189535, 1e5] {
+            let x = solver
+                .solve(f, &[c64::new(1.0, 0.0), c64::new(0.0, 0.0)])
+                .unwrap();
+            let wrc = std::f64::consts::TAU * f * r * c;
+            let h = x[1];
+            let expected = 1.0 / (1.0 + wrc * wrc).sqrt();
+            assert!((h.norm() / expected - 1.0).abs() < 1e-12, "{f}: {h}");
+            assert!((h.arg() + wrc.atan()).abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn a_delay_turns_the_phase() {
+        let mut sys = SmallSignal {
+            n: 2,
+            pattern: vec![(0, 0), (1, 0), (1, 1)],
+            g: vec![1.0, -1.0, 1.0],
+            c: vec![0.0; 3],
+            delays: vec![(1, 1e-3)],
+        };
+        let solver = AcSolver::new(sys.clone()).unwrap();
+        let x = solver
+            .solve(125.0, &[c64::new(1.0, 0.0), c64::default()])
+            .unwrap();
+        // e^{-j 2 pi 125 1e-3} = e^{-j pi/4}.
+        assert!((x[1].norm() - 1.0).abs() < 1e-14);
+        assert!((degrees(x[1]) + 45.0).abs() < 1e-12);
+        sys.g = vec![0.0, -1.0, 1.0];
+        let singular = AcSolver::new(sys)
+            .unwrap()
+            .solve(1.0, &[c64::new(1.0, 0.0), c64::default()]);
+        assert!(
+            matches!(singular, Err(AcSolveError::Singular { .. })),
+            "{singular:?}"
+        );
+    }
+}
