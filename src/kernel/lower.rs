@@ -72,6 +72,21 @@ enum Leaf {
     Event(usize),
     /// `s'active`.
     Active(usize),
+    /// `s(i)` for a constant `i`: the element at `at` of array signal `s` while it has `len`
+    /// elements (the position `offset` gives for that length), of kind `kind`.
+    SignalElement {
+        signal: u32,
+        at: u32,
+        len: u32,
+        kind: Kind,
+    },
+    /// `v(i)` for a constant `i`, of an array variable.
+    VarElement {
+        var: u32,
+        at: u32,
+        len: u32,
+        kind: Kind,
+    },
 }
 
 impl Leaf {
@@ -92,6 +107,38 @@ impl Leaf {
             }
             Expr::SignalAttr(s, SignalAttr::Event) => (Leaf::Event(s.index()), Kind::Bool),
             Expr::SignalAttr(s, SignalAttr::Active) => (Leaf::Active(s.index()), Kind::Bool),
+            Expr::Index { array, index, ty } => {
+                let Expr::Const(Value::Integer(i)) = **index else {
+                    return None;
+                };
+                let init = match **array {
+                    Expr::Signal(s) => &cx.design.signals.get(s.index())?.init,
+                    Expr::Var(v) => &cx.process.vars.get(v.index())?.init,
+                    _ => return None,
+                };
+                let Value::Array(items) = init else {
+                    return None;
+                };
+                let kind = Kind::of(items.first()?)?;
+                let len = u32::try_from(items.len()).ok()?;
+                let at = u32::try_from(offset(ty, i, items.len()).ok()?).ok()?;
+                let leaf = match **array {
+                    Expr::Signal(s) => Leaf::SignalElement {
+                        signal: s.0,
+                        at,
+                        len,
+                        kind,
+                    },
+                    Expr::Var(v) => Leaf::VarElement {
+                        var: v.0,
+                        at,
+                        len,
+                        kind,
+                    },
+                    _ => return None,
+                };
+                (leaf, kind)
+            }
             _ => return None,
         })
     }
@@ -104,6 +151,15 @@ impl Leaf {
             Leaf::Var(v, kind) => kind.read(&vars[v]),
             Leaf::Event(s) => Some(i64::from(signals[s].event)),
             Leaf::Active(s) => Some(i64::from(signals[s].active)),
+            Leaf::SignalElement {
+                signal,
+                at,
+                len,
+                kind,
+            } => element_at(&signals[signal as usize].value, at, len, kind),
+            Leaf::VarElement { var, at, len, kind } => {
+                element_at(&vars[var as usize], at, len, kind)
+            }
         }
     }
 }
@@ -224,13 +280,27 @@ enum Step<'d> {
 /// Operands a lowered expression may hold on its stack at once.
 const DEPTH: usize = 4;
 
-/// A scalar expression lowered to steps in postfix order after its first operand.
+/// A scalar expression lowered: its shape and the kind of its value.
 #[derive(Debug)]
 pub(crate) struct Node<'d> {
-    first: Leaf,
-    steps: Box<[Step<'d>]>,
+    shape: Shape<'d>,
     /// The kind of its value.
     pub kind: Kind,
+}
+
+/// The forms of a lowered expression: the two most frequent (an operand, an operand and a
+/// constant: `clk = '1'`, `q(3)`) evaluated inline where they are used, without the loop
+/// and the stack of the general one.
+#[derive(Debug)]
+enum Shape<'d> {
+    Leaf(Leaf),
+    /// `leaf op constant`.
+    WithConst(Leaf, Operator, i64),
+    /// Steps in postfix order after the first operand.
+    Steps {
+        first: Leaf,
+        steps: Box<[Step<'d>]>,
+    },
 }
 
 /// What lowering reads: the design and the process whose code it lowers.
@@ -249,42 +319,64 @@ impl<'d> Node<'d> {
             return None;
         };
         let first = *first;
-        steps.remove(0);
-        Some(Node {
-            first,
-            steps: steps.into_boxed_slice(),
-            kind,
-        })
+        let shape = match steps[1..] {
+            [] => Shape::Leaf(first),
+            [Step::WithConst(op, c)] => Shape::WithConst(first, op, c),
+            _ => {
+                steps.remove(0);
+                Shape::Steps {
+                    first,
+                    steps: steps.into_boxed_slice(),
+                }
+            }
+        };
+        Some(Node { shape, kind })
     }
 
     /// The value, as `eval` computes it (as an `i64` of [`Node::kind`]); `None` where `eval`
     /// would give a value of another kind or an error.
+    #[inline(always)]
     pub fn eval(&self, signals: &[SignalState], vars: &[Value]) -> Option<i64> {
-        let mut acc = self.first.read(signals, vars)?;
-        let mut stack = [0i64; DEPTH];
-        let mut sp = 0;
-        for step in &self.steps {
-            acc = match step {
-                Step::WithConst(op, c) => op.apply(acc, *c)?,
-                Step::With(op, leaf) => op.apply(acc, leaf.read(signals, vars)?)?,
-                Step::Load(leaf) => {
-                    stack[sp] = acc;
-                    sp += 1;
-                    leaf.read(signals, vars)?
-                }
-                Step::Pop(op) => {
-                    sp -= 1;
-                    op.apply(stack[sp], acc)?
-                }
-                Step::Neg => acc.checked_neg()?,
-                Step::Abs => acc.checked_abs()?,
-                Step::Not => 1 - acc.min(1),
-                Step::SignalElement(s, ty, kind) => element(&signals[*s].value, acc, ty, *kind)?,
-                Step::VarElement(v, ty, kind) => element(&vars[*v], acc, ty, *kind)?,
-            };
+        match &self.shape {
+            Shape::Leaf(leaf) => leaf.read(signals, vars),
+            Shape::WithConst(leaf, op, c) => op.apply(leaf.read(signals, vars)?, *c),
+            Shape::Steps { first, steps } => eval_steps(first, steps, signals, vars),
         }
-        Some(acc)
     }
+}
+
+/// [`Node::eval`] of the general shape: `first`, then `steps`.
+#[inline(never)]
+fn eval_steps(
+    first: &Leaf,
+    steps: &[Step],
+    signals: &[SignalState],
+    vars: &[Value],
+) -> Option<i64> {
+    let mut acc = first.read(signals, vars)?;
+    let mut stack = [0i64; DEPTH];
+    let mut sp = 0;
+    for step in steps {
+        acc = match step {
+            Step::WithConst(op, c) => op.apply(acc, *c)?,
+            Step::With(op, leaf) => op.apply(acc, leaf.read(signals, vars)?)?,
+            Step::Load(leaf) => {
+                stack[sp] = acc;
+                sp += 1;
+                leaf.read(signals, vars)?
+            }
+            Step::Pop(op) => {
+                sp -= 1;
+                op.apply(stack[sp], acc)?
+            }
+            Step::Neg => acc.checked_neg()?,
+            Step::Abs => acc.checked_abs()?,
+            Step::Not => 1 - acc.min(1),
+            Step::SignalElement(s, ty, kind) => element(&signals[*s].value, acc, ty, *kind)?,
+            Step::VarElement(v, ty, kind) => element(&vars[*v], acc, ty, *kind)?,
+        };
+    }
+    Some(acc)
 }
 
 /// Appends the steps of `e`, returning its kind; `depth` is the deepest stack so far, `sp`
@@ -297,7 +389,8 @@ fn compile<'d>(
     sp: usize,
 ) -> Option<Kind> {
     Some(match e {
-        Expr::Index { array, index, ty } => {
+        // A constant index is an operand's (`Leaf::SignalElement`).
+        Expr::Index { array, index, ty } if !matches!(**index, Expr::Const(_)) => {
             if compile(index, cx, steps, depth, sp)? != Kind::Int {
                 return None;
             }
@@ -365,6 +458,16 @@ fn compile<'d>(
             kind
         }
     })
+}
+
+/// The element at `at` of array value `array` when it has `len` elements (where the
+/// position was found), of kind `kind`.
+#[inline(always)]
+fn element_at(array: &Value, at: u32, len: u32, kind: Kind) -> Option<i64> {
+    match array {
+        Value::Array(items) if items.len() == len as usize => kind.read(&items[at as usize]),
+        _ => None,
+    }
 }
 
 /// Element `i` of array value `array` of type `ty`, of kind `kind`.
