@@ -68,6 +68,8 @@ pub(crate) struct EventKernel<'d> {
     timeout_of: Vec<f64>,
     /// Per signal, the processes with a wait of their own code sensitive to it.
     waiters: Vec<Vec<usize>>,
+    /// Per process, whether a wait of its own code has a condition (`wait until`).
+    has_until: Vec<bool>,
     /// The processes that call procedures, whose waits (on their signal parameters) are known
     /// only when they suspend: looked at in every cycle.
     dynamic: Vec<usize>,
@@ -114,8 +116,12 @@ impl<'d> EventKernel<'d> {
             .filter(|(_, p)| p.code.iter().any(|c| matches!(c, Instr::Call { .. })))
             .map(|(i, _)| i)
             .collect();
+        let has_until = (design.processes.iter())
+            .map(|p| (p.code.iter()).any(|c| matches!(c, Instr::Wait { until: Some(_), .. })))
+            .collect();
         Ok(EventKernel {
             design,
+            has_until,
             signals,
             procs,
             lowered,
@@ -271,16 +277,20 @@ impl<'d> EventKernel<'d> {
                 self.resume.push(i);
             }
         }
+        // A waiters list alone is in order without repeats (as built in `new`).
+        let mut in_order = self.resume.is_empty();
         for s in &self.signals.events {
             let waiters = &self.waiters[s.index()];
             if !waiters.is_empty() {
+                in_order = self.resume.is_empty();
                 self.resume.extend_from_slice(waiters);
             }
         }
         if !self.dynamic.is_empty() {
+            in_order = false;
             self.resume.extend_from_slice(&self.dynamic);
         }
-        if self.resume.len() > 1 {
+        if self.resume.len() > 1 && !in_order {
             self.resume.sort_unstable();
             self.resume.dedup();
         }
@@ -301,7 +311,13 @@ impl<'d> EventKernel<'d> {
                 continue;
             }
             let subs = &self.design.subprograms;
-            if let Some(cond) = p.until(&self.design.processes[i], subs) {
+            // Not looked up for a process none of whose own waits has a condition (the
+            // process's code is far in memory from its state).
+            let until = match p.running {
+                None if !self.has_until[i] => None,
+                _ => p.until(&self.design.processes[i], subs),
+            };
+            if let Some(cond) = until {
                 let env = Env {
                     signals: states,
                     vars: &p.vars,

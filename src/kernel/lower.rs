@@ -296,6 +296,8 @@ enum Shape<'d> {
     Leaf(Leaf),
     /// `leaf op constant`.
     WithConst(Leaf, Operator, i64),
+    /// `leaf op constant op constant ...` (`(count + 1) mod 1000000`): no stack.
+    Consts(Leaf, Box<[(Operator, i64)]>),
     /// Steps in postfix order after the first operand.
     Steps {
         first: Leaf,
@@ -322,6 +324,15 @@ impl<'d> Node<'d> {
         let shape = match steps[1..] {
             [] => Shape::Leaf(first),
             [Step::WithConst(op, c)] => Shape::WithConst(first, op, c),
+            ref rest if rest.iter().all(|s| matches!(s, Step::WithConst(..))) => Shape::Consts(
+                first,
+                (rest.iter())
+                    .filter_map(|s| match s {
+                        Step::WithConst(op, c) => Some((*op, *c)),
+                        _ => None,
+                    })
+                    .collect(),
+            ),
             _ => {
                 steps.remove(0);
                 Shape::Steps {
@@ -340,9 +351,25 @@ impl<'d> Node<'d> {
         match &self.shape {
             Shape::Leaf(leaf) => leaf.read(signals, vars),
             Shape::WithConst(leaf, op, c) => op.apply(leaf.read(signals, vars)?, *c),
+            Shape::Consts(leaf, ops) => eval_consts(leaf, ops, signals, vars),
             Shape::Steps { first, steps } => eval_steps(first, steps, signals, vars),
         }
     }
+}
+
+/// [`Node::eval`] of `leaf` and its constant operands.
+#[inline(never)]
+fn eval_consts(
+    leaf: &Leaf,
+    ops: &[(Operator, i64)],
+    signals: &[SignalState],
+    vars: &[Value],
+) -> Option<i64> {
+    let mut acc = leaf.read(signals, vars)?;
+    for &(op, c) in ops {
+        acc = op.apply(acc, c)?;
+    }
+    Some(acc)
 }
 
 /// [`Node::eval`] of the general shape: `first`, then `steps`.
