@@ -687,15 +687,9 @@ impl Signals {
     pub fn assign_scalar(&mut self, d: usize, kind: Kind, x: i64, time: f64, delay: Delay) {
         let driver = &mut self.drivers[d];
         let w = &mut driver.waveform;
-        // Old transactions at or after the new one are deleted (both mechanisms).
-        while w.back().is_some_and(|tr| tr.time >= time) {
-            w.pop_back();
-        }
-        if let Delay::Inertial(start) = delay
-            && !w.is_empty()
-        {
-            reject(w, start, &Some(kind.value(x)), &driver.current);
-            self.next_stale = true;
+        // With no old transaction (the usual case) there is nothing to delete or reject.
+        if !w.is_empty() {
+            self.next_stale |= edit_scalar(w, kind.value(x), time, delay, &driver.current);
         }
         w.push_back(Transaction {
             time,
@@ -938,6 +932,7 @@ impl Signals {
     }
 
     /// Signal `s`, given a new value by [`store`], has an event at `now`.
+    #[inline]
     fn event(&mut self, s: SignalId, now: f64) {
         let st = &mut self.states[s.index()];
         st.last_event = Some(now);
@@ -1151,6 +1146,29 @@ fn edit(driver: &mut Driver, first_value: &Option<Value>, first_time: f64, delay
     false
 }
 
+/// [`edit`] of a non-empty projected waveform for a new scalar transaction `value` at
+/// `time`; true if transactions before it may have gone (an inertial rejection).
+#[inline(never)]
+fn edit_scalar(
+    w: &mut VecDeque<Transaction>,
+    value: Value,
+    time: f64,
+    delay: Delay,
+    current: &Value,
+) -> bool {
+    // Old transactions at or after the new one are deleted (both mechanisms).
+    while w.back().is_some_and(|tr| tr.time >= time) {
+        w.pop_back();
+    }
+    if let Delay::Inertial(start) = delay
+        && !w.is_empty()
+    {
+        reject(w, start, &Some(value), current);
+        return true;
+    }
+    false
+}
+
 /// Inertial rejection (LRM 10.5.2.2) in `w`, none of whose transactions is at or after the
 /// new waveform's first element `first_value`; `start` is the rejection interval's start.
 #[inline(never)]
@@ -1212,7 +1230,7 @@ fn copy_scalar(to: &mut Value, from: &Value) -> bool {
 
 /// Gives `st` the value `v`, its old value becoming `last_value` when it changes; true if it
 /// changed.
-#[inline]
+#[inline(always)]
 fn store(st: &mut SignalState, v: &Value) -> bool {
     match store_scalar(st, v) {
         Some(changed) => changed,
@@ -1223,7 +1241,7 @@ fn store(st: &mut SignalState, v: &Value) -> bool {
 /// [`store`] of a scalar replacing a scalar of its kind (the usual transaction), written in
 /// place without comparing, cloning or dropping a general `Value` (the comparison is
 /// `Value`'s `==` all the same); `None` for other values.
-#[inline]
+#[inline(always)]
 fn store_scalar(st: &mut SignalState, v: &Value) -> Option<bool> {
     macro_rules! scalar {
         ($variant:ident, $old:expr, $new:expr) => {{
