@@ -70,6 +70,10 @@ pub(crate) struct EventKernel<'d> {
     waiters: Vec<Vec<usize>>,
     /// Per process, whether a wait of its own code has a condition (`wait until`).
     has_until: Vec<bool>,
+    /// Per process, whether it has one wait, without a condition, and calls no procedure
+    /// (a process with a sensitivity list): waiting, it waits there, so a signal whose
+    /// waiters list it is on, with an event, resumes it without a look at its sensitivity.
+    one_plain_wait: Vec<bool>,
     /// The processes that call procedures, whose waits (on their signal parameters) are known
     /// only when they suspend: looked at in every cycle.
     dynamic: Vec<usize>,
@@ -112,16 +116,23 @@ impl<'d> EventKernel<'d> {
                 waiters[s.index()].push(i);
             }
         }
-        let dynamic = (design.processes.iter().enumerate())
+        let dynamic: Vec<usize> = (design.processes.iter().enumerate())
             .filter(|(_, p)| p.code.iter().any(|c| matches!(c, Instr::Call { .. })))
             .map(|(i, _)| i)
             .collect();
-        let has_until = (design.processes.iter())
+        let has_until: Vec<bool> = (design.processes.iter())
             .map(|p| (p.code.iter()).any(|c| matches!(c, Instr::Wait { until: Some(_), .. })))
+            .collect();
+        let one_plain_wait = (design.processes.iter().enumerate())
+            .map(|(i, p)| {
+                let waits = p.code.iter().filter(|c| matches!(c, Instr::Wait { .. }));
+                waits.count() == 1 && !has_until[i] && !dynamic.contains(&i)
+            })
             .collect();
         Ok(EventKernel {
             design,
             has_until,
+            one_plain_wait,
             signals,
             procs,
             lowered,
@@ -301,7 +312,9 @@ impl<'d> EventKernel<'d> {
             if p.halted || p.waiting_at.is_none() {
                 continue;
             }
-            if p.timeout_at.is_some_and(|t| t <= now) {
+            // Due, or on the waiters list of a signal with an event (the only other way
+            // such a process comes here).
+            if p.timeout_at.is_some_and(|t| t <= now) || self.one_plain_wait[i] {
                 self.resume[k] = i;
                 k += 1;
                 continue;

@@ -515,6 +515,44 @@ pub(crate) enum Mechanism {
     Inertial(f64),
 }
 
+/// Where a lowered instruction goes on when it falls through: the next instruction, or the
+/// target of the `Jump` there, taken in the same dispatch (`jumps` 1: the jump still counts
+/// as an instruction, so the runaway limit and the cancel checks come where they did).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Next {
+    pc: usize,
+    jumps: usize,
+}
+
+impl Next {
+    /// What follows instruction `pc` of `code`.
+    fn after(code: &[Instr], pc: usize) -> Next {
+        Next::at(code, pc + 1)
+    }
+
+    /// Instruction `pc` of `code`, or the target of the `Jump` there.
+    fn at(code: &[Instr], pc: usize) -> Next {
+        match code.get(pc) {
+            Some(Instr::Jump(target)) => Next {
+                pc: *target,
+                jumps: 1,
+            },
+            _ => Next { pc, jumps: 0 },
+        }
+    }
+
+    /// The instruction to go on at and the instructions taken to get there (the one that
+    /// went on included): through the jump when `THREAD`, else to `plain`.
+    #[inline(always)]
+    fn go<const THREAD: bool>(self, plain: usize) -> (usize, usize) {
+        if THREAD {
+            (self.pc, 1 + self.jumps)
+        } else {
+            (plain, 1)
+        }
+    }
+}
+
 /// A lowered instruction, at the index of the instruction it stands for.
 #[derive(Debug)]
 pub(crate) enum Op<'d> {
@@ -525,6 +563,9 @@ pub(crate) enum Op<'d> {
     Branch {
         cond: Node<'d>,
         target: usize,
+        /// Where it goes on when the condition holds, and when it does not.
+        holds: Next,
+        fails: Next,
     },
     /// A wait of the process's own code: its timeout in seconds, literal and not negative.
     Wait {
@@ -540,25 +581,28 @@ pub(crate) enum Op<'d> {
         mechanism: Mechanism,
         /// The target's integer subtype's bounds.
         range: Option<(i64, i64)>,
+        next: Next,
     },
     SetVar {
         var: usize,
         value: Node<'d>,
         range: Option<(i64, i64)>,
+        next: Next,
     },
 }
 
 /// What a lowered instruction did.
 pub(crate) enum Flow {
-    /// Go on at `state.pc`.
-    Next,
+    /// Go on at `state.pc`, after this many instructions (a jump taken with it counts).
+    Next(usize),
     Suspend(Suspend),
 }
 
 /// Executes lowered instruction `op` at `state.pc` of the process's own code: `None`, having
-/// changed nothing, when it is not lowered or declines (the interpreter then runs it).
+/// changed nothing, when it is not lowered or declines (the interpreter then runs it). With
+/// `THREAD`, an instruction followed by a `Jump` takes it too.
 #[inline(always)]
-pub(crate) fn step(
+pub(crate) fn step<const THREAD: bool>(
     op: &Op,
     state: &mut ProcState,
     signals: &mut Signals,
@@ -569,12 +613,21 @@ pub(crate) fn step(
         Op::General => None,
         Op::Jump(target) => {
             state.pc = *target;
-            Some(Flow::Next)
+            Some(Flow::Next(1))
         }
-        Op::Branch { cond, target } => {
-            let holds = cond.eval(&signals.states, &state.vars)? != 0;
-            state.pc = if holds { pc + 1 } else { *target };
-            Some(Flow::Next)
+        Op::Branch {
+            cond,
+            target,
+            holds,
+            fails,
+        } => {
+            let (to, steps) = if cond.eval(&signals.states, &state.vars)? != 0 {
+                holds.go::<THREAD>(pc + 1)
+            } else {
+                fails.go::<THREAD>(*target)
+            };
+            state.pc = to;
+            Some(Flow::Next(steps))
         }
         Op::Wait { timeout, halts } => {
             state.pc = pc + 1;
@@ -592,6 +645,7 @@ pub(crate) fn step(
             delay,
             mechanism,
             range,
+            next,
         } => {
             let v = value.eval(&signals.states, &state.vars)?;
             if !in_range(v, *range) {
@@ -602,17 +656,24 @@ pub(crate) fn step(
                 Mechanism::Inertial(start) => Delay::Inertial(later(now, start)),
             };
             signals.assign_scalar(*driver, value.kind, v, later(now, *delay), mechanism);
-            state.pc = pc + 1;
-            Some(Flow::Next)
+            let (to, steps) = next.go::<THREAD>(pc + 1);
+            state.pc = to;
+            Some(Flow::Next(steps))
         }
-        Op::SetVar { var, value, range } => {
+        Op::SetVar {
+            var,
+            value,
+            range,
+            next,
+        } => {
             let v = value.eval(&signals.states, &state.vars)?;
             if !in_range(v, *range) {
                 return None;
             }
             state.vars[*var] = value.kind.value(v);
-            state.pc = pc + 1;
-            Some(Flow::Next)
+            let (to, steps) = next.go::<THREAD>(pc + 1);
+            state.pc = to;
+            Some(Flow::Next(steps))
         }
     }
 }
@@ -646,19 +707,19 @@ pub(crate) fn run(ops: &[Op], state: &mut ProcState, signals: &mut Signals, now:
     if state.running.is_some() {
         return Ran::Declined { steps: 0 };
     }
-    for steps in 0..CANCEL_CHECK - 1 {
+    // A step takes at most two instructions, so this stops at `CANCEL_CHECK - 1` at most.
+    let mut steps = 0;
+    while steps < CANCEL_CHECK - 2 {
         match ops
             .get(state.pc)
-            .and_then(|op| step(op, state, signals, now))
+            .and_then(|op| step::<true>(op, state, signals, now))
         {
-            Some(Flow::Next) => {}
+            Some(Flow::Next(taken)) => steps += taken,
             Some(Flow::Suspend(s)) => return Ran::Suspended(s),
             None => return Ran::Declined { steps },
         }
     }
-    Ran::Declined {
-        steps: CANCEL_CHECK - 1,
-    }
+    Ran::Declined { steps }
 }
 
 /// A literal delay in seconds (as `process::seconds_of` reads one without evaluating it).
@@ -704,6 +765,8 @@ fn lower_one<'d>(
         Instr::JumpIfNot { cond, target } => Op::Branch {
             cond: Node::lower(cond, cx).filter(|c| c.kind == Kind::Bool)?,
             target: *target,
+            holds: Next::after(&process.code, pc),
+            fails: Next::at(&process.code, *target),
         },
         Instr::Wait { until, timeout, .. } => {
             let timeout = match timeout {
@@ -725,6 +788,7 @@ fn lower_one<'d>(
                     .range
                     .filter(|_| value.kind == Kind::Int),
                 value,
+                next: Next::after(&process.code, pc),
             }
         }
         Instr::Assign {
@@ -762,6 +826,7 @@ fn lower_one<'d>(
                 value,
                 delay,
                 mechanism,
+                next: Next::after(&process.code, pc),
             }
         }
         _ => return None,
