@@ -395,11 +395,14 @@ impl Signals {
                 continue;
             }
             let element = |d: &usize| drivers[*d].element;
-            let Some(shared) = ds
-                .iter()
-                .find(|d| ds.iter().filter(|e| element(e) == element(d)).count() > 1)
-                .map(element)
-            else {
+            // Counted once (n generated processes each driving an element of an n-element
+            // signal made n^2 comparisons); the first driver in order whose element another
+            // driver drives too.
+            let mut count: FxHashMap<Option<usize>, usize> = FxHashMap::default();
+            for d in ds {
+                *count.entry(element(d)).or_default() += 1;
+            }
+            let Some(shared) = ds.iter().map(element).find(|e| count[e] > 1) else {
                 continue;
             };
             let mut processes: Vec<&str> = index
