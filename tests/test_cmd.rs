@@ -266,7 +266,8 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_quantity_array_arguments ... ok"))
         .stdout(contains("test tb_package_shared_variable ... ok"))
         .stdout(contains("test tb_process_constants ... ok"))
-        .stdout(contains("121 passed, 0 failed"));
+        .stdout(contains("test tb_element_last_value ... ok"))
+        .stdout(contains("122 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

@@ -694,10 +694,13 @@ impl Signals {
         if !w.is_empty() {
             self.next_stale |= edit_scalar(w, kind.value(x), time, delay, &driver.current);
         }
-        w.push_back(Transaction {
-            time,
-            value: Some(kind.value(x)),
-        });
+        // The transaction pushed empty and its value written into it afterwards: built
+        // before the push (which may grow the queue), the value was assembled on the stack in
+        // parts and copied in whole, which stalled on those stores.
+        w.push_back(Transaction { time, value: None });
+        if let Some(tr) = w.back_mut() {
+            tr.value = Some(kind.value(x));
+        }
         // Not `f64::min`, whose NaN handling costs more: times are numbers.
         if time < self.next {
             self.next = time;
