@@ -1,7 +1,7 @@
 //! The event-driven half of the simulation cycle: signal update, process resumption and
 //! execution, delta cycles at one time point, and the next time anything digital is due.
 
-use crate::design::{Design, Instr, QuantityId, SignalId, Value};
+use crate::design::{Design, Instr, Process, QuantityId, SignalId, Value};
 
 use super::error::SimError;
 use super::eval::Env;
@@ -116,8 +116,9 @@ impl<'d> EventKernel<'d> {
                 waiters[s.index()].push(i);
             }
         }
-        let dynamic: Vec<usize> = (design.processes.iter().enumerate())
-            .filter(|(_, p)| p.code.iter().any(|c| matches!(c, Instr::Call { .. })))
+        let calls = |p: &Process| p.code.iter().any(|c| matches!(c, Instr::Call { .. }));
+        let dynamic = (design.processes.iter().enumerate())
+            .filter(|(_, p)| calls(p))
             .map(|(i, _)| i)
             .collect();
         let has_until: Vec<bool> = (design.processes.iter())
@@ -126,7 +127,7 @@ impl<'d> EventKernel<'d> {
         let one_plain_wait = (design.processes.iter().enumerate())
             .map(|(i, p)| {
                 let waits = p.code.iter().filter(|c| matches!(c, Instr::Wait { .. }));
-                waits.count() == 1 && !has_until[i] && !dynamic.contains(&i)
+                waits.count() == 1 && !has_until[i] && !calls(p)
             })
             .collect();
         Ok(EventKernel {
