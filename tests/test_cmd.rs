@@ -266,10 +266,11 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_quantity_array_arguments ... ok"))
         .stdout(contains("test tb_package_shared_variable ... ok"))
         .stdout(contains("test tb_process_constants ... ok"))
+        .stdout(contains("test tb_element_last_value ... ok"))
         // tests/ac/: the AC models also run in the time domain (spectral sources are zero).
         .stdout(contains("test tb_rc_lowpass ... ok"))
         .stdout(contains("test tb_attributes ... ok"))
-        .stdout(contains("129 passed, 0 failed"));
+        .stdout(contains("130 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

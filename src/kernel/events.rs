@@ -1,7 +1,7 @@
 //! The event-driven half of the simulation cycle: signal update, process resumption and
 //! execution, delta cycles at one time point, and the next time anything digital is due.
 
-use crate::design::{Design, Instr, QuantityId, SignalId, Value};
+use crate::design::{Design, Instr, Process, QuantityId, SignalId, Value};
 
 use super::error::SimError;
 use super::eval::Env;
@@ -68,6 +68,12 @@ pub(crate) struct EventKernel<'d> {
     timeout_of: Vec<f64>,
     /// Per signal, the processes with a wait of their own code sensitive to it.
     waiters: Vec<Vec<usize>>,
+    /// Per process, whether a wait of its own code has a condition (`wait until`).
+    has_until: Vec<bool>,
+    /// Per process, whether it has one wait, without a condition, and calls no procedure
+    /// (a process with a sensitivity list): waiting, it waits there, so a signal whose
+    /// waiters list it is on, with an event, resumes it without a look at its sensitivity.
+    one_plain_wait: Vec<bool>,
     /// The processes that call procedures, whose waits (on their signal parameters) are known
     /// only when they suspend: looked at in every cycle.
     dynamic: Vec<usize>,
@@ -110,12 +116,24 @@ impl<'d> EventKernel<'d> {
                 waiters[s.index()].push(i);
             }
         }
+        let calls = |p: &Process| p.code.iter().any(|c| matches!(c, Instr::Call { .. }));
         let dynamic = (design.processes.iter().enumerate())
-            .filter(|(_, p)| p.code.iter().any(|c| matches!(c, Instr::Call { .. })))
+            .filter(|(_, p)| calls(p))
             .map(|(i, _)| i)
+            .collect();
+        let has_until: Vec<bool> = (design.processes.iter())
+            .map(|p| (p.code.iter()).any(|c| matches!(c, Instr::Wait { until: Some(_), .. })))
+            .collect();
+        let one_plain_wait = (design.processes.iter().enumerate())
+            .map(|(i, p)| {
+                let waits = p.code.iter().filter(|c| matches!(c, Instr::Wait { .. }));
+                waits.count() == 1 && !has_until[i] && !calls(p)
+            })
             .collect();
         Ok(EventKernel {
             design,
+            has_until,
+            one_plain_wait,
             signals,
             procs,
             lowered,
@@ -271,16 +289,20 @@ impl<'d> EventKernel<'d> {
                 self.resume.push(i);
             }
         }
+        // A waiters list alone is in order without repeats (as built in `new`).
+        let mut in_order = self.resume.is_empty();
         for s in &self.signals.events {
             let waiters = &self.waiters[s.index()];
             if !waiters.is_empty() {
+                in_order = self.resume.is_empty();
                 self.resume.extend_from_slice(waiters);
             }
         }
         if !self.dynamic.is_empty() {
+            in_order = false;
             self.resume.extend_from_slice(&self.dynamic);
         }
-        if self.resume.len() > 1 {
+        if self.resume.len() > 1 && !in_order {
             self.resume.sort_unstable();
             self.resume.dedup();
         }
@@ -291,7 +313,9 @@ impl<'d> EventKernel<'d> {
             if p.halted || p.waiting_at.is_none() {
                 continue;
             }
-            if p.timeout_at.is_some_and(|t| t <= now) {
+            // Due, or on the waiters list of a signal with an event (the only other way
+            // such a process comes here).
+            if p.timeout_at.is_some_and(|t| t <= now) || self.one_plain_wait[i] {
                 self.resume[k] = i;
                 k += 1;
                 continue;
@@ -301,7 +325,13 @@ impl<'d> EventKernel<'d> {
                 continue;
             }
             let subs = &self.design.subprograms;
-            if let Some(cond) = p.until(&self.design.processes[i], subs) {
+            // Not looked up for a process none of whose own waits has a condition (the
+            // process's code is far in memory from its state).
+            let until = match p.running {
+                None if !self.has_until[i] => None,
+                _ => p.until(&self.design.processes[i], subs),
+            };
+            if let Some(cond) = until {
                 let env = Env {
                     signals: states,
                     vars: &p.vars,

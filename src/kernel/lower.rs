@@ -72,6 +72,21 @@ enum Leaf {
     Event(usize),
     /// `s'active`.
     Active(usize),
+    /// `s(i)` for a constant `i`: the element at `at` of array signal `s` while it has `len`
+    /// elements (the position `offset` gives for that length), of kind `kind`.
+    SignalElement {
+        signal: u32,
+        at: u32,
+        len: u32,
+        kind: Kind,
+    },
+    /// `v(i)` for a constant `i`, of an array variable.
+    VarElement {
+        var: u32,
+        at: u32,
+        len: u32,
+        kind: Kind,
+    },
 }
 
 impl Leaf {
@@ -92,6 +107,38 @@ impl Leaf {
             }
             Expr::SignalAttr(s, SignalAttr::Event) => (Leaf::Event(s.index()), Kind::Bool),
             Expr::SignalAttr(s, SignalAttr::Active) => (Leaf::Active(s.index()), Kind::Bool),
+            Expr::Index { array, index, ty } => {
+                let Expr::Const(Value::Integer(i)) = **index else {
+                    return None;
+                };
+                let init = match **array {
+                    Expr::Signal(s) => &cx.design.signals.get(s.index())?.init,
+                    Expr::Var(v) => &cx.process.vars.get(v.index())?.init,
+                    _ => return None,
+                };
+                let Value::Array(items) = init else {
+                    return None;
+                };
+                let kind = Kind::of(items.first()?)?;
+                let len = u32::try_from(items.len()).ok()?;
+                let at = u32::try_from(offset(ty, i, items.len()).ok()?).ok()?;
+                let leaf = match **array {
+                    Expr::Signal(s) => Leaf::SignalElement {
+                        signal: s.0,
+                        at,
+                        len,
+                        kind,
+                    },
+                    Expr::Var(v) => Leaf::VarElement {
+                        var: v.0,
+                        at,
+                        len,
+                        kind,
+                    },
+                    _ => return None,
+                };
+                (leaf, kind)
+            }
             _ => return None,
         })
     }
@@ -104,6 +151,15 @@ impl Leaf {
             Leaf::Var(v, kind) => kind.read(&vars[v]),
             Leaf::Event(s) => Some(i64::from(signals[s].event)),
             Leaf::Active(s) => Some(i64::from(signals[s].active)),
+            Leaf::SignalElement {
+                signal,
+                at,
+                len,
+                kind,
+            } => element_at(&signals[signal as usize].value, at, len, kind),
+            Leaf::VarElement { var, at, len, kind } => {
+                element_at(&vars[var as usize], at, len, kind)
+            }
         }
     }
 }
@@ -224,13 +280,29 @@ enum Step<'d> {
 /// Operands a lowered expression may hold on its stack at once.
 const DEPTH: usize = 4;
 
-/// A scalar expression lowered to steps in postfix order after its first operand.
+/// A scalar expression lowered: its shape and the kind of its value.
 #[derive(Debug)]
 pub(crate) struct Node<'d> {
-    first: Leaf,
-    steps: Box<[Step<'d>]>,
+    shape: Shape<'d>,
     /// The kind of its value.
     pub kind: Kind,
+}
+
+/// The forms of a lowered expression: the two most frequent (an operand, an operand and a
+/// constant: `clk = '1'`, `q(3)`) evaluated inline where they are used, without the loop
+/// and the stack of the general one.
+#[derive(Debug)]
+enum Shape<'d> {
+    Leaf(Leaf),
+    /// `leaf op constant`.
+    WithConst(Leaf, Operator, i64),
+    /// `leaf op constant op constant ...` (`(count + 1) mod 1000000`): no stack.
+    Consts(Leaf, Box<[(Operator, i64)]>),
+    /// Steps in postfix order after the first operand.
+    Steps {
+        first: Leaf,
+        steps: Box<[Step<'d>]>,
+    },
 }
 
 /// What lowering reads: the design and the process whose code it lowers.
@@ -249,42 +321,89 @@ impl<'d> Node<'d> {
             return None;
         };
         let first = *first;
-        steps.remove(0);
-        Some(Node {
-            first,
-            steps: steps.into_boxed_slice(),
-            kind,
-        })
+        let shape = match steps[1..] {
+            [] => Shape::Leaf(first),
+            [Step::WithConst(op, c)] => Shape::WithConst(first, op, c),
+            ref rest if rest.iter().all(|s| matches!(s, Step::WithConst(..))) => Shape::Consts(
+                first,
+                (rest.iter())
+                    .filter_map(|s| match s {
+                        Step::WithConst(op, c) => Some((*op, *c)),
+                        _ => None,
+                    })
+                    .collect(),
+            ),
+            _ => {
+                steps.remove(0);
+                Shape::Steps {
+                    first,
+                    steps: steps.into_boxed_slice(),
+                }
+            }
+        };
+        Some(Node { shape, kind })
     }
 
     /// The value, as `eval` computes it (as an `i64` of [`Node::kind`]); `None` where `eval`
     /// would give a value of another kind or an error.
+    #[inline(always)]
     pub fn eval(&self, signals: &[SignalState], vars: &[Value]) -> Option<i64> {
-        let mut acc = self.first.read(signals, vars)?;
-        let mut stack = [0i64; DEPTH];
-        let mut sp = 0;
-        for step in &self.steps {
-            acc = match step {
-                Step::WithConst(op, c) => op.apply(acc, *c)?,
-                Step::With(op, leaf) => op.apply(acc, leaf.read(signals, vars)?)?,
-                Step::Load(leaf) => {
-                    stack[sp] = acc;
-                    sp += 1;
-                    leaf.read(signals, vars)?
-                }
-                Step::Pop(op) => {
-                    sp -= 1;
-                    op.apply(stack[sp], acc)?
-                }
-                Step::Neg => acc.checked_neg()?,
-                Step::Abs => acc.checked_abs()?,
-                Step::Not => 1 - acc.min(1),
-                Step::SignalElement(s, ty, kind) => element(&signals[*s].value, acc, ty, *kind)?,
-                Step::VarElement(v, ty, kind) => element(&vars[*v], acc, ty, *kind)?,
-            };
+        match &self.shape {
+            Shape::Leaf(leaf) => leaf.read(signals, vars),
+            Shape::WithConst(leaf, op, c) => op.apply(leaf.read(signals, vars)?, *c),
+            Shape::Consts(leaf, ops) => eval_consts(leaf, ops, signals, vars),
+            Shape::Steps { first, steps } => eval_steps(first, steps, signals, vars),
         }
-        Some(acc)
     }
+}
+
+/// [`Node::eval`] of `leaf` and its constant operands.
+#[inline(never)]
+fn eval_consts(
+    leaf: &Leaf,
+    ops: &[(Operator, i64)],
+    signals: &[SignalState],
+    vars: &[Value],
+) -> Option<i64> {
+    let mut acc = leaf.read(signals, vars)?;
+    for &(op, c) in ops {
+        acc = op.apply(acc, c)?;
+    }
+    Some(acc)
+}
+
+/// [`Node::eval`] of the general shape: `first`, then `steps`.
+#[inline(never)]
+fn eval_steps(
+    first: &Leaf,
+    steps: &[Step],
+    signals: &[SignalState],
+    vars: &[Value],
+) -> Option<i64> {
+    let mut acc = first.read(signals, vars)?;
+    let mut stack = [0i64; DEPTH];
+    let mut sp = 0;
+    for step in steps {
+        acc = match step {
+            Step::WithConst(op, c) => op.apply(acc, *c)?,
+            Step::With(op, leaf) => op.apply(acc, leaf.read(signals, vars)?)?,
+            Step::Load(leaf) => {
+                stack[sp] = acc;
+                sp += 1;
+                leaf.read(signals, vars)?
+            }
+            Step::Pop(op) => {
+                sp -= 1;
+                op.apply(stack[sp], acc)?
+            }
+            Step::Neg => acc.checked_neg()?,
+            Step::Abs => acc.checked_abs()?,
+            Step::Not => 1 - acc.min(1),
+            Step::SignalElement(s, ty, kind) => element(&signals[*s].value, acc, ty, *kind)?,
+            Step::VarElement(v, ty, kind) => element(&vars[*v], acc, ty, *kind)?,
+        };
+    }
+    Some(acc)
 }
 
 /// Appends the steps of `e`, returning its kind; `depth` is the deepest stack so far, `sp`
@@ -297,7 +416,8 @@ fn compile<'d>(
     sp: usize,
 ) -> Option<Kind> {
     Some(match e {
-        Expr::Index { array, index, ty } => {
+        // A constant index is an operand's (`Leaf::SignalElement`).
+        Expr::Index { array, index, ty } if !matches!(**index, Expr::Const(_)) => {
             if compile(index, cx, steps, depth, sp)? != Kind::Int {
                 return None;
             }
@@ -367,6 +487,16 @@ fn compile<'d>(
     })
 }
 
+/// The element at `at` of array value `array` when it has `len` elements (where the
+/// position was found), of kind `kind`.
+#[inline(always)]
+fn element_at(array: &Value, at: u32, len: u32, kind: Kind) -> Option<i64> {
+    match array {
+        Value::Array(items) if items.len() == len as usize => kind.read(&items[at as usize]),
+        _ => None,
+    }
+}
+
 /// Element `i` of array value `array` of type `ty`, of kind `kind`.
 #[inline(always)]
 fn element(array: &Value, i: i64, ty: &Type, kind: Kind) -> Option<i64> {
@@ -385,6 +515,44 @@ pub(crate) enum Mechanism {
     Inertial(f64),
 }
 
+/// Where a lowered instruction goes on when it falls through: the next instruction, or the
+/// target of the `Jump` there, taken in the same dispatch (`jumps` 1: the jump still counts
+/// as an instruction, so the runaway limit and the cancel checks come where they did).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Next {
+    pc: usize,
+    jumps: usize,
+}
+
+impl Next {
+    /// What follows instruction `pc` of `code`.
+    fn after(code: &[Instr], pc: usize) -> Next {
+        Next::at(code, pc + 1)
+    }
+
+    /// Instruction `pc` of `code`, or the target of the `Jump` there.
+    fn at(code: &[Instr], pc: usize) -> Next {
+        match code.get(pc) {
+            Some(Instr::Jump(target)) => Next {
+                pc: *target,
+                jumps: 1,
+            },
+            _ => Next { pc, jumps: 0 },
+        }
+    }
+
+    /// The instruction to go on at and the instructions taken to get there (the one that
+    /// went on included): through the jump when `THREAD`, else to `plain`.
+    #[inline(always)]
+    fn go<const THREAD: bool>(self, plain: usize) -> (usize, usize) {
+        if THREAD {
+            (self.pc, 1 + self.jumps)
+        } else {
+            (plain, 1)
+        }
+    }
+}
+
 /// A lowered instruction, at the index of the instruction it stands for.
 #[derive(Debug)]
 pub(crate) enum Op<'d> {
@@ -395,6 +563,9 @@ pub(crate) enum Op<'d> {
     Branch {
         cond: Node<'d>,
         target: usize,
+        /// Where it goes on when the condition holds, and when it does not.
+        holds: Next,
+        fails: Next,
     },
     /// A wait of the process's own code: its timeout in seconds, literal and not negative.
     Wait {
@@ -410,25 +581,28 @@ pub(crate) enum Op<'d> {
         mechanism: Mechanism,
         /// The target's integer subtype's bounds.
         range: Option<(i64, i64)>,
+        next: Next,
     },
     SetVar {
         var: usize,
         value: Node<'d>,
         range: Option<(i64, i64)>,
+        next: Next,
     },
 }
 
 /// What a lowered instruction did.
 pub(crate) enum Flow {
-    /// Go on at `state.pc`.
-    Next,
+    /// Go on at `state.pc`, after this many instructions (a jump taken with it counts).
+    Next(usize),
     Suspend(Suspend),
 }
 
 /// Executes lowered instruction `op` at `state.pc` of the process's own code: `None`, having
-/// changed nothing, when it is not lowered or declines (the interpreter then runs it).
+/// changed nothing, when it is not lowered or declines (the interpreter then runs it). With
+/// `THREAD`, an instruction followed by a `Jump` takes it too.
 #[inline(always)]
-pub(crate) fn step(
+pub(crate) fn step<const THREAD: bool>(
     op: &Op,
     state: &mut ProcState,
     signals: &mut Signals,
@@ -439,12 +613,21 @@ pub(crate) fn step(
         Op::General => None,
         Op::Jump(target) => {
             state.pc = *target;
-            Some(Flow::Next)
+            Some(Flow::Next(1))
         }
-        Op::Branch { cond, target } => {
-            let holds = cond.eval(&signals.states, &state.vars)? != 0;
-            state.pc = if holds { pc + 1 } else { *target };
-            Some(Flow::Next)
+        Op::Branch {
+            cond,
+            target,
+            holds,
+            fails,
+        } => {
+            let (to, steps) = if cond.eval(&signals.states, &state.vars)? != 0 {
+                holds.go::<THREAD>(pc + 1)
+            } else {
+                fails.go::<THREAD>(*target)
+            };
+            state.pc = to;
+            Some(Flow::Next(steps))
         }
         Op::Wait { timeout, halts } => {
             state.pc = pc + 1;
@@ -462,6 +645,7 @@ pub(crate) fn step(
             delay,
             mechanism,
             range,
+            next,
         } => {
             let v = value.eval(&signals.states, &state.vars)?;
             if !in_range(v, *range) {
@@ -472,17 +656,24 @@ pub(crate) fn step(
                 Mechanism::Inertial(start) => Delay::Inertial(later(now, start)),
             };
             signals.assign_scalar(*driver, value.kind, v, later(now, *delay), mechanism);
-            state.pc = pc + 1;
-            Some(Flow::Next)
+            let (to, steps) = next.go::<THREAD>(pc + 1);
+            state.pc = to;
+            Some(Flow::Next(steps))
         }
-        Op::SetVar { var, value, range } => {
+        Op::SetVar {
+            var,
+            value,
+            range,
+            next,
+        } => {
             let v = value.eval(&signals.states, &state.vars)?;
             if !in_range(v, *range) {
                 return None;
             }
             state.vars[*var] = value.kind.value(v);
-            state.pc = pc + 1;
-            Some(Flow::Next)
+            let (to, steps) = next.go::<THREAD>(pc + 1);
+            state.pc = to;
+            Some(Flow::Next(steps))
         }
     }
 }
@@ -516,19 +707,19 @@ pub(crate) fn run(ops: &[Op], state: &mut ProcState, signals: &mut Signals, now:
     if state.running.is_some() {
         return Ran::Declined { steps: 0 };
     }
-    for steps in 0..CANCEL_CHECK - 1 {
+    // A step takes at most two instructions, so this stops at `CANCEL_CHECK - 1` at most.
+    let mut steps = 0;
+    while steps < CANCEL_CHECK - 2 {
         match ops
             .get(state.pc)
-            .and_then(|op| step(op, state, signals, now))
+            .and_then(|op| step::<true>(op, state, signals, now))
         {
-            Some(Flow::Next) => {}
+            Some(Flow::Next(taken)) => steps += taken,
             Some(Flow::Suspend(s)) => return Ran::Suspended(s),
             None => return Ran::Declined { steps },
         }
     }
-    Ran::Declined {
-        steps: CANCEL_CHECK - 1,
-    }
+    Ran::Declined { steps }
 }
 
 /// A literal delay in seconds (as `process::seconds_of` reads one without evaluating it).
@@ -574,6 +765,8 @@ fn lower_one<'d>(
         Instr::JumpIfNot { cond, target } => Op::Branch {
             cond: Node::lower(cond, cx).filter(|c| c.kind == Kind::Bool)?,
             target: *target,
+            holds: Next::after(&process.code, pc),
+            fails: Next::at(&process.code, *target),
         },
         Instr::Wait { until, timeout, .. } => {
             let timeout = match timeout {
@@ -595,6 +788,7 @@ fn lower_one<'d>(
                     .range
                     .filter(|_| value.kind == Kind::Int),
                 value,
+                next: Next::after(&process.code, pc),
             }
         }
         Instr::Assign {
@@ -632,6 +826,7 @@ fn lower_one<'d>(
                 value,
                 delay,
                 mechanism,
+                next: Next::after(&process.code, pc),
             }
         }
         _ => return None,

@@ -281,8 +281,9 @@ pub(crate) fn run(
         let pc = state.pc;
         // A lowered instruction, unless it declines (then the interpreter runs it below).
         if let Some(op) = ops.get(pc) {
-            match super::lower::step(op, state, cx.signals, now) {
-                Some(Flow::Next) => continue,
+            // One instruction at a time: the count of the loop is the instructions'.
+            match super::lower::step::<false>(op, state, cx.signals, now) {
+                Some(Flow::Next(_)) => continue,
                 Some(Flow::Suspend(s)) => return Ok(s),
                 None => {}
             }

@@ -67,6 +67,20 @@ struct Driver {
     pending: bool,
 }
 
+/// A signal driven element by element with at most one driver per element, updated in
+/// place: only the elements whose drivers had a transaction are compared, and `last_value`
+/// is brought up to date through the elements that changed at the last event instead of a
+/// copy of the whole array (a 1001-element register shifting at each edge copied and
+/// compared all of it in every cycle).
+#[derive(Clone, Debug)]
+struct ElementDriven {
+    /// The element drivers with a transaction in the current update phase.
+    due: Vec<u32>,
+    /// The elements that changed at the signal's last event: the only ones where
+    /// `last_value` differs from the value.
+    changed: Vec<u32>,
+}
+
 /// An implicit `S'stable(T)` or `S'quiet(T)` signal.
 #[derive(Clone, Copy, Debug)]
 struct Stable {
@@ -137,9 +151,9 @@ pub(crate) struct Signals {
     /// Whether events are recorded for [`Signals::take_changed`].
     track_changes: bool,
     /// Per signal driven element by element, unguarded, without a resolution function and
-    /// with at most one driver per element: each element's driver (`u32::MAX`: none, the
-    /// element keeps its value).
-    element_drivers: Vec<Option<Vec<u32>>>,
+    /// with at most one driver per element: its element drivers and the elements that
+    /// changed ([`ElementDriven`]).
+    element_drivers: Vec<Option<ElementDriven>>,
     /// Per signal, its one driver when it has one, drives it whole and has no resolution
     /// function (`u32::MAX` otherwise): [`Signals::single_driver`] when that is connected.
     sole: Vec<u32>,
@@ -286,7 +300,8 @@ impl Signals {
             .flatten()
             .filter(|(_, d, _)| *d != Driven::Whole)
         {
-            split[target.index()] = Some(design.signals[target.index()].init.elements().len());
+            // Counted, not copied: once per assignment of a generate's n processes.
+            split[target.index()] = Some(element_count(&design.signals[target.index()].init));
         }
         for (p, targets) in assigned.iter().enumerate() {
             for (target, driven, init) in targets {
@@ -380,11 +395,14 @@ impl Signals {
                 continue;
             }
             let element = |d: &usize| drivers[*d].element;
-            let Some(shared) = ds
-                .iter()
-                .find(|d| ds.iter().filter(|e| element(e) == element(d)).count() > 1)
-                .map(element)
-            else {
+            // Counted once (n generated processes each driving an element of an n-element
+            // signal made n^2 comparisons); the first driver in order whose element another
+            // driver drives too.
+            let mut count: FxHashMap<Option<usize>, usize> = FxHashMap::default();
+            for d in ds {
+                *count.entry(element(d)).or_default() += 1;
+            }
+            let Some(shared) = ds.iter().map(element).find(|e| count[e] > 1) else {
                 continue;
             };
             let mut processes: Vec<&str> = index
@@ -491,7 +509,11 @@ impl Signals {
                     }
                     *slot = u32::try_from(d).ok()?;
                 }
-                Some(of)
+                // Each element has at most one driver (`of` only checks that).
+                Some(ElementDriven {
+                    due: Vec::new(),
+                    changed: Vec::new(),
+                })
             })
             .collect();
         signals.sole = (0..n)
@@ -668,20 +690,17 @@ impl Signals {
     pub fn assign_scalar(&mut self, d: usize, kind: Kind, x: i64, time: f64, delay: Delay) {
         let driver = &mut self.drivers[d];
         let w = &mut driver.waveform;
-        // Old transactions at or after the new one are deleted (both mechanisms).
-        while w.back().is_some_and(|tr| tr.time >= time) {
-            w.pop_back();
+        // With no old transaction (the usual case) there is nothing to delete or reject.
+        if !w.is_empty() {
+            self.next_stale |= edit_scalar(w, kind.value(x), time, delay, &driver.current);
         }
-        if let Delay::Inertial(start) = delay
-            && !w.is_empty()
-        {
-            reject(w, start, &Some(kind.value(x)), &driver.current);
-            self.next_stale = true;
+        // The transaction pushed empty and its value written into it afterwards: built
+        // before the push (which may grow the queue), the value was assembled on the stack in
+        // parts and copied in whole, which stalled on those stores.
+        w.push_back(Transaction { time, value: None });
+        if let Some(tr) = w.back_mut() {
+            tr.value = Some(kind.value(x));
         }
-        w.push_back(Transaction {
-            time,
-            value: Some(kind.value(x)),
-        });
         // Not `f64::min`, whose NaN handling costs more: times are numbers.
         if time < self.next {
             self.next = time;
@@ -743,7 +762,8 @@ impl Signals {
         // The earliest transaction left.
         let mut next = f64::INFINITY;
         while k < self.pending.len() {
-            let driver = &mut self.drivers[self.pending[k]];
+            let d = self.pending[k];
+            let driver = &mut self.drivers[d];
             let mut due = false;
             let Driver {
                 waveform,
@@ -765,7 +785,7 @@ impl Signals {
                 waveform.pop_front();
                 due = true;
             }
-            let signal = driver.signal;
+            let (signal, element) = (driver.signal, driver.element);
             match driver.waveform.front() {
                 None => {
                     driver.pending = false;
@@ -779,6 +799,12 @@ impl Signals {
                 }
             }
             if due {
+                if element.is_some()
+                    && let Some(split) = &mut self.element_drivers[signal.index()]
+                {
+                    // Fits: `element_drivers` is only for signals whose drivers' indices do.
+                    split.due.push(d as u32);
+                }
                 self.activate(signal, now);
             }
         }
@@ -912,6 +938,7 @@ impl Signals {
     }
 
     /// Signal `s`, given a new value by [`store`], has an event at `now`.
+    #[inline]
     fn event(&mut self, s: SignalId, now: f64) {
         let st = &mut self.states[s.index()];
         st.last_event = Some(now);
@@ -924,36 +951,49 @@ impl Signals {
     }
 
     /// [`Signals::effective`] and [`Signals::set`] of a signal driven element by element
-    /// with at most one driver per element (`element_drivers`): the elements written in
-    /// place, the array copied into `last_value` only when one changes.
+    /// with at most one driver per element (`element_drivers`): the elements of the drivers
+    /// with a transaction in this phase compared and written in place (the others still
+    /// hold their drivers' values, as every element does after each update), `last_value`
+    /// brought up to date at the first change through the elements of the last event.
     #[inline(never)]
     fn update_elements(&mut self, s: usize, now: f64) {
-        let Some(ds) = &self.element_drivers[s] else {
+        let Some(split) = &mut self.element_drivers[s] else {
             return;
         };
-        let Value::Array(items) = &self.states[s].value else {
-            return;
-        };
-        let differs = |(k, &d): (usize, &u32)| {
-            (self.drivers.get(d as usize)).is_some_and(|d| d.current != items[k])
-        };
-        if !ds.iter().enumerate().any(differs) {
-            return;
-        }
         let st = &mut self.states[s];
-        // Into the old `last_value`'s storage when it is an array of the same length.
-        match (&mut st.last_value, &st.value) {
-            (Value::Array(last), Value::Array(items)) => last.clone_from(items),
-            (last, value) => *last = value.clone(),
+        let (Value::Array(items), Value::Array(last)) = (&mut st.value, &mut st.last_value) else {
+            split.due.clear();
+            return;
+        };
+        if last.len() != items.len() {
+            // Not the shape `initialize` and this function keep; brought back to it.
+            last.clone_from(items);
+            split.changed.clear();
         }
-        if let Value::Array(items) = &mut st.value {
-            for (item, &d) in items.iter_mut().zip(ds) {
-                if let Some(d) = self.drivers.get(d as usize) {
-                    item.clone_from(&d.current);
-                }
+        let mut event = false;
+        for d in split.due.drain(..) {
+            let driver = &self.drivers[d as usize];
+            let Some(k) = driver.element.filter(|&k| k < items.len()) else {
+                continue;
+            };
+            if driver.current == items[k] {
+                continue;
             }
+            if !event {
+                // `last_value` becomes the value before this phase: it differed only at the
+                // elements that changed at the last event.
+                for &k in &split.changed {
+                    last[k as usize].clone_from(&items[k as usize]);
+                }
+                split.changed.clear();
+                event = true;
+            }
+            items[k].clone_from(&driver.current);
+            split.changed.push(k as u32);
         }
-        self.event(SignalId(s as u32), now);
+        if event {
+            self.event(SignalId(s as u32), now);
+        }
     }
 
     /// The common case of [`Signals::effective`], a signal driven whole by one connected
@@ -1112,6 +1152,29 @@ fn edit(driver: &mut Driver, first_value: &Option<Value>, first_time: f64, delay
     false
 }
 
+/// [`edit`] of a non-empty projected waveform for a new scalar transaction `value` at
+/// `time`; true if transactions before it may have gone (an inertial rejection).
+#[inline(never)]
+fn edit_scalar(
+    w: &mut VecDeque<Transaction>,
+    value: Value,
+    time: f64,
+    delay: Delay,
+    current: &Value,
+) -> bool {
+    // Old transactions at or after the new one are deleted (both mechanisms).
+    while w.back().is_some_and(|tr| tr.time >= time) {
+        w.pop_back();
+    }
+    if let Delay::Inertial(start) = delay
+        && !w.is_empty()
+    {
+        reject(w, start, &Some(value), current);
+        return true;
+    }
+    false
+}
+
 /// Inertial rejection (LRM 10.5.2.2) in `w`, none of whose transactions is at or after the
 /// new waveform's first element `first_value`; `start` is the rejection interval's start.
 #[inline(never)]
@@ -1147,6 +1210,15 @@ fn element_of(v: &Value, k: usize) -> Option<Value> {
     }
 }
 
+/// The number of elements [`Value::elements`] lists, without copying them.
+fn element_count(v: &Value) -> usize {
+    match v {
+        Value::Array(items) => items.len(),
+        Value::String(s) => s.chars().count(),
+        _ => 1,
+    }
+}
+
 /// `*to = *from` for two scalars of one kind, in place; false (having done nothing) for other
 /// values.
 #[inline(always)]
@@ -1164,7 +1236,7 @@ fn copy_scalar(to: &mut Value, from: &Value) -> bool {
 
 /// Gives `st` the value `v`, its old value becoming `last_value` when it changes; true if it
 /// changed.
-#[inline]
+#[inline(always)]
 fn store(st: &mut SignalState, v: &Value) -> bool {
     match store_scalar(st, v) {
         Some(changed) => changed,
@@ -1175,7 +1247,7 @@ fn store(st: &mut SignalState, v: &Value) -> bool {
 /// [`store`] of a scalar replacing a scalar of its kind (the usual transaction), written in
 /// place without comparing, cloning or dropping a general `Value` (the comparison is
 /// `Value`'s `==` all the same); `None` for other values.
-#[inline]
+#[inline(always)]
 fn store_scalar(st: &mut SignalState, v: &Value) -> Option<bool> {
     macro_rules! scalar {
         ($variant:ident, $old:expr, $new:expr) => {{
