@@ -351,7 +351,10 @@ fn a_delayed_quantity_keeps_its_past_when_the_states_change() {
             return x[k];
         }
         let (h, s) = (t1 - t0, (t - t0) / (t1 - t0));
-        let (h00, h10) = (2.0 * s.powi(3) - 3.0 * s * s + 1.0, s.powi(3) - 2.0 * s * s + s);
+        let (h00, h10) = (
+            2.0 * s.powi(3) - 3.0 * s * s + 1.0,
+            s.powi(3) - 2.0 * s * s + s,
+        );
         let (h01, h11) = (-2.0 * s.powi(3) + 3.0 * s * s, s.powi(3) - s * s);
         h00 * x[k] + h10 * h * u[k] + h01 * x[k + 1] + h11 * h * u[k + 1]
     };
