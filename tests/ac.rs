@@ -74,6 +74,20 @@ impl Table {
 }
 
 /// Runs `vams ac` on `tests/ac/<model>.vhd` with `args`; the CSV on standard output.
+/// `vams ac tests/ac/MODEL.vhd --from FROM --to TO`, for the diagnostics' tests.
+fn ac_command(model: &str, from: &str, to: &str) -> Command {
+    let mut command = vams();
+    command.args([
+        "ac",
+        &format!("{DIR}/{model}.vhd"),
+        "--from",
+        from,
+        "--to",
+        to,
+    ]);
+    command
+}
+
 fn ac(model: &str, args: &[&str]) -> Table {
     let out = vams()
         .arg("ac")
@@ -399,15 +413,7 @@ fn writes_csv_and_bode_plot_files() {
 
 #[test]
 fn a_design_without_a_spectral_source_is_refused() {
-    vams()
-        .args([
-            "ac",
-            &format!("{DIR}/no_source.vhd"),
-            "--from",
-            "1Hz",
-            "--to",
-            "1kHz",
-        ])
+    ac_command("no_source", "1Hz", "1kHz")
         .assert()
         .code(1)
         .stderr(contains("no spectral source quantity"))
@@ -416,52 +422,20 @@ fn a_design_without_a_spectral_source_is_refused() {
 
 #[test]
 fn unsupported_constructs_and_bad_arguments_are_diagnosed() {
-    vams()
-        .args([
-            "ac",
-            &format!("{DIR}/zoh.vhd"),
-            "--from",
-            "1Hz",
-            "--to",
-            "1kHz",
-        ])
+    ac_command("zoh", "1Hz", "1kHz")
         .assert()
         .code(1)
         .stderr(contains("does not support `vin'zoh`"))
         .stderr(contains("zoh.vhd:"));
-    vams()
-        .args([
-            "ac",
-            &format!("{DIR}/rc_lowpass.vhd"),
-            "--from",
-            "1kHz",
-            "--to",
-            "1Hz",
-        ])
+    ac_command("rc_lowpass", "1kHz", "1Hz")
         .assert()
         .code(1)
         .stderr(contains("frequency range is empty"));
-    vams()
-        .args([
-            "ac",
-            &format!("{DIR}/rc_lowpass.vhd"),
-            "--from",
-            "0Hz",
-            "--to",
-            "1Hz",
-        ])
+    ac_command("rc_lowpass", "0Hz", "1Hz")
         .assert()
         .code(2)
         .stderr(contains("not a positive frequency"));
-    vams()
-        .args([
-            "ac",
-            &format!("{DIR}/rc_lowpass.vhd"),
-            "--from",
-            "1Hz",
-            "--to",
-            "1kHz",
-        ])
+    ac_command("rc_lowpass", "1Hz", "1kHz")
         .args(["--probe", "vot"])
         .assert()
         .code(1)

@@ -11,7 +11,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use super::atomic::{commit, temp_path};
-use super::plot::{COLORS, FONT, PlotError, register_font};
+use super::plot::{COLORS, FONT, PlotError, draw_legend, draw_trace, register_font};
 
 /// One probe's response.
 #[derive(Debug, Clone)]
@@ -133,24 +133,10 @@ where
                 .filter(|p| p.0 > 0.0 && value(p).is_finite())
                 .map(|p| (p.0, value(p)))
                 .collect();
-            chart
-                .draw_series(std::iter::once(PathElement::new(
-                    pts,
-                    color.stroke_width(2),
-                )))?
-                .label(trace.name.as_str())
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2))
-                });
+            draw_trace(&mut chart, pts, &trace.name, color, 2)?;
         }
         if traces.len() > 1 && k == 0 {
-            chart
-                .configure_series_labels()
-                .position(SeriesLabelPosition::UpperRight)
-                .background_style(WHITE.mix(0.85))
-                .border_style(RGBColor(180, 180, 180))
-                .label_font((FONT, 13))
-                .draw()?;
+            draw_legend(&mut chart)?;
         }
     }
     root.present()?;

@@ -318,27 +318,56 @@ where
                 TraceKind::Logic => steps(&trace.points),
                 TraceKind::Analog => envelope(&trace.points, x0, x1, WIDTH as usize),
             };
-            chart
-                .draw_series(std::iter::once(PathElement::new(
-                    pts,
-                    color.stroke_width(if n == 0 { 1 } else { 2 }),
-                )))?
-                .label(trace.name.as_str())
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2))
-                });
+            let width = if n == 0 { 1 } else { 2 };
+            draw_trace(&mut chart, pts, &trace.name, color, width)?;
         }
         if panel.traces.len() > 1 {
-            chart
-                .configure_series_labels()
-                .position(SeriesLabelPosition::UpperRight)
-                .background_style(WHITE.mix(0.85))
-                .border_style(RGBColor(180, 180, 180))
-                .label_font((FONT, 13))
-                .draw()?;
+            draw_legend(&mut chart)?;
         }
     }
     root.present()?;
+    Ok(())
+}
+
+/// One trace as a line of `width` pixels, labelled `name` in the legend.
+pub(super) fn draw_trace<'a, DB, CT>(
+    chart: &mut ChartContext<'a, DB, CT>,
+    points: Vec<(f64, f64)>,
+    name: &str,
+    color: RGBColor,
+    width: u32,
+) -> Result<(), Box<dyn std::error::Error>>
+where
+    DB: DrawingBackend + 'a,
+    DB::ErrorType: 'static,
+    CT: CoordTranslate<From = (f64, f64)>,
+{
+    chart
+        .draw_series(std::iter::once(PathElement::new(
+            points,
+            color.stroke_width(width),
+        )))?
+        .label(name)
+        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2)));
+    Ok(())
+}
+
+/// The legend of a panel's traces, in its upper right corner.
+pub(super) fn draw_legend<'a, DB, CT>(
+    chart: &mut ChartContext<'a, DB, CT>,
+) -> Result<(), Box<dyn std::error::Error>>
+where
+    DB: DrawingBackend + 'a,
+    DB::ErrorType: 'static,
+    CT: CoordTranslate<From = (f64, f64)>,
+{
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.85))
+        .border_style(RGBColor(180, 180, 180))
+        .label_font((FONT, 13))
+        .draw()?;
     Ok(())
 }
 
