@@ -15,6 +15,7 @@ pub mod interrupt;
 pub mod load;
 pub mod op;
 pub mod params;
+pub mod poles;
 pub mod progress;
 pub mod render;
 pub mod run;
@@ -50,6 +51,9 @@ pub enum Command {
     /// Small-signal AC analysis: the frequency response of the quantities to the design's
     /// spectral sources about its quiescent point, as CSV and a Bode plot.
     Ac(ac::AcArgs),
+    /// The natural frequencies of the design linearised about its quiescent point: poles with
+    /// frequency, damping ratio and time constant.
+    Poles(poles::PolesArgs),
     /// Print the analog equation system of a design (unknowns and equations with their source).
     Dae(dae::DaeArgs),
     /// Run every testbench (port-less entity named tb_* or test_*) and report pass or fail.
@@ -67,6 +71,7 @@ pub fn run() -> ExitCode {
         Command::Run(args) => run::run(&args),
         Command::Op(args) => op::run(&args),
         Command::Ac(args) => ac::run(&args),
+        Command::Poles(args) => poles::run(&args),
         Command::Dae(args) => dae::run(&args),
         Command::Test(args) => test::run(&args),
         Command::Extract(args) => extract::run(&args),

@@ -16,6 +16,7 @@ mod error;
 mod linear;
 mod newton;
 mod op;
+pub mod poles;
 mod transient;
 
 #[cfg(test)]

@@ -12,7 +12,7 @@ use clap::Args;
 use faer::c64;
 use miette::Report;
 
-use crate::analog::{AnalogOptions, AnalogSystem};
+use crate::analog::{AnalogOptions, AnalogSystem, SmallSignalModel};
 use crate::design::{Design, QuantityId, SignalId, SignalKind};
 use crate::kernel::{SimOptions, operating_point};
 use crate::output::atomic::write_atomically;
@@ -159,13 +159,21 @@ pub struct Response {
     pub values: Vec<Vec<c64>>,
 }
 
-/// Runs the analysis on an elaborated design; the errors are printed as they are found.
-fn analyse(
+/// The design linearised about its quiescent point: the solver's system, the point, and the
+/// small-signal model.
+pub(super) struct Linearised {
+    pub system: AnalogSystem,
+    pub x: Vec<f64>,
+    pub xdot: Vec<f64>,
+    pub model: SmallSignalModel,
+}
+
+/// Linearises an elaborated design about its quiescent point (see [`analyse`]); the errors
+/// are printed as they are found.
+pub(super) fn linearise(
     design: &Design,
     sources: &crate::source::SourceMap,
-    probes: &[QuantityId],
-    frequencies: Vec<f64>,
-) -> Result<Response, Report> {
+) -> Result<Linearised, Report> {
     let top = || design.top.clone();
     // The quiescent point exactly as `vams op` finds it (processes to their first wait,
     // breaks, `domain = quiescent_domain`), on the reduced system the kernel builds.
@@ -202,7 +210,7 @@ fn analyse(
             eprint!("{}", render(&e));
             CliError::Simulation { top: top() }
         })?;
-    let mut model = system.small_signal(design, &x, &xdot).map_err(|errors| {
+    let model = system.small_signal(design, &x, &xdot).map_err(|errors| {
         for e in &errors {
             eprint!("{}", render_located(e, sources));
         }
@@ -210,6 +218,28 @@ fn analyse(
             count: errors.len(),
         }
     })?;
+    Ok(Linearised {
+        system,
+        x,
+        xdot,
+        model,
+    })
+}
+
+/// Runs the analysis on an elaborated design; the errors are printed as they are found.
+fn analyse(
+    design: &Design,
+    sources: &crate::source::SourceMap,
+    probes: &[QuantityId],
+    frequencies: Vec<f64>,
+) -> Result<Response, Report> {
+    let top = || design.top.clone();
+    let Linearised {
+        system,
+        x,
+        xdot,
+        mut model,
+    } = linearise(design, sources)?;
     // Each probe as a combination of the solver's unknowns (an eliminated quantity by the
     // linearisation of its formula); the frequency-domain signals are set by now.
     let outputs: Vec<Vec<(usize, f64, f64)>> = (probes.iter())

@@ -146,6 +146,14 @@ pub enum CliError {
     )]
     AcSolve { top: String, reason: String },
 
+    /// `vams poles` could not compute the eigenvalues.
+    #[error("the poles of `{top}` could not be computed: {reason}")]
+    #[diagnostic(
+        code(vams::cli::poles),
+        help("`vams ac` gives the frequency response of a system of any size")
+    )]
+    Poles { top: String, reason: String },
+
     /// `vams test`: some testbenches failed.
     #[error("{failed} of {total} testbench(es) failed")]
     #[diagnostic(code(vams::cli::tests_failed))]
