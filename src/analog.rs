@@ -843,7 +843,7 @@ impl AnalogSystem {
         // The `'delayed` histories are the run's, not the system's: a new choice of states
         // moves their inputs to other slots, not their past.
         for (new, old) in rebuilt.delay_lines.iter_mut().zip(&self.delay_lines) {
-            new.take_history(old);
+            new.copy_history(old);
         }
         Some(rebuilt)
     }

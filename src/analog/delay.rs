@@ -44,9 +44,9 @@ impl DelayLine {
         }
     }
 
-    /// Takes `other`'s recorded points (the same quantity and delay, its input in another
+    /// Copies `other`'s recorded points (the same quantity and delay, its input in another
     /// slot of a rebuilt system).
-    pub fn take_history(&mut self, other: &DelayLine) {
+    pub fn copy_history(&mut self, other: &DelayLine) {
         debug_assert_eq!(self.delay, other.delay);
         self.points.clone_from(&other.points);
     }
