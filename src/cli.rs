@@ -9,6 +9,7 @@ pub mod ac;
 pub mod check;
 pub mod compile;
 pub mod dae;
+pub mod dc;
 pub mod error;
 pub mod extract;
 pub mod interrupt;
@@ -51,6 +52,9 @@ pub enum Command {
     /// Small-signal AC analysis: the frequency response of the quantities to the design's
     /// spectral sources about its quiescent point, as CSV and a Bode plot.
     Ac(ac::AcArgs),
+    /// DC transfer curves: the quiescent point at each value of a swept generic, each point
+    /// starting from the last, as CSV and a plot.
+    Dc(dc::DcArgs),
     /// The natural frequencies of the design linearised about its quiescent point: poles with
     /// frequency, damping ratio and time constant.
     Poles(poles::PolesArgs),
@@ -71,6 +75,7 @@ pub fn run() -> ExitCode {
         Command::Run(args) => run::run(&args),
         Command::Op(args) => op::run(&args),
         Command::Ac(args) => ac::run(&args),
+        Command::Dc(args) => dc::run(&args),
         Command::Poles(args) => poles::run(&args),
         Command::Dae(args) => dae::run(&args),
         Command::Test(args) => test::run(&args),

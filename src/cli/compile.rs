@@ -7,7 +7,7 @@ use std::path::PathBuf;
 use clap::Args;
 use miette::Report;
 
-use crate::analysis::analyse;
+use crate::analysis::{Analysis, analyse};
 use crate::design::Design;
 use crate::elaborate::{ElabOptions, ElabWarning, elaborate_analysed, find_tops};
 
@@ -56,8 +56,50 @@ pub fn choose_top(given: Option<&str>, candidates: Vec<String>) -> Result<String
     }
 }
 
-/// Loads, parses and elaborates; every diagnostic is printed before the summary error.
-pub fn compile(args: &DesignArgs) -> Result<Compiled, Report> {
+/// Sources parsed and analysed, the top chosen: what elaborating once per parameter set
+/// (`vams dc`'s sweep) reuses, so that a sweep re-parameterises the design without parsing
+/// it again.
+pub struct Prepared {
+    pub loaded: Loaded,
+    pub analysis: Analysis,
+    pub top: String,
+    /// The overrides of `-g` and `--params`, merged.
+    pub generics: Vec<(String, String)>,
+}
+
+impl Prepared {
+    /// Elaborates the top with the command's generics and then `extra` (which win); the errors
+    /// are printed (the warnings are the caller's: [`print_warnings`]).
+    pub fn elaborate(&self, extra: &[(String, String)]) -> Result<Design, Report> {
+        let generics = merge_generics(self.generics.clone(), extra);
+        let options = ElabOptions {
+            top: self.top.clone(),
+            generics,
+        };
+        let loaded = &self.loaded;
+        let design = elaborate_analysed(&self.analysis, &loaded.sources, &loaded.files, &options)
+            .map_err(|errors| {
+            for e in &errors {
+                eprint!("{}", render_located(e, &loaded.sources));
+            }
+            CliError::Elaboration {
+                count: errors.len(),
+            }
+        })?;
+        Ok(design)
+    }
+
+    /// Prints the elaboration warnings of `design`.
+    pub fn print_warnings(&self, design: &Design) {
+        for u in &design.warnings {
+            eprint!("{}", render_located(&ElabWarning::from(u), &self.loaded.sources));
+        }
+    }
+}
+
+/// Loads, parses and analyses every unit and chooses the top; every diagnostic is printed
+/// before the summary error.
+pub fn prepare(args: &DesignArgs) -> Result<Prepared, Report> {
     let from_file = match &args.params {
         Some(path) => read_params(path)?,
         None => Vec::new(),
@@ -91,21 +133,23 @@ pub fn compile(args: &DesignArgs) -> Result<Compiled, Report> {
             None => find_tops(&analysis, &loaded.files),
         },
     )?;
-    let options = ElabOptions { top, generics };
-    let design = elaborate_analysed(&analysis, &loaded.sources, &loaded.files, &options).map_err(
-        |errors| {
-            for e in &errors {
-                eprint!("{}", render_located(e, &loaded.sources));
-            }
-            CliError::Elaboration {
-                count: errors.len(),
-            }
-        },
-    )?;
-    for u in &design.warnings {
-        eprint!("{}", render_located(&ElabWarning::from(u), &loaded.sources));
-    }
-    Ok(Compiled { loaded, design })
+    Ok(Prepared {
+        loaded,
+        analysis,
+        top,
+        generics,
+    })
+}
+
+/// Loads, parses and elaborates; every diagnostic is printed before the summary error.
+pub fn compile(args: &DesignArgs) -> Result<Compiled, Report> {
+    let prepared = prepare(args)?;
+    let design = prepared.elaborate(&[])?;
+    prepared.print_warnings(&design);
+    Ok(Compiled {
+        loaded: prepared.loaded,
+        design,
+    })
 }
 
 /// Ends the life of what a one-shot command built without dropping it: the process exits

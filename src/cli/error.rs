@@ -154,6 +154,33 @@ pub enum CliError {
     )]
     Poles { top: String, reason: String },
 
+    /// `vams dc --probe` names no quantity or signal.
+    #[error("--probe `{name}`: no quantity or signal of that name")]
+    #[diagnostic(code(vams::cli::dc_probe), help("{help}"))]
+    DcProbe { name: String, help: String },
+
+    /// `vams dc --sweep NAME FROM TO STEP` that gives no sequence of points.
+    #[error("--sweep {name}: {problem}")]
+    #[diagnostic(
+        code(vams::cli::sweep_range),
+        help("e.g. --sweep vin 0 5 0.1 sweeps vin from 0 to 5 in steps of 0.1; a negative step sweeps down")
+    )]
+    SweepRange { name: String, problem: String },
+
+    /// A point of `vams dc` had no quiescent solution, even approached in smaller steps.
+    #[error("the DC sweep of `{top}` stopped at {name} = {value}: no quiescent point there")]
+    #[diagnostic(
+        code(vams::cli::sweep_failed),
+        help(
+            "the solver's diagnostic is above; the points before it were written. A model that has no solution there (a fold of its characteristic) cannot be swept through it; sweep from the other side, or with --both-ways"
+        )
+    )]
+    SweepFailed {
+        top: String,
+        name: String,
+        value: String,
+    },
+
     /// `vams test`: some testbenches failed.
     #[error("{failed} of {total} testbench(es) failed")]
     #[diagnostic(code(vams::cli::tests_failed))]

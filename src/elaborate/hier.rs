@@ -12,7 +12,7 @@ use crate::design::{self, QuantityKind, Value};
 use crate::source::Span;
 
 use super::arrays::NatureMark;
-use super::decls::{BindingKey, binding_key};
+use super::decls::{BindingKey, binding_key, integer_bounds};
 use super::error::ElabError;
 use super::generics::parse_literal;
 use super::library::{Unit, canonical_library};
@@ -471,6 +471,21 @@ impl<'a> Elab<'a> {
                 .map(|(_, t)| t.clone()),
             Actuals::Map { .. } => None,
         };
+        // Where the value comes from, for a value outside the subtype's range.
+        let (origin, fix) = match (&override_text, actual, &decl.default) {
+            (Some(_), ..) => (
+                name.span,
+                format!("override `{}` with a value in the range", name.name),
+            ),
+            (None, Some(a), _) if parent.is_some() => {
+                (a.span, "give the generic map a value in the range".into())
+            }
+            (None, _, Some(default)) => (
+                default.span,
+                "give the default a value in the range (or override it with -g)".into(),
+            ),
+            _ => (name.span, String::new()),
+        };
         let value = if let Some(text) = override_text {
             match parse_literal(&text, &sub.ty, |u| self.standard_time_unit(u)) {
                 Some(v) => v,
@@ -502,6 +517,20 @@ impl<'a> Elab<'a> {
                 entity: entity.to_string(),
             }));
         };
+        // LRM 12.2.4: a generic's value must belong to its subtype (GHDL: "bound check
+        // failure" at elaboration).
+        if let (Value::Integer(i), Some((lo, hi))) = (&value, integer_bounds(&sub))
+            && (*i < lo || *i > hi)
+        {
+            return Err(self.error(ElabError::invalid(
+                origin,
+                format!(
+                    "generic `{}` = {i} is outside its subtype's range {lo} to {hi}",
+                    name.name
+                ),
+                Some(fix),
+            )));
+        }
         let ty = super::decls::fit_array(&sub.ty, &value);
         sc.declare_at(&name.name, name.span, Item::Constant { value, ty });
         Ok(())

@@ -158,6 +158,17 @@ pub(super) fn register_font() {
 
 /// Draws `panels` stacked over a shared time axis into `path` (`.svg` or `.png`).
 pub fn plot_panels(path: &Path, title: &str, panels: &[Panel]) -> Result<(), PlotError> {
+    plot_panels_over(path, title, "time (s)", panels)
+}
+
+/// Draws `panels` stacked over a shared x axis labelled `x_label` (a DC sweep's parameter)
+/// into `path` (`.svg` or `.png`).
+pub fn plot_panels_over(
+    path: &Path,
+    title: &str,
+    x_label: &str,
+    panels: &[Panel],
+) -> Result<(), PlotError> {
     let ext = path
         .extension()
         .and_then(|e| e.to_str())
@@ -181,12 +192,14 @@ pub fn plot_panels(path: &Path, title: &str, panels: &[Panel]) -> Result<(), Plo
         Some("svg") => draw(
             SVGBackend::new(path, size).into_drawing_area(),
             title,
+            x_label,
             &drawn,
         )
         .map_err(err),
         Some("png") => draw(
             BitMapBackend::new(path, size).into_drawing_area(),
             title,
+            x_label,
             &drawn,
         )
         .map_err(err),
@@ -251,6 +264,7 @@ fn steps(points: &[(f64, f64)]) -> Vec<(f64, f64)> {
 fn draw<DB: DrawingBackend>(
     root: DrawingArea<DB, Shift>,
     title: &str,
+    x_label: &str,
     panels: &[&Panel],
 ) -> Result<(), Box<dyn std::error::Error>>
 where
@@ -306,7 +320,7 @@ where
             .axis_desc_style((FONT, 14))
             .light_line_style(RGBColor(235, 235, 235));
         if last {
-            mesh.x_desc("time (s)");
+            mesh.x_desc(x_label);
         }
         if panel.is_logic() {
             mesh.y_labels(2).y_label_formatter(&|v| format!("{v:.0}"));
