@@ -106,6 +106,9 @@ pub struct AnalogSystem {
     implicit_flows: Vec<QuantityId>,
     /// What index reduction did, if the model needed it.
     index_reduced: Option<IndexReduced>,
+    /// `(solver row, signal, dF/dsignal)` for the signals of `Design::sampled` (the
+    /// small-signal model's transfers through `'zoh` and `'ztf`).
+    signal_partials: Vec<(usize, SignalId, Sym)>,
     /// The options this system was built with (a new choice of states rebuilds it).
     options: AnalogOptions,
     /// The quantities last asked for ([`AnalogSystem::select_quantities`]).
@@ -613,6 +616,18 @@ impl AnalogSystem {
             entry.0 = solver_row[entry.0];
         }
         let row_source: Vec<usize> = order.iter().map(|&k| kept_rows[k]).collect();
+        // For the small-signal model: how each row depends on the signals of `'zoh` and
+        // `'ztf` (a transfer from their inputs in the frequency domain).
+        let mut signal_partials = Vec::new();
+        for sampled in &design.sampled {
+            let slot = sampled.signal.index();
+            for (row, &k) in order.iter().enumerate() {
+                if residuals[k].any(|e| matches!(e, Sym::Signal(s) if *s == slot)) {
+                    let d = derivative(&residuals[k], Var::Signal(slot));
+                    signal_partials.push((row, sampled.signal, d));
+                }
+            }
+        }
 
         let mut nb = TapeBuilder::default();
         for &k in &order {
@@ -768,6 +783,7 @@ impl AnalogSystem {
             linear,
             implicit_flows,
             index_reduced: reduction,
+            signal_partials,
             options: options.clone(),
             wanted: None,
         };

@@ -72,6 +72,9 @@ pub struct Design {
     pub subprograms: Vec<Subprogram>,
     /// `Q'delayed(T)` lines: each defines its output quantity from the input's history.
     pub delays: Vec<Delay>,
+    /// `Q'zoh` and `Q'ztf`: realised by generated processes in time; kept for the frequency
+    /// domain, where each is a transfer from its input quantity.
+    pub sampled: Vec<Sampled>,
     /// File objects (`file f : text open write_mode is "log.txt";`), by the number a
     /// [`Value::File`] holds.
     pub files: Vec<FileObject>,
@@ -338,6 +341,19 @@ pub struct Delay {
     pub input: QuantityId,
     /// Seconds, positive.
     pub delay: f64,
+    pub span: Span,
+}
+
+/// `Q'zoh(T)` or `Q'ztf(num, den, T)`: a generated process samples `input` every `period`
+/// seconds and drives the implicit real `signal`, which equations read.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sampled {
+    pub signal: SignalId,
+    pub input: QuantityId,
+    /// Seconds, positive.
+    pub period: f64,
+    /// `'ztf`'s numerator and denominator in ascending powers of `z^-1`; `None` for `'zoh`.
+    pub filter: Option<(Vec<f64>, Vec<f64>)>,
     pub span: Span,
 }
 

@@ -1,7 +1,8 @@
 //! `vams ac` end to end on the models in `tests/ac/`: closed forms (RC low-pass, series RLC
 //! resonance and Q, a mass-spring-damper in the translational nature, a biased diode,
 //! `'delayed`, `'ltf`, `'integ`, a spectrum that reads `frequency`, equations switched on
-//! `domain`) to 1e-9 relative, the refusals (no spectral source, `'zoh`), the outputs, and
+//! `domain`) to 1e-9 relative, `'zoh`, `'ztf` and a loop through
+//! `'zoh`, the refusals (no spectral source, `'slew`), the outputs, and
 //! ngspice's `.ac` on the RC, the RLC and the diode stage when ngspice is installed.
 
 use std::f64::consts::{PI, TAU};
@@ -412,6 +413,67 @@ fn writes_csv_and_bode_plot_files() {
 }
 
 #[test]
+fn sampled_data_attributes_follow_their_z_domain_closed_forms() {
+    let t = ac(
+        "sampled",
+        &[
+            "--from",
+            "1Hz",
+            "--to",
+            "10kHz",
+            "--points-per-decade",
+            "25",
+            "--probe",
+            "held",
+            "--probe",
+            "filtered",
+            "--probe",
+            "loop_out",
+            "--complex",
+        ],
+    );
+    let period = 1e-3;
+    let hold = |w: f64| {
+        // (1 - e^{-jwT}) / (jwT)
+        let x = w * period;
+        Z(1.0 - x.cos(), x.sin()).div(Z(0.0, x))
+    };
+    let z_inv = |w: f64| Z((w * period).cos(), -(w * period).sin());
+    let filter = |w: f64| Z(0.2, 0.0).div(Z(1.0 - 0.8 * z_inv(w).0, -0.8 * z_inv(w).1));
+    let k = 0.5;
+    let closed_loop = |w: f64| {
+        let h = hold(w);
+        Z(k, 0.0).div(Z(1.0 + k * h.0, k * h.1))
+    };
+    // The hold's zeros (every multiple of 1 kHz) make a relative error meaningless there:
+    // compare against the largest response.
+    let absolute = |points: &[(f64, Z)], exact: &dyn Fn(f64) -> Z| {
+        (points.iter())
+            .map(|&(f, z)| {
+                let e = exact(TAU * f);
+                Z(z.0 - e.0, z.1 - e.1).norm()
+            })
+            .fold(0.0, f64::max)
+    };
+    let errors = [
+        absolute(&t.complex("held"), &hold),
+        absolute(&t.complex("filtered"), &filter),
+        absolute(&t.complex("loop_out"), &closed_loop),
+    ];
+    println!("'zoh, 'ztf, loop through 'zoh: largest errors {errors:?}");
+    for e in errors {
+        assert!(e < 1e-12, "{errors:?}");
+    }
+    // At the sampling frequency the hold passes nothing and the filter is back at its DC gain.
+    let held = t.complex("held");
+    let at_1k = held
+        .iter()
+        .find(|(f, _)| (*f - 1e3).abs() < 1e-6)
+        .expect("1 kHz");
+    assert!(at_1k.1.norm() < 1e-12, "{:?}", at_1k.1);
+}
+
+#[test]
 fn a_design_without_a_spectral_source_is_refused() {
     ac_command("no_source", "1Hz", "1kHz")
         .assert()
@@ -422,11 +484,11 @@ fn a_design_without_a_spectral_source_is_refused() {
 
 #[test]
 fn unsupported_constructs_and_bad_arguments_are_diagnosed() {
-    ac_command("zoh", "1Hz", "1kHz")
+    ac_command("slew", "1Hz", "1kHz")
         .assert()
         .code(1)
-        .stderr(contains("does not support `vin'zoh`"))
-        .stderr(contains("zoh.vhd:"));
+        .stderr(contains("does not support `vin'slew"))
+        .stderr(contains("slew.vhd:"));
     ac_command("rc_lowpass", "1kHz", "1Hz")
         .assert()
         .code(1)

@@ -42,7 +42,13 @@ impl Table {
             let cells = line.split(',');
             rows.push(
                 cells
-                    .map(|v| if v.is_empty() { f64::NAN } else { v.parse().expect("a number") })
+                    .map(|v| {
+                        if v.is_empty() {
+                            f64::NAN
+                        } else {
+                            v.parse().expect("a number")
+                        }
+                    })
                     .collect(),
             );
         }
@@ -108,14 +114,26 @@ fn a_diode_iv_curve_follows_its_implicit_closed_form() {
         worst = worst.max((vs - exact - 1e3 * id).abs() / 1.9e-4 / 1e3);
     }
     println!("diode I-V: largest error {worst_v:.2e} V, {worst:.2e} of the full-scale current");
-    assert!(worst < 1e-6, "largest current error {worst:e} of full scale");
+    assert!(
+        worst < 1e-6,
+        "largest current error {worst:e} of full scale"
+    );
 }
 
 #[test]
 fn a_schmitt_trigger_switches_at_its_folds_and_shows_hysteresis_both_ways() {
     let t = dc(
         "schmitt",
-        &["--sweep", "vin_level", "-1", "1", "0.01", "--both-ways", "--probe", "vout"],
+        &[
+            "--sweep",
+            "vin_level",
+            "-1",
+            "1",
+            "0.01",
+            "--both-ways",
+            "--probe",
+            "vout",
+        ],
     );
     assert_eq!(t.names, ["vin_level", "direction", "vout"]);
     assert_eq!(t.rows.len(), 401, "201 up, 200 down");
@@ -198,9 +216,18 @@ fn bad_sweeps_and_probes_are_diagnostics() {
     let cases: [(&[&str], &str); 5] = [
         (&["--sweep", "nn", "1", "3", "1"], "has no generic `nn`"),
         (&["--sweep", "n", "1", "3", "0"], "STEP is zero"),
-        (&["--sweep", "n", "1", "3", "-1"], "give STEP the sign of TO - FROM"),
-        (&["--sweep", "n", "0", "3", "1"], "generic `n` = 0 is outside its subtype's range 1 to"),
-        (&["--sweep", "n", "1", "3", "1", "--probe", "vot"], "did you mean `vout`?"),
+        (
+            &["--sweep", "n", "1", "3", "-1"],
+            "give STEP the sign of TO - FROM",
+        ),
+        (
+            &["--sweep", "n", "0", "3", "1"],
+            "generic `n` = 0 is outside its subtype's range 1 to",
+        ),
+        (
+            &["--sweep", "n", "1", "3", "1", "--probe", "vot"],
+            "did you mean `vout`?",
+        ),
     ];
     for (args, message) in cases {
         vams()
@@ -215,7 +242,15 @@ fn bad_sweeps_and_probes_are_diagnostics() {
     vams()
         .arg("dc")
         .arg(&model)
-        .args(["--sweep", "n", "1", "3", "1", "-o", "/nonexistent/dir/out.csv"])
+        .args([
+            "--sweep",
+            "n",
+            "1",
+            "3",
+            "1",
+            "-o",
+            "/nonexistent/dir/out.csv",
+        ])
         .assert()
         .code(1)
         .stderr(contains("cannot write `/nonexistent/dir/out.csv`"))
@@ -231,7 +266,11 @@ fn ngspice_dc(deck: &str, dir: &Path) -> Option<Vec<(f64, f64)>> {
         out.display()
     );
     std::fs::write(&cir, text).ok()?;
-    let run = StdCommand::new("ngspice").arg("-b").arg(&cir).output().ok()?;
+    let run = StdCommand::new("ngspice")
+        .arg("-b")
+        .arg(&cir)
+        .output()
+        .ok()?;
     let data = std::fs::read_to_string(&out).map_err(|e| {
         eprintln!(
             "{e}: {}{}",
@@ -243,7 +282,10 @@ fn ngspice_dc(deck: &str, dir: &Path) -> Option<Vec<(f64, f64)>> {
     Some(
         data.lines()
             .filter_map(|l| {
-                let v: Vec<f64> = l.split_whitespace().filter_map(|x| x.parse().ok()).collect();
+                let v: Vec<f64> = l
+                    .split_whitespace()
+                    .filter_map(|x| x.parse().ok())
+                    .collect();
                 (v.len() == 2).then(|| (v[0], v[1]))
             })
             .collect(),
@@ -252,7 +294,11 @@ fn ngspice_dc(deck: &str, dir: &Path) -> Option<Vec<(f64, f64)>> {
 
 #[test]
 fn agrees_with_ngspice_dc_on_the_diode_curve() {
-    if StdCommand::new("ngspice").arg("--version").output().is_err() {
+    if StdCommand::new("ngspice")
+        .arg("--version")
+        .output()
+        .is_err()
+    {
         println!("skipped: ngspice is not on the PATH");
         return;
     }

@@ -14,6 +14,9 @@ pub enum Var {
     Dot(usize),
     /// The time `now` (for a derivative in time of an equation with sources).
     Now,
+    /// A signal's value (slot), for the small-signal model of `'zoh` and `'ztf`, which drive
+    /// signals that equations read.
+    Signal(usize),
 }
 
 fn c(v: f64) -> Sym {
@@ -23,7 +26,8 @@ fn c(v: f64) -> Sym {
 /// `d e / d var`.
 pub fn derivative(e: &Sym, var: Var) -> Sym {
     match e {
-        Sym::Const(_) | Sym::Signal(_) => c(0.0),
+        Sym::Const(_) => c(0.0),
+        Sym::Signal(s) => c(if var == Var::Signal(*s) { 1.0 } else { 0.0 }),
         Sym::Now => c(if var == Var::Now { 1.0 } else { 0.0 }),
         Sym::X(j) => c(if var == Var::X(*j) { 1.0 } else { 0.0 }),
         Sym::Dot(j) => c(if var == Var::Dot(*j) { 1.0 } else { 0.0 }),

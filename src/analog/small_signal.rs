@@ -16,14 +16,18 @@
 //! (its history row's entry at the input turns by that factor); signals keep their quiescent
 //! values (LRM: only quantities vary in a small-signal analysis), `domain` reads
 //! `frequency_domain` while `G` and `C` are evaluated (the point itself is the quiescent one,
-//! solved with `quiescent_domain`). Refused with a diagnostic: equations that read the
-//! signals of `'zoh`, `'ztf`, `'slew` or `S'ramp` (generated processes that sample or shape
-//! in time, whose frequency response the small-signal model would get wrong).
+//! solved with `quiescent_domain`). `Q'zoh(T)` is `(1 - e^{-jwT}) / (jwT) Q`, the sample and
+//! hold's response, and `Q'ztf(num, den, T)` is `H(e^{jwT}) Q` (LRM: the z-domain transfer on
+//! the unit circle), both read through the equations' derivatives in the signals their
+//! processes drive (a design with them is analysed unreduced, so that `Q` is an unknown).
+//! Refused with a diagnostic: equations that read the signals of `'slew` or `S'ramp`
+//! (generated processes that shape in time, whose frequency response the small-signal model
+//! would get wrong).
 
 use super::deriv::{Var, derivative};
 use super::{AnalogError, AnalogSystem, Origin, Sym, delay, lower};
 use crate::design::{Design, QuantityId, SignalId, SignalKind, Type};
-use crate::solver::ac::SmallSignal;
+use crate::solver::ac::{SampledTerm, SampledTransfer, SmallSignal};
 use crate::solver::{DaeSystem, OpOptions, SolveError};
 
 /// A spectral source's row of `B`.
@@ -147,13 +151,14 @@ impl AnalogSystem {
             if s.kind == SignalKind::Implicit
                 && self.reads_signal(id)
                 && design.frequency_signal != Some(id)
+                && !design.sampled.iter().any(|d| d.signal == id)
             {
                 errors.push(AnalogError::FrequencyDomain {
                     span: s.span,
                     what: format!("`{}`", s.name),
-                    help: "'zoh, 'ztf, 'slew and S'ramp are realised by processes that act in \
-                           time; in `vams ac` write the sampled or slew-limited path with \
-                           equations, or analyse it with `vams run`"
+                    help: "'slew and S'ramp are realised by processes that act in time; in \
+                           `vams ac` write the slew-limited path with equations, or analyse it \
+                           with `vams run`"
                         .into(),
                 });
             }
@@ -209,6 +214,40 @@ impl AnalogSystem {
             {
                 system.delays.push((entry, line.delay));
             }
+        }
+        // `Q'zoh(T)`, `Q'ztf(num, den, T)`: a row reading the sampled signal `S` reads
+        // `H(jw) Q` in its place, `dF/dS H(jw)` at `Q`'s column (`Q` is an unknown: such
+        // designs are analysed unreduced).
+        for (row, signal, partial) in &self.signal_partials {
+            let Some(sampled) = design.sampled.iter().find(|d| d.signal == *signal) else {
+                continue;
+            };
+            let Some(column) = self.quantity_slot(sampled.input) else {
+                return Err(vec![AnalogError::FrequencyDomain {
+                    span: sampled.span,
+                    what: "a sampled quantity that was eliminated".into(),
+                    help: "this is a bug in vams: designs with 'zoh or 'ztf are analysed \
+                           unreduced"
+                        .into(),
+                }]);
+            };
+            let coefficient = partial.eval(0.0, x, xdot, &self.signals);
+            let transfer = match &sampled.filter {
+                None => SampledTransfer::Hold {
+                    period: sampled.period,
+                },
+                Some((num, den)) => SampledTransfer::Filter {
+                    num: num.clone(),
+                    den: den.clone(),
+                    period: sampled.period,
+                },
+            };
+            let entry = system.entry(*row, column);
+            system.sampled.push(SampledTerm {
+                entry,
+                coefficient,
+                transfer,
+            });
         }
         let sources = sources
             .into_iter()

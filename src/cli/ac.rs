@@ -190,10 +190,10 @@ pub(super) fn linearise(
         .zip(point.iter().skip(nq).map(|(_, v)| *v))
         .filter(|(_, v)| v.is_finite())
         .collect();
-    // The solver's reduced system, as the kernel builds it; unreduced where `'delayed` is
-    // read (see `analog::small_signal`).
+    // The solver's reduced system, as the kernel builds it; unreduced where `'delayed`,
+    // `'zoh` or `'ztf` is read (see `analog::small_signal`).
     let options = AnalogOptions {
-        eliminate: design.delays.is_empty(),
+        eliminate: design.delays.is_empty() && design.sampled.is_empty(),
         ..AnalogOptions::default()
     };
     let mut system = AnalogSystem::with_options(design, &options).map_err(|errors| {

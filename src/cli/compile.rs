@@ -92,7 +92,10 @@ impl Prepared {
     /// Prints the elaboration warnings of `design`.
     pub fn print_warnings(&self, design: &Design) {
         for u in &design.warnings {
-            eprint!("{}", render_located(&ElabWarning::from(u), &self.loaded.sources));
+            eprint!(
+                "{}",
+                render_located(&ElabWarning::from(u), &self.loaded.sources)
+            );
         }
     }
 }

@@ -107,7 +107,11 @@ impl Sweep {
                 .filter(|v| v.is_finite())
                 .ok_or_else(|| bad(format!("{what} `{text}` is not a number")))
         };
-        let (from, to, step) = (number("FROM", from)?, number("TO", to)?, number("STEP", step)?);
+        let (from, to, step) = (
+            number("FROM", from)?,
+            number("TO", to)?,
+            number("STEP", step)?,
+        );
         if step == 0.0 {
             return Err(bad("STEP is zero".into()));
         }
@@ -129,9 +133,15 @@ impl Sweep {
             )));
         }
         let count = (span + 1e-6).floor() as usize + 1;
-        let values = (0..count).map(|k| decimal(from + k as f64 * step, step)).collect();
+        let values = (0..count)
+            .map(|k| decimal(from + k as f64 * step, step))
+            .collect();
         let whole = [from, to, step].iter().all(|v| v.fract() == 0.0);
-        Ok(Sweep { name, values, whole })
+        Ok(Sweep {
+            name,
+            values,
+            whole,
+        })
     }
 
     /// The generic's value as VHDL literal text.
@@ -192,8 +202,7 @@ impl PointSolver<'_> {
         if let Some(guess) = guess {
             seed(&mut design, guess);
         }
-        let point =
-            operating_point(&design, &SimOptions::default()).map_err(PointError::Solve)?;
+        let point = operating_point(&design, &SimOptions::default()).map_err(PointError::Solve)?;
         let listed = listed(&design, point.len());
         discard_at_exit(design);
         Ok(Solved { point, listed })
@@ -305,7 +314,9 @@ impl Columns {
         };
         let rows = (self.rows.iter())
             .map(|(value, direction, row)| {
-                let cells = chosen.iter().map(|&k| row.get(k).copied().unwrap_or(f64::NAN));
+                let cells = chosen
+                    .iter()
+                    .map(|&k| row.get(k).copied().unwrap_or(f64::NAN));
                 (*value, *direction, cells.collect())
             })
             .collect();
@@ -346,12 +357,7 @@ pub struct Curves {
 
 /// The CSV text of the curves (an empty cell where a point's design lacks the probe);
 /// `ending` becomes a last `# ...` line (a sweep cut short).
-pub fn format_csv(
-    sweep: &str,
-    curves: &Curves,
-    both_ways: bool,
-    ending: Option<&str>,
-) -> String {
+pub fn format_csv(sweep: &str, curves: &Curves, both_ways: bool, ending: Option<&str>) -> String {
     let mut out = String::from(sweep);
     if both_ways {
         out.push_str(",direction");
@@ -475,7 +481,11 @@ pub fn run(args: &DcArgs) -> Result<(), Report> {
     for &(value, direction) in &values {
         if cancel.is_cancelled() {
             ending = Some((
-                format!("interrupted before {} = {}", sweep.name, format_number(value)),
+                format!(
+                    "interrupted before {} = {}",
+                    sweep.name,
+                    format_number(value)
+                ),
                 CliError::Interrupted {
                     top: prepared.top.clone(),
                 },
@@ -636,14 +646,27 @@ mod tests {
     #[test]
     fn columns_follow_a_structure_that_changes_along_the_sweep() {
         let solved = |names: &[&str], listed: &[bool]| Solved {
-            point: names.iter().enumerate().map(|(k, n)| (n.to_string(), k as f64)).collect(),
+            point: names
+                .iter()
+                .enumerate()
+                .map(|(k, n)| (n.to_string(), k as f64))
+                .collect(),
             listed: listed.to_vec(),
         };
         let mut columns = Columns::default();
-        columns.push(1.0, 1.0, &solved(&["vout", "chain(0).v", "clk"], &[true, true, false]));
-        columns.push(2.0, 1.0, &solved(&["vout", "chain(0).v", "chain(1).v", "clk"], &[
-            true, true, true, false,
-        ]));
+        columns.push(
+            1.0,
+            1.0,
+            &solved(&["vout", "chain(0).v", "clk"], &[true, true, false]),
+        );
+        columns.push(
+            2.0,
+            1.0,
+            &solved(
+                &["vout", "chain(0).v", "chain(1).v", "clk"],
+                &[true, true, true, false],
+            ),
+        );
         let all = columns.curves(&[]).unwrap();
         assert_eq!(all.names, ["vout", "chain(0).v", "chain(1).v"]);
         assert!(all.rows[0].2[2].is_nan());

@@ -163,7 +163,9 @@ pub enum CliError {
     #[error("--sweep {name}: {problem}")]
     #[diagnostic(
         code(vams::cli::sweep_range),
-        help("e.g. --sweep vin 0 5 0.1 sweeps vin from 0 to 5 in steps of 0.1; a negative step sweeps down")
+        help(
+            "e.g. --sweep vin 0 5 0.1 sweeps vin from 0 to 5 in steps of 0.1; a negative step sweeps down"
+        )
     )]
     SweepRange { name: String, problem: String },
 

@@ -5,13 +5,16 @@
 //! z-domain filter's output. Equations read the signal: piecewise constant between samples,
 //! with a discontinuity (an integrator restart) at each sample.
 //!
+//! Each is also recorded in `Design::sampled`, for the frequency domain (`vams ac`), where it
+//! is a transfer from its input rather than a process.
+//!
 //! `'ztf` is the direct form `y_k = (n0 u_k + n1 u_(k-1) + ... - d1 y_(k-1) - ...) / d0` over
 //! coefficients in ascending powers of `z^-1`; its state (past inputs and outputs, zero at
 //! the start) lives in the process's variables.
 
 use crate::ast;
 use crate::design::{DelayMechanism, Expr, Instr, Process, QuantityId, SignalId, Type, Value};
-use crate::design::{VarId, Variable};
+use crate::design::{Sampled, VarId, Variable};
 use crate::source::Span;
 
 use super::error::ElabError;
@@ -52,6 +55,13 @@ impl<'a> Elab<'a> {
             mechanism: DelayMechanism::Transport,
         }];
         self.sampling_process(name, Vec::new(), code, sampling, span);
+        self.design.sampled.push(Sampled {
+            signal: out,
+            input: q,
+            period: sampling.period,
+            filter: None,
+            span,
+        });
         Ok(Expr::Signal(out))
     }
 
@@ -86,6 +96,13 @@ impl<'a> Elab<'a> {
         let out = self.implicit_signal(name.clone(), 0.0, span);
         let (vars, code) = ztf_code(q, out, &num, &den, &name);
         self.sampling_process(name, vars, code, sampling, span);
+        self.design.sampled.push(Sampled {
+            signal: out,
+            input: q,
+            period: sampling.period,
+            filter: Some((num, den)),
+            span,
+        });
         Ok(Expr::Signal(out))
     }
 

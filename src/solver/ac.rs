@@ -6,7 +6,8 @@
 //! system's own derivatives, exact where the system differentiates symbolically (no finite
 //! differences, and no difference of two `dF/dx + alpha dF/dx'` matrices, which would lose
 //! `C`'s digits beside a large `G`). An entry may also carry a pure delay `T` (the system's
-//! `Q'delayed(T)`): its value is then multiplied by `e^{-jwT}`.
+//! `Q'delayed(T)`): its value is then multiplied by `e^{-jwT}`; and a sampled-data transfer
+//! (`'zoh`, `'ztf`) adds `k H(jw)` to an entry.
 //!
 //! Knows nothing of VHDL: rows and columns are the system's indices, and the caller builds
 //! the right side.
@@ -30,6 +31,56 @@ pub struct SmallSignal {
     pub c: Vec<f64>,
     /// Pattern entries multiplied by `e^{-jwT}`: `(entry, T)`.
     pub delays: Vec<(usize, f64)>,
+    /// Terms `coefficient * H(jw)` added to pattern entries: sampled-data transfers.
+    pub sampled: Vec<SampledTerm>,
+}
+
+/// A sampled-data transfer's term of a pattern entry: `coefficient * transfer(jw)`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SampledTerm {
+    pub entry: usize,
+    pub coefficient: f64,
+    pub transfer: SampledTransfer,
+}
+
+/// The frequency response of a sampled-data element of period `T`.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SampledTransfer {
+    /// Sample and hold: `(1 - e^{-jwT}) / (jwT) = e^{-jwT/2} sin(wT/2) / (wT/2)`, 1 at DC.
+    Hold { period: f64 },
+    /// A z-domain filter over coefficients in ascending powers of `z^-1`, at `z = e^{jwT}`.
+    Filter {
+        num: Vec<f64>,
+        den: Vec<f64>,
+        period: f64,
+    },
+}
+
+impl SampledTransfer {
+    /// The response at angular frequency `omega`.
+    pub fn at(&self, omega: f64) -> c64 {
+        match self {
+            SampledTransfer::Hold { period } => {
+                let x = omega * period;
+                // sin(x/2)/(x/2) without cancellation near DC.
+                let sinc = if x.abs() < 1e-4 {
+                    1.0 - x * x / 24.0
+                } else {
+                    (x / 2.0).sin() / (x / 2.0)
+                };
+                c64::from_polar(sinc, -x / 2.0)
+            }
+            SampledTransfer::Filter { num, den, period } => {
+                let z_inv = c64::from_polar(1.0, -omega * period);
+                let poly = |coefficients: &[f64]| {
+                    // Horner in z^-1, from the highest power down.
+                    (coefficients.iter().rev())
+                        .fold(c64::new(0.0, 0.0), |acc, &k| acc * z_inv + c64::new(k, 0.0))
+                };
+                poly(num) / poly(den)
+            }
+        }
+    }
 }
 
 impl SmallSignal {
@@ -58,7 +109,19 @@ impl SmallSignal {
             g,
             c,
             delays: Vec::new(),
+            sampled: Vec::new(),
         }
+    }
+
+    /// The pattern entry at `(row, column)`, made (with `G = C = 0`) if the system has none.
+    pub fn entry(&mut self, row: usize, column: usize) -> usize {
+        if let Some(k) = self.pattern.iter().position(|&rc| rc == (row, column)) {
+            return k;
+        }
+        self.pattern.push((row, column));
+        self.g.push(0.0);
+        self.c.push(0.0);
+        self.pattern.len() - 1
     }
 
     /// The value of `G + jw C` (delays applied) at each pattern entry.
@@ -68,6 +131,9 @@ impl SmallSignal {
             .collect();
         for &(k, delay) in &self.delays {
             values[k] *= c64::from_polar(1.0, -omega * delay);
+        }
+        for term in &self.sampled {
+            values[term.entry] += term.transfer.at(omega) * term.coefficient;
         }
         values
     }
@@ -248,7 +314,34 @@ mod tests {
             g: vec![1.0, -1.0 / r, 1.0 / r],
             c: vec![0.0, 0.0, c],
             delays: Vec::new(),
+            sampled: Vec::new(),
         }
+    }
+
+    #[test]
+    fn sampled_transfers_at_dc_and_at_the_sampling_frequencies() {
+        let period = 1e-3;
+        let hold = SampledTransfer::Hold { period };
+        let w = |f: f64| std::f64::consts::TAU * f;
+        assert!((hold.at(0.0) - c64::new(1.0, 0.0)).norm() < 1e-15);
+        // Half the sampling frequency: |H| = 2/pi, a quarter-turn late.
+        let half = hold.at(w(500.0));
+        assert!((half.norm() - 2.0 / std::f64::consts::PI).abs() < 1e-15);
+        assert!((half.arg() + std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+        assert!(hold.at(w(2e3)).norm() < 1e-15);
+        // Near DC the series and the formula meet.
+        let near = |x: f64| hold.at(x / period);
+        for x in [0.99e-4, 1.01e-4] {
+            assert!((near(x).norm() - (1.0 - x * x / 24.0)).abs() < 1e-15);
+        }
+        let filter = SampledTransfer::Filter {
+            num: vec![0.2],
+            den: vec![1.0, -0.8],
+            period,
+        };
+        assert!((filter.at(0.0) - c64::new(1.0, 0.0)).norm() < 1e-15);
+        // Half the sampling frequency: z^-1 = -1.
+        assert!((filter.at(w(500.0)) - c64::new(0.2 / 1.8, 0.0)).norm() < 1e-15);
     }
 
     #[test]
@@ -275,6 +368,7 @@ mod tests {
             g: vec![1.0, -1.0, 1.0],
             c: vec![0.0; 3],
             delays: vec![(1, 1e-3)],
+            sampled: Vec::new(),
         };
         let solver = AcSolver::new(sys.clone()).unwrap();
         let x = solver

@@ -19,6 +19,10 @@ pub enum PolesError {
     TooLarge { n: usize, max: usize },
     #[error("the system reads a 'delayed value: its characteristic equation is not polynomial")]
     Delayed,
+    #[error(
+        "the system reads a 'zoh or 'ztf value: a sampled-data loop has no finite set of poles in s"
+    )]
+    Sampled,
     #[error("the generalised eigenvalue solver did not converge: {0}")]
     Solver(String),
 }
@@ -35,6 +39,9 @@ pub fn poles(system: &SmallSignal) -> Result<(Vec<c64>, usize), PolesError> {
     }
     if !system.delays.is_empty() {
         return Err(PolesError::Delayed);
+    }
+    if !system.sampled.is_empty() {
+        return Err(PolesError::Sampled);
     }
     if n == 0 {
         return Ok((Vec::new(), 0));
@@ -86,6 +93,7 @@ mod tests {
             g: vec![1.0, -1.0, 1.0, -2.0, 1.0],
             c: vec![1.0, 0.0, 1.0, 0.0, 0.0],
             delays: Vec::new(),
+            sampled: Vec::new(),
         };
         let (finite, infinite) = poles(&system).expect("solves");
         assert_eq!(infinite, 1);
@@ -105,6 +113,7 @@ mod tests {
             g: vec![0.0, -w, w, 0.0],
             c: vec![1.0, 0.0, 0.0, 1.0],
             delays: Vec::new(),
+            sampled: Vec::new(),
         };
         let (finite, infinite) = poles(&system).expect("solves");
         assert_eq!(infinite, 0);

@@ -61,6 +61,8 @@ fn central(e: &Sym, var: Var, x: [f64; 2], xdot: [f64; 2], h: f64) -> f64 {
             Var::X(i) => x[i] += d,
             Var::Dot(i) => xdot[i] += d,
             Var::Now => t += d,
+            // The generated expressions read no signal.
+            Var::Signal(_) => {}
         }
         e.eval(t, &x, &xdot, &[])
     };
@@ -96,7 +98,11 @@ proptest! {
             let exact = d.eval(0.0, &x, &xdot, &[]);
             prop_assert!(tape.output(0) == value || (tape.output(0).is_nan() && value.is_nan()));
             prop_assert!(tape.output(1).to_bits() == exact.to_bits());
-            let coord = match var { Var::X(i) => x[i], Var::Dot(i) => xdot[i], Var::Now => 0.0 };
+            let coord = match var {
+                Var::X(i) => x[i],
+                Var::Dot(i) => xdot[i],
+                Var::Now | Var::Signal(_) => 0.0,
+            };
             let h = 1e-5 * (1.0 + coord.abs());
             let fd = central(&sym, var, x, xdot, h);
             let fd_half = central(&sym, var, x, xdot, h / 2.0);

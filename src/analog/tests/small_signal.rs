@@ -1,10 +1,11 @@
 //! The small-signal model (`analog::small_signal`): `G` and `C` exactly the symbolic
 //! derivatives at the linearisation point, nonlinear terms linearised there, the right side
-//! from the spectral sources, and the refusal of a generated sampling signal.
+//! from the spectral sources, a sample and hold as its transfer, and the refusal of a signal
+//! shaped in time.
 
 use super::fixture::*;
-use crate::analog::AnalogError;
-use crate::design::{Builtin, Design, QuantityId, SignalKind, SpectralSource};
+use crate::analog::{AnalogError, AnalogOptions, AnalogSystem};
+use crate::design::{Builtin, Design, QuantityId, SignalId, SignalKind, SpectralSource};
 use crate::solver::ac::AcSolver;
 use faer::c64;
 
