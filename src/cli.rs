@@ -13,6 +13,7 @@ pub mod error;
 pub mod extract;
 pub mod interrupt;
 pub mod load;
+pub mod noise;
 pub mod op;
 pub mod params;
 pub mod poles;
@@ -51,6 +52,10 @@ pub enum Command {
     /// Small-signal AC analysis: the frequency response of the quantities to the design's
     /// spectral sources about its quiescent point, as CSV and a Bode plot.
     Ac(ac::AcArgs),
+    /// Noise analysis: the output noise spectral density at a probe from the design's noise
+    /// source quantities, each source's contribution, the integrated RMS noise, and the
+    /// noise referred to an input.
+    Noise(noise::NoiseArgs),
     /// The natural frequencies of the design linearised about its quiescent point: poles with
     /// frequency, damping ratio and time constant.
     Poles(poles::PolesArgs),
@@ -71,6 +76,7 @@ pub fn run() -> ExitCode {
         Command::Run(args) => run::run(&args),
         Command::Op(args) => op::run(&args),
         Command::Ac(args) => ac::run(&args),
+        Command::Noise(args) => noise::run(&args),
         Command::Poles(args) => poles::run(&args),
         Command::Dae(args) => dae::run(&args),
         Command::Test(args) => test::run(&args),
