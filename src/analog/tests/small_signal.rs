@@ -1,11 +1,13 @@
 //! The small-signal model (`analog::small_signal`): `G` and `C` exactly the symbolic
 //! derivatives at the linearisation point, nonlinear terms linearised there, the right side
-//! from the spectral sources, and the refusal of a generated sampling signal.
+//! from the spectral sources, the noise sources' injections and densities, and the refusal
+//! of a generated sampling signal.
 
 use super::fixture::*;
 use crate::analog::AnalogError;
-use crate::design::{Builtin, Design, QuantityId, SignalKind, SpectralSource};
+use crate::design::{Builtin, Design, NoiseSource, QuantityId, SignalKind, SpectralSource};
 use crate::solver::ac::AcSolver;
+use crate::solver::noise::{Injection, noise_at};
 use faer::c64;
 
 /// Declares `u` a spectral source of `magnitude` and `phase` (its equation `u == 0.0` is
@@ -146,5 +148,61 @@ fn an_eliminated_quantity_is_the_linearisation_of_its_formula() {
     assert_eq!(
         sys.linear_output(v, &x, &xdot),
         Some(vec![(slot, 1.0, 0.0)])
+    );
+}
+
+#[test]
+fn a_noise_source_enters_at_its_row_with_a_density_that_reads_frequency() {
+    // 0 == 2 n (the residual's sign and scale are the writer's); y == 3 + n; the density
+    // is 1e-16 / frequency: at 100 Hz, |H|^2 S = 1e-18 whatever the row's coefficient.
+    let mut b = Builder::new();
+    let (n, y) = (b.free("n"), b.free("y"));
+    let f = b.signal("frequency", 0.0);
+    b.equation("0.0 == 2.0 * n;", c(0.0), mul(c(2.0), q(n)));
+    b.equation("y == 3.0 + n;", q(y), add(c(3.0), q(n)));
+    let (mut d, _) = b.finish();
+    d.signals[f.index()].kind = SignalKind::Implicit;
+    d.frequency_signal = Some(f);
+    let density = bin(
+        crate::design::BinaryOp::Div,
+        c(1e-16),
+        crate::design::Expr::Signal(f),
+    );
+    d.noise_sources.push(NoiseSource {
+        quantity: n,
+        density: sub(density, c(1e-19)),
+        equation: 0,
+        span: d.equations[0].span,
+    });
+    let mut sys = system(&d);
+    let (x, xdot) = sys
+        .point_from_quantities(&[0.0, 3.0], &[])
+        .expect("a point");
+    let mut model = sys.small_signal(&d, &x, &xdot).expect("a model");
+    let injections: Vec<Injection> = (model.noise_injections().into_iter())
+        .map(|(row, coefficient)| Injection { row, coefficient })
+        .collect();
+    assert_eq!(injections.len(), 1);
+    assert_eq!(injections[0].coefficient.abs(), 2.0);
+    let densities = model.noise_densities(100.0).expect("a density");
+    assert!(
+        (densities[0] / (1e-18 - 1e-19) - 1.0).abs() < 1e-14,
+        "{densities:?}"
+    );
+    let output = sys
+        .linear_output(y, &x, &xdot)
+        .expect("y has an expression");
+    let solver = AcSolver::new(model.system.clone()).expect("a solver");
+    let point = noise_at(&solver, 100.0, &output, &injections, &densities, &[]).expect("solved");
+    assert!(
+        (point.total / densities[0] - 1.0).abs() < 1e-14,
+        "{point:?}"
+    );
+    // Above 1 kHz the density is negative: an error naming the source, with its span.
+    let error = model.noise_densities(2e3).err().expect("refused");
+    assert!(
+        matches!(&error, AnalogError::NoiseDensity { name, frequency, value, span }
+            if name == "n" && *frequency == 2e3 && *value < 0.0 && *span == d.equations[0].span),
+        "{error:?}"
     );
 }
