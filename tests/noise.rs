@@ -180,7 +180,7 @@ fn two_uncorrelated_sources_add_in_power() {
     // The shares of the power: 4kTR against i_psd r^2, the same transfer.
     let share = 4.0 * BOLTZMANN * t * r / (4.0 * BOLTZMANN * t * r + i_psd * r * r) * 100.0;
     assert!(
-        summary.contains(&format!("from vn_r: ")) && summary.contains(&format!("({share:.2} %")),
+        summary.contains("from vn_r: ") && summary.contains(&format!("({share:.2} %")),
         "{share} {summary}"
     );
 }

@@ -199,7 +199,7 @@ fn a_noise_source_enters_at_its_row_with_a_density_that_reads_frequency() {
         "{point:?}"
     );
     // Above 1 kHz the density is negative: an error naming the source, with its span.
-    let error = model.noise_densities(2e3).err().expect("refused");
+    let error = model.noise_densities(2e3).expect_err("refused");
     assert!(
         matches!(&error, AnalogError::NoiseDensity { name, frequency, value, span }
             if name == "n" && *frequency == 2e3 && *value < 0.0 && *span == d.equations[0].span),
