@@ -1,8 +1,8 @@
 //! `vams noise` end to end on the models in `tests/noise/`: a resistor's thermal noise into
-//! an RC (density against sqrt(4kTR) / |1 + jwRC|, the band's power against kT/C), two
-//! uncorrelated sources adding in power, a 1/f source, the input-referred noise of an
-//! inverting amplifier, the diagnostics, the plot, and ngspice's `.noise` on the RC when
-//! ngspice is installed.
+//! an RC (density against sqrt(4kTR) / |1 + jwRC|, the band's power against kT/C), a divider
+//! of two instances of a noisy resistor, two uncorrelated sources adding in power, a 1/f
+//! source, the input-referred noise of an inverting amplifier, the diagnostics, the plot, and
+//! ngspice's `.noise` on the RC and the divider when ngspice is installed.
 
 use std::f64::consts::TAU;
 use std::path::Path;
@@ -183,6 +183,52 @@ fn two_uncorrelated_sources_add_in_power() {
         summary.contains("from vn_r: ") && summary.contains(&format!("({share:.2} %")),
         "{share} {summary}"
     );
+}
+
+#[test]
+fn a_divider_of_two_noisy_resistor_instances_adds_them_and_integrates_to_kt_over_c() {
+    let (r1, r2, c, t) = (3e3, 1e3, 1e-9, 300.0);
+    let rp = r1 * r2 / (r1 + r2);
+    let dir = tempfile::tempdir().expect("temporary directory");
+    let csv = dir.path().join("divider.csv");
+    let out = vams()
+        .args(["noise", &format!("{DIR}/divider.vhd"), "--probe", "vout"])
+        .args([
+            "--from",
+            "1mHz",
+            "--to",
+            "10THz",
+            "--points-per-decade",
+            "1000",
+            "-o",
+        ])
+        .arg(&csv)
+        .output()
+        .expect("vams runs");
+    assert!(out.status.success());
+    let table = Table::parse(&std::fs::read_to_string(&csv).expect("the CSV"));
+    let f = table.column("frequency");
+    let pole = |f: f64| rc_pole(f, rp, c);
+    // Each instance's source by its hierarchical name; r1's reaches the output through
+    // r2 / (r1 + r2), r2's through r1 / (r1 + r2).
+    let errors = [
+        worst(&f, &table.column("vout_noise_V_per_rtHz"), |f| {
+            (4.0 * BOLTZMANN * t * rp / pole(f)).sqrt()
+        }),
+        worst(&f, &table.column("vout_from_top.vn_V_per_rtHz"), |f| {
+            (4.0 * BOLTZMANN * t * r1 / pole(f)).sqrt() * r2 / (r1 + r2)
+        }),
+        worst(&f, &table.column("vout_from_bottom.vn_V_per_rtHz"), |f| {
+            (4.0 * BOLTZMANN * t * r2 / pole(f)).sqrt() * r1 / (r1 + r2)
+        }),
+    ];
+    println!("divider: largest relative errors (total, r1, r2) {errors:?}");
+    assert!(errors.iter().all(|&e| e < 1e-9), "{errors:?}");
+    let summary = String::from_utf8(out.stdout).expect("utf-8");
+    let rms = summary_value(&summary, "integrated output noise at vout:");
+    let err = (rms * rms / (BOLTZMANN * t / c) - 1.0).abs();
+    println!("divider: band power against kT/C {err:.2e}");
+    assert!(err < 1e-6, "{err:e}");
 }
 
 #[test]
@@ -439,7 +485,7 @@ fn ngspice_noise(deck: &str, output: &str, source: &str, dir: &Path) -> Option<V
 }
 
 #[test]
-fn agrees_with_ngspice_noise_on_the_rc() {
+fn agrees_with_ngspice_noise_on_the_rc_and_the_divider() {
     if StdCommand::new("ngspice")
         .arg("--version")
         .output()
@@ -450,25 +496,38 @@ fn agrees_with_ngspice_noise_on_the_rc() {
     }
     let dir = tempfile::tempdir().expect("temporary directory");
     // T = 300 K exactly (ngspice's default is 300.15 K).
-    let deck = "rc noise\n.options temp=26.85 tnom=26.85\nV1 in 0 DC 1 AC 1\nR1 in out 1k\n\
-                C1 out 0 1n";
-    let Some(reference) = ngspice_noise(deck, "v(out)", "V1", dir.path()) else {
-        panic!("ngspice is installed but did not run the RC deck");
-    };
-    let (table, _) = noise(
-        "rc_thermal",
-        &["--probe", "vout", "--from", "1Hz", "--to", "1GHz"],
-    );
-    let f = table.column("frequency");
-    let ours = table.column("vout_noise_V_per_rtHz");
-    assert_eq!(f.len(), reference.len());
-    let mut worst_error = 0.0_f64;
-    for (k, &(fs, density)) in reference.iter().enumerate() {
-        assert!((f[k] / fs - 1.0).abs() < 1e-6, "{} vs {fs}", f[k]);
-        worst_error = worst_error.max((ours[k] / density - 1.0).abs());
+    let options = ".options temp=26.85 tnom=26.85";
+    let cases = [
+        (
+            "rc_thermal",
+            format!("rc noise\n{options}\nV1 in 0 DC 1 AC 1\nR1 in out 1k\nC1 out 0 1n"),
+        ),
+        (
+            "divider",
+            format!(
+                "divider noise\n{options}\nV1 supply 0 DC 5 AC 1\nR1 supply out 3k\n\
+                 R2 out 0 1k\nC1 out 0 1n"
+            ),
+        ),
+    ];
+    for (model, deck) in cases {
+        let Some(reference) = ngspice_noise(&deck, "v(out)", "V1", dir.path()) else {
+            panic!("ngspice is installed but did not run the {model} deck");
+        };
+        let (table, _) = noise(model, &["--probe", "vout", "--from", "1Hz", "--to", "1GHz"]);
+        let f = table.column("frequency");
+        let ours = table.column("vout_noise_V_per_rtHz");
+        assert_eq!(f.len(), reference.len());
+        let mut worst_error = 0.0_f64;
+        for (k, &(fs, density)) in reference.iter().enumerate() {
+            assert!((f[k] / fs - 1.0).abs() < 1e-6, "{} vs {fs}", f[k]);
+            worst_error = worst_error.max((ours[k] / density - 1.0).abs());
+        }
+        // ngspice prints 9 digits and may use an older Boltzmann constant (1.38064852e-23,
+        // 1.4e-7 relative in the density's square).
+        println!(
+            "{model}: largest difference of the output density from ngspice {worst_error:.2e}"
+        );
+        assert!(worst_error < 1e-4, "{model}: {worst_error:e}");
     }
-    // ngspice prints 9 digits and may use an older Boltzmann constant (1.38064852e-23,
-    // 1.4e-7 relative in the density's square).
-    println!("RC: largest difference of the output density from ngspice {worst_error:.2e}");
-    assert!(worst_error < 1e-4, "{worst_error:e}");
 }
