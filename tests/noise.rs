@@ -415,7 +415,7 @@ fn bad_input_is_diagnosed_with_exit_code_1() {
         .code(1)
         .stderr(contains("the noise density of `vn_bad` is -1.22"))
         .stderr(contains("at 1122.01"))
-        .stderr(contains("negative_density.vhd:9:12"));
+        .stderr(contains("negative_density.vhd:10:12"));
     // Not a number above 1 kHz.
     noise_command("nan_density", &["--probe", "vc"])
         .assert()

@@ -1,6 +1,7 @@
 -- divider: a resistor divider from a 5 V supply, r1 over r2, with c across r2; each resistor
 -- an instance of `noisy_resistor`, whose thermal noise (4kTR) is a noise voltage in series.
 -- At the output the two add to 4kT (r1 || r2) / |1 + jw (r1 || r2) c|^2; over 0..inf, kT/C.
+-- vams: stop 1 ms
 library ieee;
 use ieee.electrical_systems.all;
 entity noisy_resistor is

@@ -1,6 +1,7 @@
 -- flicker: a 1/f noise voltage (PSD kf / f, V^2/Hz) in series with the resistor of an RC
 -- low-pass. Output PSD kf / f / |1 + jwRC|^2; with the corner far above the band (a small
 -- c) the band's noise power is kf ln(f2 / f1).
+-- vams: stop 1 ms
 library ieee;
 use ieee.electrical_systems.all;
 entity tb_flicker is

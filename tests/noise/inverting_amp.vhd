@@ -4,6 +4,7 @@
 -- With D = 1 + a(jw) r1 / (r1 + r2): H_in = H_e1 = -a r2 / ((r1 + r2) D),
 -- H_e2 = -a r1 / ((r1 + r2) D), H_en = a / D; the input-referred noise is
 -- sqrt(S1 + S2 (r1 / r2)^2 + Sen ((r1 + r2) / r2)^2), whatever a(jw).
+-- vams: stop 1 ms
 library ieee;
 use ieee.math_real.all;
 entity tb_inverting_amp is

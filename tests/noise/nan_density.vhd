@@ -1,5 +1,6 @@
 -- nan_density: a noise density that is not a number above 1 kHz (the root of a negative);
 -- `vams noise` names the source and the frequency.
+-- vams: stop 1 ms
 library ieee;
 use ieee.electrical_systems.all;
 use ieee.math_real.all;

@@ -1,5 +1,6 @@
 -- negative_density: a noise density that turns negative above 1 kHz; `vams noise` names
 -- the source and the frequency.
+-- vams: stop 1 ms
 library ieee;
 use ieee.electrical_systems.all;
 entity tb_negative_density is

@@ -1,4 +1,5 @@
 -- no_noise: an RC with a spectral source and no noise source; `vams noise` refuses it.
+-- vams: stop 1 ms
 library ieee;
 use ieee.electrical_systems.all;
 entity tb_no_noise is

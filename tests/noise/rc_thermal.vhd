@@ -2,6 +2,7 @@
 -- a capacitor. Output density sqrt(4kTR) / |1 + jwRC|; over 0..inf the output noise power is
 -- kT/C. A 1 V spectral source drives the input for `vams ac` (zero in the noise analysis).
 -- Analyse: vams noise rc_thermal.vhd --probe vout --from 1Hz --to 1GHz
+-- vams: stop 1 ms
 library ieee;
 use ieee.electrical_systems.all;
 entity tb_rc_thermal is

@@ -1,6 +1,7 @@
 -- two_sources: two uncorrelated noise sources at one node, a resistor's thermal noise
 -- voltage (4kTR in series with r) and a current noise (i_psd A^2/Hz into the node), loaded
 -- by c. Z = r / (1 + jwrc); output PSD 4kTR / |1 + jwrc|^2 + i_psd |Z|^2: powers add.
+-- vams: stop 1 ms
 library ieee;
 use ieee.electrical_systems.all;
 entity tb_two_sources is
