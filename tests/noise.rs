@@ -531,3 +531,25 @@ fn agrees_with_ngspice_noise_on_the_rc_and_the_divider() {
         assert!(worst_error < 1e-4, "{model}: {worst_error:e}");
     }
 }
+
+#[test]
+fn vams_ac_leaves_noise_sources_out_of_its_default_probes() {
+    let out = vams()
+        .args([
+            "ac",
+            &format!("{DIR}/rc_thermal.vhd"),
+            "--from",
+            "1Hz",
+            "--to",
+            "10Hz",
+        ])
+        .output()
+        .expect("vams runs");
+    assert!(out.status.success());
+    let header = String::from_utf8(out.stdout).expect("utf-8");
+    let header = header.lines().next().expect("a header");
+    assert!(
+        header.contains("vout_db") && !header.contains("vn_r"),
+        "{header}"
+    );
+}

@@ -49,7 +49,7 @@ pub struct AcArgs {
     #[arg(long, value_name = "FILE", value_parser = plot_path)]
     pub plot: Option<PathBuf>,
     /// Report this quantity (hierarchical name, e.g. dut.vout); repeatable. Default: every
-    /// quantity but the spectral sources.
+    /// quantity but the spectral and noise sources.
     #[arg(long, value_name = "NAME")]
     pub probe: Vec<String>,
     /// Write real and imaginary parts instead of magnitude (dB) and phase (degrees).
@@ -160,11 +160,13 @@ pub fn parse_frequency(text: &str) -> Result<f64, String> {
     }
 }
 
-/// The probed quantities: the named ones, or every quantity but the spectral sources and
-/// those elaboration generated (named with a tick, as `vams run` leaves them out).
+/// The probed quantities: the named ones, or every quantity but the spectral and noise
+/// sources and those elaboration generated (named with a tick, as `vams run` leaves them out).
 pub(super) fn probes(design: &Design, names: &[String]) -> Result<Vec<QuantityId>, CliError> {
     if names.is_empty() {
-        let sources: Vec<QuantityId> = design.spectral_sources.iter().map(|s| s.quantity).collect();
+        let sources: Vec<QuantityId> = (design.spectral_sources.iter().map(|s| s.quantity))
+            .chain(design.noise_sources.iter().map(|s| s.quantity))
+            .collect();
         return Ok((0..design.quantities.len())
             .map(|q| QuantityId(q as u32))
             .filter(|q| !sources.contains(q) && !design.quantities[q.index()].name.contains('\''))

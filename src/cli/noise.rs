@@ -249,6 +249,7 @@ pub fn run(args: &NoiseArgs) -> Result<(), Report> {
         }
         .into());
     }
+    // One name gives one quantity or an error.
     let probe = probes(design, std::slice::from_ref(&args.probe))?[0];
     let input = args
         .input
