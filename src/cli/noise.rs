@@ -149,7 +149,7 @@ fn analyse(
     Ok(table)
 }
 
-/// ` V` after a value, or nothing for a quantity without a unit.
+/// `_V` (the unit) for a column name, or nothing for a quantity without a unit.
 fn unit_suffix(unit: Option<&str>) -> String {
     unit.map(|u| format!("_{u}")).unwrap_or_default()
 }
@@ -181,7 +181,9 @@ pub fn format_csv(
         }
         if let Some(gains) = &table.input_gain {
             out.push(',');
-            push_number(&mut out, table.total[k].sqrt() / gains[k].norm());
+            // A missing gain (never: one per frequency) reads NaN rather than panicking.
+            let gain = gains.get(k).map_or(f64::NAN, |g| g.norm());
+            push_number(&mut out, table.total[k].sqrt() / gain);
         }
         out.push('\n');
     }
