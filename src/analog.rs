@@ -440,6 +440,10 @@ fn protected_unknowns(design: &Design, quantity_slot: &[usize], n: usize) -> Vec
     for s in &design.spectral_sources {
         protect(s.quantity);
     }
+    // A noise source likewise: the noise analysis injects its density there.
+    for s in &design.noise_sources {
+        protect(s.quantity);
+    }
     for q in dots {
         protect(q);
     }

@@ -14,6 +14,7 @@ pub mod error;
 pub mod extract;
 pub mod interrupt;
 pub mod load;
+pub mod noise;
 pub mod op;
 pub mod params;
 pub mod poles;
@@ -55,6 +56,10 @@ pub enum Command {
     /// DC transfer curves: the quiescent point at each value of a swept generic, each point
     /// starting from the last, as CSV and a plot.
     Dc(dc::DcArgs),
+    /// Noise analysis: the output noise spectral density at a probe from the design's noise
+    /// source quantities, each source's contribution, the integrated RMS noise, and the
+    /// noise referred to an input.
+    Noise(noise::NoiseArgs),
     /// The natural frequencies of the design linearised about its quiescent point: poles with
     /// frequency, damping ratio and time constant.
     Poles(poles::PolesArgs),
@@ -76,6 +81,7 @@ pub fn run() -> ExitCode {
         Command::Op(args) => op::run(&args),
         Command::Ac(args) => ac::run(&args),
         Command::Dc(args) => dc::run(&args),
+        Command::Noise(args) => noise::run(&args),
         Command::Poles(args) => poles::run(&args),
         Command::Dae(args) => dae::run(&args),
         Command::Test(args) => test::run(&args),

@@ -96,6 +96,10 @@ pub struct Design {
     /// quiescent and time domains (each has its generated equation `q == 0.0`), the phasor
     /// `mag * e^(j phase)` in a small-signal frequency-domain analysis.
     pub spectral_sources: Vec<SpectralSource>,
+    /// Noise source quantities (`quantity n : real noise psd;`): zero in the quiescent and
+    /// time domains and in `vams ac` (each has its generated equation `q == 0.0`), an
+    /// independent source of power spectral density `psd` in a noise analysis.
+    pub noise_sources: Vec<NoiseSource>,
     /// The signal standing for `std.standard.frequency` in spectral expressions (an implicit
     /// real signal nothing drives: 0 outside the frequency domain, where no expression that
     /// reads it is evaluated); `None` when no spectral expression calls `frequency`.
@@ -110,6 +114,18 @@ pub struct SpectralSource {
     /// [`Design::frequency_signal`] (hertz) and constants.
     pub magnitude: Expr,
     pub phase: Expr,
+    /// Index into [`Design::equations`] of its generated equation `q == 0.0`.
+    pub equation: usize,
+    pub span: Span,
+}
+
+/// A noise source quantity (LRM 1076.1 4.3.1.6, 12.6.4).
+#[derive(Clone, Debug)]
+pub struct NoiseSource {
+    pub quantity: QuantityId,
+    /// The power spectral density (the quantity's units squared per hertz) as an analog
+    /// expression; it may read [`Design::frequency_signal`] (hertz) and constants.
+    pub density: Expr,
     /// Index into [`Design::equations`] of its generated equation `q == 0.0`.
     pub equation: usize,
     pub span: Span,

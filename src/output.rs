@@ -10,6 +10,7 @@ pub mod bode;
 pub mod csv;
 pub mod decimate;
 pub mod levels;
+pub mod noise_plot;
 pub mod plot;
 pub mod stream;
 pub mod vcd;

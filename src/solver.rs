@@ -15,6 +15,7 @@ pub mod ac;
 mod error;
 mod linear;
 mod newton;
+pub mod noise;
 mod op;
 pub mod poles;
 mod transient;

@@ -270,7 +270,10 @@ fn the_repository_testbenches_pass_by_default() {
         // tests/ac/: the AC models also run in the time domain (spectral sources are zero).
         .stdout(contains("test tb_rc_lowpass ... ok"))
         .stdout(contains("test tb_attributes ... ok"))
-        .stdout(contains("130 passed, 0 failed"));
+        // tests/noise/: so do the noise models (noise sources are zero there too).
+        .stdout(contains("test tb_rc_thermal ... ok"))
+        .stdout(contains("test tb_divider ... ok"))
+        .stdout(contains("138 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

@@ -120,6 +120,25 @@ pub enum AnalogError {
         help: String,
     },
 
+    /// A noise source's power spectral density is negative or not a number at a frequency
+    /// of the noise analysis.
+    ///
+    /// Example: `quantity n : real noise 1.0e-16 * (1.0 - frequency / 1.0e3);` above 1 kHz.
+    #[error("the noise density of `{name}` is {value:e} at {frequency} Hz")]
+    #[diagnostic(
+        code(vams::analog::noise_density),
+        help(
+            "a noise source's density is a power per hertz (units squared per hertz): it must be a finite number at least 0 at every analysed frequency"
+        )
+    )]
+    NoiseDensity {
+        #[label("this source")]
+        span: Span,
+        name: String,
+        value: f64,
+        frequency: f64,
+    },
+
     /// The design breaks an index invariant of the IR (an elaboration bug, not a model error).
     #[error("malformed design: {what}")]
     #[diagnostic(
@@ -143,6 +162,7 @@ impl Located for AnalogError {
             | AnalogError::Index { span, .. }
             | AnalogError::NotAnalog { span, .. }
             | AnalogError::FrequencyDomain { span, .. }
+            | AnalogError::NoiseDensity { span, .. }
             | AnalogError::Malformed { span, .. } => *span,
         }
     }

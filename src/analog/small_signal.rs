@@ -29,6 +29,7 @@ use super::{AnalogError, AnalogSystem, Origin, Sym, delay, lower};
 use crate::design::{Design, QuantityId, SignalId, SignalKind, Type};
 use crate::solver::ac::{SampledTerm, SampledTransfer, SmallSignal};
 use crate::solver::{DaeSystem, OpOptions, SolveError};
+use crate::source::Span;
 
 /// A spectral source's row of `B`.
 struct SourceRow {
@@ -39,10 +40,21 @@ struct SourceRow {
     phase: Sym,
 }
 
+/// A noise source's row: where its independent source enters and its density.
+struct NoiseRow {
+    row: usize,
+    /// `dF/dq` of its row at the point.
+    coefficient: f64,
+    density: Sym,
+    span: Span,
+    name: String,
+}
+
 /// The linearised system and how to build its right side at a frequency.
 pub struct SmallSignalModel {
     pub system: SmallSignal,
     sources: Vec<SourceRow>,
+    noise: Vec<NoiseRow>,
     x: Vec<f64>,
     xdot: Vec<f64>,
     signals: Vec<f64>,
@@ -71,6 +83,43 @@ impl SmallSignalModel {
     /// The number of spectral sources.
     pub fn source_count(&self) -> usize {
         self.sources.len()
+    }
+
+    /// Where spectral source `k` (in [`Design::spectral_sources`] order) enters: `(row,
+    /// coefficient)`; a unit phasor of the source quantity is `coefficient` in `row` of `B`.
+    pub fn spectral_injection(&self, k: usize) -> Option<(usize, f64)> {
+        self.sources.get(k).map(|s| (s.row, s.coefficient))
+    }
+
+    /// Where each noise source (in [`Design::noise_sources`] order) enters: `(row,
+    /// coefficient)`, as [`SmallSignalModel::spectral_injection`].
+    pub fn noise_injections(&self) -> Vec<(usize, f64)> {
+        self.noise.iter().map(|n| (n.row, n.coefficient)).collect()
+    }
+
+    /// Each noise source's power spectral density at `frequency` (hertz), in the units of its
+    /// quantity squared per hertz. A density that is negative or not a number is an error
+    /// naming the source: a power is never negative, and a silent NaN would poison the sum.
+    pub fn noise_densities(&mut self, frequency: f64) -> Result<Vec<f64>, AnalogError> {
+        if let Some(slot) = self.frequency_slot {
+            self.signals[slot] = frequency;
+        }
+        let (x, xdot, signals) = (&self.x, &self.xdot, &self.signals);
+        (self.noise.iter())
+            .map(|n| {
+                let value = n.density.eval(0.0, x, xdot, signals);
+                if value >= 0.0 && value.is_finite() {
+                    Ok(value)
+                } else {
+                    Err(AnalogError::NoiseDensity {
+                        span: n.span,
+                        name: n.name.clone(),
+                        value,
+                        frequency,
+                    })
+                }
+            })
+            .collect()
     }
 }
 
@@ -193,6 +242,32 @@ impl AnalogSystem {
                 }),
             }
         }
+        let mut noise = Vec::new();
+        for source in &design.noise_sources {
+            let (Some(slot), Some(row)) = (
+                self.quantity_slot(source.quantity),
+                self.solver_row(Origin::User(source.equation)),
+            ) else {
+                // `protected_unknowns` keeps every noise source and its equation.
+                errors.push(AnalogError::FrequencyDomain {
+                    span: source.span,
+                    what: "a noise source quantity that was eliminated".into(),
+                    help: "this is a bug in vams: noise sources are never eliminated".into(),
+                });
+                continue;
+            };
+            let slot_of = |q: usize| {
+                self.quantity_slot(QuantityId(q as u32))
+                    .unwrap_or(usize::MAX)
+            };
+            match lower(&source.density, &slot_of) {
+                Ok(density) => noise.push((row, slot, density, source)),
+                Err(e) => errors.push(AnalogError::NotAnalog {
+                    span: source.span,
+                    what: e.0.to_string(),
+                }),
+            }
+        }
         if !errors.is_empty() {
             return Err(errors);
         }
@@ -249,13 +324,26 @@ impl AnalogSystem {
                 transfer,
             });
         }
+        let coefficient = |row: usize, slot: usize| {
+            (system.pattern.iter())
+                .position(|&rc| rc == (row, slot))
+                .map_or(1.0, |k| system.g[k])
+        };
+        let noise = noise
+            .into_iter()
+            .map(|(row, slot, density, source)| NoiseRow {
+                row,
+                coefficient: coefficient(row, slot),
+                density,
+                span: source.span,
+                name: design.quantities[source.quantity.index()].name.clone(),
+            })
+            .collect();
         let sources = sources
             .into_iter()
             .map(|(row, slot, magnitude, phase)| SourceRow {
                 row,
-                coefficient: (system.pattern.iter())
-                    .position(|&rc| rc == (row, slot))
-                    .map_or(1.0, |k| system.g[k]),
+                coefficient: coefficient(row, slot),
                 magnitude,
                 phase,
             })
@@ -263,6 +351,7 @@ impl AnalogSystem {
         Ok(SmallSignalModel {
             system,
             sources,
+            noise,
             x: x.to_vec(),
             xdot: xdot.to_vec(),
             signals: self.signals.clone(),

@@ -39,6 +39,27 @@ domain. Frequencies: a number of hertz (1e3) or a number and Hz, kHz, MHz, GHz, 
 pub struct AcArgs {
     #[command(flatten)]
     pub design: DesignArgs,
+    #[command(flatten)]
+    pub sweep: SweepArgs,
+    /// Write the response to FILE (.csv): `frequency`, then per probe `NAME_db` and
+    /// `NAME_deg` (or `NAME_re` and `NAME_im` with --complex). Default: standard output.
+    #[arg(short = 'o', long = "out", value_name = "FILE", value_parser = csv_path)]
+    pub output: Option<PathBuf>,
+    /// Draw a Bode plot to FILE (.svg or .png): magnitude and phase over a log frequency axis.
+    #[arg(long, value_name = "FILE", value_parser = plot_path)]
+    pub plot: Option<PathBuf>,
+    /// Report this quantity (hierarchical name, e.g. dut.vout); repeatable. Default: every
+    /// quantity but the spectral and noise sources.
+    #[arg(long, value_name = "NAME")]
+    pub probe: Vec<String>,
+    /// Write real and imaginary parts instead of magnitude (dB) and phase (degrees).
+    #[arg(long)]
+    pub complex: bool,
+}
+
+/// The analysis frequencies, shared by `vams ac` and `vams noise`.
+#[derive(Debug, Args)]
+pub struct SweepArgs {
     /// Lowest analysis frequency.
     #[arg(long, value_name = "FREQ", value_parser = parse_frequency)]
     pub from: f64,
@@ -52,24 +73,54 @@ pub struct AcArgs {
     #[arg(long, value_name = "N", conflicts_with = "points_per_decade",
           value_parser = clap::value_parser!(u32).range(2..=10_000_000))]
     pub linear: Option<u32>,
-    /// Write the response to FILE (.csv): `frequency`, then per probe `NAME_db` and
-    /// `NAME_deg` (or `NAME_re` and `NAME_im` with --complex). Default: standard output.
-    #[arg(short = 'o', long = "out", value_name = "FILE", value_parser = csv_path)]
-    pub output: Option<PathBuf>,
-    /// Draw a Bode plot to FILE (.svg or .png): magnitude and phase over a log frequency axis.
-    #[arg(long, value_name = "FILE", value_parser = plot_path)]
-    pub plot: Option<PathBuf>,
-    /// Report this quantity (hierarchical name, e.g. dut.vout); repeatable. Default: every
-    /// quantity but the spectral sources.
-    #[arg(long, value_name = "NAME")]
-    pub probe: Vec<String>,
-    /// Write real and imaginary parts instead of magnitude (dB) and phase (degrees).
-    #[arg(long)]
-    pub complex: bool,
+}
+
+impl SweepArgs {
+    /// The grid the options ask for; an error if `--to` is below `--from`.
+    pub fn frequencies(&self) -> Result<Vec<f64>, CliError> {
+        if self.to < self.from {
+            return Err(CliError::FrequencyRange {
+                from: self.from,
+                to: self.to,
+            });
+        }
+        let spacing = match self.linear {
+            Some(n) => Spacing::Linear(n as usize),
+            None => Spacing::PerDecade(self.points_per_decade.unwrap_or(20) as usize),
+        };
+        Ok(frequencies(self.from, self.to, spacing))
+    }
+}
+
+/// Writes `text` to `path` atomically, or to standard output when there is none; the
+/// path written, if any.
+pub(super) fn write_text(
+    path: Option<&std::path::Path>,
+    text: &str,
+) -> Result<Option<String>, CliError> {
+    let write_error = |path: &std::path::Path, e: &dyn std::fmt::Display| CliError::Write {
+        path: path.display().to_string(),
+        reason: e.to_string(),
+    };
+    match path {
+        Some(path) => {
+            write_atomically(path, |w| w.write_all(text.as_bytes()))
+                .map_err(|e| write_error(path, &e))?;
+            Ok(Some(path.display().to_string()))
+        }
+        None => {
+            let mut stdout = std::io::stdout().lock();
+            stdout
+                .write_all(text.as_bytes())
+                .and_then(|()| stdout.flush())
+                .map_err(|e| write_error(std::path::Path::new("<stdout>"), &e))?;
+            Ok(None)
+        }
+    }
 }
 
 /// Accepts `.csv` paths.
-fn csv_path(text: &str) -> Result<PathBuf, String> {
+pub(super) fn csv_path(text: &str) -> Result<PathBuf, String> {
     let path = PathBuf::from(text);
     match path.extension().and_then(|e| e.to_str()) {
         Some(e) if e.eq_ignore_ascii_case("csv") => Ok(path),
@@ -109,11 +160,13 @@ pub fn parse_frequency(text: &str) -> Result<f64, String> {
     }
 }
 
-/// The probed quantities: the named ones, or every quantity but the spectral sources and
-/// those elaboration generated (named with a tick, as `vams run` leaves them out).
-fn probes(design: &Design, names: &[String]) -> Result<Vec<QuantityId>, CliError> {
+/// The probed quantities: the named ones, or every quantity but the spectral and noise
+/// sources and those elaboration generated (named with a tick, as `vams run` leaves them out).
+pub(super) fn probes(design: &Design, names: &[String]) -> Result<Vec<QuantityId>, CliError> {
     if names.is_empty() {
-        let sources: Vec<QuantityId> = design.spectral_sources.iter().map(|s| s.quantity).collect();
+        let sources: Vec<QuantityId> = (design.spectral_sources.iter().map(|s| s.quantity))
+            .chain(design.noise_sources.iter().map(|s| s.quantity))
+            .collect();
         return Ok((0..design.quantities.len())
             .map(|q| QuantityId(q as u32))
             .filter(|q| !sources.contains(q) && !design.quantities[q.index()].name.contains('\''))
@@ -312,13 +365,7 @@ pub fn format_csv(names: &[&str], response: &Response, complex: bool) -> String 
 /// Runs `vams ac`.
 pub fn run(args: &AcArgs) -> Result<(), Report> {
     let started = Instant::now();
-    if args.to < args.from {
-        return Err(CliError::FrequencyRange {
-            from: args.from,
-            to: args.to,
-        }
-        .into());
-    }
+    let grid = args.sweep.frequencies()?;
     let compiled = compile(&args.design)?;
     let design = &compiled.design;
     if design.spectral_sources.is_empty() {
@@ -328,39 +375,14 @@ pub fn run(args: &AcArgs) -> Result<(), Report> {
         .into());
     }
     let probes = probes(design, &args.probe)?;
-    let spacing = match args.linear {
-        Some(n) => Spacing::Linear(n as usize),
-        None => Spacing::PerDecade(args.points_per_decade.unwrap_or(20) as usize),
-    };
-    let response = analyse(
-        design,
-        &compiled.loaded.sources,
-        &probes,
-        frequencies(args.from, args.to, spacing),
-    )?;
+    let response = analyse(design, &compiled.loaded.sources, &probes, grid)?;
     let names: Vec<&str> = (probes.iter())
         .map(|q| design.quantities[q.index()].name.as_str())
         .collect();
     let csv = format_csv(&names, &response, args.complex);
-    let mut written = Vec::new();
-    let write_error = |path: &std::path::Path, e: &dyn std::fmt::Display| CliError::Write {
-        path: path.display().to_string(),
-        reason: e.to_string(),
-    };
-    match &args.output {
-        Some(path) => {
-            write_atomically(path, |w| w.write_all(csv.as_bytes()))
-                .map_err(|e| write_error(path, &e))?;
-            written.push(path.display().to_string());
-        }
-        None => {
-            let mut stdout = std::io::stdout().lock();
-            stdout
-                .write_all(csv.as_bytes())
-                .and_then(|()| stdout.flush())
-                .map_err(|e| write_error(std::path::Path::new("<stdout>"), &e))?;
-        }
-    }
+    let mut written: Vec<String> = write_text(args.output.as_deref(), &csv)?
+        .into_iter()
+        .collect();
     if let Some(path) = &args.plot {
         let traces: Vec<BodeTrace> = (names.iter().zip(&response.values))
             .map(|(name, column)| BodeTrace {
@@ -382,8 +404,8 @@ pub fn run(args: &AcArgs) -> Result<(), Report> {
         "analysed {} at {} frequencies from {} Hz to {} Hz in {:.2} s{files}",
         design.top,
         response.frequencies.len(),
-        crate::output::csv::format_number(args.from),
-        crate::output::csv::format_number(args.to),
+        crate::output::csv::format_number(args.sweep.from),
+        crate::output::csv::format_number(args.sweep.to),
         started.elapsed().as_secs_f64()
     );
     discard_at_exit(compiled);

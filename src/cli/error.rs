@@ -110,6 +110,33 @@ pub enum CliError {
     )]
     NoSpectralSource { top: String },
 
+    /// `vams noise` on a design without a noise source quantity.
+    #[error("`{top}` has no noise source quantity: a noise analysis has nothing to add up")]
+    #[diagnostic(
+        code(vams::cli::no_noise_source),
+        help(
+            "declare one and add it where the noise enters, e.g. `quantity vn : real noise 4.0 * 1.380649e-23 * 300.0 * r;` and `v == r * i + vn;` (a power spectral density in the quantity's units squared per hertz, which may call `frequency`; zero in the other analyses)"
+        )
+    )]
+    NoNoiseSource { top: String },
+
+    /// `vams noise --input` names no spectral source quantity.
+    #[error("--input `{name}`: {problem}")]
+    #[diagnostic(code(vams::cli::noise_input), help("{help}"))]
+    NoiseInput {
+        name: String,
+        problem: String,
+        help: String,
+    },
+
+    /// A noise source's density was invalid at some frequency; the error was printed.
+    #[error("the noise analysis of `{top}` stopped at a noise density it cannot use")]
+    #[diagnostic(
+        code(vams::cli::noise_density),
+        help("see the error above: the density must be finite and at least 0 over the band")
+    )]
+    NoiseDensity { top: String },
+
     /// `vams ac --probe` names no quantity.
     #[error("--probe `{name}`: {problem}")]
     #[diagnostic(code(vams::cli::ac_probe), help("{help}"))]

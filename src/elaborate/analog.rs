@@ -7,9 +7,9 @@ use std::sync::Arc;
 
 use crate::ast::{self, EntityNames, Ident, NatureDef, QuantityDecl};
 use crate::design::{
-    BinaryOp, BreakReinit, Equation, Expr, Instr, Limit, Nature, NatureId, Process, Quantity,
-    QuantityId, QuantityKind, Signal, SignalId, SignalKind, SpectralSource, Terminal, TerminalId,
-    Value,
+    BinaryOp, BreakReinit, Equation, Expr, Instr, Limit, Nature, NatureId, NoiseSource, Process,
+    Quantity, QuantityId, QuantityKind, Signal, SignalId, SignalKind, SpectralSource, Terminal,
+    TerminalId, Value,
 };
 use crate::source::Span;
 
@@ -567,13 +567,13 @@ impl<'a> Elab<'a> {
             }
             // A spectral or noise source quantity is zero in the quiescent and time domains
             // (LRM 1076.1 12.6.4). A spectral one's magnitude and phase are kept for the
-            // small-signal analysis (`vams ac`); a noise source's density is not evaluated
-            // (no noise analysis yet).
+            // small-signal analysis (`vams ac`), a noise one's density for the noise
+            // analysis (`vams noise`).
             QuantityDecl::Source {
                 names,
                 subtype,
                 spectrum,
-                ..
+                noise,
             } => {
                 let sub = self.subtype_indication(sc, subtype)?;
                 if sub.ty != Ty::Real {
@@ -585,6 +585,10 @@ impl<'a> Elab<'a> {
                 }
                 let spectrum = match spectrum {
                     Some((magnitude, phase)) => Some(self.spectrum(sc, magnitude, phase)?),
+                    None => None,
+                };
+                let density = match noise {
+                    Some(density) => Some(self.noise_density(sc, density)?),
                     None => None,
                 };
                 for n in names {
@@ -609,6 +613,14 @@ impl<'a> Elab<'a> {
                             span: n.span,
                         });
                     }
+                    if let Some(density) = &density {
+                        self.design.noise_sources.push(NoiseSource {
+                            quantity: id,
+                            density: density.clone(),
+                            equation: self.design.equations.len(),
+                            span: n.span,
+                        });
+                    }
                     self.generated_equation(Expr::Quantity(id), n.span, text);
                 }
                 Ok(())
@@ -629,6 +641,15 @@ impl<'a> Elab<'a> {
         let p = self.expr_of(sc, phase, &Ty::Real);
         self.in_spectrum = false;
         Ok((m?.e, p?.e))
+    }
+
+    /// A noise source's power spectral density as a real expression, in which `frequency`
+    /// may be called.
+    fn noise_density(&mut self, sc: &Scope<'a>, density: &ast::Expr) -> R<Expr> {
+        self.in_spectrum = true;
+        let d = self.expr_of(sc, density, &Ty::Real);
+        self.in_spectrum = false;
+        Ok(d?.e)
     }
 
     /// The implicit signal standing for `frequency` (made at its first call).

@@ -1084,8 +1084,8 @@ impl<'a> Elab<'a> {
             Native::Frequency => {
                 return Err(self.error(ElabError::invalid(
                     name_span,
-                    "`frequency` is readable only in the magnitude and phase of a spectral source quantity",
-                    Some("LRM 1076.1: FREQUENCY is the small-signal analysis's frequency; declare `quantity ac : real spectrum mag, phase;` and use it there".into()),
+                    "`frequency` is readable only in the magnitude and phase of a spectral source quantity and the density of a noise source quantity",
+                    Some("LRM 1076.1: FREQUENCY is the small-signal analysis's frequency; declare `quantity ac : real spectrum mag, phase;` or `quantity n : real noise psd;` and use it there".into()),
                 )));
             }
             // `"**"(x, y)` called by name.

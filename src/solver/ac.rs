@@ -181,8 +181,25 @@ impl AcSolver {
         &self.system
     }
 
-    /// `X` at `frequency` (hertz) for the right side `rhs`.
+    /// `X` at `frequency` (hertz) for the right side `rhs`: `(G + jw C) X = rhs`.
     pub fn solve(&self, frequency: f64, rhs: &[c64]) -> Result<Vec<c64>, AcSolveError> {
+        self.solve_with(frequency, rhs, false)
+    }
+
+    /// `Z` at `frequency` (hertz) with `(G + jw C)^T Z = rhs` (transposed, not conjugated):
+    /// the adjoint system. For an output `y = c^T X`, the solution of `A^T z = c` gives the
+    /// transfer from every right side at once, `y = z^T B`, so a noise analysis needs one
+    /// solve per frequency however many sources it has (as SPICE's `.noise` does).
+    pub fn solve_transposed(&self, frequency: f64, rhs: &[c64]) -> Result<Vec<c64>, AcSolveError> {
+        self.solve_with(frequency, rhs, true)
+    }
+
+    fn solve_with(
+        &self,
+        frequency: f64,
+        rhs: &[c64],
+        transposed: bool,
+    ) -> Result<Vec<c64>, AcSolveError> {
         let n = self.system.n;
         if n == 0 {
             return Ok(Vec::new());
@@ -213,12 +230,21 @@ impl AcSolver {
                 .map_err(|e| AcSolveError::Solver(format!("{e:?}")))?;
         let lu = Lu::try_new_with_symbolic(self.symbolic_lu.clone(), matrix.as_ref())
             .map_err(|_| AcSolveError::Singular { frequency })?;
-        let mut x = faer::Mat::<c64>::from_fn(n, 1, |i, _| {
-            rhs.get(i).copied().unwrap_or_default() * row_scale[i]
-        });
         use faer::linalg::solvers::SolveCore;
-        lu.solve_in_place_with_conj(faer::Conj::No, x.as_mut());
-        let x: Vec<c64> = (0..n).map(|i| x[(i, 0)]).collect();
+        // The factors are of `D A` (`D` the row scales). `D A X = D b` for `X`; for the
+        // adjoint, `(D A)^T W = A^T D W = c`, so `Z = D W`.
+        let x: Vec<c64> = if transposed {
+            let mut w =
+                faer::Mat::<c64>::from_fn(n, 1, |i, _| rhs.get(i).copied().unwrap_or_default());
+            lu.solve_transpose_in_place_with_conj(faer::Conj::No, w.as_mut());
+            (0..n).map(|i| w[(i, 0)] * row_scale[i]).collect()
+        } else {
+            let mut x = faer::Mat::<c64>::from_fn(n, 1, |i, _| {
+                rhs.get(i).copied().unwrap_or_default() * row_scale[i]
+            });
+            lu.solve_in_place_with_conj(faer::Conj::No, x.as_mut());
+            (0..n).map(|i| x[(i, 0)]).collect()
+        };
         // A vanished pivot shows as an infinite or undefined solution.
         if x.iter().any(|v| !(v.re.is_finite() && v.im.is_finite())) {
             return Err(AcSolveError::Singular { frequency });
@@ -357,6 +383,41 @@ mod tests {
             let expected = 1.0 / (1.0 + wrc * wrc).sqrt();
             assert!((h.norm() / expected - 1.0).abs() < 1e-12, "{f}: {h}");
             assert!((h.arg() + wrc.atan()).abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn the_adjoint_solve_gives_every_transfer_at_once() {
+        // A 3x3 system with a delay and unequal row scales: z^T b must equal c^T x for
+        // every right side b, with x from the direct solve.
+        let sys = SmallSignal {
+            n: 3,
+            pattern: vec![(0, 0), (0, 1), (1, 0), (1, 1), (1, 2), (2, 1), (2, 2)],
+            g: vec![2.0, -1.0, -1e-3, 3e-3, -1e-3, -5.0, 1e4],
+            c: vec![1e-6, 0.0, 0.0, 2e-9, 0.0, 0.0, 3e-2],
+            delays: vec![(5, 1e-4)],
+            // And a sampled-data term: the transposed solve sees the same matrix.
+            sampled: vec![SampledTerm {
+                entry: 2,
+                coefficient: 0.5,
+                transfer: SampledTransfer::Hold { period: 1e-4 },
+            }],
+        };
+        let solver = AcSolver::new(sys).unwrap();
+        let c = [
+            c64::new(0.5, 0.0),
+            c64::new(-1.0, 2.0),
+            c64::new(3.0, -0.25),
+        ];
+        for f in [0.1, 1e3, 1e6] {
+            let z = solver.solve_transposed(f, &c).unwrap();
+            for k in 0..3 {
+                let mut b = vec![c64::default(); 3];
+                b[k] = c64::new(1.0, 0.0);
+                let x = solver.solve(f, &b).unwrap();
+                let direct: c64 = (0..3).map(|j| c[j] * x[j]).sum();
+                assert!((direct - z[k]).norm() <= 1e-12 * direct.norm(), "{f} {k}");
+            }
         }
     }
 

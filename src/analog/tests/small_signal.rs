@@ -1,12 +1,15 @@
 //! The small-signal model (`analog::small_signal`): `G` and `C` exactly the symbolic
 //! derivatives at the linearisation point, nonlinear terms linearised there, the right side
-//! from the spectral sources, a sample and hold as its transfer, and the refusal of a signal
-//! shaped in time.
+//! from the spectral sources, the noise sources' injections and densities, a sample and hold
+//! as its transfer, and the refusal of a signal shaped in time.
 
 use super::fixture::*;
 use crate::analog::{AnalogError, AnalogOptions, AnalogSystem};
-use crate::design::{Builtin, Design, QuantityId, SignalId, SignalKind, SpectralSource};
+use crate::design::{
+    Builtin, Design, NoiseSource, QuantityId, SignalId, SignalKind, SpectralSource,
+};
 use crate::solver::ac::AcSolver;
+use crate::solver::noise::{Injection, noise_at};
 use faer::c64;
 
 /// Declares `u` a spectral source of `magnitude` and `phase` (its equation `u == 0.0` is
@@ -93,16 +96,27 @@ fn capacitance_beside_a_large_conductance_keeps_every_digit() {
     );
 }
 
-#[test]
-fn a_generated_sampling_signal_is_refused_with_its_span() {
+/// `u == 0` (the spectral source) and `y == 3 * S`, where `S` is an implicit signal that a
+/// generated process drives (as behind `u'zoh` or `u'slew`).
+fn sampled_design(name: &str) -> (Design, QuantityId, QuantityId, SignalId) {
     let mut b = Builder::new();
     let (u, y) = (b.free("u"), b.free("y"));
-    let s = b.signal("u'zoh", 0.0);
+    let s = b.signal(name, 0.0);
     b.equation("u == 0.0;", q(u), c(0.0));
-    b.equation("y == u'zoh(1.0e-3);", q(y), crate::design::Expr::Signal(s));
+    b.equation(
+        "y == 3.0 * u'zoh(1.0e-3);",
+        q(y),
+        mul(c(3.0), crate::design::Expr::Signal(s)),
+    );
     let (mut d, _) = b.finish();
     d.signals[s.index()].kind = SignalKind::Implicit;
     spectral(&mut d, u, 1.0, 0.0, 0);
+    (d, u, y, s)
+}
+
+#[test]
+fn a_signal_shaped_in_time_is_refused_with_its_span() {
+    let (d, _, _, s) = sampled_design("u'slew");
     let mut sys = system(&d);
     let (x, xdot) = sys
         .point_from_quantities(&[0.0, 0.0], &[])
@@ -110,9 +124,42 @@ fn a_generated_sampling_signal_is_refused_with_its_span() {
     let errors = sys.small_signal(&d, &x, &xdot).err().expect("refused");
     assert!(
         matches!(&errors[..], [AnalogError::FrequencyDomain { span, what, .. }]
-            if *span == d.signals[s.index()].span && what == "`u'zoh`"),
+            if *span == d.signals[s.index()].span && what == "`u'slew`"),
         "{errors:?}"
     );
+}
+
+#[test]
+fn a_sample_and_hold_is_its_transfer_from_its_input() {
+    let (mut d, u, y, s) = sampled_design("u'zoh");
+    d.sampled.push(crate::design::Sampled {
+        signal: s,
+        input: u,
+        period: 1e-3,
+        filter: None,
+        span: d.signals[s.index()].span,
+    });
+    let options = AnalogOptions {
+        eliminate: false,
+        ..AnalogOptions::default()
+    };
+    let mut sys = AnalogSystem::with_options(&d, &options).expect("a system");
+    let (x, xdot) = sys
+        .point_from_quantities(&[0.0, 0.0], &[])
+        .expect("a point");
+    let mut model = sys.small_signal(&d, &x, &xdot).expect("a model");
+    assert_eq!(model.system.sampled.len(), 1, "one transfer term");
+    let solver = AcSolver::new(model.system.clone()).expect("a solver");
+    let mut rhs = vec![c64::default(); model.system.n];
+    for (row, m, p) in model.excitation(250.0) {
+        rhs[row] += c64::from_polar(m, p);
+    }
+    let xs = solver.solve(250.0, &rhs).expect("a solution");
+    let yy = xs[sys.quantity_slot(y).expect("kept")];
+    // 3 (1 - e^{-jwT}) / (jwT) at wT = pi / 2.
+    let x = std::f64::consts::FRAC_PI_2;
+    let expected = c64::from_polar(3.0 * (x / 2.0).sin() / (x / 2.0), -x / 2.0);
+    assert!((yy - expected).norm() < 1e-14, "{yy} {expected}");
 }
 
 #[test]
@@ -147,5 +194,61 @@ fn an_eliminated_quantity_is_the_linearisation_of_its_formula() {
     assert_eq!(
         sys.linear_output(v, &x, &xdot),
         Some(vec![(slot, 1.0, 0.0)])
+    );
+}
+
+#[test]
+fn a_noise_source_enters_at_its_row_with_a_density_that_reads_frequency() {
+    // 0 == 2 n (the residual's sign and scale are the writer's); y == 3 + n; the density
+    // is 1e-16 / frequency: at 100 Hz, |H|^2 S = 1e-18 whatever the row's coefficient.
+    let mut b = Builder::new();
+    let (n, y) = (b.free("n"), b.free("y"));
+    let f = b.signal("frequency", 0.0);
+    b.equation("0.0 == 2.0 * n;", c(0.0), mul(c(2.0), q(n)));
+    b.equation("y == 3.0 + n;", q(y), add(c(3.0), q(n)));
+    let (mut d, _) = b.finish();
+    d.signals[f.index()].kind = SignalKind::Implicit;
+    d.frequency_signal = Some(f);
+    let density = bin(
+        crate::design::BinaryOp::Div,
+        c(1e-16),
+        crate::design::Expr::Signal(f),
+    );
+    d.noise_sources.push(NoiseSource {
+        quantity: n,
+        density: sub(density, c(1e-19)),
+        equation: 0,
+        span: d.equations[0].span,
+    });
+    let mut sys = system(&d);
+    let (x, xdot) = sys
+        .point_from_quantities(&[0.0, 3.0], &[])
+        .expect("a point");
+    let mut model = sys.small_signal(&d, &x, &xdot).expect("a model");
+    let injections: Vec<Injection> = (model.noise_injections().into_iter())
+        .map(|(row, coefficient)| Injection { row, coefficient })
+        .collect();
+    assert_eq!(injections.len(), 1);
+    assert_eq!(injections[0].coefficient.abs(), 2.0);
+    let densities = model.noise_densities(100.0).expect("a density");
+    assert!(
+        (densities[0] / (1e-18 - 1e-19) - 1.0).abs() < 1e-14,
+        "{densities:?}"
+    );
+    let output = sys
+        .linear_output(y, &x, &xdot)
+        .expect("y has an expression");
+    let solver = AcSolver::new(model.system.clone()).expect("a solver");
+    let point = noise_at(&solver, 100.0, &output, &injections, &densities, &[]).expect("solved");
+    assert!(
+        (point.total / densities[0] - 1.0).abs() < 1e-14,
+        "{point:?}"
+    );
+    // Above 1 kHz the density is negative: an error naming the source, with its span.
+    let error = model.noise_densities(2e3).expect_err("refused");
+    assert!(
+        matches!(&error, AnalogError::NoiseDensity { name, frequency, value, span }
+            if name == "n" && *frequency == 2e3 && *value < 0.0 && *span == d.equations[0].span),
+        "{error:?}"
     );
 }
