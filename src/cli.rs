@@ -6,6 +6,7 @@
 //! elaborating, stop times, printing diagnostics and reports) have modules of their own.
 
 pub mod ac;
+pub mod ac_assert;
 pub mod check;
 pub mod compile;
 pub mod dae;

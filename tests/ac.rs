@@ -474,6 +474,43 @@ fn sampled_data_attributes_follow_their_z_domain_closed_forms() {
 }
 
 #[test]
+fn assertions_check_the_response_at_their_own_frequencies() {
+    // The corner, 1591.549 Hz, is between the points of the 1-per-decade grid: each
+    // assertion is solved at its frequency.
+    ac_command("rc_lowpass", "1Hz", "1MHz")
+        .args(["--points-per-decade", "1", "--probe", "vout"])
+        .args(["--assert", "gain_db(vout, 1591.5494309189535Hz) > -3.0104"])
+        .args(["--assert", "gain_db(vout, 1591.5494309189535Hz) < -3.0102"])
+        .args([
+            "--assert",
+            "phase_deg(vout, 1591.5494309189535Hz) >= -45.000001",
+        ])
+        .assert()
+        .success()
+        .stderr(contains(
+            "assert gain_db(vout, 1591.5494309189535Hz) > -3.0104: -3.0102999566",
+        ))
+        .stderr(contains("... ok"));
+    ac_command("rc_lowpass", "1Hz", "1MHz")
+        .args([
+            "--assert",
+            "gain(vout, 10kHz) > 0.5",
+            "--assert",
+            "gain(vout, 1Hz) > 0.99",
+        ])
+        .assert()
+        .code(1)
+        .stderr(contains("assert gain(vout, 10kHz) > 0.5: 0.157"))
+        .stderr(contains("FAILED"))
+        .stderr(contains("1 of 2 assertion(s) on the response failed"));
+    ac_command("rc_lowpass", "1Hz", "1MHz")
+        .args(["--assert", "gain(vot, 10kHz) > 0.5"])
+        .assert()
+        .code(1)
+        .stderr(contains("did you mean `vout`?"));
+}
+
+#[test]
 fn a_design_without_a_spectral_source_is_refused() {
     ac_command("no_source", "1Hz", "1kHz")
         .assert()

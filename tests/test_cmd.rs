@@ -273,11 +273,68 @@ fn the_repository_testbenches_pass_by_default() {
         // tests/noise/: so do the noise models (noise sources are zero there too).
         .stdout(contains("test tb_rc_thermal ... ok"))
         .stdout(contains("test tb_divider ... ok"))
-        .stdout(contains("138 passed, 0 failed"));
+        .stdout(contains("143 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it
 /// uses), and only with those: another testbench beside it runs and passes.
+/// `-- vams: assert` comments check the small-signal response: a testbench without a stop
+/// time is an AC test only; one with both runs in time first. A false assertion fails with
+/// its value, a bad one is a located diagnostic.
+#[test]
+fn assertions_on_the_small_signal_response_judge_a_testbench() {
+    let dir = tempfile::tempdir().unwrap();
+    let rc = |name: &str, comments: &str| {
+        format!(
+            "{comments}library ieee;\nuse ieee.electrical_systems.all;\n\
+             entity {name} is end;\narchitecture a of {name} is\n\
+             terminal n_in, n_out : electrical;\n\
+             quantity ac_in : real spectrum 1.0, 0.0;\n\
+             quantity vin across iin through n_in to electrical_ref;\n\
+             quantity vr across ir through n_in to n_out;\n\
+             quantity vout across ic through n_out to electrical_ref;\n\
+             begin\n  vin == 1.0 + ac_in;\n  vr == 1.0e3 * ir;\n  ic == 1.0e-7 * vout'dot;\n\
+             end;\n"
+        )
+    };
+    let write = |file: &str, text: String| std::fs::write(dir.path().join(file), text).unwrap();
+    write(
+        "tb_ac_only.vhd",
+        rc(
+            "tb_ac_only",
+            "-- vams: assert gain_db(vout, 1591.55Hz) > -3.02\n",
+        ),
+    );
+    write(
+        "tb_both.vhd",
+        rc(
+            "tb_both",
+            "-- vams: stop 1 ms\n-- vams: assert phase_deg(vout, 1591.55Hz) < -44.99\n",
+        ),
+    );
+    write(
+        "tb_too_flat.vhd",
+        rc("tb_too_flat", "-- vams: assert gain_db(vout, 10kHz) > -3\n"),
+    );
+    write(
+        "tb_unreadable.vhd",
+        rc("tb_unreadable", "-- vams: assert gain_db(vout) > -3\n"),
+    );
+    vams()
+        .arg("test")
+        .arg(dir.path())
+        .assert()
+        .code(1)
+        .stdout(contains("test tb_ac_only ... ok"))
+        .stdout(contains("test tb_both ... ok"))
+        .stdout(contains("test tb_too_flat ... FAILED"))
+        .stdout(contains("assert gain_db(vout, 10kHz) > -3: -16.07"))
+        .stdout(contains("test tb_unreadable ... FAILED"))
+        .stdout(contains("expected two arguments"))
+        .stdout(contains("tb_unreadable.vhd:1"))
+        .stdout(contains("2 passed, 2 failed"));
+}
+
 #[test]
 fn a_testbench_reaching_a_unit_with_an_analysis_error_fails_with_it() {
     let dir = tempfile::tempdir().unwrap();

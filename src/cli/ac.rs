@@ -20,6 +20,7 @@ use crate::output::bode::{BodeTrace, plot_bode};
 use crate::output::csv::push_number;
 use crate::solver::ac::{AcSolver, Spacing, db, degrees, frequencies};
 
+use super::ac_assert::{AcAssertion, assertion_probes, check_assertions};
 use super::compile::{DesignArgs, compile, discard_at_exit};
 use super::error::CliError;
 use super::render::{render, render_located, render_sim_error};
@@ -55,6 +56,11 @@ pub struct AcArgs {
     /// Write real and imaginary parts instead of magnitude (dB) and phase (degrees).
     #[arg(long)]
     pub complex: bool,
+    /// Check the response (repeatable; exit 1 when one fails): `gain_db(vout, 1kHz) > -3.1`,
+    /// `gain(vout, 10Hz) >= 0.99`, `phase_deg(vout, 1kHz) < -40`, each solved at exactly its
+    /// frequency.
+    #[arg(long = "assert", value_name = "EXPR")]
+    pub assertions: Vec<String>,
 }
 
 /// The analysis frequencies, shared by `vams ac` and `vams noise`.
@@ -221,18 +227,36 @@ pub(super) struct Linearised {
     pub model: SmallSignalModel,
 }
 
-/// Linearises an elaborated design about its quiescent point (see [`analyse`]); the errors
-/// are printed as they are found.
+/// Why a design could not be linearised: the diagnostics, rendered, and the summary error.
+pub(super) struct NotLinearised {
+    pub diagnostics: String,
+    pub error: CliError,
+}
+
+/// Linearises an elaborated design about its quiescent point (see [`respond`]); the errors
+/// are printed.
 pub(super) fn linearise(
     design: &Design,
     sources: &crate::source::SourceMap,
 ) -> Result<Linearised, Report> {
+    linearise_quietly(design, sources).map_err(|failure| {
+        eprint!("{}", failure.diagnostics);
+        failure.error.into()
+    })
+}
+
+/// [`linearise`], the diagnostics rendered into the failure rather than printed (`vams
+/// test` reports them with the testbench).
+pub(super) fn linearise_quietly(
+    design: &Design,
+    sources: &crate::source::SourceMap,
+) -> Result<Linearised, NotLinearised> {
     let top = || design.top.clone();
     // The quiescent point exactly as `vams op` finds it (processes to their first wait,
     // breaks, `domain = quiescent_domain`), on the reduced system the kernel builds.
-    let point = operating_point(design, &SimOptions::default()).map_err(|e| {
-        eprint!("{}", render_sim_error(&e, sources));
-        CliError::Simulation { top: top() }
+    let point = operating_point(design, &SimOptions::default()).map_err(|e| NotLinearised {
+        diagnostics: render_sim_error(&e, sources),
+        error: CliError::Simulation { top: top() },
     })?;
     let nq = design.quantities.len();
     let quantity_values: Vec<f64> = point.iter().take(nq).map(|(_, v)| *v).collect();
@@ -249,28 +273,30 @@ pub(super) fn linearise(
         eliminate: design.delays.is_empty() && design.sampled.is_empty(),
         ..AnalogOptions::default()
     };
-    let mut system = AnalogSystem::with_options(design, &options).map_err(|errors| {
-        for e in &errors {
-            eprint!("{}", render_located(e, sources));
-        }
-        CliError::Analog {
-            count: errors.len(),
-        }
-    })?;
+    let all = |errors: &[crate::analog::AnalogError]| -> String {
+        errors.iter().map(|e| render_located(e, sources)).collect()
+    };
+    let mut system =
+        AnalogSystem::with_options(design, &options).map_err(|errors| NotLinearised {
+            diagnostics: all(&errors),
+            error: CliError::Analog {
+                count: errors.len(),
+            },
+        })?;
     let (x, xdot) = system
         .point_from_quantities(&quantity_values, &signal_values)
-        .map_err(|e| {
-            eprint!("{}", render(&e));
-            CliError::Simulation { top: top() }
+        .map_err(|e| NotLinearised {
+            diagnostics: render(&e),
+            error: CliError::Simulation { top: top() },
         })?;
-    let model = system.small_signal(design, &x, &xdot).map_err(|errors| {
-        for e in &errors {
-            eprint!("{}", render_located(e, sources));
-        }
-        CliError::FrequencyDomain {
-            count: errors.len(),
-        }
-    })?;
+    let model = system
+        .small_signal(design, &x, &xdot)
+        .map_err(|errors| NotLinearised {
+            diagnostics: all(&errors),
+            error: CliError::FrequencyDomain {
+                count: errors.len(),
+            },
+        })?;
     Ok(Linearised {
         system,
         x,
@@ -279,30 +305,30 @@ pub(super) fn linearise(
     })
 }
 
-/// Runs the analysis on an elaborated design; the errors are printed as they are found.
-fn analyse(
-    design: &Design,
-    sources: &crate::source::SourceMap,
+/// The response of `probes` at `frequencies` of a linearised design.
+pub(super) fn respond(
+    top: &str,
+    linearised: &mut Linearised,
     probes: &[QuantityId],
     frequencies: Vec<f64>,
-) -> Result<Response, Report> {
-    let top = || design.top.clone();
+) -> Result<Response, CliError> {
     let Linearised {
         system,
         x,
         xdot,
-        mut model,
-    } = linearise(design, sources)?;
+        model,
+    } = linearised;
+    let failed = |e: crate::solver::ac::AcSolveError| CliError::AcSolve {
+        top: top.to_string(),
+        reason: e.to_string(),
+    };
     // Each probe as a combination of the solver's unknowns (an eliminated quantity by the
     // linearisation of its formula); the frequency-domain signals are set by now.
     let outputs: Vec<Vec<(usize, f64, f64)>> = (probes.iter())
-        .map(|&q| system.linear_output(q, &x, &xdot).unwrap_or_default())
+        .map(|&q| system.linear_output(q, x, xdot).unwrap_or_default())
         .collect();
     let n = model.system.n;
-    let solver = AcSolver::new(model.system.clone()).map_err(|e| CliError::AcSolve {
-        top: top(),
-        reason: e.to_string(),
-    })?;
+    let solver = AcSolver::new(model.system.clone()).map_err(failed)?;
     let mut values = vec![Vec::with_capacity(frequencies.len()); probes.len()];
     let mut rhs = vec![c64::default(); n];
     for &f in &frequencies {
@@ -310,10 +336,7 @@ fn analyse(
         for (row, magnitude, phase) in model.excitation(f) {
             rhs[row] += c64::from_polar(magnitude, phase);
         }
-        let x = solver.solve(f, &rhs).map_err(|e| CliError::AcSolve {
-            top: top(),
-            reason: e.to_string(),
-        })?;
+        let x = solver.solve(f, &rhs).map_err(failed)?;
         let omega = std::f64::consts::TAU * f;
         for (column, output) in values.iter_mut().zip(&outputs) {
             let mut z = c64::default();
@@ -375,7 +398,12 @@ pub fn run(args: &AcArgs) -> Result<(), Report> {
         .into());
     }
     let probes = probes(design, &args.probe)?;
-    let response = analyse(design, &compiled.loaded.sources, &probes, grid)?;
+    let assertions = (args.assertions.iter())
+        .map(|text| AcAssertion::parse(text))
+        .collect::<Result<Vec<_>, _>>()?;
+    let assertion_probes = assertion_probes(design, &assertions)?;
+    let mut linearised = linearise(design, &compiled.loaded.sources)?;
+    let response = respond(&design.top, &mut linearised, &probes, grid)?;
     let names: Vec<&str> = (probes.iter())
         .map(|q| design.quantities[q.index()].name.as_str())
         .collect();
@@ -408,7 +436,19 @@ pub fn run(args: &AcArgs) -> Result<(), Report> {
         crate::output::csv::format_number(args.sweep.to),
         started.elapsed().as_secs_f64()
     );
-    discard_at_exit(compiled);
+    let verdicts = check_assertions(&design.top, &mut linearised, &assertions, &assertion_probes)?;
+    discard_at_exit((compiled, linearised));
+    let failed = verdicts.iter().filter(|v| !v.holds).count();
+    for v in &verdicts {
+        eprintln!("{}", v.line());
+    }
+    if failed > 0 {
+        return Err(CliError::AcAssertions {
+            failed,
+            total: verdicts.len(),
+        }
+        .into());
+    }
     Ok(())
 }
 

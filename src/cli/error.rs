@@ -181,6 +181,21 @@ pub enum CliError {
     )]
     Poles { top: String, reason: String },
 
+    /// An assertion on a small-signal response that does not read.
+    #[error("assertion `{text}`: {problem}")]
+    #[diagnostic(
+        code(vams::cli::ac_assertion),
+        help(
+            "write MEASURE(PROBE, FREQUENCY) OP NUMBER, e.g. `gain_db(vout, 1kHz) > -3.1`; MEASURE is gain_db, gain or phase_deg, OP is <, <=, > or >="
+        )
+    )]
+    AcAssertion { text: String, problem: String },
+
+    /// Some assertions on a small-signal response failed (each was printed).
+    #[error("{failed} of {total} assertion(s) on the response failed")]
+    #[diagnostic(code(vams::cli::ac_assertions_failed))]
+    AcAssertions { failed: usize, total: usize },
+
     /// `vams dc --probe` names no quantity or signal.
     #[error("--probe `{name}`: no quantity or signal of that name")]
     #[diagnostic(code(vams::cli::dc_probe), help("{help}"))]
@@ -240,12 +255,26 @@ pub enum SourceError {
         span: Span,
         problem: String,
     },
+    /// `-- vams: assert gain_db(vout) > 1`
+    #[error("the assertion comment does not read: {problem}")]
+    #[diagnostic(
+        code(vams::cli::bad_assert_comment),
+        help(
+            "write e.g. `-- vams: assert gain_db(vout, 1kHz) > -3.1` (gain_db, gain or phase_deg; <, <=, > or >=)"
+        )
+    )]
+    BadAssertComment {
+        #[label("here")]
+        span: Span,
+        problem: String,
+    },
 }
 
 impl Located for SourceError {
     fn primary_span(&self) -> Span {
         match self {
-            SourceError::BadStopComment { span, .. } => *span,
+            SourceError::BadStopComment { span, .. }
+            | SourceError::BadAssertComment { span, .. } => *span,
         }
     }
 }

@@ -1,11 +1,14 @@
-//! What a source file asks of `vams run` in `-- vams:` comments: the stop time
-//! (`-- vams: stop 6 sec`, the first such comment counts) and the plot's panels
-//! (`-- vams: panel vref, vfb`, one comment per panel, in order).
+//! What a source file asks of `vams run` and `vams test` in `-- vams:` comments: the stop
+//! time (`-- vams: stop 6 sec`, the first such comment counts), the plot's panels
+//! (`-- vams: panel vref, vfb`, one comment per panel, in order) and assertions on the
+//! small-signal response (`-- vams: assert gain_db(vout, 1kHz) > -3.1`, checked by `vams
+//! test`).
 
 use crate::ast::LibraryUnit;
 use crate::source::{FileId, SourceMap, Span};
 
-use super::error::SourceError;
+use super::ac_assert::AcAssertion;
+use super::error::{CliError, SourceError};
 use super::load::Loaded;
 use super::time::parse_positive_time;
 
@@ -61,6 +64,49 @@ pub fn panel_comments(sources: &SourceMap, file: FileId) -> Vec<Vec<String>> {
             (!names.is_empty()).then_some(names)
         })
         .collect()
+}
+
+/// The small-signal assertions of a file, `-- vams: assert EXPR`, in order; a bad one is a
+/// diagnostic pointing at its text.
+pub fn assert_comments(sources: &SourceMap, file: FileId) -> Result<Vec<AcAssertion>, SourceError> {
+    let text = sources.file(file).text.clone();
+    let mut out = Vec::new();
+    let mut offset = 0;
+    for line in text.split_inclusive('\n') {
+        let start = offset;
+        offset += line.len();
+        let Some(dashes) = line.find("--") else {
+            continue;
+        };
+        let comment = &line[dashes + 2..];
+        let body = comment.trim_start();
+        if body.len() < 5 || !body[..5].eq_ignore_ascii_case("vams:") {
+            continue;
+        }
+        let after_tag = body[5..].trim_start();
+        let Some(keyword) = after_tag.get(..6) else {
+            continue;
+        };
+        if !keyword.eq_ignore_ascii_case("assert") {
+            continue;
+        }
+        let value = after_tag[6..].trim();
+        let value_start = start + dashes + 2 + (comment.len() - after_tag[6..].trim_start().len());
+        let span = Span::new(file, value_start, value_start + value.len());
+        match AcAssertion::parse(value) {
+            Ok(a) => out.push(a),
+            Err(CliError::AcAssertion { problem, .. }) => {
+                return Err(SourceError::BadAssertComment { span, problem });
+            }
+            Err(e) => {
+                return Err(SourceError::BadAssertComment {
+                    span,
+                    problem: e.to_string(),
+                });
+            }
+        }
+    }
+    Ok(out)
 }
 
 /// The user file (library `work`) that declares entity `name`.
@@ -119,10 +165,29 @@ mod tests {
     }
 
     #[test]
+    fn reads_assert_comments_and_points_at_a_bad_one() {
+        let (sources, id) = map(
+            "-- vams: assert gain_db(vout, 1kHz) > -3.1\n-- vams: stop 1 ms\n--vams: ASSERT phase_deg(vout, 10Hz) < 0\n",
+        );
+        let found = assert_comments(&sources, id).unwrap();
+        assert_eq!(found.len(), 2);
+        assert_eq!(found[1].text, "phase_deg(vout, 10Hz) < 0");
+        let (sources, id) = map("\n-- vams: assert  gain_db(vout, 1kHz) = 3 \n");
+        let Err(SourceError::BadAssertComment { span, problem }) = assert_comments(&sources, id)
+        else {
+            panic!("a bad assertion is refused");
+        };
+        assert_eq!(sources.snippet(span), "gain_db(vout, 1kHz) = 3");
+        assert!(problem.contains("expected a comparison"), "{problem}");
+    }
+
+    #[test]
     fn bad_stop_comment_points_at_its_value() {
         let (sources, id) = map("\n-- vams: stop  soon \n");
         let err = stop_comment(&sources, id).unwrap().unwrap_err();
-        let SourceError::BadStopComment { span, .. } = &err;
+        let SourceError::BadStopComment { span, .. } = &err else {
+            panic!("{err:?}");
+        };
         assert_eq!(sources.snippet(*span), "soon");
         let rendered = crate::diagnostics::render_plain(&err, &sources);
         assert!(rendered.contains("vams::cli::bad_stop_comment") && rendered.contains("tb.vhd:2"));

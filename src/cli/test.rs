@@ -20,10 +20,12 @@ use crate::kernel::{Severity, SimError, SimOptions, SimResult, simulate};
 use crate::output::atomic::write_atomically;
 use crate::source::{FileId, SourceMap};
 
+use super::ac::linearise_quietly;
+use super::ac_assert::{AcAssertion, AcVerdict, assertion_probes, check_assertions};
 use super::error::CliError;
 use super::load::{Loaded, load_with_libraries};
 use super::render::{format_report, render, render_located, render_sim_error};
-use super::stop::stop_comment;
+use super::stop::{assert_comments, stop_comment};
 use super::time::parse_positive_time;
 use discover::{Testbench, discover};
 use junit::{Case, Problem, junit_xml};
@@ -113,9 +115,16 @@ fn run_bench(
             return Some((Problem::Error, text));
         }
     }
+    let assertions = match assert_comments(sources, bench.file) {
+        Ok(a) => a,
+        Err(e) => return Some((Problem::Error, render_located(&e, sources))),
+    };
+    // A testbench with assertions on its small-signal response and no stop time is an AC
+    // test only.
     let stop = match (stop_comment(sources, bench.file), default_stop) {
-        (Some(Ok(t)), _) | (None, Some(t)) => t,
+        (Some(Ok(t)), _) | (None, Some(t)) => Some(t),
         (Some(Err(e)), _) => return Some((Problem::Error, render_located(&e, sources))),
+        (None, None) if !assertions.is_empty() => None,
         (None, None) => {
             let e = CliError::NoStop {
                 top: bench.name.clone(),
@@ -137,19 +146,63 @@ fn run_bench(
     for u in &design.warnings {
         warnings.push_str(&render_located(&ElabWarning::from(u), sources));
     }
-    let sim = SimOptions {
-        stop,
-        ..SimOptions::default()
+    if let Some(stop) = stop {
+        let sim = SimOptions {
+            stop,
+            ..SimOptions::default()
+        };
+        // Reports from no process are the simulator's own warnings (an implicit through
+        // quantity); the model's own reports judge the run.
+        let mut own_warning = |r: &crate::kernel::Report| {
+            if r.process.is_empty() && r.severity == Severity::Warning {
+                warnings.push_str(&format_report(r, sources));
+                warnings.push('\n');
+            }
+        };
+        if let Some(problem) = judge(simulate(&design, &sim, &mut own_warning), sources) {
+            return Some(problem);
+        }
+    }
+    if assertions.is_empty() {
+        return None;
+    }
+    judge_response(&design, sources, &assertions)
+}
+
+/// Checks the small-signal assertions of a testbench: `None` when every one holds.
+fn judge_response(
+    design: &crate::design::Design,
+    sources: &SourceMap,
+    assertions: &[AcAssertion],
+) -> Option<(Problem, String)> {
+    if design.spectral_sources.is_empty() {
+        let e = CliError::NoSpectralSource {
+            top: design.top.clone(),
+        };
+        return Some((Problem::Error, render(&e)));
+    }
+    let probes = match assertion_probes(design, assertions) {
+        Ok(p) => p,
+        Err(e) => return Some((Problem::Error, render(&e))),
     };
-    // Reports from no process are the simulator's own warnings (an implicit through
-    // quantity); the model's own reports judge the run.
-    let mut own_warning = |r: &crate::kernel::Report| {
-        if r.process.is_empty() && r.severity == Severity::Warning {
-            warnings.push_str(&format_report(r, sources));
-            warnings.push('\n');
+    let mut linearised = match linearise_quietly(design, sources) {
+        Ok(l) => l,
+        Err(failure) => {
+            let text = format!("{}{}", failure.diagnostics, render(&failure.error));
+            return Some((Problem::Error, text));
         }
     };
-    judge(simulate(&design, &sim, &mut own_warning), sources)
+    match check_assertions(&design.top, &mut linearised, assertions, &probes) {
+        Err(e) => Some((Problem::Error, render(&e))),
+        Ok(verdicts) if verdicts.iter().all(|v| v.holds) => None,
+        Ok(verdicts) => {
+            let lines: Vec<String> = (verdicts.iter())
+                .filter(|v| !v.holds)
+                .map(AcVerdict::line)
+                .collect();
+            Some((Problem::Failure, lines.join("\n")))
+        }
+    }
 }
 
 /// The verdict on a finished (or failed) run: reports of severity error or failure, or the
