@@ -21,6 +21,28 @@ pub struct BodeTrace {
     pub points: Vec<(f64, f64, f64)>,
 }
 
+/// The phases of `points` (frequency increasing) shifted by whole turns so that no step
+/// between neighbours exceeds half a turn; non-finite phases are left as they are and do not
+/// break the chain.
+pub fn unwrap_phase(points: &[(f64, f64, f64)]) -> Vec<(f64, f64, f64)> {
+    let mut shift = 0.0;
+    let mut previous: Option<f64> = None;
+    points
+        .iter()
+        .map(|&(f, db, degrees)| {
+            if !degrees.is_finite() {
+                return (f, db, degrees);
+            }
+            if let Some(p) = previous {
+                shift += 360.0 * (-((degrees + shift - p) / 360.0).round());
+            }
+            let unwrapped = degrees + shift;
+            previous = Some(unwrapped);
+            (f, db, unwrapped)
+        })
+        .collect()
+}
+
 /// A point of a trace: `(frequency, dB, degrees)`.
 type BodePoint = (f64, f64, f64);
 
@@ -43,6 +65,16 @@ pub fn plot_bode(path: &Path, title: &str, traces: &[BodeTrace]) -> Result<(), P
         });
     }
     register_font();
+    // The phase as a continuous curve: a lag past 180 degrees reads as such, not as a jump
+    // to +180.
+    let traces: Vec<BodeTrace> = traces
+        .iter()
+        .map(|t| BodeTrace {
+            name: t.name.clone(),
+            points: unwrap_phase(&t.points),
+        })
+        .collect();
+    let traces = &traces[..];
     let temp = temp_path(path);
     let err = |e: Box<dyn std::error::Error>| PlotError::Draw {
         path: path.to_path_buf(),
@@ -146,6 +178,21 @@ where
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn phases_unwrap_into_a_continuous_lag() {
+        let wrapped = [
+            (1.0, 0.0, -170.0),
+            (2.0, 0.0, 179.0),
+            (3.0, 0.0, f64::NAN),
+            (4.0, 0.0, 100.0),
+            (5.0, 0.0, -20.0),
+        ];
+        let phases: Vec<f64> = unwrap_phase(&wrapped).iter().map(|p| p.2).collect();
+        assert_eq!(phases[..2], [-170.0, -181.0]);
+        assert!(phases[2].is_nan());
+        assert_eq!(phases[3..], [-260.0, -380.0]);
+    }
 
     #[test]
     fn draws_both_panels_on_a_log_axis() {
