@@ -429,6 +429,8 @@ fn sampled_data_attributes_follow_their_z_domain_closed_forms() {
             "filtered",
             "--probe",
             "loop_out",
+            "--probe",
+            "fir",
             "--complex",
         ],
     );
@@ -455,12 +457,17 @@ fn sampled_data_attributes_follow_their_z_domain_closed_forms() {
             })
             .fold(0.0, f64::max)
     };
+    let fir = |w: f64| {
+        let (z1, z2) = (z_inv(w), z_inv(2.0 * w));
+        Z(0.25 + 0.5 * z1.0 + 0.25 * z2.0, 0.5 * z1.1 + 0.25 * z2.1)
+    };
     let errors = [
         absolute(&t.complex("held"), &hold),
         absolute(&t.complex("filtered"), &filter),
         absolute(&t.complex("loop_out"), &closed_loop),
+        absolute(&t.complex("fir"), &fir),
     ];
-    println!("'zoh, 'ztf, loop through 'zoh: largest errors {errors:?}");
+    println!("'zoh, IIR and FIR 'ztf, loop through 'zoh: largest errors {errors:?}");
     for e in errors {
         assert!(e < 1e-12, "{errors:?}");
     }
@@ -511,6 +518,82 @@ fn assertions_check_the_response_at_their_own_frequencies() {
 }
 
 #[test]
+fn an_inverting_amplifier_runs_out_of_gain_at_its_gain_bandwidth() {
+    let t = ac(
+        "opamp_inverting",
+        &[
+            "--from",
+            "1Hz",
+            "--to",
+            "10MHz",
+            "--points-per-decade",
+            "10",
+            "--probe",
+            "vout",
+            "--complex",
+        ],
+    );
+    let (r1, r2, a0, fa) = (1e3, 10e3, 1e5, 10.0);
+    let err = worst(&t.complex("vout"), |w| {
+        // a(jw) = a0 / (1 + jw / wa); H = -(r2 / r1) / (1 + (1 + r2 / r1) / a).
+        let a = Z(a0, 0.0).div(Z(1.0, w / (TAU * fa)));
+        let inverse_a = Z(1.0, 0.0).div(a);
+        let den = Z(
+            1.0 + (1.0 + r2 / r1) * inverse_a.0,
+            (1.0 + r2 / r1) * inverse_a.1,
+        );
+        Z(-r2 / r1, 0.0).div(den)
+    });
+    println!("inverting amplifier: {err:.2e}");
+    assert!(err < 1e-9, "{err:e}");
+}
+
+#[test]
+fn a_twenty_section_rlc_ladder_agrees_with_ngspice() {
+    if StdCommand::new("ngspice")
+        .arg("--version")
+        .output()
+        .is_err()
+    {
+        println!("skipped: ngspice is not on the PATH");
+        return;
+    }
+    let dir = tempfile::tempdir().expect("temporary directory");
+    let mut deck = String::from("rlc ladder\nV1 n0 0 DC 0 AC 1\n");
+    for k in 1..=20 {
+        deck.push_str(&format!(
+            "R{k} n{} m{k} 1\nL{k} m{k} n{k} 1m\nC{k} n{k} 0 1u\n",
+            k - 1
+        ));
+    }
+    let reference = ngspice_ac(&deck, "n20", dir.path(), "ac dec 20 1 10k")
+        .expect("ngspice is installed but did not run the ladder");
+    let t = ac(
+        "rlc_ladder",
+        &[
+            "--from",
+            "1Hz",
+            "--to",
+            "10kHz",
+            "--probe",
+            "vout",
+            "--complex",
+        ],
+    );
+    let ours = t.complex("vout");
+    assert_eq!(ours.len(), reference.len());
+    let mut worst_error = 0.0_f64;
+    for (&(f, z), &(fs, zs)) in ours.iter().zip(&reference) {
+        assert!((f / fs - 1.0).abs() < 1e-6, "{f} vs {fs}");
+        let magnitude = (z.norm() / zs.norm() - 1.0).abs();
+        let ratio = z.div(zs);
+        worst_error = worst_error.max(magnitude).max(ratio.1.atan2(ratio.0).abs());
+    }
+    println!("20-section RLC ladder: largest difference from ngspice {worst_error:.2e}");
+    assert!(worst_error < 1e-6, "{worst_error:e}");
+}
+
+#[test]
 fn a_design_without_a_spectral_source_is_refused() {
     ac_command("no_source", "1Hz", "1kHz")
         .assert()
@@ -546,12 +629,13 @@ fn unsupported_constructs_and_bad_arguments_are_diagnosed() {
         .stderr(contains("`frequency` is readable only"));
 }
 
-/// ngspice's `.ac` of a deck: frequency, real and imaginary parts of `v(node)`.
-fn ngspice_ac(deck: &str, node: &str, dir: &Path) -> Option<Vec<(f64, Z)>> {
+/// ngspice's `.ac` of a deck (`analysis`, e.g. `ac dec 20 1 1meg`): frequency, real and
+/// imaginary parts of `v(node)`.
+fn ngspice_ac(deck: &str, node: &str, dir: &Path, analysis: &str) -> Option<Vec<(f64, Z)>> {
     let cir = dir.join("deck.cir");
     let out = dir.join("ac.out");
     let text = format!(
-        "{deck}\n.control\nset wr_singlescale\nac dec 20 1 1meg\nwrdata {} vr({node}) vi({node})\n.endc\n.end\n",
+        "{deck}\n.control\nset wr_singlescale\n{analysis}\nwrdata {} vr({node}) vi({node})\n.endc\n.end\n",
         out.display()
     );
     std::fs::write(&cir, text).ok()?;
@@ -622,7 +706,7 @@ fn agrees_with_ngspice_ac_on_the_rc_and_the_rlc() {
     ];
     for (model, probe, deck, node) in cases {
         let tolerance = if model == "diode_stage" { 1e-5 } else { 1e-6 };
-        let Some(reference) = ngspice_ac(deck, node, dir.path()) else {
+        let Some(reference) = ngspice_ac(deck, node, dir.path(), "ac dec 20 1 1meg") else {
             panic!("ngspice is installed but did not run the {model} deck");
         };
         let t = ac(
