@@ -572,6 +572,10 @@ pub(crate) enum Op<'d> {
         timeout: Option<f64>,
         /// `wait;`: no condition, timeout or sensitivity.
         halts: bool,
+        /// Where the process resumes: through the `Jump` after the wait (a process with a
+        /// sensitivity list, a loop ending in a wait) without a dispatch of its own when it
+        /// resumes, the jump still counted then ([`ProcState::owed`]).
+        resume: Next,
     },
     /// A one-element waveform of a scalar value with a literal delay, to a driver found now.
     Assign {
@@ -629,8 +633,15 @@ pub(crate) fn step<const THREAD: bool>(
             state.pc = to;
             Some(Flow::Next(steps))
         }
-        Op::Wait { timeout, halts } => {
-            state.pc = pc + 1;
+        Op::Wait {
+            timeout,
+            halts,
+            resume,
+        } => {
+            let (to, steps) = resume.go::<THREAD>(pc + 1);
+            state.pc = to;
+            // The jump taken here belongs to the activation that resumes.
+            state.owed = (steps - 1) as u8;
             if *halts {
                 state.halted = true;
                 return Some(Flow::Suspend(Suspend::Halt));
@@ -704,11 +715,13 @@ pub(crate) enum Ran {
 pub(crate) fn run(ops: &[Op], state: &mut ProcState, signals: &mut Signals, now: f64) -> Ran {
     state.waiting_at = None;
     state.timeout_at = None;
+    // The jump the wait took for this activation.
+    let mut steps = usize::from(std::mem::take(&mut state.owed));
     if state.running.is_some() {
-        return Ran::Declined { steps: 0 };
+        return Ran::Declined { steps };
     }
-    // A step takes at most two instructions, so this stops at `CANCEL_CHECK - 1` at most.
-    let mut steps = 0;
+    // A step takes at most two instructions (and `steps` starts at one at most), so this
+    // stops at `CANCEL_CHECK - 1` at most.
     while steps < CANCEL_CHECK - 2 {
         match ops
             .get(state.pc)
@@ -776,6 +789,7 @@ fn lower_one<'d>(
             Op::Wait {
                 timeout,
                 halts: until.is_none() && timeout.is_none() && !sensitive,
+                resume: Next::after(&process.code, pc),
             }
         }
         Instr::SetVar { var, value } => {
