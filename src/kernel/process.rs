@@ -52,9 +52,6 @@ pub(crate) struct ProcState {
     /// Absolute time at which the current wait times out.
     pub timeout_at: Option<f64>,
     pub halted: bool,
-    /// Instructions taken by the lowered wait the process suspended at on behalf of its
-    /// next activation (the `Jump` after the wait: 0 or 1), counted when it resumes.
-    pub owed: u8,
 }
 
 impl ProcState {
@@ -85,7 +82,6 @@ impl ProcState {
             waiting_at: None,
             timeout_at: None,
             halted: false,
-            owed: 0,
         }
     }
 
