@@ -315,7 +315,7 @@ impl<'d> EventKernel<'d> {
             }
             // Due, or on the waiters list of a signal with an event (the only other way
             // such a process comes here).
-            if p.timeout_at.is_some_and(|t| t <= now) || self.one_plain_wait[i] {
+            if self.one_plain_wait[i] || p.timeout_at.is_some_and(|t| t <= now) {
                 self.resume[k] = i;
                 k += 1;
                 continue;

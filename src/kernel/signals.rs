@@ -41,6 +41,14 @@ struct Transaction {
     value: Option<Value>,
 }
 
+impl Transaction {
+    /// A slot to fill in place ([`Signals::assign_scalar`]).
+    const EMPTY: Transaction = Transaction {
+        time: 0.0,
+        value: None,
+    };
+}
+
 /// How an assignment edits the projected waveform.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum Delay {
@@ -694,11 +702,15 @@ impl Signals {
         if !w.is_empty() {
             self.next_stale |= edit_scalar(w, kind.value(x), time, delay, &driver.current);
         }
-        // The transaction pushed empty and its value written into it afterwards: built
-        // before the push (which may grow the queue), the value was assembled on the stack in
-        // parts and copied in whole, which stalled on those stores.
-        w.push_back(Transaction { time, value: None });
+        // The transaction pushed as a constant and its time and value written into it
+        // afterwards: built before the push (which may grow the queue), the value was
+        // assembled on the stack in parts and copied in whole, which stalled on those
+        // stores; and a pushed `Transaction { time, value: None }` was, depending on the
+        // inlining around it, also built on the stack and copied (half of this function's
+        // samples under `perf`).
+        w.push_back(Transaction::EMPTY);
         if let Some(tr) = w.back_mut() {
+            tr.time = time;
             tr.value = Some(kind.value(x));
         }
         // Not `f64::min`, whose NaN handling costs more: times are numbers.
@@ -738,11 +750,14 @@ impl Signals {
     /// Marks signal `s` active at `now`.
     fn activate(&mut self, s: SignalId, now: f64) {
         let st = &mut self.states[s.index()];
+        // Already active in this phase, it has `now` as its `last_active` (the update phase
+        // clears the flags it set, all at one `now`): a signal driven element by element is
+        // activated once per due driver.
         if !st.active {
             st.active = true;
+            st.last_active = Some(now);
             self.active.push(s);
         }
-        st.last_active = Some(now);
     }
 
     /// The update phase at `now`: transactions due become driving values; effective values are
@@ -976,19 +991,24 @@ impl Signals {
             let Some(k) = driver.element.filter(|&k| k < items.len()) else {
                 continue;
             };
-            if driver.current == items[k] {
+            if same(&driver.current, &items[k]) {
                 continue;
             }
             if !event {
                 // `last_value` becomes the value before this phase: it differed only at the
                 // elements that changed at the last event.
                 for &k in &split.changed {
-                    last[k as usize].clone_from(&items[k as usize]);
+                    let (to, from) = (&mut last[k as usize], &items[k as usize]);
+                    if !copy_scalar(to, from) {
+                        to.clone_from(from);
+                    }
                 }
                 split.changed.clear();
                 event = true;
             }
-            items[k].clone_from(&driver.current);
+            if !copy_scalar(&mut items[k], &driver.current) {
+                items[k].clone_from(&driver.current);
+            }
             split.changed.push(k as u32);
         }
         if event {
@@ -1216,6 +1236,18 @@ fn element_count(v: &Value) -> usize {
         Value::Array(items) => items.len(),
         Value::String(s) => s.chars().count(),
         _ => 1,
+    }
+}
+
+/// `a == b`, for two scalars of one kind (an element's driver and the element, at each
+/// transaction) without the call to `Value`'s general comparison.
+#[inline(always)]
+fn same(a: &Value, b: &Value) -> bool {
+    match (a, b) {
+        (Value::Enum(x), Value::Enum(y)) => x == y,
+        (Value::Integer(x), Value::Integer(y)) => x == y,
+        (Value::Boolean(x), Value::Boolean(y)) => x == y,
+        _ => a == b,
     }
 }
 
