@@ -1,6 +1,7 @@
 //! `vams poles` end to end: the natural frequencies of a DC motor (`models/dc_motor.vhd` on
 //! `tests/analog/motor_step.vhd`) and of a series RLC (`tests/ac/rlc_series.vhd`) against their
-//! closed forms, to 1e-6 relative (the table prints 7 significant digits), and the refusal of a design with `'delayed`.
+//! closed forms, to 1e-6 relative (the table prints 7 significant digits), the zeros of a lead
+//! network and of a series RLC, and the refusal of a design with `'delayed`.
 
 use assert_cmd::Command;
 use predicates::str::contains;
@@ -79,4 +80,47 @@ fn a_design_with_delayed_is_refused() {
         .assert()
         .code(1)
         .stderr(contains("not polynomial"));
+}
+
+/// The rows of the zeros' table after the poles'.
+fn zeros(args: &[&str]) -> Vec<(f64, f64)> {
+    let out = vams().arg("poles").args(args).output().expect("runs");
+    let text = String::from_utf8(out.stdout).expect("utf-8");
+    assert!(out.status.success(), "{text}");
+    let start = text.find("zeros from").expect("a zeros table");
+    text[start..]
+        .lines()
+        .skip(2)
+        .map(|line| {
+            let mut cols = line.split_whitespace();
+            let re: f64 = cols.next().expect("real").parse().expect("number");
+            let im = cols.next().expect("imag");
+            (re, im.trim_start_matches("+-").parse().expect("number"))
+        })
+        .collect()
+}
+
+/// A lead network's zero, `-1 / (r1 c1)`, and the series RLC's double zero at the origin
+/// from the source to the inductor's voltage (`s^2 L C / (1 + s R C + s^2 L C)`).
+#[test]
+fn zeros_from_an_input_to_an_output() {
+    let lead = format!("{ROOT}/tests/ac/lead.vhd");
+    let found = zeros(&[&lead, "--input", "ac_in", "--output", "vout"]);
+    assert_eq!(found.len(), 1, "{found:?}");
+    assert!(close(found[0].0, -100.0) && found[0].1 == 0.0, "{found:?}");
+    // Its pole, -(r1 + r2) / (r1 r2 c1), is listed above the zeros.
+    assert!(close(poles(&[&lead])[0].0, -1100.0));
+    let rlc = format!("{ROOT}/tests/ac/rlc_series.vhd");
+    let found = zeros(&[&rlc, "--input", "ac_in", "--output", "vl"]);
+    assert_eq!(found, [(0.0, 0.0), (0.0, 0.0)]);
+    vams()
+        .args(["poles", &lead, "--input", "vin", "--output", "vout"])
+        .assert()
+        .code(1)
+        .stderr(contains("not a spectral source quantity"))
+        .stderr(contains("ac_in"));
+    vams()
+        .args(["poles", &lead, "--input", "ac_in"])
+        .assert()
+        .code(2);
 }

@@ -225,6 +225,14 @@ pub enum CliError {
         value: String,
     },
 
+    /// `vams poles --input` names no spectral source quantity.
+    #[error("--input `{name}` is not a spectral source quantity of the design")]
+    #[diagnostic(
+        code(vams::cli::zeros_input),
+        help("the zeros are from a spectral source quantity; the design's are: {sources}")
+    )]
+    ZerosInput { name: String, sources: String },
+
     /// `vams test`: some testbenches failed.
     #[error("{failed} of {total} testbench(es) failed")]
     #[diagnostic(code(vams::cli::tests_failed))]

@@ -195,7 +195,10 @@ mod tests {
         assert!(finite[0].norm() < 1e-9, "{finite:?}");
         let (finite, _) = zeros(&system, (0, 1.0), &[(1, 1.0, r * c)]).unwrap();
         assert_eq!(finite.len(), 1, "{finite:?}");
-        assert!((finite[0] - c64::new(-1.0 / (r * c), 0.0)).norm() < 1e-6, "{finite:?}");
+        assert!(
+            (finite[0] - c64::new(-1.0 / (r * c), 0.0)).norm() < 1e-6,
+            "{finite:?}"
+        );
         // The plain low-pass output has no finite zero.
         let (finite, _) = zeros(&system, (0, 1.0), &[(1, 1.0, 0.0)]).unwrap();
         assert!(finite.is_empty(), "{finite:?}");
