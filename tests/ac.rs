@@ -7,9 +7,11 @@
 
 use std::f64::consts::{PI, TAU};
 use std::path::Path;
-use std::process::Command as StdCommand;
 
 use assert_cmd::Command;
+
+#[path = "support/ngspice.rs"]
+mod ngspice;
 use predicates::str::contains;
 
 const DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/ac");
@@ -550,11 +552,7 @@ fn an_inverting_amplifier_runs_out_of_gain_at_its_gain_bandwidth() {
 
 #[test]
 fn a_twenty_section_rlc_ladder_agrees_with_ngspice() {
-    if StdCommand::new("ngspice")
-        .arg("--version")
-        .output()
-        .is_err()
-    {
+    if !ngspice::available() {
         println!("skipped: ngspice is not on the PATH");
         return;
     }
@@ -632,48 +630,14 @@ fn unsupported_constructs_and_bad_arguments_are_diagnosed() {
 /// ngspice's `.ac` of a deck (`analysis`, e.g. `ac dec 20 1 1meg`): frequency, real and
 /// imaginary parts of `v(node)`.
 fn ngspice_ac(deck: &str, node: &str, dir: &Path, analysis: &str) -> Option<Vec<(f64, Z)>> {
-    let cir = dir.join("deck.cir");
-    let out = dir.join("ac.out");
-    let text = format!(
-        "{deck}\n.control\nset wr_singlescale\n{analysis}\nwrdata {} vr({node}) vi({node})\n.endc\n.end\n",
-        out.display()
-    );
-    std::fs::write(&cir, text).ok()?;
-    // ngspice exits with 1 after a `.control` run without `.print` lines; the data file
-    // tells whether the analysis ran.
-    let run = StdCommand::new("ngspice")
-        .arg("-b")
-        .arg(&cir)
-        .output()
-        .ok()?;
-    let data = std::fs::read_to_string(&out).map_err(|e| {
-        eprintln!(
-            "{e}: {}{}",
-            String::from_utf8_lossy(&run.stdout),
-            String::from_utf8_lossy(&run.stderr)
-        )
-    });
-    let data = data.ok()?;
-    Some(
-        data.lines()
-            .filter_map(|l| {
-                let v: Vec<f64> = l
-                    .split_whitespace()
-                    .filter_map(|x| x.parse().ok())
-                    .collect();
-                (v.len() == 3).then(|| (v[0], Z(v[1], v[2])))
-            })
-            .collect(),
-    )
+    let control = format!("{analysis}\nwrdata {{out}} vr({node}) vi({node})");
+    let rows = ngspice::run(deck, &control, 3, dir)?;
+    Some(rows.iter().map(|v| (v[0], Z(v[1], v[2]))).collect())
 }
 
 #[test]
 fn agrees_with_ngspice_ac_on_the_rc_and_the_rlc() {
-    if StdCommand::new("ngspice")
-        .arg("--version")
-        .output()
-        .is_err()
-    {
+    if !ngspice::available() {
         println!("skipped: ngspice is not on the PATH");
         return;
     }

@@ -5,9 +5,11 @@
 //! diagnostics.
 
 use std::path::Path;
-use std::process::Command as StdCommand;
 
 use assert_cmd::Command;
+
+#[path = "support/ngspice.rs"]
+mod ngspice;
 use predicates::prelude::*;
 use predicates::str::contains;
 
@@ -259,46 +261,13 @@ fn bad_sweeps_and_probes_are_diagnostics() {
 
 /// ngspice's `.dc` of a deck: the swept value and the current into the source, negated.
 fn ngspice_dc(deck: &str, dir: &Path) -> Option<Vec<(f64, f64)>> {
-    let cir = dir.join("deck.cir");
-    let out = dir.join("dc.out");
-    let text = format!(
-        "{deck}\n.control\nset wr_singlescale\ndc V1 -1 0.8 0.01\nwrdata {} -i(V1)\n.endc\n.end\n",
-        out.display()
-    );
-    std::fs::write(&cir, text).ok()?;
-    let run = StdCommand::new("ngspice")
-        .arg("-b")
-        .arg(&cir)
-        .output()
-        .ok()?;
-    let data = std::fs::read_to_string(&out).map_err(|e| {
-        eprintln!(
-            "{e}: {}{}",
-            String::from_utf8_lossy(&run.stdout),
-            String::from_utf8_lossy(&run.stderr)
-        )
-    });
-    let data = data.ok()?;
-    Some(
-        data.lines()
-            .filter_map(|l| {
-                let v: Vec<f64> = l
-                    .split_whitespace()
-                    .filter_map(|x| x.parse().ok())
-                    .collect();
-                (v.len() == 2).then(|| (v[0], v[1]))
-            })
-            .collect(),
-    )
+    let rows = ngspice::run(deck, "dc V1 -1 0.8 0.01\nwrdata {out} -i(V1)", 2, dir)?;
+    Some(rows.iter().map(|v| (v[0], v[1])).collect())
 }
 
 #[test]
 fn agrees_with_ngspice_dc_on_the_diode_curve() {
-    if StdCommand::new("ngspice")
-        .arg("--version")
-        .output()
-        .is_err()
-    {
+    if !ngspice::available() {
         println!("skipped: ngspice is not on the PATH");
         return;
     }

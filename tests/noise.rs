@@ -6,9 +6,11 @@
 
 use std::f64::consts::TAU;
 use std::path::Path;
-use std::process::Command as StdCommand;
 
 use assert_cmd::Command;
+
+#[path = "support/ngspice.rs"]
+mod ngspice;
 use predicates::str::contains;
 
 const DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/noise");
@@ -449,48 +451,16 @@ fn bad_input_is_diagnosed_with_exit_code_1() {
 
 /// ngspice's `.noise` of a deck: frequency and the output noise density.
 fn ngspice_noise(deck: &str, output: &str, source: &str, dir: &Path) -> Option<Vec<(f64, f64)>> {
-    let cir = dir.join("deck.cir");
-    let out = dir.join("noise.out");
-    let text = format!(
-        "{deck}\n.control\nnoise {output} {source} dec 20 1 1g\nsetplot noise1\n\
-         wrdata {} onoise_spectrum\n.endc\n.end\n",
-        out.display()
+    let control = format!(
+        "noise {output} {source} dec 20 1 1g\nsetplot noise1\nwrdata {{out}} onoise_spectrum"
     );
-    std::fs::write(&cir, text).ok()?;
-    // ngspice exits with 1 after a `.control` run without `.print` lines; the data file
-    // tells whether the analysis ran.
-    let run = StdCommand::new("ngspice")
-        .arg("-b")
-        .arg(&cir)
-        .output()
-        .ok()?;
-    let data = std::fs::read_to_string(&out).map_err(|e| {
-        eprintln!(
-            "{e}: {}{}",
-            String::from_utf8_lossy(&run.stdout),
-            String::from_utf8_lossy(&run.stderr)
-        )
-    });
-    Some(
-        data.ok()?
-            .lines()
-            .filter_map(|l| {
-                let v: Vec<f64> = (l.split_whitespace())
-                    .filter_map(|x| x.parse().ok())
-                    .collect();
-                (v.len() == 2).then(|| (v[0], v[1]))
-            })
-            .collect(),
-    )
+    let rows = ngspice::run(deck, &control, 2, dir)?;
+    Some(rows.iter().map(|v| (v[0], v[1])).collect())
 }
 
 #[test]
 fn agrees_with_ngspice_noise_on_the_rc_and_the_divider() {
-    if StdCommand::new("ngspice")
-        .arg("--version")
-        .output()
-        .is_err()
-    {
+    if !ngspice::available() {
         println!("skipped: ngspice is not on the PATH");
         return;
     }

@@ -19,6 +19,7 @@ use crate::output::atomic::{commit, temp_path};
 use crate::output::csv::{format_number, push_number};
 use crate::output::plot::{Panel, Trace, plot_panels_over};
 
+use super::ac::csv_path;
 use super::compile::{DesignArgs, Prepared, discard_at_exit, prepare};
 use super::error::CliError;
 use super::interrupt::{cancel_on_ctrl_c, remove_on_exit};
@@ -58,17 +59,6 @@ pub struct DcArgs {
     /// every quantity but the spectral sources.
     #[arg(long, value_name = "NAME")]
     pub probe: Vec<String>,
-}
-
-/// Accepts `.csv` paths.
-fn csv_path(text: &str) -> Result<PathBuf, String> {
-    let path = PathBuf::from(text);
-    match path.extension().and_then(|e| e.to_str()) {
-        Some(e) if e.eq_ignore_ascii_case("csv") => Ok(path),
-        _ => Err(format!(
-            "`{text}` has an unknown extension; name the file with .csv"
-        )),
-    }
 }
 
 /// Most points one sweep computes (a typing slip in STEP should not run for hours).

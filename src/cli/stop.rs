@@ -12,10 +12,11 @@ use super::error::{CliError, SourceError};
 use super::load::Loaded;
 use super::time::parse_positive_time;
 
-/// The stop comment of a file: `None` without one, else its time or the diagnostic for a bad
-/// one (pointing at the text after `stop`).
-pub fn stop_comment(sources: &SourceMap, file: FileId) -> Option<Result<f64, SourceError>> {
-    let text = sources.file(file).text.clone();
+/// The `-- vams: KEYWORD value` comments of a file, in order: each value (trimmed) with its
+/// span (keyword matched without regard to case).
+fn keyword_comments(sources: &SourceMap, file: FileId, keyword: &str) -> Vec<(String, Span)> {
+    let text = &sources.file(file).text;
+    let mut out = Vec::new();
     let mut offset = 0;
     for line in text.split_inclusive('\n') {
         let start = offset;
@@ -29,18 +30,29 @@ pub fn stop_comment(sources: &SourceMap, file: FileId) -> Option<Result<f64, Sou
             continue;
         }
         let after_tag = body[5..].trim_start();
-        if after_tag.len() < 4 || !after_tag[..4].eq_ignore_ascii_case("stop") {
-            continue;
+        match after_tag.get(..keyword.len()) {
+            Some(k) if k.eq_ignore_ascii_case(keyword) => {}
+            _ => continue,
         }
-        let value = after_tag[4..].trim();
-        let value_start = start + dashes + 2 + (comment.len() - after_tag[4..].trim_start().len());
-        let span = Span::new(file, value_start, value_start + value.len());
-        return Some(
-            parse_positive_time(value)
-                .map_err(|problem| SourceError::BadStopComment { span, problem }),
-        );
+        let rest = &after_tag[keyword.len()..];
+        let value = rest.trim();
+        let value_start = start + dashes + 2 + (comment.len() - rest.trim_start().len());
+        out.push((
+            value.to_string(),
+            Span::new(file, value_start, value_start + value.len()),
+        ));
     }
-    None
+    out
+}
+
+/// The stop comment of a file: `None` without one, else its time or the diagnostic for a bad
+/// one (pointing at the text after `stop`).
+pub fn stop_comment(sources: &SourceMap, file: FileId) -> Option<Result<f64, SourceError>> {
+    let (value, span) = keyword_comments(sources, file, "stop").into_iter().next()?;
+    Some(
+        parse_positive_time(&value)
+            .map_err(|problem| SourceError::BadStopComment { span, problem }),
+    )
 }
 
 /// The plot panels a file asks for: each `-- vams: panel a, b` comment is one panel of the
@@ -69,44 +81,18 @@ pub fn panel_comments(sources: &SourceMap, file: FileId) -> Vec<Vec<String>> {
 /// The small-signal assertions of a file, `-- vams: assert EXPR`, in order; a bad one is a
 /// diagnostic pointing at its text.
 pub fn assert_comments(sources: &SourceMap, file: FileId) -> Result<Vec<AcAssertion>, SourceError> {
-    let text = sources.file(file).text.clone();
-    let mut out = Vec::new();
-    let mut offset = 0;
-    for line in text.split_inclusive('\n') {
-        let start = offset;
-        offset += line.len();
-        let Some(dashes) = line.find("--") else {
-            continue;
-        };
-        let comment = &line[dashes + 2..];
-        let body = comment.trim_start();
-        if body.len() < 5 || !body[..5].eq_ignore_ascii_case("vams:") {
-            continue;
-        }
-        let after_tag = body[5..].trim_start();
-        let Some(keyword) = after_tag.get(..6) else {
-            continue;
-        };
-        if !keyword.eq_ignore_ascii_case("assert") {
-            continue;
-        }
-        let value = after_tag[6..].trim();
-        let value_start = start + dashes + 2 + (comment.len() - after_tag[6..].trim_start().len());
-        let span = Span::new(file, value_start, value_start + value.len());
-        match AcAssertion::parse(value) {
-            Ok(a) => out.push(a),
-            Err(CliError::AcAssertion { problem, .. }) => {
-                return Err(SourceError::BadAssertComment { span, problem });
-            }
-            Err(e) => {
-                return Err(SourceError::BadAssertComment {
-                    span,
-                    problem: e.to_string(),
-                });
-            }
-        }
-    }
-    Ok(out)
+    keyword_comments(sources, file, "assert")
+        .into_iter()
+        .map(|(value, span)| {
+            AcAssertion::parse(&value).map_err(|e| SourceError::BadAssertComment {
+                span,
+                problem: match e {
+                    CliError::AcAssertion { problem, .. } => problem,
+                    e => e.to_string(),
+                },
+            })
+        })
+        .collect()
 }
 
 /// The user file (library `work`) that declares entity `name`.

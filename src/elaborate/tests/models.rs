@@ -244,7 +244,7 @@ fn tops_are_the_testbenches() {
     let (sources, files) = parse_all(&user);
     assert_eq!(
         find_tops(&crate::analysis::analyse(&sources, &files), &files),
-        ["tb_overvoltage", "tb_tracking"]
+        ["tb_overvoltage", "tb_position_loop", "tb_tracking"]
     );
 }
 
