@@ -328,7 +328,7 @@ pub(super) fn respond(
         .map(|&q| system.linear_output(q, x, xdot).unwrap_or_default())
         .collect();
     let n = model.system.n;
-    let solver = AcSolver::new(model.system.clone()).map_err(failed)?;
+    let mut solver = AcSolver::new(model.system.clone()).map_err(failed)?;
     let mut values = vec![Vec::with_capacity(frequencies.len()); probes.len()];
     let mut rhs = vec![c64::default(); n];
     for &f in &frequencies {
