@@ -17,7 +17,8 @@ use faer::c64;
 use faer::dyn_stack::{MemBuffer, MemStack};
 use thiserror::Error;
 
-use super::linear::{PivotCounts, Sparse};
+use super::linear::sparse::Scalar;
+use super::linear::{PivotCounts, Sparse, inverse_power_of_two};
 use super::{DaeSystem, SolveError};
 
 /// `G` and `C` of a linearised system on its sparsity pattern.
@@ -243,14 +244,10 @@ impl AcSolver {
         // compares rows' entries as they stand.
         self.row_max.fill(0.0);
         for (v, &(row, _)) in self.values.iter().zip(&self.system.pattern) {
-            self.row_max[row] = self.row_max[row].max(v.norm());
+            self.row_max[row] = self.row_max[row].max(v.modulus());
         }
         for (s, &m) in self.row_scale.iter_mut().zip(&self.row_max) {
-            *s = if m > 0.0 && m.is_finite() {
-                2f64.powi(-m.log2().round() as i32)
-            } else {
-                1.0
-            };
+            *s = inverse_power_of_two(m);
         }
         for (v, &(row, _)) in self.values.iter_mut().zip(&self.system.pattern) {
             *v *= self.row_scale[row];
@@ -462,6 +459,42 @@ mod tests {
                 let direct: c64 = (0..3).map(|j| c[j] * x[j]).sum();
                 assert!((direct - z[k]).norm() <= 1e-12 * direct.norm(), "{f} {k}");
             }
+        }
+    }
+
+    #[test]
+    fn a_pivot_that_fades_with_the_frequency_is_searched_again() {
+        // [[1.4, jw], [1, 1]]: at low frequencies row 0 pivots column 0; at high ones its
+        // equilibrated entry there falls to 1.4 / w and row 1 must take over.
+        let sys = SmallSignal {
+            n: 2,
+            pattern: vec![(0, 0), (0, 1), (1, 0), (1, 1)],
+            g: vec![1.4, 0.0, 1.0, 1.0],
+            c: vec![0.0, 1.0, 0.0, 0.0],
+            delays: Vec::new(),
+            sampled: Vec::new(),
+        };
+        let mut solver = AcSolver::new(sys).unwrap();
+        let b = [c64::new(1.0, 0.0), c64::default()];
+        for (k, f) in [1e-3, 2e-3, 1e5, 2e5].into_iter().enumerate() {
+            let x = solver.solve(f, &b).unwrap();
+            let det = c64::new(1.4, -std::f64::consts::TAU * f);
+            let expected = [c64::new(1.0, 0.0) / det, c64::new(-1.0, 0.0) / det];
+            for (x, e) in x.iter().zip(expected) {
+                assert!((x - e).norm() <= 1e-14 * e.norm(), "{f}: {x} against {e}");
+            }
+            let z = solver.solve_transposed(f, &b).unwrap();
+            // A^T z = b: z = [1, -jw] / det.
+            let expected = [
+                c64::new(1.0, 0.0) / det,
+                c64::new(0.0, -std::f64::consts::TAU * f) / det,
+            ];
+            for (z, e) in z.iter().zip(expected) {
+                assert!((z - e).norm() <= 1e-14 * e.norm(), "{f}: {z} against {e}");
+            }
+            // One search at the first frequency and one where the pivot fades; the rest reuse.
+            let searched = if k < 2 { 1 } else { 2 };
+            assert_eq!(solver.pivot_counts().searched, searched, "{f}");
         }
     }
 

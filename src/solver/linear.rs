@@ -300,7 +300,7 @@ impl LinearSolver {
 /// A power of two within a factor of two of `1 / m` for a positive finite `m` (exponent
 /// clamped so that it and its inverse stay normal), 1 for zero: an empty row stays empty and
 /// is reported as such.
-fn inverse_power_of_two(m: f64) -> f64 {
+pub(super) fn inverse_power_of_two(m: f64) -> f64 {
     if m == 0.0 || !m.is_finite() {
         return 1.0;
     }

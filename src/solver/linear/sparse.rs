@@ -42,7 +42,9 @@ pub(in crate::solver) trait Scalar:
 {
     const ZERO: Self;
     const ONE: Self;
-    /// `|x|`, the magnitude pivots are compared by (NaN for NaN).
+    /// The magnitude pivots are compared by (NaN for NaN): `|x|` for a real, `|re| + |im|` for
+    /// a complex number, within a factor of `sqrt 2` of `|x|` and without `hypot`, which took a
+    /// seventh of a sweep's time. A threshold test needs no more than that.
     fn modulus(self) -> f64;
 }
 
@@ -58,7 +60,7 @@ impl Scalar for c64 {
     const ZERO: Self = c64::new(0.0, 0.0);
     const ONE: Self = c64::new(1.0, 0.0);
     fn modulus(self) -> f64 {
-        self.norm()
+        self.re.abs() + self.im.abs()
     }
 }
 
