@@ -23,7 +23,7 @@ use faer::sparse::linalg::{LuError, SupernodalThreshold};
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
 use faer::traits::ComplexField;
 use faer::{c64, dyn_stack::StackReq};
-use std::ops::{Add, Div, Mul, Sub};
+use std::ops::{Add, AddAssign, Div, Mul, Sub, SubAssign};
 
 use super::dense::{PIVOT_THRESHOLD, PivotCounts};
 use super::singular;
@@ -39,6 +39,8 @@ pub(in crate::solver) trait Scalar:
     + Sub<Output = Self>
     + Mul<Output = Self>
     + Div<Output = Self>
+    + AddAssign
+    + SubAssign
 {
     const ZERO: Self;
     const ONE: Self;
@@ -188,11 +190,11 @@ impl<T: Scalar> Sparse<T> {
     ) {
         self.values.fill(T::ZERO);
         for (&k, &v) in self.slot.iter().zip(values) {
-            self.values[k] = self.values[k] + v;
+            self.values[k] += v;
         }
         if let Some(diag) = diag {
             for (&k, &d) in self.diag_slot.iter().zip(diag) {
-                self.values[k] = self.values[k] + d;
+                self.values[k] += d;
             }
         }
         for (c, cm) in col_max.iter_mut().enumerate() {
@@ -352,7 +354,7 @@ impl<T: Scalar> Sparse<T> {
                 if ukj != T::ZERO {
                     for q in f.l_ptr[k]..f.l_ptr[k + 1] {
                         let i = f.l_idx[q];
-                        work[i] = work[i] - f.l_val[q] * ukj;
+                        work[i] -= f.l_val[q] * ukj;
                     }
                 }
             }
@@ -396,7 +398,7 @@ impl<T: Scalar> Sparse<T> {
             if yj != T::ZERO {
                 for q in f.l_ptr[j]..f.l_ptr[j + 1] {
                     let i = f.l_idx[q];
-                    y[i] = y[i] - f.l_val[q] * yj;
+                    y[i] -= f.l_val[q] * yj;
                 }
             }
         }
@@ -407,7 +409,7 @@ impl<T: Scalar> Sparse<T> {
             if yj != T::ZERO {
                 for p in f.u_ptr[j]..f.u_ptr[j + 1] {
                     let i = f.u_idx[p];
-                    y[i] = y[i] - f.u_val[p] * yj;
+                    y[i] -= f.u_val[p] * yj;
                 }
             }
         }
@@ -425,14 +427,14 @@ impl<T: Scalar> Sparse<T> {
         for j in 0..y.len() {
             let mut s = y[j];
             for p in f.u_ptr[j]..f.u_ptr[j + 1] {
-                s = s - f.u_val[p] * y[f.u_idx[p]];
+                s -= f.u_val[p] * y[f.u_idx[p]];
             }
             y[j] = s * f.inv_diag[j];
         }
         for j in (0..y.len()).rev() {
             let mut s = y[j];
             for q in f.l_ptr[j]..f.l_ptr[j + 1] {
-                s = s - f.l_val[q] * y[f.l_idx[q]];
+                s -= f.l_val[q] * y[f.l_idx[q]];
             }
             y[j] = s;
         }
