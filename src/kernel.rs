@@ -250,9 +250,24 @@ pub fn operating_point(
     design: &Design,
     options: &SimOptions,
 ) -> Result<Vec<(String, f64)>, SimError> {
+    operating_point_and_system(design, options).map(|(point, _)| point)
+}
+
+/// A quiescent point by name and the analog system it was found on (see
+/// [`operating_point_and_system`]).
+pub type PointAndSystem = (Vec<(String, f64)>, Option<AnalogSystem>);
+
+/// [`operating_point`] and the analog system it was found on (`None` without quantities), for
+/// a caller that linearises the design next: building the system again would cost about as
+/// much as finding the point.
+pub fn operating_point_and_system(
+    design: &Design,
+    options: &SimOptions,
+) -> Result<PointAndSystem, SimError> {
     let analog = analog_system(design, options)?;
     let mut sim = Simulation::start(design, options, analog, &mut |_| {})?;
-    Ok(sim.operating_point())
+    let point = sim.operating_point();
+    Ok((point, sim.into_analog()))
 }
 
 /// The quantities a run needs each accepted step: those recorded and those processes read.

@@ -14,7 +14,7 @@ use miette::Report;
 
 use crate::analog::{AnalogOptions, AnalogSystem, SmallSignalModel};
 use crate::design::{Design, QuantityId, SignalId, SignalKind};
-use crate::kernel::{SimOptions, operating_point};
+use crate::kernel::{SimOptions, operating_point_and_system};
 use crate::output::atomic::write_atomically;
 use crate::output::bode::{BodeTrace, plot_bode};
 use crate::output::csv::push_number;
@@ -254,10 +254,11 @@ pub(super) fn linearise_quietly(
     let top = || design.top.clone();
     // The quiescent point exactly as `vams op` finds it (processes to their first wait,
     // breaks, `domain = quiescent_domain`), on the reduced system the kernel builds.
-    let point = operating_point(design, &SimOptions::default()).map_err(|e| NotLinearised {
-        diagnostics: render_sim_error(&e, sources),
-        error: CliError::Simulation { top: top() },
-    })?;
+    let (point, kernel_system) = operating_point_and_system(design, &SimOptions::default())
+        .map_err(|e| NotLinearised {
+            diagnostics: render_sim_error(&e, sources),
+            error: CliError::Simulation { top: top() },
+        })?;
     let nq = design.quantities.len();
     let quantity_values: Vec<f64> = point.iter().take(nq).map(|(_, v)| *v).collect();
     let explicit = (design.signals.iter().enumerate())
@@ -276,13 +277,18 @@ pub(super) fn linearise_quietly(
     let all = |errors: &[crate::analog::AnalogError]| -> String {
         errors.iter().map(|e| render_located(e, sources)).collect()
     };
-    let mut system =
-        AnalogSystem::with_options(design, &options).map_err(|errors| NotLinearised {
+    // The kernel's system is the reduced one (default options): reused when that is the one
+    // wanted, since building it costs about as much as the quiescent point. Its explicit
+    // signals are set from the point below, as a new system's would be.
+    let mut system = match kernel_system {
+        Some(system) if options.eliminate => system,
+        _ => AnalogSystem::with_options(design, &options).map_err(|errors| NotLinearised {
             diagnostics: all(&errors),
             error: CliError::Analog {
                 count: errors.len(),
             },
-        })?;
+        })?,
+    };
     let (x, xdot) = system
         .point_from_quantities(&quantity_values, &signal_values)
         .map_err(|e| NotLinearised {
@@ -328,7 +334,7 @@ pub(super) fn respond(
         .map(|&q| system.linear_output(q, x, xdot).unwrap_or_default())
         .collect();
     let n = model.system.n;
-    let solver = AcSolver::new(model.system.clone()).map_err(failed)?;
+    let mut solver = AcSolver::new(model.system.clone()).map_err(failed)?;
     let mut values = vec![Vec::with_capacity(frequencies.len()); probes.len()];
     let mut rhs = vec![c64::default(); n];
     for &f in &frequencies {

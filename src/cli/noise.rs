@@ -126,7 +126,7 @@ fn analyse(
         .map(|(row, coefficient)| Injection { row, coefficient })
         .into_iter()
         .collect();
-    let solver = AcSolver::new(model.system.clone()).map_err(|e| solve_error(e.to_string()))?;
+    let mut solver = AcSolver::new(model.system.clone()).map_err(|e| solve_error(e.to_string()))?;
     let mut table = NoiseTable {
         contributions: Vec::with_capacity(frequencies.len()),
         total: Vec::with_capacity(frequencies.len()),
@@ -138,7 +138,7 @@ fn analyse(
             eprint!("{}", render_located(&e, sources));
             CliError::NoiseDensity { top: top() }
         })?;
-        let point = noise_at(&solver, f, &output, &injections, &densities, &extra)
+        let point = noise_at(&mut solver, f, &output, &injections, &densities, &extra)
             .map_err(|e| solve_error(e.to_string()))?;
         if let (Some(gains), Some(&g)) = (&mut table.input_gain, point.gains.first()) {
             gains.push(g);

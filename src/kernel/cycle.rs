@@ -375,6 +375,11 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         uncovered
     }
 
+    /// The analog system, for a caller done with the simulation.
+    pub fn into_analog(self) -> Option<A> {
+        self.analog.map(|a| a.sys)
+    }
+
     /// The quiescent point by name: every quantity, then every explicit signal.
     pub fn operating_point(&mut self) -> Vec<(String, f64)> {
         let mut values = self.values.clone();

@@ -1,5 +1,6 @@
 //! Small-signal (AC) analysis: a DAE `F(x', x, t) = 0` linearised about a point, then
-//! `(G + jw C) X = B` solved at each frequency with faer's complex sparse LU.
+//! `(G + jw C) X = B` solved at each frequency with a complex sparse LU (faer's pivot search,
+//! then refactorisations with its pivots).
 //!
 //! `G = dF/dx` and `C = dF/dx'` come from [`DaeSystem::jacobian_parts`] at the point, with
 //! every column read as `x` and then every column read as `x'`: two evaluations of the
@@ -13,11 +14,12 @@
 //! the right side.
 
 use faer::c64;
-use faer::sparse::linalg::solvers::{Lu, SymbolicLu};
-use faer::sparse::{Argsort, Pair, SparseColMat, SymbolicSparseColMat};
+use faer::dyn_stack::{MemBuffer, MemStack};
 use thiserror::Error;
 
-use super::DaeSystem;
+use super::linear::sparse::Scalar;
+use super::linear::{PivotCounts, Sparse, inverse_power_of_two};
+use super::{DaeSystem, SolveError};
 
 /// `G` and `C` of a linearised system on its sparsity pattern.
 #[derive(Clone, Debug, PartialEq)]
@@ -126,16 +128,21 @@ impl SmallSignal {
 
     /// The value of `G + jw C` (delays applied) at each pattern entry.
     pub fn matrix_values(&self, omega: f64) -> Vec<c64> {
-        let mut values: Vec<c64> = (self.g.iter().zip(&self.c))
-            .map(|(&g, &c)| c64::new(g, omega * c))
-            .collect();
+        let mut values = Vec::with_capacity(self.pattern.len());
+        self.matrix_values_into(omega, &mut values);
+        values
+    }
+
+    /// [`SmallSignal::matrix_values`] into `values`, whose capacity is kept.
+    pub fn matrix_values_into(&self, omega: f64, values: &mut Vec<c64>) {
+        values.clear();
+        values.extend((self.g.iter().zip(&self.c)).map(|(&g, &c)| c64::new(g, omega * c)));
         for &(k, delay) in &self.delays {
             values[k] *= c64::from_polar(1.0, -omega * delay);
         }
         for term in &self.sampled {
             values[term.entry] += term.transfer.at(omega) * term.coefficient;
         }
-        values
     }
 }
 
@@ -152,28 +159,45 @@ pub enum AcSolveError {
 
 /// Solves `(G + jw C) X = B` frequency after frequency on one symbolic factorisation (the
 /// pattern and its fill-reducing order do not change with the frequency).
+///
+/// The first frequency is factored with faer's pivot search; the next ones refactor with its
+/// pivots (the sparse LU of `solver::linear`, generic over the scalar), which skips the search
+/// and the pattern's depth-first walks. The matrix moves with the frequency far more than a
+/// Newton matrix moves between iterations (`G` rules at low frequencies, `C` at high ones), so
+/// the threshold test matters: a pivot that falls below it sends that frequency back to the
+/// search, whose pivots then serve the frequencies after it. Buffers are kept, so the steady
+/// state allocates only the returned solution.
 pub struct AcSolver {
     system: SmallSignal,
-    symbolic_matrix: SymbolicSparseColMat<usize>,
-    argsort: Argsort<usize>,
-    symbolic_lu: SymbolicLu<usize>,
+    lu: Sparse<c64>,
+    mem: MemBuffer,
+    /// `G + jw C` at the current frequency, rows equilibrated (pattern order).
+    values: Vec<c64>,
+    row_max: Vec<f64>,
+    col_max: Vec<f64>,
+    row_scale: Vec<f64>,
 }
 
 impl AcSolver {
     pub fn new(system: SmallSignal) -> Result<AcSolver, AcSolveError> {
-        let indices: Vec<Pair<usize, usize>> = (system.pattern.iter())
-            .map(|&(row, col)| Pair::new(row, col))
-            .collect();
-        let (symbolic_matrix, argsort) =
-            SymbolicSparseColMat::try_new_from_indices(system.n, system.n, &indices)
-                .map_err(|e| AcSolveError::Solver(format!("{e:?}")))?;
-        let symbolic_lu = SymbolicLu::try_new(symbolic_matrix.as_ref())
-            .map_err(|e| AcSolveError::Solver(format!("{e:?}")))?;
+        let n = system.n;
+        if let Some(&(r, c)) = system.pattern.iter().find(|&&(r, c)| r >= n || c >= n) {
+            return Err(AcSolveError::Solver(format!(
+                "pattern entry ({r}, {c}) out of range of {n} unknowns"
+            )));
+        }
+        let lu =
+            Sparse::new(n, &system.pattern).map_err(|e| AcSolveError::Solver(e.to_string()))?;
+        let mem = MemBuffer::try_new(Sparse::<c64>::scratch(n))
+            .map_err(|_| AcSolveError::Solver("out of memory for the LU's scratch".into()))?;
         Ok(AcSolver {
+            values: Vec::with_capacity(system.pattern.len()),
+            row_max: vec![0.0; n],
+            col_max: vec![0.0; n],
+            row_scale: vec![1.0; n],
             system,
-            symbolic_matrix,
-            argsort,
-            symbolic_lu,
+            lu,
+            mem,
         })
     }
 
@@ -181,8 +205,13 @@ impl AcSolver {
         &self.system
     }
 
+    /// How often the frequencies searched for pivots and how often they reused the last ones.
+    pub fn pivot_counts(&self) -> PivotCounts {
+        self.lu.counts
+    }
+
     /// `X` at `frequency` (hertz) for the right side `rhs`: `(G + jw C) X = rhs`.
-    pub fn solve(&self, frequency: f64, rhs: &[c64]) -> Result<Vec<c64>, AcSolveError> {
+    pub fn solve(&mut self, frequency: f64, rhs: &[c64]) -> Result<Vec<c64>, AcSolveError> {
         self.solve_with(frequency, rhs, false)
     }
 
@@ -190,12 +219,16 @@ impl AcSolver {
     /// the adjoint system. For an output `y = c^T X`, the solution of `A^T z = c` gives the
     /// transfer from every right side at once, `y = z^T B`, so a noise analysis needs one
     /// solve per frequency however many sources it has (as SPICE's `.noise` does).
-    pub fn solve_transposed(&self, frequency: f64, rhs: &[c64]) -> Result<Vec<c64>, AcSolveError> {
+    pub fn solve_transposed(
+        &mut self,
+        frequency: f64,
+        rhs: &[c64],
+    ) -> Result<Vec<c64>, AcSolveError> {
         self.solve_with(frequency, rhs, true)
     }
 
     fn solve_with(
-        &self,
+        &mut self,
         frequency: f64,
         rhs: &[c64],
         transposed: bool,
@@ -205,45 +238,53 @@ impl AcSolver {
             return Ok(Vec::new());
         }
         let omega = std::f64::consts::TAU * frequency;
-        let mut values = self.system.matrix_values(omega);
+        self.system.matrix_values_into(omega, &mut self.values);
         // Rows equilibrated to a largest entry of 1 (a power of two, so exactly): a force
         // balance beside a displacement definition spans many decades, and partial pivoting
         // compares rows' entries as they stand.
-        let mut row_max = vec![0.0_f64; n];
-        for (v, &(row, _)) in values.iter().zip(&self.system.pattern) {
-            row_max[row] = row_max[row].max(v.norm());
+        self.row_max.fill(0.0);
+        for (v, &(row, _)) in self.values.iter().zip(&self.system.pattern) {
+            self.row_max[row] = self.row_max[row].max(v.modulus());
         }
-        let row_scale: Vec<f64> = (row_max.iter())
-            .map(|&m| {
-                if m > 0.0 && m.is_finite() {
-                    2f64.powi(-m.log2().round() as i32)
-                } else {
-                    1.0
-                }
-            })
-            .collect();
-        for (v, &(row, _)) in values.iter_mut().zip(&self.system.pattern) {
-            *v *= row_scale[row];
+        for (s, &m) in self.row_scale.iter_mut().zip(&self.row_max) {
+            *s = inverse_power_of_two(m);
         }
-        let matrix =
-            SparseColMat::new_from_argsort(self.symbolic_matrix.clone(), &self.argsort, &values)
-                .map_err(|e| AcSolveError::Solver(format!("{e:?}")))?;
-        let lu = Lu::try_new_with_symbolic(self.symbolic_lu.clone(), matrix.as_ref())
-            .map_err(|_| AcSolveError::Singular { frequency })?;
-        use faer::linalg::solvers::SolveCore;
+        for (v, &(row, _)) in self.values.iter_mut().zip(&self.system.pattern) {
+            *v *= self.row_scale[row];
+        }
+        self.row_max.fill(0.0);
+        self.col_max.fill(0.0);
+        self.lu
+            .assemble(&self.values, None, &mut self.row_max, &mut self.col_max);
+        // A pivot tolerance of 0: only an exactly vanished (or undefined) pivot is singular, as
+        // with faer's own LU; a tiny one shows in the solution.
+        match self
+            .lu
+            .factor(MemStack::new(&mut self.mem), 0.0, &self.col_max)
+        {
+            Ok(()) => {}
+            Err(SolveError::InvalidSystem { reason, .. }) => {
+                return Err(AcSolveError::Solver(reason.to_string()));
+            }
+            Err(_) => return Err(AcSolveError::Singular { frequency }),
+        }
         // The factors are of `D A` (`D` the row scales). `D A X = D b` for `X`; for the
         // adjoint, `(D A)^T W = A^T D W = c`, so `Z = D W`.
         let x: Vec<c64> = if transposed {
-            let mut w =
-                faer::Mat::<c64>::from_fn(n, 1, |i, _| rhs.get(i).copied().unwrap_or_default());
-            lu.solve_transpose_in_place_with_conj(faer::Conj::No, w.as_mut());
-            (0..n).map(|i| w[(i, 0)] * row_scale[i]).collect()
+            let mut w: Vec<c64> = (0..n)
+                .map(|i| rhs.get(i).copied().unwrap_or_default())
+                .collect();
+            self.lu.solve_transposed(&mut w);
+            for (w, &s) in w.iter_mut().zip(&self.row_scale) {
+                *w *= s;
+            }
+            w
         } else {
-            let mut x = faer::Mat::<c64>::from_fn(n, 1, |i, _| {
-                rhs.get(i).copied().unwrap_or_default() * row_scale[i]
-            });
-            lu.solve_in_place_with_conj(faer::Conj::No, x.as_mut());
-            (0..n).map(|i| x[(i, 0)]).collect()
+            let mut x: Vec<c64> = (0..n)
+                .map(|i| rhs.get(i).copied().unwrap_or_default() * self.row_scale[i])
+                .collect();
+            self.lu.solve(&mut x);
+            x
         };
         // A vanished pivot shows as an infinite or undefined solution.
         if x.iter().any(|v| !(v.re.is_finite() && v.im.is_finite())) {
@@ -373,7 +414,7 @@ mod tests {
     #[test]
     fn rc_low_pass_matches_its_closed_form() {
         let (r, c) = (1e3, 1e-7);
-        let solver = AcSolver::new(rc(r, c)).unwrap();
+        let mut solver = AcSolver::new(rc(r, c)).unwrap();
         for f in [1.0, 100.0, 1591.5494309189535, 1e5] {
             let x = solver
                 .solve(f, &[c64::new(1.0, 0.0), c64::new(0.0, 0.0)])
@@ -403,7 +444,7 @@ mod tests {
                 transfer: SampledTransfer::Hold { period: 1e-4 },
             }],
         };
-        let solver = AcSolver::new(sys).unwrap();
+        let mut solver = AcSolver::new(sys).unwrap();
         let c = [
             c64::new(0.5, 0.0),
             c64::new(-1.0, 2.0),
@@ -422,6 +463,42 @@ mod tests {
     }
 
     #[test]
+    fn a_pivot_that_fades_with_the_frequency_is_searched_again() {
+        // [[1.4, jw], [1, 1]]: at low frequencies row 0 pivots column 0; at high ones its
+        // equilibrated entry there falls to 1.4 / w and row 1 must take over.
+        let sys = SmallSignal {
+            n: 2,
+            pattern: vec![(0, 0), (0, 1), (1, 0), (1, 1)],
+            g: vec![1.4, 0.0, 1.0, 1.0],
+            c: vec![0.0, 1.0, 0.0, 0.0],
+            delays: Vec::new(),
+            sampled: Vec::new(),
+        };
+        let mut solver = AcSolver::new(sys).unwrap();
+        let b = [c64::new(1.0, 0.0), c64::default()];
+        for (k, f) in [1e-3, 2e-3, 1e5, 2e5].into_iter().enumerate() {
+            let x = solver.solve(f, &b).unwrap();
+            let det = c64::new(1.4, -std::f64::consts::TAU * f);
+            let expected = [c64::new(1.0, 0.0) / det, c64::new(-1.0, 0.0) / det];
+            for (x, e) in x.iter().zip(expected) {
+                assert!((x - e).norm() <= 1e-14 * e.norm(), "{f}: {x} against {e}");
+            }
+            let z = solver.solve_transposed(f, &b).unwrap();
+            // A^T z = b: z = [1, -jw] / det.
+            let expected = [
+                c64::new(1.0, 0.0) / det,
+                c64::new(0.0, -std::f64::consts::TAU * f) / det,
+            ];
+            for (z, e) in z.iter().zip(expected) {
+                assert!((z - e).norm() <= 1e-14 * e.norm(), "{f}: {z} against {e}");
+            }
+            // One search at the first frequency and one where the pivot fades; the rest reuse.
+            let searched = if k < 2 { 1 } else { 2 };
+            assert_eq!(solver.pivot_counts().searched, searched, "{f}");
+        }
+    }
+
+    #[test]
     fn a_delay_turns_the_phase() {
         let mut sys = SmallSignal {
             n: 2,
@@ -431,7 +508,7 @@ mod tests {
             delays: vec![(1, 1e-3)],
             sampled: Vec::new(),
         };
-        let solver = AcSolver::new(sys.clone()).unwrap();
+        let mut solver = AcSolver::new(sys.clone()).unwrap();
         let x = solver
             .solve(125.0, &[c64::new(1.0, 0.0), c64::default()])
             .unwrap();

@@ -13,15 +13,14 @@
 //! a different pivot sequence produces more fill).
 
 use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
-use faer::sparse::linalg::lu::simplicial;
 
 use super::SolveError;
 use dense::Dense;
 pub use dense::PivotCounts;
-use sparse::Sparse;
+pub(super) use sparse::Sparse;
 
 mod dense;
-mod sparse;
+pub(super) mod sparse;
 
 /// Crossover between the dense and the sparse path: systems with at most this many unknowns
 /// are factored densely.
@@ -84,7 +83,7 @@ pub struct LinearSolver {
 
 enum Backend {
     Dense(Box<Dense>),
-    Sparse(Box<Sparse>),
+    Sparse(Box<Sparse<f64>>),
 }
 
 impl LinearSolver {
@@ -108,7 +107,7 @@ impl LinearSolver {
             )
         } else {
             let sparse = Sparse::new(n, pattern)?;
-            let req = simplicial::factorize_simplicial_numeric_lu_scratch::<usize, f64>(n, n);
+            let req = Sparse::<f64>::scratch(n);
             (Backend::Sparse(Box::new(sparse)), req)
         };
         let mem = MemBuffer::try_new(req).map_err(|_| SolveError::InvalidSystem {
@@ -301,7 +300,7 @@ impl LinearSolver {
 /// A power of two within a factor of two of `1 / m` for a positive finite `m` (exponent
 /// clamped so that it and its inverse stay normal), 1 for zero: an empty row stays empty and
 /// is reported as such.
-fn inverse_power_of_two(m: f64) -> f64 {
+pub(super) fn inverse_power_of_two(m: f64) -> f64 {
     if m == 0.0 || !m.is_finite() {
         return 1.0;
     }

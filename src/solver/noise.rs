@@ -49,7 +49,7 @@ fn output_vector(n: usize, output: &[(usize, f64, f64)], omega: f64) -> Vec<c64>
 /// sources' injections and their PSDs (same order), and `extra` injections whose transfers
 /// to the output are wanted too.
 pub fn noise_at(
-    solver: &AcSolver,
+    solver: &mut AcSolver,
     frequency: f64,
     output: &[(usize, f64, f64)],
     sources: &[Injection],
@@ -102,14 +102,14 @@ mod tests {
     #[test]
     fn thermal_noise_of_an_rc_follows_its_transfer() {
         let (r, c) = (1e3, 1e-9);
-        let solver = noisy_rc(r, c);
+        let mut solver = noisy_rc(r, c);
         let psd = 4.0 * 1.380649e-23 * 300.0 * r;
         let source = [Injection {
             row: 0,
             coefficient: 1.0,
         }];
         for f in [1.0, 1.591549e5, 1e8] {
-            let p = noise_at(&solver, f, &[(1, 1.0, 0.0)], &source, &[psd], &source).unwrap();
+            let p = noise_at(&mut solver, f, &[(1, 1.0, 0.0)], &source, &[psd], &source).unwrap();
             let wrc = std::f64::consts::TAU * f * r * c;
             let exact = psd / (1.0 + wrc * wrc);
             assert!((p.total / exact - 1.0).abs() < 1e-12, "{f}: {}", p.total);
@@ -122,13 +122,13 @@ mod tests {
     fn an_output_through_its_derivative_reads_jw() {
         // The output `c v'` (the capacitor's current): |H| = w c / |1 + jwrc|.
         let (r, c) = (1e3, 1e-9);
-        let solver = noisy_rc(r, c);
+        let mut solver = noisy_rc(r, c);
         let source = [Injection {
             row: 0,
             coefficient: -2.0,
         }];
         let f = 1e5;
-        let p = noise_at(&solver, f, &[(1, 0.0, c)], &source, &[1.0], &[]).unwrap();
+        let p = noise_at(&mut solver, f, &[(1, 0.0, c)], &source, &[1.0], &[]).unwrap();
         let w = std::f64::consts::TAU * f;
         let wrc = w * r * c;
         let exact = 4.0 * (w * c).powi(2) / (1.0 + wrc * wrc);
@@ -140,7 +140,7 @@ mod tests {
         // The RC's output noise over 0..inf is kT/C; a dense log grid far past the corner
         // gets it to the rule's error.
         let (r, c, kt) = (1e3, 1e-9, 1.380649e-23 * 300.0);
-        let solver = noisy_rc(r, c);
+        let mut solver = noisy_rc(r, c);
         let source = [Injection {
             row: 0,
             coefficient: 1.0,
@@ -148,9 +148,16 @@ mod tests {
         let grid = frequencies(1e-2, 1e12, Spacing::PerDecade(200));
         let psd: Vec<f64> = (grid.iter())
             .map(|&f| {
-                noise_at(&solver, f, &[(1, 1.0, 0.0)], &source, &[4.0 * kt * r], &[])
-                    .unwrap()
-                    .total
+                noise_at(
+                    &mut solver,
+                    f,
+                    &[(1, 1.0, 0.0)],
+                    &source,
+                    &[4.0 * kt * r],
+                    &[],
+                )
+                .unwrap()
+                .total
             })
             .collect();
         let total = integrate(&grid, &psd);

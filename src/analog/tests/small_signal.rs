@@ -37,7 +37,7 @@ fn response(
     for (row, m, p) in model.excitation(frequency) {
         rhs[row] += c64::from_polar(m, p);
     }
-    let solver = AcSolver::new(model.system.clone()).expect("a solver");
+    let mut solver = AcSolver::new(model.system.clone()).expect("a solver");
     (solver.solve(frequency, &rhs).expect("a solution"), sys)
 }
 
@@ -149,7 +149,7 @@ fn a_sample_and_hold_is_its_transfer_from_its_input() {
         .expect("a point");
     let mut model = sys.small_signal(&d, &x, &xdot).expect("a model");
     assert_eq!(model.system.sampled.len(), 1, "one transfer term");
-    let solver = AcSolver::new(model.system.clone()).expect("a solver");
+    let mut solver = AcSolver::new(model.system.clone()).expect("a solver");
     let mut rhs = vec![c64::default(); model.system.n];
     for (row, m, p) in model.excitation(250.0) {
         rhs[row] += c64::from_polar(m, p);
@@ -238,8 +238,9 @@ fn a_noise_source_enters_at_its_row_with_a_density_that_reads_frequency() {
     let output = sys
         .linear_output(y, &x, &xdot)
         .expect("y has an expression");
-    let solver = AcSolver::new(model.system.clone()).expect("a solver");
-    let point = noise_at(&solver, 100.0, &output, &injections, &densities, &[]).expect("solved");
+    let mut solver = AcSolver::new(model.system.clone()).expect("a solver");
+    let point =
+        noise_at(&mut solver, 100.0, &output, &injections, &densities, &[]).expect("solved");
     assert!(
         (point.total / densities[0] - 1.0).abs() < 1e-14,
         "{point:?}"

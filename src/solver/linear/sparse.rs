@@ -11,6 +11,9 @@
 //! the pivot tested against the threshold (as the dense path's [`PIVOT_THRESHOLD`]), and the
 //! column of L scaled. A pivot that no longer holds sends the factorisation back to faer. The
 //! triangular solves run on the same arrays.
+//!
+//! Generic over the scalar ([`Scalar`]): `f64` for the Newton matrices, faer's `c64` for the
+//! small-signal matrices `G + jwC` of `solver::ac`, refactored frequency after frequency.
 
 use faer::dyn_stack::MemStack;
 use faer::sparse::linalg::lu::{
@@ -18,15 +21,54 @@ use faer::sparse::linalg::lu::{
 };
 use faer::sparse::linalg::{LuError, SupernodalThreshold};
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
+use faer::traits::ComplexField;
+use faer::{c64, dyn_stack::StackReq};
+use std::ops::{Add, AddAssign, Div, Mul, Sub, SubAssign};
 
 use super::dense::{PIVOT_THRESHOLD, PivotCounts};
 use super::singular;
 use crate::solver::SolveError;
 
+/// A scalar the sparse LU factors: what faer's numeric LU needs, plus arithmetic by value and a
+/// magnitude for the pivot tests.
+pub(in crate::solver) trait Scalar:
+    ComplexField
+    + Copy
+    + PartialEq
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + AddAssign
+    + SubAssign
+{
+    const ZERO: Self;
+    const ONE: Self;
+    /// The magnitude pivots are compared by (NaN for NaN): `|x|` for a real, `|re| + |im|` for
+    /// a complex number, within a factor of `sqrt 2` of `|x|` and without `hypot`, which took a
+    /// seventh of a sweep's time. A threshold test needs no more than that.
+    fn modulus(self) -> f64;
+}
+
+impl Scalar for f64 {
+    const ZERO: Self = 0.0;
+    const ONE: Self = 1.0;
+    fn modulus(self) -> f64 {
+        self.abs()
+    }
+}
+
+impl Scalar for c64 {
+    const ZERO: Self = c64::new(0.0, 0.0);
+    const ONE: Self = c64::new(1.0, 0.0);
+    fn modulus(self) -> f64 {
+        self.re.abs() + self.im.abs()
+    }
+}
+
 /// The factors of the last factorisation in pivot order (`P A Q = L U`), with the patterns a
 /// refactorisation reuses. Row indices of L and U are positions in pivot order.
-#[derive(Default)]
-struct Factors {
+struct Factors<T> {
     /// Column of A eliminated at step `j`.
     col: Vec<usize>,
     /// Row of A at position `i`, and the position of each row of A.
@@ -35,38 +77,47 @@ struct Factors {
     /// L without its unit diagonal, by columns.
     l_ptr: Vec<usize>,
     l_idx: Vec<usize>,
-    l_val: Vec<f64>,
+    l_val: Vec<T>,
     /// U without its diagonal, by columns, rows ascending (the order a left-looking column
     /// applies them in).
     u_ptr: Vec<usize>,
     u_idx: Vec<usize>,
-    u_val: Vec<f64>,
+    u_val: Vec<T>,
     /// `1 / U[j][j]`.
-    inv_diag: Vec<f64>,
+    inv_diag: Vec<T>,
     /// Dense scratch, all zero between calls.
-    work: Vec<f64>,
+    work: Vec<T>,
 }
 
-pub(super) struct Sparse {
+/// A sparse LU for one pattern: values assembled into CSC storage, factored with faer's pivot
+/// search or with the last pivots, solved (also transposed) in place.
+pub(in crate::solver) struct Sparse<T: Scalar> {
     col_ptr: Vec<usize>,
     row_idx: Vec<usize>,
-    values: Vec<f64>,
+    values: Vec<T>,
     /// CSC slot of each pattern entry, in pattern order.
     slot: Vec<usize>,
     /// CSC slot of each diagonal entry (the structure always holds the diagonal, for gmin).
     diag_slot: Vec<usize>,
     symbolic: SymbolicLu<usize>,
-    lu: SimplicialLu<usize, f64>,
+    lu: SimplicialLu<usize, T>,
     row_perm: Vec<usize>,
     row_perm_inv: Vec<usize>,
-    factors: Factors,
+    factors: Factors<T>,
     /// Whether `factors` holds a factorisation whose pivots a refactorisation may reuse.
     reusable: bool,
-    pub(super) counts: PivotCounts,
+    pub(in crate::solver) counts: PivotCounts,
 }
 
-impl Sparse {
-    pub(super) fn new(n: usize, pattern: &[(usize, usize)]) -> Result<Self, SolveError> {
+impl<T: Scalar> Sparse<T> {
+    /// Scratch space faer's numeric LU needs at `n` unknowns.
+    pub(in crate::solver) fn scratch(n: usize) -> StackReq {
+        simplicial::factorize_simplicial_numeric_lu_scratch::<usize, T>(n, n)
+    }
+
+    /// The structure of `pattern` plus the diagonal (duplicates summed) and its fill-reducing
+    /// column order.
+    pub(in crate::solver) fn new(n: usize, pattern: &[(usize, usize)]) -> Result<Self, SolveError> {
         // Column-major order of the distinct entries of pattern + diagonal.
         let mut entries: Vec<(usize, usize)> = pattern
             .iter()
@@ -101,7 +152,7 @@ impl Sparse {
                 index: n,
             })?;
         Ok(Self {
-            values: vec![0.0; row_idx.len()],
+            values: vec![T::ZERO; row_idx.len()],
             col_ptr,
             row_idx,
             slot,
@@ -111,22 +162,33 @@ impl Sparse {
             row_perm: vec![0; n],
             row_perm_inv: vec![0; n],
             factors: Factors {
-                work: vec![0.0; n],
-                ..Factors::default()
+                col: Vec::new(),
+                row_of: Vec::new(),
+                row_pos: Vec::new(),
+                l_ptr: Vec::new(),
+                l_idx: Vec::new(),
+                l_val: Vec::new(),
+                u_ptr: Vec::new(),
+                u_idx: Vec::new(),
+                u_val: Vec::new(),
+                inv_diag: Vec::new(),
+                work: vec![T::ZERO; n],
             },
             reusable: false,
             counts: PivotCounts::default(),
         })
     }
 
-    pub(super) fn assemble(
+    /// Sums `values` (pattern order) and `diag` into the CSC storage, raising `row_max` and
+    /// `col_max` to the magnitudes of the summed entries.
+    pub(in crate::solver) fn assemble(
         &mut self,
-        values: &[f64],
-        diag: Option<&[f64]>,
+        values: &[T],
+        diag: Option<&[T]>,
         row_max: &mut [f64],
         col_max: &mut [f64],
     ) {
-        self.values.fill(0.0);
+        self.values.fill(T::ZERO);
         for (&k, &v) in self.slot.iter().zip(values) {
             self.values[k] += v;
         }
@@ -137,7 +199,7 @@ impl Sparse {
         }
         for (c, cm) in col_max.iter_mut().enumerate() {
             for k in self.col_ptr[c]..self.col_ptr[c + 1] {
-                let (r, v) = (self.row_idx[k], self.values[k].abs());
+                let (r, v) = (self.row_idx[k], self.values[k].modulus());
                 row_max[r] = row_max[r].max(v);
                 *cm = cm.max(v);
             }
@@ -146,7 +208,7 @@ impl Sparse {
 
     /// Factors the assembled values: a refactorisation with the last pivots when they hold,
     /// faer's pivot search otherwise.
-    pub(super) fn factor(
+    pub(in crate::solver) fn factor(
         &mut self,
         stack: &mut MemStack,
         pivot_tol: f64,
@@ -210,7 +272,7 @@ impl Sparse {
                 .iter()
                 .zip(vals)
                 .find(|&(&r, _)| r == j)
-                .map_or(0.0, |(_, v)| v.abs());
+                .map_or(0.0, |(_, v)| v.modulus());
             if pivot.is_nan() || pivot <= pivot_tol * col_max[c] {
                 return Err(singular(self.row_perm[j], c));
             }
@@ -249,7 +311,7 @@ impl Sparse {
             }
             f.l_ptr.push(f.l_idx.len());
             let start = f.u_idx.len();
-            let mut diag = 0.0;
+            let mut diag = T::ZERO;
             for (&r, &v) in u.row_idx_of_col_raw(j).iter().zip(u.val_of_col(j)) {
                 if r == j {
                     diag = v;
@@ -269,7 +331,7 @@ impl Sparse {
             }
             f.u_ptr.push(f.u_idx.len());
             // `search` checked every pivot against the singularity threshold.
-            f.inv_diag.push(1.0 / diag);
+            f.inv_diag.push(T::ONE / diag);
         }
     }
 
@@ -287,35 +349,37 @@ impl Sparse {
             for p in f.u_ptr[j]..f.u_ptr[j + 1] {
                 let k = f.u_idx[p];
                 let ukj = work[k];
-                work[k] = 0.0;
+                work[k] = T::ZERO;
                 f.u_val[p] = ukj;
-                if ukj != 0.0 {
+                if ukj != T::ZERO {
                     for q in f.l_ptr[k]..f.l_ptr[k + 1] {
-                        work[f.l_idx[q]] -= f.l_val[q] * ukj;
+                        let i = f.l_idx[q];
+                        work[i] -= f.l_val[q] * ukj;
                     }
                 }
             }
             let pivot = work[j];
-            work[j] = 0.0;
+            work[j] = T::ZERO;
             let (lo, hi) = (f.l_ptr[j], f.l_ptr[j + 1]);
             let largest = f.l_idx[lo..hi]
                 .iter()
-                .fold(0.0_f64, |m, &i| m.max(work[i].abs()));
-            let holds = pivot.abs() > pivot_tol * col_max[c]
-                && pivot.abs() >= PIVOT_THRESHOLD * largest
-                && pivot.is_finite();
+                .fold(0.0_f64, |m, &i| m.max(work[i].modulus()));
+            let size = pivot.modulus();
+            let holds = size > pivot_tol * col_max[c]
+                && size >= PIVOT_THRESHOLD * largest
+                && size.is_finite();
             if !holds {
                 for &i in &f.l_idx[lo..hi] {
-                    work[i] = 0.0;
+                    work[i] = T::ZERO;
                 }
                 return false;
             }
-            let inv = 1.0 / pivot;
+            let inv = T::ONE / pivot;
             f.inv_diag[j] = inv;
             for q in lo..hi {
                 let i = f.l_idx[q];
                 f.l_val[q] = work[i] * inv;
-                work[i] = 0.0;
+                work[i] = T::ZERO;
             }
         }
         true
@@ -323,7 +387,7 @@ impl Sparse {
 
     /// Solves `A x = rhs` in place with the last factorisation (the caller checks it is
     /// valid): `rhs` permuted by rows, `L` forward, `U` backward, unpermuted by columns.
-    pub(super) fn solve(&mut self, rhs: &mut [f64]) {
+    pub(in crate::solver) fn solve(&mut self, rhs: &mut [T]) {
         let f = &mut self.factors;
         let y = &mut f.work;
         for (y, &r) in y.iter_mut().zip(&f.row_of) {
@@ -331,21 +395,52 @@ impl Sparse {
         }
         for j in 0..y.len() {
             let yj = y[j];
-            if yj != 0.0 {
+            if yj != T::ZERO {
                 for q in f.l_ptr[j]..f.l_ptr[j + 1] {
-                    y[f.l_idx[q]] -= f.l_val[q] * yj;
+                    let i = f.l_idx[q];
+                    y[i] -= f.l_val[q] * yj;
                 }
             }
         }
         for j in (0..y.len()).rev() {
             let yj = y[j] * f.inv_diag[j];
-            y[j] = 0.0;
+            y[j] = T::ZERO;
             rhs[f.col[j]] = yj;
-            if yj != 0.0 {
+            if yj != T::ZERO {
                 for p in f.u_ptr[j]..f.u_ptr[j + 1] {
-                    y[f.u_idx[p]] -= f.u_val[p] * yj;
+                    let i = f.u_idx[p];
+                    y[i] -= f.u_val[p] * yj;
                 }
             }
+        }
+    }
+
+    /// Solves `A^T z = rhs` (transposed, not conjugated) in place with the last factorisation.
+    /// With `P A Q = L U`, `A^T = Q U^T L^T P`: `rhs` permuted by columns, `U^T` forward and
+    /// `L^T` backward (each a dot product with a stored column), unpermuted by rows.
+    pub(in crate::solver) fn solve_transposed(&mut self, rhs: &mut [T]) {
+        let f = &mut self.factors;
+        let y = &mut f.work;
+        for (y, &c) in y.iter_mut().zip(&f.col) {
+            *y = rhs[c];
+        }
+        for j in 0..y.len() {
+            let mut s = y[j];
+            for p in f.u_ptr[j]..f.u_ptr[j + 1] {
+                s -= f.u_val[p] * y[f.u_idx[p]];
+            }
+            y[j] = s * f.inv_diag[j];
+        }
+        for j in (0..y.len()).rev() {
+            let mut s = y[j];
+            for q in f.l_ptr[j]..f.l_ptr[j + 1] {
+                s -= f.l_val[q] * y[f.l_idx[q]];
+            }
+            y[j] = s;
+        }
+        for (y, &r) in y.iter_mut().zip(&f.row_of) {
+            rhs[r] = *y;
+            *y = T::ZERO;
         }
     }
 }
