@@ -10,8 +10,7 @@ use std::path::Path;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::atomic::{commit, temp_path};
-use super::plot::{COLORS, FONT, PlotError, draw_legend, draw_trace, register_font};
+use super::plot::{COLORS, FONT, Picture, PlotError, draw_legend, draw_trace, write_picture};
 
 /// One probe's response.
 #[derive(Debug, Clone)]
@@ -54,17 +53,12 @@ const HEIGHT: u32 = 640;
 
 /// Draws the magnitude and phase of `traces` into `path` (`.svg` or `.png`).
 pub fn plot_bode(path: &Path, title: &str, traces: &[BodeTrace]) -> Result<(), PlotError> {
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
     let finite = |p: &&(f64, f64, f64)| p.0 > 0.0 && p.0.is_finite();
     if !traces.iter().any(|t| t.points.iter().any(|p| finite(&p))) {
         return Err(PlotError::Empty {
             path: path.to_path_buf(),
         });
     }
-    register_font();
     // The phase as a continuous curve: a lag past 180 degrees reads as such, not as a jump
     // to +180.
     let traces: Vec<BodeTrace> = traces
@@ -75,33 +69,25 @@ pub fn plot_bode(path: &Path, title: &str, traces: &[BodeTrace]) -> Result<(), P
         })
         .collect();
     let traces = &traces[..];
-    let temp = temp_path(path);
-    let err = |e: Box<dyn std::error::Error>| PlotError::Draw {
-        path: path.to_path_buf(),
-        what: e.to_string(),
-    };
-    let drawn = match ext.as_deref() {
-        Some("svg") => draw(
-            SVGBackend::new(&temp, (WIDTH, HEIGHT)).into_drawing_area(),
-            title,
-            traces,
-        ),
-        Some("png") => draw(
-            BitMapBackend::new(&temp, (WIDTH, HEIGHT)).into_drawing_area(),
-            title,
-            traces,
-        ),
-        _ => {
-            return Err(PlotError::Format {
-                path: path.to_path_buf(),
-            });
-        }
-    };
-    if let Err(e) = drawn {
-        let _ = std::fs::remove_file(&temp);
-        return Err(err(e));
+    write_picture(path, (WIDTH, HEIGHT), &Bode { title, traces })
+}
+
+/// A Bode plot to draw.
+struct Bode<'a> {
+    title: &'a str,
+    traces: &'a [BodeTrace],
+}
+
+impl Picture for Bode<'_> {
+    fn draw<DB: DrawingBackend>(
+        &self,
+        root: DrawingArea<DB, Shift>,
+    ) -> Result<(), Box<dyn std::error::Error>>
+    where
+        DB::ErrorType: 'static,
+    {
+        draw(root, self.title, self.traces)
     }
-    commit(&temp, path).map_err(|e| err(Box::new(e)))
 }
 
 /// The finite range of `values`, padded; `(0, 1)` when there is none.

@@ -11,8 +11,7 @@ use std::path::Path;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::atomic::{commit, temp_path};
-use super::plot::{COLORS, FONT, PlotError, draw_legend, draw_trace, register_font};
+use super::plot::{COLORS, FONT, Picture, PlotError, draw_legend, draw_trace, write_picture};
 
 /// One density curve.
 #[derive(Debug, Clone)]
@@ -34,45 +33,39 @@ pub fn plot_noise(
     unit: &str,
     traces: &[NoiseTrace],
 ) -> Result<(), PlotError> {
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
     if !traces.iter().any(|t| t.points.iter().any(drawable)) {
         return Err(PlotError::Empty {
             path: path.to_path_buf(),
         });
     }
-    register_font();
-    let temp = temp_path(path);
-    let err = |e: Box<dyn std::error::Error>| PlotError::Draw {
-        path: path.to_path_buf(),
-        what: e.to_string(),
-    };
-    let drawn = match ext.as_deref() {
-        Some("svg") => draw(
-            SVGBackend::new(&temp, (WIDTH, HEIGHT)).into_drawing_area(),
+    write_picture(
+        path,
+        (WIDTH, HEIGHT),
+        &NoisePlot {
             title,
             unit,
             traces,
-        ),
-        Some("png") => draw(
-            BitMapBackend::new(&temp, (WIDTH, HEIGHT)).into_drawing_area(),
-            title,
-            unit,
-            traces,
-        ),
-        _ => {
-            return Err(PlotError::Format {
-                path: path.to_path_buf(),
-            });
-        }
-    };
-    if let Err(e) = drawn {
-        let _ = std::fs::remove_file(&temp);
-        return Err(err(e));
+        },
+    )
+}
+
+/// A noise plot to draw.
+struct NoisePlot<'a> {
+    title: &'a str,
+    unit: &'a str,
+    traces: &'a [NoiseTrace],
+}
+
+impl Picture for NoisePlot<'_> {
+    fn draw<DB: DrawingBackend>(
+        &self,
+        root: DrawingArea<DB, Shift>,
+    ) -> Result<(), Box<dyn std::error::Error>>
+    where
+        DB::ErrorType: 'static,
+    {
+        draw(root, self.title, self.unit, self.traces)
     }
-    commit(&temp, path).map_err(|e| err(Box::new(e)))
 }
 
 fn drawable(p: &(f64, f64)) -> bool {

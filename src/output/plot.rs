@@ -156,6 +156,50 @@ pub(super) fn register_font() {
     });
 }
 
+/// A picture that draws itself on any plotters backend (the SVG and PNG ones).
+pub(super) trait Picture {
+    fn draw<DB: DrawingBackend>(
+        &self,
+        root: DrawingArea<DB, Shift>,
+    ) -> Result<(), Box<dyn std::error::Error>>
+    where
+        DB::ErrorType: 'static;
+}
+
+/// Draws `picture` of `size` pixels into `path`, SVG or PNG by its extension, through a
+/// temporary beside it that is renamed over it when complete (a failed drawing leaves the
+/// previous file).
+pub(super) fn write_picture(
+    path: &Path,
+    size: (u32, u32),
+    picture: &impl Picture,
+) -> Result<(), PlotError> {
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    register_font();
+    let temp = super::atomic::temp_path(path);
+    let err = |e: Box<dyn std::error::Error>| PlotError::Draw {
+        path: path.to_path_buf(),
+        what: e.to_string(),
+    };
+    let drawn = match ext.as_deref() {
+        Some("svg") => picture.draw(SVGBackend::new(&temp, size).into_drawing_area()),
+        Some("png") => picture.draw(BitMapBackend::new(&temp, size).into_drawing_area()),
+        _ => {
+            return Err(PlotError::Format {
+                path: path.to_path_buf(),
+            });
+        }
+    };
+    if let Err(e) = drawn {
+        let _ = std::fs::remove_file(&temp);
+        return Err(err(e));
+    }
+    super::atomic::commit(&temp, path).map_err(|e| err(Box::new(e)))
+}
+
 /// Draws `panels` stacked over a shared time axis into `path` (`.svg` or `.png`).
 pub fn plot_panels(path: &Path, title: &str, panels: &[Panel]) -> Result<(), PlotError> {
     plot_panels_over(path, title, "time (s)", panels)
