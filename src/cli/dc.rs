@@ -193,8 +193,9 @@ impl PointSolver<'_> {
             seed(&mut design, guess);
         }
         let point = operating_point(&design, &SimOptions::default()).map_err(PointError::Solve)?;
+        // The design is dropped here, not left to the exiting process: a sweep elaborates
+        // one per point, and its memory must not grow with the number of points.
         let listed = listed(&design, point.len());
-        discard_at_exit(design);
         Ok(Solved { point, listed })
     }
 
