@@ -17,12 +17,14 @@ pub mod interrupt;
 pub mod load;
 pub mod noise;
 pub mod op;
+pub mod parallel;
 pub mod params;
 pub mod poles;
 pub mod progress;
 pub mod render;
 pub mod run;
 pub mod stop;
+pub mod sweep;
 pub mod test;
 pub mod time;
 
@@ -68,6 +70,11 @@ pub enum Command {
     Dae(dae::DaeArgs),
     /// Run every testbench (port-less entity named tb_* or test_*) and report pass or fail.
     Test(test::TestArgs),
+    /// Design-space runs from a TOML spec: a grid, corners, Monte Carlo samples or
+    /// sensitivities, on every core or as shards of a Slurm job array; metrics per run, a
+    /// result table, a summary with the worst cases and the yield, envelope, histogram and
+    /// tornado plots.
+    Sweep(sweep::SweepArgs),
     /// Extract DC motor parameters from four oscilloscope captures (inrush, blocked rotor,
     /// constant speed, coast), the paper's way and refined by a joint fit.
     Extract(extract::ExtractArgs),
@@ -86,6 +93,7 @@ pub fn run() -> ExitCode {
         Command::Poles(args) => poles::run(&args),
         Command::Dae(args) => dae::run(&args),
         Command::Test(args) => test::run(&args),
+        Command::Sweep(args) => sweep::run(&args),
         Command::Extract(args) => extract::run(&args),
     };
     match result {
@@ -95,6 +103,13 @@ pub fn run() -> ExitCode {
             match report.downcast_ref::<CliError>() {
                 // The shell's convention for a program stopped by SIGINT.
                 Some(CliError::Interrupted { .. }) => ExitCode::from(130),
+                _ if matches!(
+                    report.downcast_ref::<sweep::SweepError>(),
+                    Some(sweep::SweepError::Interrupted { .. })
+                ) =>
+                {
+                    ExitCode::from(130)
+                }
                 _ => ExitCode::from(1),
             }
         }

@@ -70,8 +70,10 @@ use types::Sub;
 pub struct ElabOptions {
     /// The top entity (lower case); its architecture is the last one analysed for it.
     pub top: String,
-    /// Top-level generic overrides `(name, value text)`, from `-g NAME=VALUE` and `--params`;
-    /// the text is a VHDL literal (`4.0`, `1e-3`, `12`, `true`, `10 ms`).
+    /// Generic overrides `(name, value text)`, from `-g NAME=VALUE`, `--params` and sweeps;
+    /// the text is a VHDL literal (`4.0`, `1e-3`, `12`, `true`, `10 ms`). A plain name is a
+    /// generic of the top; a dotted one names an instance's generic by its hierarchical
+    /// path (`dut.u_motor.r`), winning over the instance's generic map and default.
     pub generics: Vec<(String, String)>,
 }
 
@@ -94,6 +96,7 @@ pub fn elaborate_analysed(
 ) -> Result<Design, Vec<ElabError>> {
     let mut elab = Elab::new(analysis, sources, files);
     elab.top(options);
+    elab.check_instance_overrides();
     elab.check_converted_actuals();
     if elab.errors.is_empty() {
         elab.resolve_signals();
@@ -267,6 +270,12 @@ struct Elab<'a> {
     /// branch is known (`Elab::contribution_equations`).
     contributions: Vec<(QuantityId, crate::design::TerminalId, String, Span)>,
     integ_aux: FxHashMap<QuantityId, QuantityId>,
+    /// Overrides of instance generics by hierarchical name (`dut.u_motor.r`, from `-g` and
+    /// sweeps), each with whether an instance took it: one left untaken is an error.
+    instance_overrides: Vec<(String, String, bool)>,
+    /// The hierarchical names of every instance generic met, for the help of an override
+    /// that names none.
+    instance_generics: Vec<String>,
     /// Hierarchical prefix of the objects being declared (`""` at the top, `dut.u_motor`).
     path: String,
     /// Instance path of the architecture being elaborated (no block or generate labels).
@@ -369,6 +378,8 @@ impl<'a> Elab<'a> {
             terminal_attrs: FxHashMap::default(),
             contributions: Vec::new(),
             integ_aux: FxHashMap::default(),
+            instance_overrides: Vec::new(),
+            instance_generics: Vec::new(),
             path: String::new(),
             instance: String::new(),
             unlabelled: Vec::new(),

@@ -50,15 +50,33 @@ fn split_assignment(text: &str) -> Result<(String, String), &'static str> {
     if name.is_empty() {
         return Err("the name before `=` is missing");
     }
-    if !name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
-        || name.starts_with(|c: char| !c.is_ascii_alphabetic())
-    {
-        return Err("the name is not a VHDL identifier");
+    if !is_generic_path(name) {
+        return Err("the name is not a VHDL identifier or an instance path (`u_motor.r`)");
     }
     if value.is_empty() {
         return Err("the value after `=` is missing");
     }
     Ok((name.to_ascii_lowercase(), value.to_string()))
+}
+
+/// A generic's name: an identifier (`r`), or the path of an instance's generic from the top
+/// (`dut.u_motor.r`, `u_cell(3).c`: a `for ... generate` iteration by its index).
+pub fn is_generic_path(name: &str) -> bool {
+    let identifier = |s: &str| {
+        s.starts_with(|c: char| c.is_ascii_alphabetic())
+            && s.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+    };
+    name.split('.')
+        .all(|segment| match segment.split_once('(') {
+            Some((label, index)) => {
+                identifier(label)
+                    && index
+                        .strip_suffix(')')
+                        .and_then(|i| i.strip_prefix('-').or(Some(i)))
+                        .is_some_and(|i| !i.is_empty() && i.chars().all(|c| c.is_ascii_digit()))
+            }
+            None => identifier(segment),
+        })
 }
 
 /// Parses the text of a parameter file named `path` (for messages).
@@ -144,7 +162,11 @@ mod tests {
             ("r=4.0\nl 3.0e-3\n", 2, "expected `name=value`"),
             ("\n\n=4\n", 3, "the name before `=` is missing"),
             ("r=\n", 1, "the value after `=` is missing"),
-            ("2r=1\n", 1, "the name is not a VHDL identifier"),
+            (
+                "2r=1\n",
+                1,
+                "the name is not a VHDL identifier or an instance path (`u_motor.r`)",
+            ),
         ] {
             let err = parse_params("m.params", text).unwrap_err();
             let ParamsError::BadLine { line: l, span, .. } = &err else {
@@ -173,6 +195,29 @@ mod tests {
         assert_eq!(as_str, [("r", "8.0"), ("l", "3e-3"), ("j", "1e-6")]);
         assert!(parse_generic("r").unwrap_err().contains("NAME=VALUE"));
         assert!(parse_generic("r=").is_err());
+    }
+
+    #[test]
+    fn instance_paths_are_generic_names() {
+        for good in ["r", "dut.u_motor.r", "u_cell(3).c", "a.b_2(10).x"] {
+            assert!(is_generic_path(good), "{good}");
+        }
+        for bad in [
+            "",
+            "2r",
+            "dut..r",
+            "u_cell(x).c",
+            "u_cell(3.c",
+            "a.",
+            ".a",
+            "u()",
+        ] {
+            assert!(!is_generic_path(bad), "{bad}");
+        }
+        assert_eq!(
+            parse_generic("DUT.U_Motor.R=5").unwrap(),
+            ("dut.u_motor.r".into(), "5".into())
+        );
     }
 
     #[test]

@@ -5,7 +5,6 @@
 
 pub mod discover;
 pub mod junit;
-pub mod parallel;
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -24,12 +23,12 @@ use super::ac::linearise_quietly;
 use super::ac_assert::{AcAssertion, AcVerdict, assertion_probes, check_assertions};
 use super::error::CliError;
 use super::load::{Loaded, load_with_libraries};
+use super::parallel::run_in_order;
 use super::render::{format_report, render, render_located, render_sim_error};
 use super::stop::{assert_comments, stop_comment};
 use super::time::parse_positive_time;
 use discover::{Testbench, discover};
 use junit::{Case, Problem, junit_xml};
-use parallel::run_in_order;
 
 /// Arguments of `vams test`.
 #[derive(Debug, Args)]

@@ -110,6 +110,15 @@ pub enum ElabError {
         help: Option<String>,
     },
 
+    /// `-g dut.u_motr.r=4` where no instance at that path has that generic.
+    #[error("no instance of the design has a generic `{name}`")]
+    #[diagnostic(code(vams::elab::unknown_instance_generic))]
+    UnknownInstanceGeneric {
+        name: String,
+        #[help]
+        help: Option<String>,
+    },
+
     /// `-g r=abc` that is not a literal of the generic's type.
     #[error("`{text}` is not a value of type {ty} for generic `{name}`")]
     #[diagnostic(code(vams::elab::bad_generic_value))]
@@ -241,6 +250,8 @@ impl Located for ElabError {
     fn primary_span(&self) -> Span {
         match self {
             ElabError::UnknownTop { span, .. } => span.unwrap_or_default(),
+            // Named on the command line or in a sweep spec, not in the sources.
+            ElabError::UnknownInstanceGeneric { .. } => Span::default(),
             ElabError::Undeclared { span, .. }
             | ElabError::WrongClass { span, .. }
             | ElabError::TypeMismatch { span, .. }

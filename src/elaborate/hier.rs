@@ -103,7 +103,9 @@ impl<'a> Elab<'a> {
         let mut overrides = Vec::new();
         for (g, text) in &options.generics {
             let g = g.to_ascii_lowercase();
-            if generic_names.contains(&g) {
+            if g.contains('.') {
+                self.instance_overrides.push((g, text.clone(), false));
+            } else if generic_names.contains(&g) {
                 overrides.push((g, text.clone()));
             } else {
                 self.error(ElabError::UnknownGeneric {
@@ -452,6 +454,54 @@ impl<'a> Elab<'a> {
     }
 
     #[allow(clippy::too_many_arguments)]
+    /// The override of the current instance's generic `name`, marked as taken.
+    fn instance_override(&mut self, name: &str) -> Option<String> {
+        let full = self.hier_name(name);
+        let found = self
+            .instance_overrides
+            .iter_mut()
+            .rev()
+            .find(|(n, ..)| *n == full)
+            .map(|(_, text, taken)| {
+                *taken = true;
+                text.clone()
+            });
+        self.instance_generics.push(full);
+        found
+    }
+
+    /// Every instance override that no instance took is an error (a misspelt path would
+    /// otherwise be ignored silently, and a sweep of it would vary nothing).
+    pub(super) fn check_instance_overrides(&mut self) {
+        let untaken: Vec<String> = self
+            .instance_overrides
+            .iter()
+            .filter(|(.., taken)| !taken)
+            .map(|(n, ..)| n.clone())
+            .collect();
+        for name in untaken {
+            let closest = self
+                .instance_generics
+                .iter()
+                .map(|g| (strsim::levenshtein(&name, g), g))
+                .min();
+            let help = match closest {
+                Some((d, best)) if d <= 3 => format!("did you mean `{best}`?"),
+                _ if self.instance_generics.is_empty() => {
+                    "the design's instances have no generics".to_string()
+                }
+                _ => format!(
+                    "instance generics are named by their path from the top, e.g. `{}`",
+                    self.instance_generics[0]
+                ),
+            };
+            self.error(ElabError::UnknownInstanceGeneric {
+                name,
+                help: Some(help),
+            });
+        }
+    }
+
     fn generic(
         &mut self,
         sc: &mut Scope<'a>,
@@ -469,7 +519,7 @@ impl<'a> Elab<'a> {
                 .rev()
                 .find(|(n, _)| *n == name.name)
                 .map(|(_, t)| t.clone()),
-            Actuals::Map { .. } => None,
+            Actuals::Map { .. } => self.instance_override(&name.name),
         };
         // Where the value comes from, for a value outside the subtype's range.
         let (origin, fix) = match (&override_text, actual, &decl.default) {

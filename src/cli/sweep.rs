@@ -1,0 +1,744 @@
+//! `vams sweep SPEC.toml`: design-space runs. The spec (`spec`) names the design, one plan
+//! of runs (`plan`: a grid, corners, Monte Carlo samples from `sample`, or one-at-a-time
+//! perturbations), the metrics evaluated on each run's waveforms (`metric`) and the plots.
+//! The sources are parsed and analysed once; each run elaborates them with its generics and
+//! simulates (`execute`) on every core, its row streamed to the result table (`table`) as it
+//! finishes, so an interrupted sweep resumes where it stopped. The end prints a summary
+//! (`summary`) and draws the envelope of chosen waveforms, the metrics' histograms and, for
+//! sensitivities, a tornado per metric.
+//!
+//! A sweep splits into deterministic shards (`--shard K/N`: runs are numbered, each shard
+//! a contiguous block) that a Slurm job array runs (`slurm`); `vams sweep collect DIR` merges
+//! the shards' tables into the table a local run writes, byte for byte.
+
+pub mod execute;
+pub mod metric;
+pub mod plan;
+pub mod sample;
+pub mod spec;
+pub mod summary;
+pub mod table;
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use clap::{Args, Subcommand};
+use miette::{Diagnostic, Report};
+use thiserror::Error;
+
+use crate::elaborate::{ElabError, ElabOptions, elaborate_analysed};
+use crate::output::sweep_plot::{EnvelopeBuilder, Histogram, TornadoBar};
+
+use super::compile::{DesignArgs, Prepared, prepare};
+use super::error::CliError;
+use super::load::LibrarySources;
+use super::render::render_located;
+use super::stop::{declaring_file, stop_comment};
+use execute::{Done, Job};
+use plan::Plan;
+use spec::{Spec, read_spec};
+use table::{Identity, Row, Status, TableError, TableWriter, header, read_table};
+
+/// Plans larger than this need `--yes`.
+const LARGE_PLAN: u64 = 100_000;
+/// Time bins of an envelope plot.
+const ENVELOPE_BINS: usize = 1000;
+
+/// Arguments of `vams sweep`.
+#[derive(Debug, Args)]
+#[command(
+    args_conflicts_with_subcommands = true,
+    subcommand_negates_reqs = true,
+    after_help = "Examples:
+  vams sweep models/sweeps/worst_case.toml                  # on every core, into worst_case.sweep/
+  vams sweep spec.toml --out runs --resume                    # continue an interrupted sweep
+  vams sweep spec.toml --shard 3/10 --out runs                # the 4th of 10 shards
+  vams sweep spec.toml --slurm --array-size 10 --out runs     # a Slurm job array of 10 shards
+  vams sweep collect runs                                     # merge the shards
+
+The spec is a TOML file: see models/sweeps/worst_case.toml and the README's \"Design-space
+runs\" section for every key."
+)]
+pub struct SweepArgs {
+    #[command(subcommand)]
+    pub action: Option<SweepAction>,
+    /// The sweep spec (TOML).
+    #[arg(required = true, value_name = "SPEC.toml")]
+    pub spec: Option<PathBuf>,
+    /// Folder for the result table and plots; default: `SPEC-NAME.sweep` here.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+    /// Runs at once; default: one per core.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+    pub jobs: Option<u32>,
+    /// Continue the sweep whose table is in --out: runs already there are kept, the rest run.
+    #[arg(long, conflicts_with = "overwrite")]
+    pub resume: bool,
+    /// Start afresh, replacing the table already in --out.
+    #[arg(long)]
+    pub overwrite: bool,
+    /// Run a plan of more than 100 000 runs.
+    #[arg(long)]
+    pub yes: bool,
+    /// Run only shard K of N (K from 0): a contiguous block of the runs, into
+    /// DIR/shard-K-of-N.csv.
+    #[arg(long, value_name = "K/N", value_parser = parse_shard)]
+    pub shard: Option<(usize, usize)>,
+}
+
+/// `vams sweep collect DIR`.
+#[derive(Debug, Subcommand)]
+pub enum SweepAction {
+    /// Merge the shards' tables in DIR into DIR/results.csv (the table a local run writes),
+    /// print the summary and draw the histograms; list missing or partial shards.
+    Collect {
+        /// The folder the shards wrote to.
+        #[arg(value_name = "DIR")]
+        dir: PathBuf,
+    },
+}
+
+/// Parses `K/N`.
+fn parse_shard(text: &str) -> Result<(usize, usize), String> {
+    let parsed = text
+        .split_once('/')
+        .and_then(|(k, n)| Some((k.trim().parse().ok()?, n.trim().parse().ok()?)));
+    match parsed {
+        Some((k, n)) if n >= 1 && k < n => Ok((k, n)),
+        _ => Err(format!(
+            "`{text}` is not a shard K/N with 0 <= K < N (e.g. 3/10)"
+        )),
+    }
+}
+
+/// Errors of `vams sweep` itself.
+#[derive(Debug, Error, Diagnostic)]
+pub enum SweepError {
+    #[error(transparent)]
+    #[diagnostic(code(vams::sweep::table))]
+    Table(#[from] TableError),
+    #[error("`{}` already holds the table of a sweep", path.display())]
+    #[diagnostic(
+        code(vams::sweep::exists),
+        help("--resume continues it, --overwrite starts afresh, or choose another --out")
+    )]
+    Exists { path: PathBuf },
+    #[error("`{}` is the table of another spec or plan ({why})", path.display())]
+    #[diagnostic(
+        code(vams::sweep::other_spec),
+        help("the spec changed since: --overwrite starts afresh, or choose another --out")
+    )]
+    OtherSpec { path: PathBuf, why: String },
+    #[error("the sweep was interrupted after {done} of {total} runs")]
+    #[diagnostic(
+        code(vams::sweep::interrupted),
+        help("the finished runs are in the table: run the same command with --resume to go on")
+    )]
+    Interrupted { done: usize, total: usize },
+    #[error("{missing} of {shards} shards are missing or partial in `{}`", dir.display())]
+    #[diagnostic(code(vams::sweep::missing_shards), help("{resubmit}"))]
+    MissingShards {
+        dir: PathBuf,
+        missing: usize,
+        shards: usize,
+        resubmit: String,
+    },
+    #[error("no shard tables (shard-K-of-N.csv) in `{}`", dir.display())]
+    #[diagnostic(
+        code(vams::sweep::no_shards),
+        help("give the --out folder of `vams sweep SPEC --shard K/N` or `--slurm`")
+    )]
+    NoShards { dir: PathBuf },
+    #[error("cannot write `{}`: {reason}", path.display())]
+    #[diagnostic(code(vams::sweep::write))]
+    Write { path: PathBuf, reason: String },
+    #[error("cannot draw `{}`: {reason}", path.display())]
+    #[diagnostic(code(vams::sweep::plot))]
+    Plot { path: PathBuf, reason: String },
+}
+
+/// Runs `vams sweep`.
+pub fn run(args: &SweepArgs) -> Result<(), Report> {
+    if let Some(SweepAction::Collect { dir }) = &args.action {
+        return collect(dir);
+    }
+    // Required by clap unless a subcommand is given.
+    let Some(spec_path) = &args.spec else {
+        return Err(CliError::NoTop.into());
+    };
+    let spec = read_spec(spec_path)?;
+    let total = check_size(&spec, args.yes)?;
+    let prepared = prepare_design(&spec)?;
+    check_parameters(&spec, &prepared)?;
+    let stop = stop_time(&spec, &prepared)?;
+    let out = args.out.clone().unwrap_or_else(|| default_out(spec_path));
+    std::fs::create_dir_all(&out).map_err(|e| SweepError::Write {
+        path: out.clone(),
+        reason: e.to_string(),
+    })?;
+    let (range, table_path) = match args.shard {
+        Some((k, n)) => (
+            shard_range(total, k, n),
+            out.join(format!("shard-{k}-of-{n}.csv")),
+        ),
+        None => (0..total, out.join("results.csv")),
+    };
+    let identity = Identity {
+        spec: spec_name(spec_path),
+        fingerprint: spec.fingerprint,
+        runs: total as u64,
+        shard: args.shard,
+    };
+    let names = spec.plan.names();
+    let metric_names: Vec<String> = spec.metrics.iter().map(|m| m.name.clone()).collect();
+    let head = header(&names, &metric_names);
+    let kept = previous_rows(&table_path, &identity, &head, names.len(), args)?;
+    let todo: Vec<usize> = range
+        .clone()
+        .filter(|i| !kept.iter().any(|r| r.index == *i))
+        .collect();
+    let mut writer =
+        TableWriter::create(&table_path, &identity, &head, &kept).map_err(SweepError::from)?;
+    let job = Job {
+        prepared: &prepared,
+        parameters: names.clone(),
+        fixed: spec.design.generics.clone(),
+        metrics: &spec.metrics,
+        envelope: &spec.envelope,
+        stop,
+        reltol: spec.design.reltol,
+        abstol: spec.design.abstol,
+        max_step: spec.design.max_step,
+        cancel: super::interrupt::cancel_on_ctrl_c(),
+    };
+    eprintln!(
+        "sweeping {} ({} runs{}, {} to do) into {}",
+        spec_path.display(),
+        range.len(),
+        match args.shard {
+            Some((k, n)) => format!(" of {total}: shard {k}/{n}"),
+            None => String::new(),
+        },
+        todo.len(),
+        table_path.display()
+    );
+    let started = Instant::now();
+    let mut envelopes: Vec<EnvelopeBuilder> = spec
+        .envelope
+        .iter()
+        .map(|name| EnvelopeBuilder::new(name.clone(), None, 0.0, stop, ENVELOPE_BINS))
+        .collect();
+    let mut rows = kept;
+    let mut write_failure = None;
+    let bar = progress_bar(todo.len());
+    let jobs = args.jobs.map_or_else(
+        || std::thread::available_parallelism().map_or(1, |n| n.get()),
+        |j| j as usize,
+    );
+    let plan = &spec.plan;
+    let mut failures = 0;
+    super::parallel::run_in_order(
+        &todo,
+        jobs,
+        |&index| job.run(&plan.run(index)),
+        |k, result| {
+            let done = match result {
+                Ok(Some(done)) => done,
+                // Interrupted: not recorded, a resumed sweep runs it again.
+                Ok(None) => return,
+                Err(panic) => {
+                    // An internal error in one run is that run's failure, not the sweep's.
+                    let run = plan.run(todo[k]);
+                    Done {
+                        row: Row {
+                            index: run.index,
+                            case: run.case,
+                            values: run.values.iter().map(plan::ParamValue::literal).collect(),
+                            metrics: vec![None; metric_names.len()],
+                            pass: None,
+                            status: Status::Failed,
+                            message: format!("internal error: {panic}"),
+                        },
+                        traces: Vec::new(),
+                    }
+                }
+            };
+            if done.row.status == Status::Failed {
+                failures += 1;
+            }
+            for (env, trace) in envelopes.iter_mut().zip(&done.traces) {
+                if let Some((t, v, held)) = trace {
+                    if done.row.index == 0 {
+                        env.set_nominal(t, v, *held);
+                    }
+                    env.add_run(t, v, *held);
+                }
+            }
+            if write_failure.is_none()
+                && let Err(e) = writer.push(&done.row)
+            {
+                write_failure = Some(e);
+                job.cancel.cancel();
+            }
+            rows.push(done.row);
+            bar.set_message(format!("{failures} failed"));
+            bar.inc(1);
+        },
+    );
+    bar.finish_and_clear();
+    if let Some(e) = write_failure {
+        return Err(SweepError::from(e).into());
+    }
+    rows.sort_by_key(|r| r.index);
+    let finished = rows.iter().filter(|r| range.contains(&r.index)).count();
+    if finished < range.len() {
+        let why = format!("interrupted after {finished} of {} runs", range.len());
+        writer.finish_partial(&why).map_err(SweepError::from)?;
+        eprintln!("{why}; the table is {}", table_path.display());
+        return Err(SweepError::Interrupted {
+            done: finished,
+            total: range.len(),
+        }
+        .into());
+    }
+    drop(writer);
+    eprint!("{}", summary::summary(plan, &metric_names, &rows));
+    let mut written = vec![table_path.display().to_string()];
+    if args.shard.is_none() {
+        written.extend(draw(&spec, &rows, envelopes, &out)?);
+    }
+    eprintln!(
+        "swept {} runs in {:.2} s wall time ({} at once); wrote {}",
+        todo.len(),
+        started.elapsed().as_secs_f64(),
+        jobs,
+        written.join(", ")
+    );
+    Ok(())
+}
+
+/// The plan's size, refused beyond [`LARGE_PLAN`] without `--yes`.
+fn check_size(spec: &Spec, yes: bool) -> Result<usize, Report> {
+    let too_large = |n: String| -> Report {
+        spec::Locator::new(&spec.path.display().to_string(), spec.source.inner())
+            .error(
+                spec.plan_span,
+                format!("this plan has {n} runs"),
+                Some(format!(
+                    "a plan of more than {LARGE_PLAN} runs needs --yes; check the spec's sizes"
+                )),
+            )
+            .into()
+    };
+    match spec.plan.len() {
+        None => Err(too_large("more than 2^64".into())),
+        Some(n) if n > LARGE_PLAN && !yes => Err(too_large(n.to_string())),
+        Some(n) => usize::try_from(n).map_err(|_| too_large(n.to_string())),
+    }
+}
+
+/// Parses and analyses the spec's sources once.
+fn prepare_design(spec: &Spec) -> Result<Prepared, Report> {
+    let args = DesignArgs {
+        paths: spec.design.files.clone(),
+        libraries: spec
+            .design
+            .libraries
+            .iter()
+            .map(|(name, path)| LibrarySources {
+                name: name.clone(),
+                path: path.clone(),
+            })
+            .collect(),
+        top: spec.design.top.clone(),
+        generics: spec.design.generics.clone(),
+        params: None,
+    };
+    prepare(&args)
+}
+
+/// The design must elaborate with the spec's fixed generics, and every parameter must name
+/// a generic of it: a misspelt name is a spec error at its line, before any run.
+fn check_parameters(spec: &Spec, prepared: &Prepared) -> Result<(), Report> {
+    let design = prepared.elaborate(&[])?;
+    prepared.print_warnings(&design);
+    drop(design);
+    let run = spec.plan.run(0);
+    let names = spec.plan.names();
+    let generics: Vec<(String, String)> = names
+        .iter()
+        .cloned()
+        .zip(run.values.iter().map(plan::ParamValue::literal))
+        .collect();
+    let loaded = &prepared.loaded;
+    let mut options = ElabOptions {
+        top: prepared.top.clone(),
+        generics: prepared.generics.clone(),
+    };
+    options.generics.extend(generics);
+    let Err(errors) =
+        elaborate_analysed(&prepared.analysis, &loaded.sources, &loaded.files, &options)
+    else {
+        return Ok(());
+    };
+    let at = spec::Locator::new(&spec.path.display().to_string(), spec.source.inner());
+    for e in &errors {
+        let (name, help) = match e {
+            ElabError::UnknownGeneric { name, help, .. }
+            | ElabError::UnknownInstanceGeneric { name, help } => (name, help),
+            _ => continue,
+        };
+        if let Some(k) = names.iter().position(|n| n == name) {
+            return Err(at
+                .error(
+                    spec.parameter_spans[k],
+                    format!("the design has no generic `{name}`"),
+                    help.clone(),
+                )
+                .into());
+        }
+    }
+    // Other errors belong to the first run's values: each run reports its own.
+    Ok(())
+}
+
+/// The spec's stop time, or the testbench's `-- vams: stop` comment.
+fn stop_time(spec: &Spec, prepared: &Prepared) -> Result<f64, Report> {
+    if let Some(t) = spec.design.stop {
+        return Ok(t);
+    }
+    let loaded = &prepared.loaded;
+    match declaring_file(loaded, &prepared.top).and_then(|f| stop_comment(&loaded.sources, f)) {
+        Some(Ok(t)) => Ok(t),
+        Some(Err(e)) => {
+            eprint!("{}", render_located(&e, &loaded.sources));
+            Err(CliError::NoStop {
+                top: prepared.top.clone(),
+            }
+            .into())
+        }
+        None => Err(CliError::NoStop {
+            top: prepared.top.clone(),
+        }
+        .into()),
+    }
+}
+
+/// `SPEC-NAME.sweep` in the current folder.
+fn default_out(spec: &Path) -> PathBuf {
+    let stem = spec
+        .file_stem()
+        .map_or("sweep".into(), |s| s.to_string_lossy().into_owned());
+    PathBuf::from(format!("{stem}.sweep"))
+}
+
+/// The spec as the tables name it: its absolute path (`collect` reads it from there).
+fn spec_name(spec: &Path) -> String {
+    std::fs::canonicalize(spec)
+        .unwrap_or_else(|_| spec.to_path_buf())
+        .display()
+        .to_string()
+}
+
+/// Shard `k` of `n`: a contiguous block, the first `total % n` shards one run longer.
+pub fn shard_range(total: usize, k: usize, n: usize) -> std::ops::Range<usize> {
+    let (base, extra) = (total / n, total % n);
+    let start = k * base + k.min(extra);
+    start..start + base + usize::from(k < extra)
+}
+
+/// The rows a resumed sweep keeps (none for a fresh one); refuses to replace a table
+/// without --overwrite, and to resume another spec's.
+fn previous_rows(
+    path: &Path,
+    identity: &Identity,
+    head: &[String],
+    parameters: usize,
+    args: &SweepArgs,
+) -> Result<Vec<Row>, SweepError> {
+    if !path.exists() || args.overwrite {
+        return Ok(Vec::new());
+    }
+    if !args.resume {
+        return Err(SweepError::Exists {
+            path: path.to_path_buf(),
+        });
+    }
+    let mut table = read_table(path)?;
+    let other = |why: String| SweepError::OtherSpec {
+        path: path.to_path_buf(),
+        why,
+    };
+    if table.identity.fingerprint != identity.fingerprint {
+        return Err(other("the spec's text differs".into()));
+    }
+    if table.identity.runs != identity.runs || table.identity.shard != identity.shard {
+        return Err(other("the plan or shard differs".into()));
+    }
+    if table.header != head {
+        return Err(other("the columns differ".into()));
+    }
+    table.resplit(parameters).map_err(other)?;
+    Ok(table.rows)
+}
+
+fn progress_bar(total: usize) -> indicatif::ProgressBar {
+    let bar = indicatif::ProgressBar::new(total as u64);
+    if let Ok(style) = indicatif::ProgressStyle::with_template(
+        "{bar:30} {pos}/{len} runs, {msg}, {elapsed} elapsed, ETA {eta}",
+    ) {
+        bar.set_style(style);
+    }
+    bar
+}
+
+/// Draws the envelope, the histograms and the tornados; returns the files written.
+fn draw(
+    spec: &Spec,
+    rows: &[Row],
+    envelopes: Vec<EnvelopeBuilder>,
+    out: &Path,
+) -> Result<Vec<String>, Report> {
+    let mut written = Vec::new();
+    let title = spec_title(spec);
+    let plot_error = |path: &Path, e: &dyn std::fmt::Display| SweepError::Plot {
+        path: path.to_path_buf(),
+        reason: e.to_string(),
+    };
+    let built: Vec<_> = envelopes
+        .into_iter()
+        .map(EnvelopeBuilder::finish)
+        .filter(|e| e.is_drawable())
+        .collect();
+    if !built.is_empty() {
+        let path = out.join("envelope.svg");
+        crate::output::sweep_plot::plot_envelopes(&path, &title, &built)
+            .map_err(|e| plot_error(&path, &e))?;
+        written.push(path.display().to_string());
+    }
+    let counted: Vec<&Row> = rows
+        .iter()
+        .filter(|r| spec.plan.is_sample(r.index))
+        .collect();
+    if !spec.metrics.is_empty()
+        && counted.len() > 1
+        && !matches!(spec.plan, Plan::Sensitivity { .. })
+    {
+        let histograms: Vec<Histogram> = spec
+            .metrics
+            .iter()
+            .enumerate()
+            .map(|(m, metric)| {
+                let (min_limit, max_limit) = (metric.limit.min, metric.limit.max);
+                Histogram {
+                    name: metric.name.clone(),
+                    unit: None,
+                    values: counted.iter().filter_map(|r| r.metrics[m]).collect(),
+                    min_limit,
+                    max_limit,
+                }
+            })
+            .filter(|h| !h.values.is_empty())
+            .collect();
+        if !histograms.is_empty() {
+            let path = out.join("histograms.svg");
+            crate::output::sweep_plot::plot_histograms(&path, &title, &histograms)
+                .map_err(|e| plot_error(&path, &e))?;
+            written.push(path.display().to_string());
+        }
+    }
+    if let (Some(s), Plan::Sensitivity { names, .. }) = (
+        summary::sensitivities(&spec.plan, rows, spec.metrics.len()),
+        &spec.plan,
+    ) {
+        for (m, metric) in spec.metrics.iter().enumerate() {
+            let bars: Vec<TornadoBar> = names
+                .iter()
+                .zip(&s[m])
+                .filter_map(|(p, v)| {
+                    v.map(|(low, high, _)| TornadoBar {
+                        parameter: p.clone(),
+                        low: -low,
+                        high,
+                    })
+                })
+                .collect();
+            if bars.is_empty() {
+                continue;
+            }
+            let path = out.join(format!("tornado-{}.svg", metric.name));
+            crate::output::sweep_plot::plot_tornado(&path, &title, &metric.name, &bars)
+                .map_err(|e| plot_error(&path, &e))?;
+            written.push(path.display().to_string());
+        }
+    }
+    Ok(written)
+}
+
+fn spec_title(spec: &Spec) -> String {
+    let kind = match &spec.plan {
+        Plan::Grid { .. } => "grid",
+        Plan::Corners { .. } => "corners",
+        Plan::MonteCarlo(_) => "Monte Carlo",
+        Plan::Sensitivity { .. } => "sensitivity",
+    };
+    format!(
+        "{} ({kind}, {} runs)",
+        spec.path
+            .file_name()
+            .map_or(String::new(), |n| n.to_string_lossy().into_owned()),
+        spec.plan.len().unwrap_or(0)
+    )
+}
+
+/// `vams sweep collect DIR`.
+fn collect(dir: &Path) -> Result<(), Report> {
+    let mut shards: Vec<(usize, usize, PathBuf)> = Vec::new();
+    let entries = std::fs::read_dir(dir).map_err(|e| SweepError::Write {
+        path: dir.to_path_buf(),
+        reason: e.to_string(),
+    })?;
+    for entry in entries.flatten() {
+        let name = entry.file_name().to_string_lossy().into_owned();
+        let parsed = name
+            .strip_prefix("shard-")
+            .and_then(|s| s.strip_suffix(".csv"))
+            .and_then(|s| s.split_once("-of-"))
+            .and_then(|(k, n)| Some((k.parse().ok()?, n.parse().ok()?)));
+        if let Some((k, n)) = parsed {
+            shards.push((k, n, entry.path()));
+        }
+    }
+    let Some(&(_, n, _)) = shards.iter().max_by_key(|s| s.1) else {
+        return Err(SweepError::NoShards {
+            dir: dir.to_path_buf(),
+        }
+        .into());
+    };
+    shards.retain(|s| s.1 == n);
+    let mut tables = Vec::new();
+    let mut missing = Vec::new();
+    for k in 0..n {
+        match shards.iter().find(|s| s.0 == k) {
+            Some((_, _, path)) => {
+                let table = read_table(path).map_err(SweepError::from)?;
+                tables.push((k, table));
+            }
+            None => missing.push(k),
+        }
+    }
+    let Some((_, first)) = tables.first() else {
+        return Err(SweepError::NoShards {
+            dir: dir.to_path_buf(),
+        }
+        .into());
+    };
+    let spec_path = PathBuf::from(&first.identity.spec);
+    let spec = read_spec(&spec_path)?;
+    let identity = Identity {
+        shard: None,
+        ..first.identity.clone()
+    };
+    if identity.fingerprint != spec.fingerprint {
+        return Err(SweepError::OtherSpec {
+            path: spec_path,
+            why: "the spec changed since the shards ran".into(),
+        }
+        .into());
+    }
+    let total = identity.runs as usize;
+    let names = spec.plan.names();
+    let metric_names: Vec<String> = spec.metrics.iter().map(|m| m.name.clone()).collect();
+    let head = header(&names, &metric_names);
+    let mut rows = Vec::new();
+    for (k, mut table) in tables {
+        let range = shard_range(total, k, n);
+        let consistent = table.identity.fingerprint == identity.fingerprint
+            && table.identity.runs == identity.runs
+            && table.header == head;
+        if !consistent {
+            return Err(SweepError::OtherSpec {
+                path: dir.join(format!("shard-{k}-of-{n}.csv")),
+                why: "its spec, plan or columns differ from the other shards'".into(),
+            }
+            .into());
+        }
+        table
+            .resplit(names.len())
+            .map_err(|why| SweepError::OtherSpec {
+                path: dir.join(format!("shard-{k}-of-{n}.csv")),
+                why,
+            })?;
+        let complete = range
+            .clone()
+            .all(|i| table.rows.iter().any(|r| r.index == i));
+        if !complete {
+            missing.push(k);
+            continue;
+        }
+        rows.extend(table.rows.into_iter().filter(|r| range.contains(&r.index)));
+    }
+    if !missing.is_empty() {
+        missing.sort_unstable();
+        let list: Vec<String> = missing.iter().map(usize::to_string).collect();
+        let script = dir.join("sweep.sbatch");
+        let resubmit = if script.exists() {
+            format!(
+                "run them again: sbatch --array={} {}",
+                list.join(","),
+                script.display()
+            )
+        } else {
+            format!(
+                "run them again: vams sweep {} --shard K/{n} --out {} for K in {}",
+                spec_path.display(),
+                dir.display(),
+                list.join(", ")
+            )
+        };
+        eprintln!("missing or partial shards: {}", list.join(", "));
+        return Err(SweepError::MissingShards {
+            dir: dir.to_path_buf(),
+            missing: missing.len(),
+            shards: n,
+            resubmit,
+        }
+        .into());
+    }
+    rows.sort_by_key(|r| r.index);
+    let path = dir.join("results.csv");
+    drop(TableWriter::create(&path, &identity, &head, &rows).map_err(SweepError::from)?);
+    eprint!("{}", summary::summary(&spec.plan, &metric_names, &rows));
+    let mut written = vec![path.display().to_string()];
+    written.extend(draw(&spec, &rows, Vec::new(), dir)?);
+    eprintln!(
+        "collected {n} shards, {} runs; wrote {}",
+        rows.len(),
+        written.join(", ")
+    );
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn shards_cover_every_run_once() {
+        for total in [0, 1, 7, 40, 1001] {
+            for n in 1..12 {
+                let mut next = 0;
+                for k in 0..n {
+                    let r = shard_range(total, k, n);
+                    assert_eq!(r.start, next);
+                    assert!(r.len() + 1 >= total / n && r.len() <= total / n + 1);
+                    next = r.end;
+                }
+                assert_eq!(next, total);
+            }
+        }
+        assert_eq!(parse_shard("3/10"), Ok((3, 10)));
+        assert!(parse_shard("10/10").is_err() && parse_shard("1/0").is_err());
+        assert!(parse_shard("a/b").unwrap_err().contains("K/N"));
+    }
+}

@@ -1,0 +1,218 @@
+//! One run of a sweep: elaborate the analysed design with the run's generics (the sources
+//! are parsed and analysed once for the whole sweep), simulate it keeping only the columns
+//! the metrics and the envelope read, evaluate the metrics, and make the run's row. A run
+//! that fails (elaboration, solver, run-time error, assertion of severity failure) is a row
+//! with its message, never a stopped sweep.
+
+use crate::cli::compile::Prepared;
+use crate::diagnostics::Located;
+use crate::elaborate::{ElabOptions, elaborate_analysed};
+use crate::kernel::{Cancel, Outcome, Severity, SimError, SimOptions, simulate_into};
+use crate::source::SourceMap;
+use crate::waveform::{ColumnKind, Waveforms};
+
+use super::metric::Metric;
+use super::plan::{ParamValue, Run};
+use super::table::{Row, Status};
+
+/// What every run shares.
+pub struct Job<'a> {
+    pub prepared: &'a Prepared,
+    pub parameters: Vec<String>,
+    /// Generics set alike in every run (the spec's `[design] generics`).
+    pub fixed: Vec<(String, String)>,
+    pub metrics: &'a [Metric],
+    /// The columns drawn as envelopes.
+    pub envelope: &'a [String],
+    pub stop: f64,
+    pub reltol: f64,
+    pub abstol: Option<f64>,
+    pub max_step: Option<f64>,
+    pub cancel: Cancel,
+}
+
+/// A run's envelope column: times, values, and whether it holds between samples.
+pub type Trace = (Vec<f64>, Vec<f64>, bool);
+
+/// A finished run.
+pub struct Done {
+    pub row: Row,
+    /// Per envelope column, its trace (`None` where the run has no such column).
+    pub traces: Vec<Option<Trace>>,
+}
+
+/// `message at file:line:col` of a located diagnostic.
+fn located<D: Located>(d: &D, sources: &SourceMap) -> String {
+    let span = d.primary_span();
+    if span == Default::default() || span.file.0 as usize >= sources.len() {
+        return d.to_string();
+    }
+    let (line, col) = sources.line_col(span);
+    format!("{d} at {}:{line}:{col}", sources.file(span.file).name)
+}
+
+impl Job<'_> {
+    /// The columns a run records: what the metrics and the envelope read.
+    fn probes(&self) -> Vec<String> {
+        let mut probes: Vec<String> = Vec::new();
+        for name in self
+            .metrics
+            .iter()
+            .flat_map(Metric::probes)
+            .chain(self.envelope.iter().cloned())
+        {
+            if !probes.contains(&name) {
+                probes.push(name);
+            }
+        }
+        probes
+    }
+
+    /// The generics of a run: the fixed ones, then the run's parameters (which win).
+    pub fn generics(&self, run: &Run) -> Vec<(String, String)> {
+        let mut generics = self.fixed.clone();
+        for (name, value) in self.parameters.iter().zip(&run.values) {
+            generics.retain(|(n, _)| n != name);
+            generics.push((name.clone(), value.literal()));
+        }
+        generics
+    }
+
+    /// Runs `run`; `None` when the sweep was interrupted during it (nothing to record: a
+    /// resumed sweep runs it again).
+    pub fn run(&self, run: &Run) -> Option<Done> {
+        if self.cancel.is_cancelled() {
+            return None;
+        }
+        let values: Vec<String> = run.values.iter().map(ParamValue::literal).collect();
+        let failed = |message: String| Done {
+            row: Row {
+                index: run.index,
+                case: run.case.clone(),
+                values: values.clone(),
+                metrics: vec![None; self.metrics.len()],
+                pass: self.has_limits().then_some(false),
+                status: Status::Failed,
+                message,
+            },
+            traces: vec![None; self.envelope.len()],
+        };
+        let loaded = &self.prepared.loaded;
+        let options = ElabOptions {
+            top: self.prepared.top.clone(),
+            generics: self.generics(run),
+        };
+        let design = match elaborate_analysed(
+            &self.prepared.analysis,
+            &loaded.sources,
+            &loaded.files,
+            &options,
+        ) {
+            Ok(d) => d,
+            Err(errors) => {
+                let first = errors
+                    .first()
+                    .map(|e| located(e, &loaded.sources))
+                    .unwrap_or_default();
+                return Some(failed(format!("elaboration: {first}")));
+            }
+        };
+        let sim = SimOptions {
+            stop: self.stop,
+            reltol: self.reltol,
+            abstol: self.abstol,
+            max_step: self.max_step,
+            max_order: 5,
+            probes: self.probes(),
+            progress: None,
+            keep_unknowns: false,
+            cancel: Some(self.cancel.clone()),
+        };
+        let mut waves = Waveforms::default();
+        let mut reports = Vec::new();
+        let result = simulate_into(&design, &sim, &mut waves, &mut |r| reports.push(r.clone()));
+        let end = match result {
+            Ok(end) => end,
+            Err(SimError::Interrupted { .. }) => return None,
+            Err(e) => {
+                let message = match &e {
+                    SimError::Analog { errors } if !errors.is_empty() => {
+                        located(&errors[0], &loaded.sources)
+                    }
+                    _ => located(&e, &loaded.sources),
+                };
+                let last = waves
+                    .times
+                    .last()
+                    .map(|t| format!(" (t = {})", crate::cli::time::format_time(*t)))
+                    .unwrap_or_default();
+                return Some(failed(format!("{message}{last}")));
+            }
+        };
+        if let Outcome::Failed { time } = end.outcome {
+            let why = reports
+                .iter()
+                .rev()
+                .find(|r| r.severity == Severity::Failure)
+                .map_or("assertion of severity failure".to_string(), |r| {
+                    r.message.clone()
+                });
+            return Some(failed(format!(
+                "failure at t = {}: {why}",
+                crate::cli::time::format_time(time)
+            )));
+        }
+        let mut problems = Vec::new();
+        let mut pass = self.has_limits().then_some(true);
+        let metrics = self
+            .metrics
+            .iter()
+            .map(|m| match m.evaluate(&waves, &end.reports) {
+                Ok(v) => {
+                    if m.check(v) == Some(false) {
+                        pass = Some(false);
+                    }
+                    Some(v)
+                }
+                Err(e) => {
+                    problems.push(format!("{}: {e}", m.name));
+                    if pass.is_some() {
+                        pass = Some(false);
+                    }
+                    None
+                }
+            })
+            .collect();
+        let traces = self
+            .envelope
+            .iter()
+            .map(|name| {
+                waves.column(name).map(|c| {
+                    (
+                        waves.times.clone(),
+                        c.values.clone(),
+                        matches!(c.kind, ColumnKind::Signal { .. }),
+                    )
+                })
+            })
+            .collect();
+        Some(Done {
+            row: Row {
+                index: run.index,
+                case: run.case.clone(),
+                values,
+                metrics,
+                pass,
+                status: Status::Ok,
+                message: problems.join("; "),
+            },
+            traces,
+        })
+    }
+
+    fn has_limits(&self) -> bool {
+        self.metrics
+            .iter()
+            .any(|m| m.limit.min.is_some() || m.limit.max.is_some())
+    }
+}
