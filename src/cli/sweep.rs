@@ -237,15 +237,24 @@ pub fn run(args: &SweepArgs) -> Result<(), Report> {
     );
     let plan = &spec.plan;
     let mut failures = 0;
+    // Once a run is interrupted, later ones are not recorded either (a few may have finished
+    // meanwhile): the table stays the runs in order, which a resumed sweep extends.
+    let mut interrupted = false;
     super::parallel::run_in_order(
         &todo,
         jobs,
         |&index| job.run(&plan.run(index)),
         |k, result| {
+            if interrupted {
+                return;
+            }
             let done = match result {
                 Ok(Some(done)) => done,
                 // Interrupted: not recorded, a resumed sweep runs it again.
-                Ok(None) => return,
+                Ok(None) => {
+                    interrupted = true;
+                    return;
+                }
                 Err(panic) => {
                     // An internal error in one run is that run's failure, not the sweep's.
                     let run = plan.run(todo[k]);

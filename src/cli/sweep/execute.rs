@@ -175,7 +175,8 @@ impl Job<'_> {
                     Some(v)
                 }
                 Err(e) => {
-                    problems.push(format!("{}: {e}", m.name));
+                    // The error names its metric.
+                    problems.push(e.to_string());
                     if pass.is_some() {
                         pass = Some(false);
                     }

@@ -31,6 +31,13 @@ impl ParamValue {
     }
 }
 
+/// `x` rounded to 12 significant digits: values derived from a percentage or a range
+/// (`0.003 * 0.8`) read as the user would write them (`0.0024`, not
+/// `0.0024000000000000002`), 1e-12 from the exact product.
+pub fn tidy(x: f64) -> f64 {
+    format!("{x:.11e}").parse().unwrap_or(x)
+}
+
 /// A `[corners]` parameter.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Corner {
@@ -215,7 +222,7 @@ impl Plan {
                 } else {
                     let (p, up) = ((index - 1) / 2, (index - 1) % 2 == 1);
                     let sign = if up { 1.0 } else { -1.0 };
-                    values[p] = nominal[p] * (1.0 + sign * delta);
+                    values[p] = tidy(nominal[p] * (1.0 + sign * delta));
                     format!(
                         "{}{}{}%",
                         names[p],

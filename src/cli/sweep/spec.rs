@@ -13,7 +13,7 @@ use thiserror::Error;
 use toml::Spanned;
 
 use super::metric::{Metric, MetricTable};
-use super::plan::{Corner, CornerSet, Level, ParamValue, Plan};
+use super::plan::{Corner, CornerSet, Level, ParamValue, Plan, tidy};
 use super::sample::{Distribution, Sampler, SamplerError, Sampling};
 use crate::cli::params::is_generic_path;
 use crate::cli::time::parse_positive_time;
@@ -663,12 +663,12 @@ fn grid_values(at: &Locator, v: &Spanned<toml::Value>) -> Result<Vec<ParamValue>
                     } else {
                         k as f64 / (steps - 1) as f64
                     };
-                    ParamValue::Number(if log {
-                        from * (to / from).powf(w)
-                    } else if k + 1 == steps && steps > 1 {
+                    ParamValue::Number(if k + 1 == steps && steps > 1 {
                         to
+                    } else if log {
+                        tidy(from * (to / from).powf(w))
                     } else {
-                        from + w * (to - from)
+                        tidy(from + w * (to - from))
                     })
                 })
                 .collect())
@@ -700,7 +700,7 @@ fn corner(at: &Locator, name: String, v: &Spanned<toml::Value>) -> Result<Corner
         (Some(lo), Some(hi), None) => (lo, hi),
         (None, None, Some((tol, relative))) if tol >= 0.0 => {
             let d = if relative { tol * nominal.abs() } else { tol };
-            (nominal - d, nominal + d)
+            (tidy(nominal - d), tidy(nominal + d))
         }
         _ => {
             return Err(at.error(

@@ -175,7 +175,7 @@ pub fn summary(plan: &Plan, metric_names: &[String], rows: &[Row]) -> String {
         let _ = writeln!(
             out,
             "normalised sensitivities (dM/M)/(dp/p), central differences of +-{} %:",
-            short(delta * 100.0)
+            crate::output::csv::format_number(delta * 100.0)
         );
         let _ = write!(out, "{:<16}", "parameter");
         for name in metric_names {
