@@ -11,9 +11,14 @@
 # or munged is missing; writes a slurm.conf for one node (this host, `hostname -s`, with the CPU
 # count and memory `slurmd -C` finds) in one default partition; starts a private munged, then
 # slurmctld and slurmd (as the calling user: SlurmUser and SlurmdUser are whoever runs this,
-# root in CI); waits up to 30 s for `sinfo` to show the node idle; prints the `export` lines
-# for the client commands (sbatch, squeue, sinfo, scancel) on standard output, everything
-# else on standard error. Starting a running cluster only prints the lines again.
+# root in CI; root is needed only to install, and the jobs run as that user); waits up to
+# 30 s for `sinfo` to show the node idle; prints the `export` lines for the client commands
+# (sbatch, squeue, sinfo, scancel) on standard output, everything else on standard error.
+# Starting a running cluster only prints the lines again.
+#
+# Times measured on the 2-core Debian 12 machine: install (apt-get update and the packages'
+# download from scratch) and start 11.6 s, start alone 1-2 s, a 4-task array about 4 s from
+# sbatch to the end, stop under 1 s (slurmctld saves its state; TERM to all three at once).
 #
 # Where its state lives: ${VAMS_SLURM_DIR:-${TMPDIR:-/tmp}/vams-slurm}, holding slurm.conf,
 # cgroup.conf, munge/ (the key, socket, pid, log and seed of the private munged), state/
