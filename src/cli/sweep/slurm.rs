@@ -8,17 +8,17 @@
 //! read the cluster's configuration from the environment (`SLURM_CONF`), which `Slurm`
 //! can extend for one call (the tests' local cluster) without touching the process's own.
 
+mod client;
 mod script;
 mod time;
 
+pub use client::Slurm;
 pub use script::{ArrayJob, array_list, resubmit_command, shell_quote};
 pub use time::validate_time;
 
-use std::ffi::OsString;
 use std::fmt;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use miette::Diagnostic;
 use thiserror::Error;
@@ -153,122 +153,6 @@ pub fn wait(job: &JobId, timeout: Duration) -> Result<(), SlurmError> {
     Slurm::default().wait(job, timeout)
 }
 
-/// The client commands with variables added to the process's environment (`SLURM_CONF` of
-/// a local cluster, in the tests): setting them on the process itself would need `unsafe`
-/// `std::env::set_var`. `Slurm::default()` adds none.
-#[derive(Clone, Debug, Default)]
-pub struct Slurm {
-    env: Vec<(OsString, OsString)>,
-}
-
-impl Slurm {
-    /// A client whose commands also see `env`.
-    pub fn with_env<K: Into<OsString>, V: Into<OsString>>(
-        env: impl IntoIterator<Item = (K, V)>,
-    ) -> Slurm {
-        Slurm {
-            env: env.into_iter().map(|(k, v)| (k.into(), v.into())).collect(),
-        }
-    }
-
-    /// See [`submit`].
-    pub fn submit(&self, script: &Path, only: Option<&[usize]>) -> Result<JobId, SlurmError> {
-        let mut args: Vec<OsString> = vec!["--parsable".into()];
-        if let Some(only) = only {
-            if only.is_empty() {
-                return Err(SlurmError::NoTask);
-            }
-            args.push(format!("--array={}", array_list(only)).into());
-        }
-        args.push(script.into());
-        let output = self.run("sbatch", &args)?;
-        if !output.status.success() {
-            return Err(failed("sbatch", &args, &output));
-        }
-        JobId::parse(&String::from_utf8_lossy(&output.stdout))
-    }
-
-    /// See [`wait`]. Accounting (`sacct`) is not needed nor used: a job has left the queue
-    /// when `squeue -j` lists none of its tasks in a state before the end, or no longer knows
-    /// the id (after `MinJobAge`).
-    pub fn wait(&self, job: &JobId, timeout: Duration) -> Result<(), SlurmError> {
-        let start = Instant::now();
-        let mut args: Vec<OsString> = vec![];
-        if let Some(cluster) = &job.cluster {
-            args.push(format!("--clusters={cluster}").into());
-        }
-        args.extend(["-h", "-o", "%T", "-j"].map(OsString::from));
-        args.push(job.id.to_string().into());
-        // Short polls first (a small array is done within seconds), then every 2 s.
-        let mut pause = Duration::from_millis(200);
-        loop {
-            let output = self.run("squeue", &args)?;
-            let text = String::from_utf8_lossy(&output.stdout);
-            let unknown = String::from_utf8_lossy(&output.stderr).contains("Invalid job id");
-            if !output.status.success() && !unknown {
-                return Err(failed("squeue", &args, &output));
-            }
-            if unknown || text.lines().all(|state| finished(state.trim())) {
-                return Ok(());
-            }
-            let waited = start.elapsed();
-            if waited >= timeout {
-                return Err(SlurmError::Timeout {
-                    job: job.clone(),
-                    waited,
-                });
-            }
-            std::thread::sleep(pause.min(timeout - waited));
-            pause = (pause * 2).min(Duration::from_secs(2));
-        }
-    }
-
-    fn run(&self, program: &'static str, args: &[OsString]) -> Result<Output, SlurmError> {
-        Command::new(program)
-            .args(args)
-            .envs(self.env.iter().map(|(k, v)| (k, v)))
-            .output()
-            .map_err(|source| match source.kind() {
-                std::io::ErrorKind::NotFound => SlurmError::Missing { program },
-                _ => SlurmError::Spawn { program, source },
-            })
-    }
-}
-
-/// A state `squeue -o %T` prints once a job or task is over (a clusters header line, on a
-/// multi-cluster query, counts as one too: it is no task).
-fn finished(state: &str) -> bool {
-    const ACTIVE: [&str; 13] = [
-        "PENDING",
-        "RUNNING",
-        "SUSPENDED",
-        "COMPLETING",
-        "CONFIGURING",
-        "REQUEUED",
-        "REQUEUE_FED",
-        "REQUEUE_HOLD",
-        "RESIZING",
-        "SIGNALING",
-        "STAGE_OUT",
-        "STOPPED",
-        "RESV_DEL_HOLD",
-    ];
-    !ACTIVE.contains(&state)
-}
-
-/// The error of a client command that ran and failed, with its standard error.
-fn failed(program: &str, args: &[OsString], output: &Output) -> SlurmError {
-    let words: Vec<String> = args
-        .iter()
-        .map(|a| shell_quote(&a.to_string_lossy()).into_owned())
-        .collect();
-    SlurmError::Failed {
-        command: format!("{program} {}", words.join(" ")),
-        status: output.status.to_string(),
-        stderr: String::from_utf8_lossy(&output.stderr).trim().to_owned(),
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -292,35 +176,6 @@ mod tests {
                 "{bad}"
             );
         }
-    }
-
-    #[test]
-    fn states_before_and_after_the_end() {
-        assert!(!finished("PENDING"));
-        assert!(!finished("COMPLETING"));
-        assert!(finished("COMPLETED"));
-        assert!(finished("FAILED"));
-        assert!(finished("CANCELLED"));
-    }
-
-    #[test]
-    fn an_empty_task_list_is_refused_before_sbatch_runs() {
-        let err = Slurm::default()
-            .submit(Path::new("/nonexistent/sweep.sbatch"), Some(&[]))
-            .unwrap_err();
-        assert!(matches!(err, SlurmError::NoTask));
-    }
-
-    #[test]
-    fn a_missing_client_says_how_to_get_one() {
-        // An empty PATH: no sbatch can be found whatever is installed.
-        let err = Slurm::with_env([("PATH", "")])
-            .submit(Path::new("/nonexistent/sweep.sbatch"), None)
-            .unwrap_err();
-        assert!(
-            matches!(err, SlurmError::Missing { program: "sbatch" }),
-            "{err:?}"
-        );
     }
 
     #[test]
