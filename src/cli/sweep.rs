@@ -15,6 +15,7 @@ pub mod execute;
 pub mod metric;
 pub mod plan;
 pub mod sample;
+pub mod slurm;
 pub mod spec;
 pub mod summary;
 pub mod table;
