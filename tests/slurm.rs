@@ -106,6 +106,65 @@ fn job_array_runs_every_shard_and_resubmits_only_some() {
     );
 }
 
+/// The check: a 40-run Monte Carlo through `vams sweep --slurm --wait` on the real
+/// cluster, its shards collected, equals the local run's table byte for byte.
+#[test]
+fn a_monte_carlo_sweep_through_slurm_equals_the_local_run() {
+    let cluster = match LocalSlurm::start() {
+        Ok(cluster) => cluster,
+        Err(reason) => {
+            eprintln!("skipping: {reason}");
+            return;
+        }
+    };
+    let tmp = tempfile::tempdir().unwrap();
+    let spec = tmp.path().join("mc.toml");
+    let model = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/sweep/decay.vhd");
+    fs::write(
+        &spec,
+        format!(
+            "[design]\nfiles = [\"{model}\"]\ntop = \"tb_decay\"\n\n[monte_carlo]\nruns = 39\nseed = 5\n[monte_carlo.parameters]\ntau = {{ distribution = \"normal\", nominal = 1e-3, tolerance = \"20%\" }}\n\n[metrics]\nfall = {{ kind = \"cross\", of = \"x\", value = 0.5, edge = \"falling\" }}\nmean = {{ kind = \"mean\", of = \"x\" }}\n"
+        ),
+    )
+    .unwrap();
+    let vams = env!("CARGO_BIN_EXE_vams");
+    let local = tmp.path().join("local");
+    let status = std::process::Command::new(vams)
+        .args([
+            "sweep",
+            spec.to_str().unwrap(),
+            "--out",
+            local.to_str().unwrap(),
+        ])
+        .status()
+        .unwrap();
+    assert!(status.success());
+    let remote = tmp.path().join("remote");
+    let out = cluster
+        .command(vams)
+        .args([
+            "sweep",
+            spec.to_str().unwrap(),
+            "--slurm",
+            "--array-size",
+            "4",
+            "--time",
+            "5",
+            "--wait",
+            "--out",
+            remote.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    assert!(stderr.contains("submitted job"), "{stderr}");
+    assert!(stderr.contains("collected 4 shards, 40 runs"), "{stderr}");
+    let a = fs::read(local.join("results.csv")).unwrap();
+    let b = fs::read(remote.join("results.csv")).unwrap();
+    assert!(a == b, "the collected table differs from the local one");
+}
+
 /// Task `k`'s log, or what went wrong reading it.
 fn log(job: &ArrayJob, k: usize) -> String {
     let path = job.log_path(k);

@@ -83,8 +83,31 @@ pub struct SweepArgs {
     pub yes: bool,
     /// Run only shard K of N (K from 0): a contiguous block of the runs, into
     /// DIR/shard-K-of-N.csv.
-    #[arg(long, value_name = "K/N", value_parser = parse_shard)]
+    #[arg(long, value_name = "K/N", value_parser = parse_shard, conflicts_with = "slurm")]
     pub shard: Option<(usize, usize)>,
+    /// Run the sweep as a Slurm job array: write DIR/sweep.sbatch, whose task K runs
+    /// `--shard K/N`, and submit it with sbatch; then `vams sweep collect DIR`.
+    #[arg(long)]
+    pub slurm: bool,
+    /// Tasks of the job array (shards); default: 100, or fewer when the plan has fewer runs.
+    #[arg(long, value_name = "N", requires = "slurm", value_parser = clap::value_parser!(u32).range(1..))]
+    pub array_size: Option<u32>,
+    /// Slurm partition of the tasks (sbatch --partition); default: the cluster's.
+    #[arg(long, value_name = "P", requires = "slurm")]
+    pub partition: Option<String>,
+    /// Time limit of each task (sbatch --time: MM, MM:SS, HH:MM:SS, D-HH, D-HH:MM, D-HH:MM:SS).
+    #[arg(long, value_name = "TIME", requires = "slurm", value_parser = parse_slurm_time)]
+    pub time: Option<String>,
+    /// Write and print the job script without submitting it.
+    #[arg(long, requires = "slurm")]
+    pub dry_run: bool,
+    /// Wait for the job array to end, then collect its shards.
+    #[arg(long, requires = "slurm", conflicts_with = "dry_run")]
+    pub wait: bool,
+}
+
+fn parse_slurm_time(text: &str) -> Result<String, String> {
+    slurm::validate_time(text).map(|()| text.to_string())
 }
 
 /// `vams sweep collect DIR`.
@@ -153,6 +176,9 @@ pub enum SweepError {
     #[error("cannot write `{}`: {reason}", path.display())]
     #[diagnostic(code(vams::sweep::write))]
     Write { path: PathBuf, reason: String },
+    #[error(transparent)]
+    #[diagnostic(transparent)]
+    Slurm(#[from] slurm::SlurmError),
     #[error("cannot draw `{}`: {reason}", path.display())]
     #[diagnostic(code(vams::sweep::plot))]
     Plot { path: PathBuf, reason: String },
@@ -177,6 +203,9 @@ pub fn run(args: &SweepArgs) -> Result<(), Report> {
         path: out.clone(),
         reason: e.to_string(),
     })?;
+    if args.slurm {
+        return submit(args, spec_path, &out, total);
+    }
     let (range, table_path) = match args.shard {
         Some((k, n)) => (
             shard_range(total, k, n),
@@ -325,6 +354,60 @@ pub fn run(args: &SweepArgs) -> Result<(), Report> {
         written.join(", ")
     );
     Ok(())
+}
+
+/// `--slurm`: the job array of the sweep's shards, written, then submitted (or printed).
+fn submit(args: &SweepArgs, spec_path: &Path, out: &Path, total: usize) -> Result<(), Report> {
+    let absolute = |p: &Path| std::path::absolute(p).unwrap_or_else(|_| p.to_path_buf());
+    let write_error = |path: &Path, e: std::io::Error| SweepError::Write {
+        path: path.to_path_buf(),
+        reason: e.to_string(),
+    };
+    let vams = std::env::current_exe().map_err(|e| write_error(Path::new("vams"), e))?;
+    let shards = args
+        .array_size
+        .map_or(100, |n| n as usize)
+        .min(total.max(1));
+    let stem = spec_path
+        .file_stem()
+        .map_or("sweep".into(), |s| s.to_string_lossy().into_owned());
+    let job = slurm::ArrayJob {
+        vams,
+        spec: absolute(spec_path),
+        out: absolute(out),
+        shards,
+        partition: args.partition.clone(),
+        time: args.time.clone(),
+        job_name: format!("vams-{stem}"),
+        // One CPU per task (the script asks for one): a shard runs its runs one at a time.
+        extra_args: vec!["--jobs".into(), "1".into(), "--resume".into()],
+    };
+    let script = slurm::write_script(&job).map_err(SweepError::from)?;
+    if args.dry_run {
+        print!("{}", job.script());
+        eprintln!(
+            "wrote {} ({shards} tasks for {total} runs); submit it with `sbatch {}`",
+            script.display(),
+            script.display()
+        );
+        return Ok(());
+    }
+    let id = slurm::submit(&script, None).map_err(SweepError::from)?;
+    eprintln!(
+        "submitted job {id}: {shards} tasks for {total} runs, script {}",
+        script.display()
+    );
+    if !args.wait {
+        eprintln!(
+            "when it has ended: vams sweep collect {}",
+            job.out.display()
+        );
+        return Ok(());
+    }
+    // A sweep's tasks may queue for long on a busy cluster: wait up to a week.
+    slurm::wait(&id, std::time::Duration::from_secs(7 * 24 * 3600)).map_err(SweepError::from)?;
+    eprintln!("job {id} has ended");
+    collect(&job.out)
 }
 
 /// The plan's size, refused beyond [`LARGE_PLAN`] without `--yes`.
