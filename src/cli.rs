@@ -23,6 +23,7 @@ pub mod progress;
 pub mod render;
 pub mod run;
 pub mod stop;
+pub mod sweep;
 pub mod test;
 pub mod time;
 

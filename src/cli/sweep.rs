@@ -1,0 +1,3 @@
+//! Design-space runs.
+
+pub mod metric;
