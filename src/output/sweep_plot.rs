@@ -1,1 +1,45 @@
-//! Plots of a sweep.
+//! The plots of a sweep: the envelope of waveforms over many runs, histograms of metrics, and
+//! a tornado of sensitivities, as SVG or PNG (by the file's extension).
+//!
+//! Takes plain numbers (folded runs, metric values, normalised sensitivities); gives picture
+//! files written beside the target and renamed over it when complete, in the look of
+//! [`super::plot`] (its fonts, colours and legend). The envelope is folded run by run in
+//! memory bounded by its number of time bins, not by the number of runs. Knows nothing of
+//! the sweep's spec or of simulation.
+
+mod envelope;
+mod histogram;
+mod tornado;
+
+pub use envelope::{Envelope, EnvelopeBuilder, plot_envelopes};
+pub use histogram::{Histogram, bin_count, plot_histograms};
+pub use tornado::{TornadoBar, plot_tornado};
+
+/// `name (unit)`, or the name alone.
+fn label(name: &str, unit: Option<&str>) -> String {
+    match unit {
+        Some(u) if !u.is_empty() => format!("{name} ({u})"),
+        _ => name.to_string(),
+    }
+}
+
+/// `(lo, hi)` of the finite `values` padded by 6 % (a fixed pad when they are all equal),
+/// `None` when there is none.
+fn padded_range(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
+    let (lo, hi) = values
+        .filter(|v| v.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(v), b.max(v))
+        });
+    if !lo.is_finite() {
+        return None;
+    }
+    let pad = if hi > lo {
+        (hi - lo) * 0.06
+    } else if hi != 0.0 {
+        hi.abs() * 0.1
+    } else {
+        1.0
+    };
+    Some((lo - pad, hi + pad))
+}

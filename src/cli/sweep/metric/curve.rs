@@ -111,7 +111,10 @@ mod tests {
         let c = Curve::new(&[0.0, 1.0, 2.0], &[0.0, 1.0, 1.0], true);
         assert_eq!(c.value_at(0.5), 0.0);
         assert_eq!(c.value_at(1.0), 1.0);
-        assert_eq!(c.window(0.5, 1.5), vec![(0.5, 0.0), (1.0, 0.0), (1.0, 1.0), (1.5, 1.0)]);
+        assert_eq!(
+            c.window(0.5, 1.5),
+            vec![(0.5, 0.0), (1.0, 0.0), (1.0, 1.0), (1.5, 1.0)]
+        );
         let q = Curve::new(&[0.0, 1.0, 1.0, 2.0], &[0.0, 1.0, 3.0, 3.0], false);
         assert_eq!(q.value_at(0.5), 0.5);
         assert_eq!(q.value_at(1.0), 3.0);

@@ -124,7 +124,10 @@ pub(super) fn evaluate(metric: &Metric, waves: &Waveforms) -> Result<f64, Metric
         }
     };
     let span = |w: &Window| -> Result<(f64, f64), MetricError> {
-        let a = w.from.map(|t| inside("the window's start", t)).transpose()?;
+        let a = w
+            .from
+            .map(|t| inside("the window's start", t))
+            .transpose()?;
         let b = w.to.map(|t| inside("the window's end", t)).transpose()?;
         Ok((a.unwrap_or(start), b.unwrap_or(end)))
     };
@@ -171,7 +174,10 @@ pub(super) fn evaluate(metric: &Metric, waves: &Waveforms) -> Result<f64, Metric
         MetricKind::SettlingTime {
             from, band, target, ..
         } => {
-            let a = from.map(|t| inside("`from`", t)).transpose()?.unwrap_or(start);
+            let a = from
+                .map(|t| inside("`from`", t))
+                .transpose()?
+                .unwrap_or(start);
             let initial = curve.value_at(a);
             let reference = target.unwrap_or(curve.last());
             let half = match *band {
@@ -197,7 +203,10 @@ pub(super) fn evaluate(metric: &Metric, waves: &Waveforms) -> Result<f64, Metric
             }
         }
         MetricKind::Overshoot { from, .. } => {
-            let a = from.map(|t| inside("`from`", t)).transpose()?.unwrap_or(start);
+            let a = from
+                .map(|t| inside("`from`", t))
+                .transpose()?
+                .unwrap_or(start);
             let initial = curve.value_at(a);
             let last = curve.last();
             let step = last - initial;

@@ -9,8 +9,8 @@ use std::fmt;
 use std::ops::Range;
 
 use miette::Diagnostic;
-use serde::de::{self, Deserializer, MapAccess, Visitor};
 use serde::Deserialize;
+use serde::de::{self, Deserializer, MapAccess, Visitor};
 use thiserror::Error;
 use toml::Spanned;
 
@@ -167,9 +167,7 @@ impl MetricSpec {
         let of = || of.clone().unwrap_or_default();
         let time = |v: &Option<Spanned<NumberOrText>>| -> Result<Option<f64>, MetricSpecError> {
             let Some(v) = v else { return Ok(None) };
-            time_of(v)
-                .map(Some)
-                .map_err(|(m, h)| fail(m, h, v.span()))
+            time_of(v).map(Some).map_err(|(m, h)| fail(m, h, v.span()))
         };
         let (from, to) = (time(&self.from)?, time(&self.to)?);
         if let (Some(a), Some(b), Some(f)) = (from, to, &self.from)
@@ -365,8 +363,14 @@ fn band_of(v: &Spanned<NumberOrText>) -> Result<Band, (String, String)> {
     };
     match x {
         Some(x) if x.is_finite() && x >= 0.0 => Ok(band(x)),
-        Some(x) => Err((format!("the band `{x}` is negative or not finite"), HELP.into())),
-        None => Err(("the band is not a number or a percentage".into(), HELP.into())),
+        Some(x) => Err((
+            format!("the band `{x}` is negative or not finite"),
+            HELP.into(),
+        )),
+        None => Err((
+            "the band is not a number or a percentage".into(),
+            HELP.into(),
+        )),
     }
 }
 

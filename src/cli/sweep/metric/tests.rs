@@ -74,32 +74,80 @@ fn ramp() -> Waveforms {
 #[test]
 fn statistics_of_a_ramp_interpolate_the_window_edges() {
     let w = ramp();
-    close(value(r#"{ kind = "max", of = "v", from = "2.5 s", to = 7.5 }"#, &w), 7.5, 1e-12);
-    close(value(r#"{ kind = "min", of = "v", from = 2.5, to = "7.5s" }"#, &w), 2.5, 1e-12);
-    close(value(r#"{ kind = "mean", of = "v", from = 2.5, to = 7.5 }"#, &w), 5.0, 1e-12);
-    close(value(r#"{ kind = "peak_to_peak", of = "v", from = 2.5, to = 7.5 }"#, &w), 5.0, 1e-12);
+    close(
+        value(
+            r#"{ kind = "max", of = "v", from = "2.5 s", to = 7.5 }"#,
+            &w,
+        ),
+        7.5,
+        1e-12,
+    );
+    close(
+        value(r#"{ kind = "min", of = "v", from = 2.5, to = "7.5s" }"#, &w),
+        2.5,
+        1e-12,
+    );
+    close(
+        value(r#"{ kind = "mean", of = "v", from = 2.5, to = 7.5 }"#, &w),
+        5.0,
+        1e-12,
+    );
+    close(
+        value(
+            r#"{ kind = "peak_to_peak", of = "v", from = 2.5, to = 7.5 }"#,
+            &w,
+        ),
+        5.0,
+        1e-12,
+    );
     // RMS of t over [0, 3]: sqrt(∫t² dt / 3) = sqrt(3), exact on linear pieces.
-    close(value(r#"{ kind = "rms", of = "v", to = "3 s" }"#, &w), 3f64.sqrt(), 1e-12);
+    close(
+        value(r#"{ kind = "rms", of = "v", to = "3 s" }"#, &w),
+        3f64.sqrt(),
+        1e-12,
+    );
     close(value(r#"{ kind = "final", of = "v" }"#, &w), 10.0, 0.0);
-    close(value(r#"{ kind = "at", of = "v", time = "2.9 s" }"#, &w), 2.9, 1e-12);
+    close(
+        value(r#"{ kind = "at", of = "v", time = "2.9 s" }"#, &w),
+        2.9,
+        1e-12,
+    );
     let centred = sampled(10.0, 1.0, |t| t - 7.0);
-    close(value(r#"{ kind = "max_abs", of = "v" }"#, &centred), 7.0, 0.0);
-    close(value(r#"{ kind = "max_abs", of = "v", from = 5 }"#, &centred), 3.0, 0.0);
+    close(
+        value(r#"{ kind = "max_abs", of = "v" }"#, &centred),
+        7.0,
+        0.0,
+    );
+    close(
+        value(r#"{ kind = "max_abs", of = "v", from = 5 }"#, &centred),
+        3.0,
+        0.0,
+    );
 }
 
 #[test]
 fn the_mean_weighs_time_not_samples() {
     // Zero for 9 s, then a ramp to 10 in the last second: the mean is 0.5, not 10/3.
-    let w = waves(vec![0.0, 9.0, 10.0], vec![quantity("v", vec![0.0, 0.0, 10.0])]);
+    let w = waves(
+        vec![0.0, 9.0, 10.0],
+        vec![quantity("v", vec![0.0, 0.0, 10.0])],
+    );
     close(value(r#"{ kind = "mean", of = "v" }"#, &w), 0.5, 1e-12);
 }
 
 #[test]
 fn a_sine_has_rms_amplitude_over_root_two_and_mean_zero() {
     let w = sampled(3.0, 1e-3, |t| 2.0 * (std::f64::consts::TAU * t).sin());
-    let rms = value(r#"{ kind = "rms", of = "v", from = 0.25, to = "2.25 s" }"#, &w);
+    let rms = value(
+        r#"{ kind = "rms", of = "v", from = 0.25, to = "2.25 s" }"#,
+        &w,
+    );
     close(rms, 2.0 / 2f64.sqrt(), 1e-5);
-    close(value(r#"{ kind = "mean", of = "v", from = 0.1, to = 2.1 }"#, &w), 0.0, 1e-6);
+    close(
+        value(r#"{ kind = "mean", of = "v", from = 0.1, to = 2.1 }"#, &w),
+        0.0,
+        1e-6,
+    );
     close(value(r#"{ kind = "max", of = "v" }"#, &w), 2.0, 1e-5);
 }
 
@@ -109,21 +157,41 @@ fn crossings_are_interpolated_and_counted_by_edge() {
         vec![0.0, 1.0, 2.0, 3.0],
         vec![quantity("v", vec![0.0, 2.0, 0.0, 2.0])],
     );
-    let cross = |rest: &str| value(&format!(r#"{{ kind = "cross", of = "v", value = 1, {rest} }}"#), &w);
+    let cross = |rest: &str| {
+        value(
+            &format!(r#"{{ kind = "cross", of = "v", value = 1, {rest} }}"#),
+            &w,
+        )
+    };
     close(cross(r#"edge = "rising""#), 0.5, 1e-12);
     close(cross(r#"edge = "falling""#), 1.5, 1e-12);
     close(cross(r#"edge = "rising", nth = 2"#), 2.5, 1e-12);
     close(cross(r#"edge = "either", nth = 3"#), 2.5, 1e-12);
     close(cross("nth = 2"), 1.5, 1e-12);
     close(cross(r#"from = "1 s""#), 1.5, 1e-12);
-    let err = eval(r#"{ kind = "cross", of = "v", value = 1, edge = "rising", nth = 3 }"#, &w);
+    let err = eval(
+        r#"{ kind = "cross", of = "v", value = 1, edge = "rising", nth = 3 }"#,
+        &w,
+    );
     assert!(
-        matches!(err, Err(MetricError::NoCrossing { found: 2, nth: 3, .. })),
+        matches!(
+            err,
+            Err(MetricError::NoCrossing {
+                found: 2,
+                nth: 3,
+                ..
+            })
+        ),
         "{err:?}"
     );
     // A sine of amplitude 2 crosses 1 rising at 1/12 + k and falling at 5/12 + k.
     let s = sampled(3.0, 1e-3, |t| 2.0 * (std::f64::consts::TAU * t).sin());
-    let at = |rest: &str| value(&format!(r#"{{ kind = "cross", of = "v", value = 1.0, {rest} }}"#), &s);
+    let at = |rest: &str| {
+        value(
+            &format!(r#"{{ kind = "cross", of = "v", value = 1.0, {rest} }}"#),
+            &s,
+        )
+    };
     close(at(r#"edge = "rising", nth = 2"#), 13.0 / 12.0, 1e-5);
     close(at(r#"edge = "falling""#), 5.0 / 12.0, 1e-5);
     close(at("nth = 3"), 13.0 / 12.0, 1e-5);
@@ -131,13 +199,20 @@ fn crossings_are_interpolated_and_counted_by_edge() {
 
 #[test]
 fn touching_the_level_is_no_crossing_and_resting_on_it_counts_once() {
-    let touch = waves(vec![0.0, 1.0, 2.0], vec![quantity("v", vec![0.0, 1.0, 0.0])]);
+    let touch = waves(
+        vec![0.0, 1.0, 2.0],
+        vec![quantity("v", vec![0.0, 1.0, 0.0])],
+    );
     assert!(eval(r#"{ kind = "cross", of = "v", value = 1 }"#, &touch).is_err());
     let rest = waves(
         vec![0.0, 1.0, 2.0, 3.0],
         vec![quantity("v", vec![0.0, 1.0, 1.0, 2.0])],
     );
-    close(value(r#"{ kind = "cross", of = "v", value = 1 }"#, &rest), 1.0, 0.0);
+    close(
+        value(r#"{ kind = "cross", of = "v", value = 1 }"#, &rest),
+        1.0,
+        0.0,
+    );
     assert!(eval(r#"{ kind = "cross", of = "v", value = 1, nth = 2 }"#, &rest).is_err());
 }
 
@@ -149,9 +224,21 @@ fn equal_times_are_jumps_and_the_value_at_one_is_the_value_after() {
     );
     close(value(r#"{ kind = "mean", of = "v" }"#, &w), 1.75, 1e-12);
     close(value(r#"{ kind = "max", of = "v", to = 1 }"#, &w), 3.0, 0.0);
-    close(value(r#"{ kind = "max", of = "v", to = 0.5 }"#, &w), 0.5, 1e-12);
-    close(value(r#"{ kind = "at", of = "v", time = 1 }"#, &w), 3.0, 0.0);
-    close(value(r#"{ kind = "cross", of = "v", value = 2 }"#, &w), 1.0, 0.0);
+    close(
+        value(r#"{ kind = "max", of = "v", to = 0.5 }"#, &w),
+        0.5,
+        1e-12,
+    );
+    close(
+        value(r#"{ kind = "at", of = "v", time = 1 }"#, &w),
+        3.0,
+        0.0,
+    );
+    close(
+        value(r#"{ kind = "cross", of = "v", value = 2 }"#, &w),
+        1.0,
+        0.0,
+    );
 }
 
 #[test]
@@ -160,14 +247,38 @@ fn signals_hold_their_value_until_the_next_sample() {
         vec![0.0, 1.0, 2.0, 3.0],
         vec![signal("s", vec![0.0, 1.0, 1.0, 0.0])],
     );
-    close(value(r#"{ kind = "mean", of = "s" }"#, &w), 2.0 / 3.0, 1e-12);
-    close(value(r#"{ kind = "rms", of = "s" }"#, &w), (2.0f64 / 3.0).sqrt(), 1e-12);
-    close(value(r#"{ kind = "at", of = "s", time = 0.99 }"#, &w), 0.0, 0.0);
-    close(value(r#"{ kind = "at", of = "s", time = 2.5 }"#, &w), 1.0, 0.0);
+    close(
+        value(r#"{ kind = "mean", of = "s" }"#, &w),
+        2.0 / 3.0,
+        1e-12,
+    );
+    close(
+        value(r#"{ kind = "rms", of = "s" }"#, &w),
+        (2.0f64 / 3.0).sqrt(),
+        1e-12,
+    );
+    close(
+        value(r#"{ kind = "at", of = "s", time = 0.99 }"#, &w),
+        0.0,
+        0.0,
+    );
+    close(
+        value(r#"{ kind = "at", of = "s", time = 2.5 }"#, &w),
+        1.0,
+        0.0,
+    );
     let cross = r#"{ kind = "cross", of = "s", value = 0.5, edge = "falling" }"#;
     close(value(cross, &w), 3.0, 0.0);
-    close(value(r#"{ kind = "cross", of = "s", value = 0.5 }"#, &w), 1.0, 0.0);
-    close(value(r#"{ kind = "max", of = "s", to = 0.5 }"#, &w), 0.0, 0.0);
+    close(
+        value(r#"{ kind = "cross", of = "s", value = 0.5 }"#, &w),
+        1.0,
+        0.0,
+    );
+    close(
+        value(r#"{ kind = "max", of = "s", to = 0.5 }"#, &w),
+        0.0,
+        0.0,
+    );
 }
 
 #[test]
@@ -175,19 +286,36 @@ fn a_first_order_step_settles_into_two_percent_after_tau_ln_50() {
     let tau = 0.5;
     let w = sampled(12.0, 1e-3, |t| 1.0 - (-t / tau).exp());
     let want = tau * 50f64.ln();
-    close(value(r#"{ kind = "settling_time", of = "v", band = "2%" }"#, &w), want, 1e-5);
+    close(
+        value(r#"{ kind = "settling_time", of = "v", band = "2%" }"#, &w),
+        want,
+        1e-5,
+    );
     let target = r#"{ kind = "settling_time", of = "v", band = 0.02, target = 1.0 }"#;
     close(value(target, &w), want, 1e-6);
     // Counted from `from`; zero when already in the band there.
     let later = r#"{ kind = "settling_time", of = "v", band = 0.02, target = 1.0, from = 1 }"#;
     close(value(later, &w), want - 1.0, 1e-6);
-    close(value(r#"{ kind = "settling_time", of = "v", from = "5 s", band = 0.02 }"#, &w), 0.0, 0.0);
+    close(
+        value(
+            r#"{ kind = "settling_time", of = "v", from = "5 s", band = 0.02 }"#,
+            &w,
+        ),
+        0.0,
+        0.0,
+    );
     let never = r#"{ kind = "settling_time", of = "v", band = 0.1, target = 2 }"#;
-    assert!(matches!(eval(never, &w), Err(MetricError::NeverSettles { .. })));
+    assert!(matches!(
+        eval(never, &w),
+        Err(MetricError::NeverSettles { .. })
+    ));
     assert!(metric(never).check(1.0).is_none());
     let limited = metric(r#"{ kind = "settling_time", of = "v", band = "2%", max = "1.5 s" }"#);
     assert_eq!(limited.limit.max, Some(1.5));
-    assert_eq!(limited.check(value(r#"{ kind = "settling_time", of = "v" }"#, &w)), Some(false));
+    assert_eq!(
+        limited.check(value(r#"{ kind = "settling_time", of = "v" }"#, &w)),
+        Some(false)
+    );
 }
 
 #[test]
@@ -196,10 +324,25 @@ fn overshoot_is_the_peak_beyond_the_final_value_in_percent_of_the_step() {
         vec![0.0, 1.0, 2.0, 3.0, 4.0, 10.0],
         vec![quantity("v", vec![0.0, 0.0, 1.2, 0.9, 1.0, 1.0])],
     );
-    close(value(r#"{ kind = "overshoot", of = "v" }"#, &up), 20.0, 1e-9);
-    let down = waves(up.times.clone(), vec![quantity("v", vec![5.0, 5.0, 2.6, 3.2, 3.0, 3.0])]);
-    close(value(r#"{ kind = "overshoot", of = "v", from = "1 s" }"#, &down), 20.0, 1e-9);
-    close(value(r#"{ kind = "overshoot", of = "v" }"#, &ramp()), 0.0, 0.0);
+    close(
+        value(r#"{ kind = "overshoot", of = "v" }"#, &up),
+        20.0,
+        1e-9,
+    );
+    let down = waves(
+        up.times.clone(),
+        vec![quantity("v", vec![5.0, 5.0, 2.6, 3.2, 3.0, 3.0])],
+    );
+    close(
+        value(r#"{ kind = "overshoot", of = "v", from = "1 s" }"#, &down),
+        20.0,
+        1e-9,
+    );
+    close(
+        value(r#"{ kind = "overshoot", of = "v" }"#, &ramp()),
+        0.0,
+        0.0,
+    );
     // Second order, ζ = 0.5, ωn = 1: 100 exp(-πζ/√(1-ζ²)) ≈ 16.303 %.
     let (z, wd) = (0.5f64, (0.75f64).sqrt());
     let w = sampled(40.0, 1e-3, |t| {
@@ -210,9 +353,16 @@ fn overshoot_is_the_peak_beyond_the_final_value_in_percent_of_the_step() {
     let flat = sampled(1.0, 0.1, |_| 2.0);
     let e = eval(r#"{ kind = "overshoot", of = "v" }"#, &flat);
     assert!(matches!(e, Err(MetricError::ZeroStep { .. })), "{e:?}");
-    let e = eval(r#"{ kind = "settling_time", of = "v", band = "2%" }"#, &flat);
+    let e = eval(
+        r#"{ kind = "settling_time", of = "v", band = "2%" }"#,
+        &flat,
+    );
     assert!(matches!(e, Err(MetricError::ZeroStep { .. })), "{e:?}");
-    close(value(r#"{ kind = "settling_time", of = "v", band = 0.1 }"#, &flat), 0.0, 0.0);
+    close(
+        value(r#"{ kind = "settling_time", of = "v", band = 0.1 }"#, &flat),
+        0.0,
+        0.0,
+    );
 }
 
 #[test]
@@ -248,15 +398,24 @@ fn evaluation_errors_say_why() {
         ],
     );
     match eval(r#"{ kind = "final", of = "vfbb" }"#, &w) {
-        Err(MetricError::UnknownColumn { known, .. }) => assert!(known.starts_with("vfb,"), "{known}"),
+        Err(MetricError::UnknownColumn { known, .. }) => {
+            assert!(known.starts_with("vfb,"), "{known}")
+        }
         other => panic!("{other:?}"),
     }
     let e = eval(r#"{ kind = "max", of = "vfb", to = "20 s" }"#, &w).unwrap_err();
     assert!(matches!(e, MetricError::OutsideRun { .. }));
-    assert!(e.to_string().contains("20 s") && e.to_string().contains("1 s"), "{e}");
+    assert!(
+        e.to_string().contains("20 s") && e.to_string().contains("1 s"),
+        "{e}"
+    );
     assert!(eval(r#"{ kind = "at", of = "vfb", time = 3 }"#, &w).is_err());
     // A time a rounding error past the end is the end.
-    close(value(r#"{ kind = "at", of = "vfb", time = 1.0000000001 }"#, &w), 1.0, 0.0);
+    close(
+        value(r#"{ kind = "at", of = "vfb", time = 1.0000000001 }"#, &w),
+        1.0,
+        0.0,
+    );
     assert!(matches!(
         eval(r#"{ kind = "final", of = "err" }"#, &w),
         Err(MetricError::NotFinite { .. })
@@ -273,12 +432,20 @@ fn metrics_know_their_probes_units_and_limits() {
     let w = ramp();
     let m = metric(r#"{ kind = "final", of = "v", min = -0.01, max = 0.01 }"#);
     assert_eq!(m.probes(), vec!["v".to_string()]);
-    assert_eq!((m.check(0.0), m.check(0.02), m.check(-0.01)), (Some(true), Some(false), Some(true)));
+    assert_eq!(
+        (m.check(0.0), m.check(0.02), m.check(-0.01)),
+        (Some(true), Some(false), Some(true))
+    );
     assert_eq!(m.unit_hint(&w).as_deref(), Some("V"));
     let cross = metric(r#"{ kind = "cross", of = "v", value = 2, max = "3 ms" }"#);
     assert_eq!(cross.limit.max, Some(3e-3));
     assert_eq!(cross.unit_hint(&w).as_deref(), Some("s"));
-    assert_eq!(metric(r#"{ kind = "overshoot", of = "v" }"#).unit_hint(&w).as_deref(), Some("%"));
+    assert_eq!(
+        metric(r#"{ kind = "overshoot", of = "v" }"#)
+            .unit_hint(&w)
+            .as_deref(),
+        Some("%")
+    );
 }
 
 #[test]
@@ -299,7 +466,17 @@ fails     = { kind = "assertion_failures", max = 0 }
     let names: Vec<&str> = metrics.iter().map(|m| m.name.as_str()).collect();
     assert_eq!(
         names,
-        ["settle", "i_peak", "i_abs", "err_final", "v_at", "v_mean", "rise", "over", "fails"]
+        [
+            "settle",
+            "i_peak",
+            "i_abs",
+            "err_final",
+            "v_at",
+            "v_mean",
+            "rise",
+            "over",
+            "fails"
+        ]
     );
     assert_eq!(
         metrics[0].kind,
@@ -310,27 +487,85 @@ fails     = { kind = "assertion_failures", max = 0 }
             target: None
         }
     );
-    assert_eq!(metrics[1].limit, Limit { min: None, max: Some(2.0) });
+    assert_eq!(
+        metrics[1].limit,
+        Limit {
+            min: None,
+            max: Some(2.0)
+        }
+    );
 }
 
 #[test]
 fn spec_errors_point_at_the_value_at_fault() {
     let cases = [
-        (r#"{ kind = "max", of = "v", from = "5 s", to = "2 s" }"#, "\"5 s\"", "not before"),
-        (r#"{ kind = "cross", of = "v", value = 1, nth = 0 }"#, "0", "counts no crossing"),
+        (
+            r#"{ kind = "max", of = "v", from = "5 s", to = "2 s" }"#,
+            "\"5 s\"",
+            "not before",
+        ),
+        (
+            r#"{ kind = "cross", of = "v", value = 1, nth = 0 }"#,
+            "0",
+            "counts no crossing",
+        ),
         (r#"{ kind = "maxx", of = "v" }"#, "\"maxx\"", "unknown kind"),
-        (r#"{ kind = "cross", of = "v", value = 1, edge = "up" }"#, "\"up\"", "unknown edge"),
-        (r#"{ kind = "settling_time", of = "v", band = -0.1 }"#, "-0.1", "negative"),
-        (r#"{ kind = "settling_time", of = "v", band = "two%" }"#, "\"two%\"", "percentage"),
-        (r#"{ kind = "final", of = "v", min = 2, max = 1 }"#, "2", "limits are empty"),
-        (r#"{ kind = "max", of = "v", band = 1 }"#, "1", "does not apply"),
-        (r#"{ kind = "final", of = "v", max = "1 s" }"#, "\"1 s\"", "not a time"),
-        (r#"{ kind = "max", of = "v", from = "3 parsecs" }"#, "\"3 parsecs\"", "not a time"),
-        (r#"{ kind = "max", of = "v", to = -1 }"#, "-1", "not negative"),
-        (r#"{ kind = "cross", of = "v", value = nan }"#, "nan", "finite"),
-        (r#"{ kind = "at", of = "v" }"#, r#"{ kind = "at", of = "v" }"#, "needs `time`"),
+        (
+            r#"{ kind = "cross", of = "v", value = 1, edge = "up" }"#,
+            "\"up\"",
+            "unknown edge",
+        ),
+        (
+            r#"{ kind = "settling_time", of = "v", band = -0.1 }"#,
+            "-0.1",
+            "negative",
+        ),
+        (
+            r#"{ kind = "settling_time", of = "v", band = "two%" }"#,
+            "\"two%\"",
+            "percentage",
+        ),
+        (
+            r#"{ kind = "final", of = "v", min = 2, max = 1 }"#,
+            "2",
+            "limits are empty",
+        ),
+        (
+            r#"{ kind = "max", of = "v", band = 1 }"#,
+            "1",
+            "does not apply",
+        ),
+        (
+            r#"{ kind = "final", of = "v", max = "1 s" }"#,
+            "\"1 s\"",
+            "not a time",
+        ),
+        (
+            r#"{ kind = "max", of = "v", from = "3 parsecs" }"#,
+            "\"3 parsecs\"",
+            "not a time",
+        ),
+        (
+            r#"{ kind = "max", of = "v", to = -1 }"#,
+            "-1",
+            "not negative",
+        ),
+        (
+            r#"{ kind = "cross", of = "v", value = nan }"#,
+            "nan",
+            "finite",
+        ),
+        (
+            r#"{ kind = "at", of = "v" }"#,
+            r#"{ kind = "at", of = "v" }"#,
+            "needs `time`",
+        ),
         (r#"{ kind = "mean" }"#, r#"{ kind = "mean" }"#, "needs `of`"),
-        (r#"{ kind = "assertion_failures", of = "v" }"#, "\"v\"", "does not apply"),
+        (
+            r#"{ kind = "assertion_failures", of = "v" }"#,
+            "\"v\"",
+            "does not apply",
+        ),
     ];
     for (table, covered, says) in cases {
         let (e, got) = spec_error(table);
@@ -343,5 +578,8 @@ fn spec_errors_point_at_the_value_at_fault() {
     assert!(e.help.starts_with("the kinds are max,"), "{}", e.help);
     // Unknown keys are refused by serde, with toml's span on the key.
     let (e, covered) = spec_error(r#"{ kind = "max", of = "v", form = 1 }"#);
-    assert!(e.message.contains("form") && covered.contains("form"), "{e:?} {covered}");
+    assert!(
+        e.message.contains("form") && covered.contains("form"),
+        "{e:?} {covered}"
+    );
 }
