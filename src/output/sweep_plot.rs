@@ -43,3 +43,39 @@ fn padded_range(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
     };
     Some((lo - pad, hi + pad))
 }
+
+/// A tick label on an axis `span` wide: six significant digits without rounding noise (`1.2`,
+/// not `1.2000000000000002`; `0`, not `-5.551e-17`), in scientific notation when very small
+/// or large.
+fn tick(v: f64, span: f64) -> String {
+    let v = if v.abs() <= 1e-9 * span { 0.0 } else { v };
+    let m = v.abs();
+    if m != 0.0 && !(1e-3..1e6).contains(&m) {
+        return format!("{v:.3e}");
+    }
+    let rounded: f64 = format!("{v:.5e}").parse().unwrap_or(v);
+    if rounded == 0.0 {
+        "0".into()
+    } else {
+        rounded.to_string()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ticks_drop_rounding_noise() {
+        assert_eq!(tick(1.2000000000000002, 1.0), "1.2");
+        assert_eq!(tick(-0.1, 1.0), "-0.1");
+        assert_eq!(tick(-5.551e-17, 1.0), "0");
+        assert_eq!(tick(2.5e-6, 1e-5), "2.500e-6");
+        assert_eq!(tick(150.0, 1.0), "150");
+        assert_eq!(
+            padded_range([1.0, f64::NAN, 3.0].into_iter()),
+            Some((0.88, 3.12))
+        );
+        assert_eq!(padded_range([f64::NAN].into_iter()), None);
+    }
+}

@@ -9,7 +9,7 @@ use std::path::Path;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::label;
+use super::{label, tick};
 use crate::output::plot::{COLORS, FONT, Picture, PlotError, draw_legend, write_picture};
 
 /// One metric's values over the runs.
@@ -183,7 +183,7 @@ where
         .label_style((FONT, 12))
         .axis_desc_style((FONT, 13))
         .light_line_style(RGBColor(235, 235, 235))
-        .x_label_formatter(&|v| crate::output::csv::format_number(*v))
+        .x_label_formatter(&|v| tick(*v, x_hi - x_lo))
         .y_label_formatter(&|v| format!("{v:.0}"))
         .draw()?;
     let color = COLORS[0];

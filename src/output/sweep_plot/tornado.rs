@@ -6,8 +6,8 @@ use std::path::Path;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::padded_range;
-use crate::output::plot::{COLORS, FONT, Picture, PlotError, draw_legend, write_picture};
+use super::{padded_range, tick};
+use crate::output::plot::{COLORS, FONT, Picture, PlotError, write_picture};
 
 /// One parameter's effect on the metric: `(dM/M)/(dp/p)` for a step down (`low`) and up
 /// (`high`).
@@ -120,6 +120,7 @@ impl Picture for Tornado<'_> {
             .label_style((FONT, 13))
             .axis_desc_style((FONT, 14))
             .light_line_style(RGBColor(235, 235, 235))
+            .x_label_formatter(&|v| tick(*v, x1 - x0))
             .y_label_formatter(&name_of)
             .draw()?;
         // The step down in the upper half of a row, the step up in the lower half.
@@ -144,7 +145,14 @@ impl Picture for Tornado<'_> {
             vec![(0.0, -0.5), (0.0, n as f64 - 0.5)],
             BLACK.stroke_width(1),
         )))?;
-        draw_legend(&mut chart)?;
+        // Lower right: the bottom rows have the smallest effects.
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::LowerRight)
+            .background_style(WHITE.mix(0.85))
+            .border_style(RGBColor(180, 180, 180))
+            .label_font((FONT, 13))
+            .draw()?;
         root.present()?;
         Ok(())
     }
