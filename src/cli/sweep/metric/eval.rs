@@ -90,16 +90,10 @@ pub(super) fn evaluate(metric: &Metric, waves: &Waveforms) -> Result<f64, Metric
     // Every kind evaluated here reads a column (`Metric::evaluate` counts the reports).
     let of = metric.column().unwrap_or_default();
     let Some(column) = waves.column(of) else {
-        let mut known: Vec<&str> = waves.columns.iter().map(|c| c.name.as_str()).collect();
-        known.sort_by_key(|k| strsim::levenshtein(of, k));
         return Err(MetricError::UnknownColumn {
             metric: name(),
             column: of.to_string(),
-            known: if known.is_empty() {
-                "none".into()
-            } else {
-                known.join(", ")
-            },
+            known: closest(of, waves),
         });
     };
     if waves.times.is_empty() {
@@ -231,6 +225,25 @@ pub(super) fn evaluate(metric: &Metric, waves: &Waveforms) -> Result<f64, Metric
             column: of.to_string(),
         })
     }
+}
+
+/// How many column names an unknown-column error lists.
+const LISTED: usize = 8;
+
+/// The recorded column names, closest to `wanted` first, at most [`LISTED`] of them.
+fn closest(wanted: &str, waves: &Waveforms) -> String {
+    let mut known: Vec<&str> = waves.columns.iter().map(|c| c.name.as_str()).collect();
+    if known.is_empty() {
+        return "none".into();
+    }
+    known.sort_by_key(|k| strsim::levenshtein(wanted, k));
+    let more = known.len().saturating_sub(LISTED);
+    known.truncate(LISTED);
+    let mut list = known.join(", ");
+    if more > 0 {
+        list += &format!(" and {more} more");
+    }
+    list
 }
 
 /// A step too small to divide by: zero, or rounding noise on the values.

@@ -403,6 +403,21 @@ fn evaluation_errors_say_why() {
         }
         other => panic!("{other:?}"),
     }
+    let many = waves(
+        vec![0.0],
+        (0..20)
+            .map(|k| quantity(&format!("n{k}"), vec![0.0]))
+            .collect(),
+    );
+    match eval(r#"{ kind = "final", of = "n7x" }"#, &many) {
+        Err(MetricError::UnknownColumn { known, .. }) => {
+            assert!(
+                known.starts_with("n7,") && known.ends_with(" and 12 more"),
+                "{known}"
+            )
+        }
+        other => panic!("{other:?}"),
+    }
     let e = eval(r#"{ kind = "max", of = "vfb", to = "20 s" }"#, &w).unwrap_err();
     assert!(matches!(e, MetricError::OutsideRun { .. }));
     assert!(
