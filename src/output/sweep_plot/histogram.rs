@@ -163,8 +163,12 @@ where
     sorted.sort_by(f64::total_cmp);
     let (left, width, counts) = bins(&sorted);
     let right = left + width * counts.len() as f64;
-    let x_lo = h.min_limit.map_or(left, |m| m.min(left));
-    let x_hi = h.max_limit.map_or(right, |m| m.max(right));
+    let (min_limit, max_limit) = (
+        h.min_limit.filter(|m| m.is_finite()),
+        h.max_limit.filter(|m| m.is_finite()),
+    );
+    let x_lo = min_limit.map_or(left, |m| m.min(left));
+    let x_hi = max_limit.map_or(right, |m| m.max(right));
     let pad = (x_hi - x_lo) * 0.05;
     let top = counts.iter().copied().max().unwrap_or(1).max(1) as f64 * 1.12;
     let mut chart = ChartBuilder::on(area)
@@ -195,10 +199,10 @@ where
         let a = left + width * k as f64;
         Rectangle::new([(a, 0.0), (a + width, c as f64)], color.stroke_width(1))
     }))?;
-    let limits = [("min limit", h.min_limit), ("max limit", h.max_limit)];
+    let limits = [("min limit", min_limit), ("max limit", max_limit)];
     let mut any = false;
     for (name, limit) in limits {
-        if let Some(x) = limit.filter(|x| x.is_finite()) {
+        if let Some(x) = limit {
             let red = COLORS[1];
             chart
                 .draw_series(std::iter::once(PathElement::new(
@@ -271,7 +275,9 @@ mod tests {
         settle.max_limit = Some(1.2);
         let constant = histogram("fails", vec![0.0; 10]);
         let failed = histogram("rise", vec![f64::NAN; 3]);
-        let all = [settle, constant, failed];
+        let mut unbounded = histogram("i_peak", vec![1.0, 2.0, 2.5]);
+        unbounded.min_limit = Some(f64::NEG_INFINITY);
+        let all = [settle, constant, failed, unbounded];
         for name in ["h.svg", "h.png"] {
             let path = dir.path().join(name);
             plot_histograms(&path, "sweep metrics", &all).unwrap();
