@@ -15,7 +15,7 @@ use thiserror::Error;
 use toml::Spanned;
 
 use super::{Band, Edge, Limit, Metric, MetricKind, Stat, Window};
-use crate::cli::time::{TIME_FORMS, parse_time};
+use crate::cli::time::{TIME_FORMS, format_time, parse_time};
 
 /// The `[metrics]` table: metric names and their inline tables, in the order written.
 #[derive(Clone, Debug, Default)]
@@ -163,6 +163,7 @@ impl MetricSpec {
                 ));
             }
         }
+        // From here on, the required keys are present: a default below is never used.
         let of = self.of.as_ref().map(|o| o.get_ref().clone());
         let of = || of.clone().unwrap_or_default();
         let time = |v: &Option<Spanned<NumberOrText>>| -> Result<Option<f64>, MetricSpecError> {
@@ -174,7 +175,11 @@ impl MetricSpec {
             && a >= b
         {
             return Err(fail(
-                format!("the window starts at {a} s, not before it ends at {b} s"),
+                format!(
+                    "the window starts at {}, not before it ends at {}",
+                    format_time(a),
+                    format_time(b)
+                ),
                 "give `from` before `to`".into(),
                 f.span(),
             ));
