@@ -13,5 +13,6 @@ pub mod levels;
 pub mod noise_plot;
 pub mod plot;
 pub mod stream;
+pub mod sweep_plot;
 pub mod vcd;
 pub mod waveplot;
