@@ -598,3 +598,14 @@ fn spec_errors_point_at_the_value_at_fault() {
         "{e:?} {covered}"
     );
 }
+
+#[test]
+fn spec_errors_render_as_diagnostics_at_their_value() {
+    let text = "[metrics]\nrise = { kind = \"cross\", of = \"v\", value = 1, nth = 0 }\n";
+    let e = parse_metrics(text).unwrap_err().remove(0);
+    let report = miette::Report::new(e).with_source_code(text.to_string());
+    let shown = crate::cli::render::render(report.as_ref());
+    for want in ["metric `rise`", "nth = 0", "here", "counted from 1"] {
+        assert!(shown.contains(want), "{want}: {shown}");
+    }
+}
