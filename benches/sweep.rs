@@ -25,7 +25,11 @@ fn lone_run(n: usize) -> f64 {
                 .args(["run", "models", "--top", "tb_tracking"])
                 .output()
                 .expect("vams runs");
-            assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+            assert!(
+                out.status.success(),
+                "{}",
+                String::from_utf8_lossy(&out.stderr)
+            );
             started.elapsed().as_secs_f64()
         })
         .fold(f64::INFINITY, f64::min)
@@ -44,7 +48,11 @@ fn sweep(spec: &std::path::Path, jobs: usize, n: usize) -> f64 {
                 .arg(out.path())
                 .output()
                 .expect("vams sweep runs");
-            assert!(status.status.success(), "{}", String::from_utf8_lossy(&status.stderr));
+            assert!(
+                status.status.success(),
+                "{}",
+                String::from_utf8_lossy(&status.stderr)
+            );
             started.elapsed().as_secs_f64()
         })
         .fold(f64::INFINITY, f64::min)
@@ -61,14 +69,20 @@ fn main() {
     let models = std::fs::canonicalize("models").expect("the models folder");
     let text = text
         .replace("runs = 1000", &format!("runs = {runs}"))
-        .replace("\"../../models\"", &format!("{:?}", models.display().to_string()));
+        .replace(
+            "\"../../models\"",
+            &format!("{:?}", models.display().to_string()),
+        );
     std::fs::write(&spec, text).expect("the spec is written");
     let total = runs + 1; // and the nominal run
     let lone = lone_run(10);
     let one = sweep(&spec, 1, 2);
     let two = sweep(&spec, 2, 2);
     let per_run = one / total as f64;
-    println!("tb_tracking alone (vams run, best of 10): {:.1} ms", lone * 1e3);
+    println!(
+        "tb_tracking alone (vams run, best of 10): {:.1} ms",
+        lone * 1e3
+    );
     println!(
         "vams sweep, {total} runs, 1 thread:  {one:.2} s, {:.0} runs/s, {:.1} ms a run ({:+.1} % against a lone run)",
         total as f64 / one,

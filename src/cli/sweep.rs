@@ -341,7 +341,7 @@ pub fn run(args: &SweepArgs) -> Result<(), Report> {
         .into());
     }
     drop(writer);
-    eprint!("{}", summary::summary(plan, &metric_names, &rows));
+    eprint!("{}", summary::summary(plan, &spec.metrics, &rows));
     let mut written = vec![table_path.display().to_string()];
     if args.shard.is_none() {
         written.extend(draw(&spec, &rows, envelopes, &out)?);
@@ -604,7 +604,7 @@ fn draw(
         .filter(|e| e.is_drawable())
         .collect();
     if !built.is_empty() {
-        let path = out.join("envelope.svg");
+        let path = out.join(format!("envelope.{}", spec.plot_format));
         crate::output::sweep_plot::plot_envelopes(&path, &title, &built)
             .map_err(|e| plot_error(&path, &e))?;
         written.push(path.display().to_string());
@@ -634,7 +634,7 @@ fn draw(
             .filter(|h| !h.values.is_empty())
             .collect();
         if !histograms.is_empty() {
-            let path = out.join("histograms.svg");
+            let path = out.join(format!("histograms.{}", spec.plot_format));
             crate::output::sweep_plot::plot_histograms(&path, &title, &histograms)
                 .map_err(|e| plot_error(&path, &e))?;
             written.push(path.display().to_string());
@@ -659,7 +659,7 @@ fn draw(
             if bars.is_empty() {
                 continue;
             }
-            let path = out.join(format!("tornado-{}.svg", metric.name));
+            let path = out.join(format!("tornado-{}.{}", metric.name, spec.plot_format));
             crate::output::sweep_plot::plot_tornado(&path, &title, &metric.name, &bars)
                 .map_err(|e| plot_error(&path, &e))?;
             written.push(path.display().to_string());
@@ -801,7 +801,7 @@ fn collect(dir: &Path) -> Result<(), Report> {
     rows.sort_by_key(|r| r.index);
     let path = dir.join("results.csv");
     drop(TableWriter::create(&path, &identity, &head, &rows).map_err(SweepError::from)?);
-    eprint!("{}", summary::summary(&spec.plan, &metric_names, &rows));
+    eprint!("{}", summary::summary(&spec.plan, &spec.metrics, &rows));
     let mut written = vec![path.display().to_string()];
     written.extend(draw(&spec, &rows, Vec::new(), dir)?);
     eprintln!(

@@ -35,6 +35,8 @@ pub struct Spec {
     pub metrics: Vec<Metric>,
     /// The waveforms drawn as a band over all runs.
     pub envelope: Vec<String>,
+    /// The plots' file extension: `svg` (default) or `png`.
+    pub plot_format: &'static str,
 }
 
 /// The design and the simulator's settings, for every run.
@@ -154,6 +156,7 @@ struct RawSensitivity {
 struct RawPlots {
     #[serde(default)]
     envelope: Vec<String>,
+    format: Option<Spanned<String>>,
 }
 
 /// FNV-1a: a fingerprint of the spec's text, the same on every machine and Rust version.
@@ -274,7 +277,25 @@ pub fn parse_spec(path: &Path, text: &str) -> Result<Spec, SpecError> {
             Some(e.help.clone()),
         )
     })?;
+    let plot_format = match raw
+        .plots
+        .format
+        .as_ref()
+        .map(|f| f.get_ref().to_ascii_lowercase())
+    {
+        None => "svg",
+        Some(f) if f == "svg" => "svg",
+        Some(f) if f == "png" => "png",
+        Some(other) => {
+            return Err(at.error(
+                raw.plots.format.as_ref().map_or((0..0).into(), span_of),
+                format!("unknown plot format `{other}`"),
+                Some("format is \"svg\" or \"png\"".into()),
+            ));
+        }
+    };
     Ok(Spec {
+        plot_format,
         path: path.to_path_buf(),
         source: at.source.clone(),
         fingerprint: fingerprint(text),

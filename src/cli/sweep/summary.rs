@@ -4,6 +4,7 @@
 
 use std::fmt::Write as _;
 
+use super::metric::Metric;
 use super::plan::Plan;
 use super::table::{Row, Status};
 
@@ -103,7 +104,8 @@ pub fn short(x: f64) -> String {
 }
 
 /// The summary printed at the end of a sweep.
-pub fn summary(plan: &Plan, metric_names: &[String], rows: &[Row]) -> String {
+pub fn summary(plan: &Plan, metrics: &[Metric], rows: &[Row]) -> String {
+    let metric_names: Vec<String> = metrics.iter().map(|m| m.name.clone()).collect();
     let mut out = String::new();
     let counted: Vec<&Row> = rows.iter().filter(|r| plan.is_sample(r.index)).collect();
     let failed: Vec<&Row> = rows.iter().filter(|r| r.status == Status::Failed).collect();
@@ -117,15 +119,24 @@ pub fn summary(plan: &Plan, metric_names: &[String], rows: &[Row]) -> String {
     if !metric_names.is_empty() {
         let _ = writeln!(
             out,
-            "{:<16} {:>6} {:>11} {:>11} {:>11} {:>7} {:>11} {:>7}",
-            "metric", "runs", "mean", "sigma", "min", "(run)", "max", "(run)"
+            "{:<16} {:>6} {:>11} {:>11} {:>11} {:>7} {:>11} {:>7} {:>8}",
+            "metric", "runs", "mean", "sigma", "min", "(run)", "max", "(run)", "failing"
         );
         for (m, name) in metric_names.iter().enumerate() {
+            // Runs out of this metric's limits, or without a value where it has limits.
+            let failing = match metrics[m].limit {
+                l if l.min.is_none() && l.max.is_none() => "-".to_string(),
+                _ => counted
+                    .iter()
+                    .filter(|r| r.metrics[m].is_none_or(|v| metrics[m].check(v) == Some(false)))
+                    .count()
+                    .to_string(),
+            };
             match metric_stats(name, &counted, m) {
                 Some(s) => {
                     let _ = writeln!(
                         out,
-                        "{:<16} {:>6} {:>11} {:>11} {:>11} {:>7} {:>11} {:>7}",
+                        "{:<16} {:>6} {:>11} {:>11} {:>11} {:>7} {:>11} {:>7} {:>8}",
                         name,
                         s.count,
                         short(s.mean),
@@ -133,7 +144,8 @@ pub fn summary(plan: &Plan, metric_names: &[String], rows: &[Row]) -> String {
                         short(s.min.0),
                         s.min.1,
                         short(s.max.0),
-                        s.max.1
+                        s.max.1,
+                        failing
                     );
                 }
                 None => {
@@ -170,7 +182,7 @@ pub fn summary(plan: &Plan, metric_names: &[String], rows: &[Row]) -> String {
         );
     }
     if let (Some(s), Plan::Sensitivity { names, delta, .. }) =
-        (sensitivities(plan, rows, metric_names.len()), plan)
+        (sensitivities(plan, rows, metrics.len()), plan)
     {
         let _ = writeln!(
             out,
@@ -178,7 +190,7 @@ pub fn summary(plan: &Plan, metric_names: &[String], rows: &[Row]) -> String {
             crate::output::csv::format_number(delta * 100.0)
         );
         let _ = write!(out, "{:<16}", "parameter");
-        for name in metric_names {
+        for name in &metric_names {
             let _ = write!(out, " {name:>12}");
         }
         out.push('\n');
@@ -241,7 +253,17 @@ mod tests {
             names: vec![],
             values: vec![],
         };
-        let text = summary(&plan, &["settle".into()], &rows);
+        let metric = Metric {
+            name: "settle".into(),
+            kind: super::super::metric::MetricKind::Final { of: "x".into() },
+            limit: super::super::metric::Limit {
+                min: None,
+                max: Some(2.5),
+            },
+        };
+        let text = summary(&plan, &[metric], &rows);
+        // Run 1 is above the limit and run 2 has no value.
+        assert!(text.lines().nth(2).unwrap().ends_with(" 2"), "{text}");
         assert!(text.contains("4 runs: 3 ok, 1 failed"), "{text}");
         assert!(
             text.contains("yield: 2 of 4 runs meet every limit (50.0 %)"),
