@@ -59,6 +59,9 @@ pub(crate) struct EventKernel<'d> {
     /// Where each process's lowered code starts in `lowered`, and after the last process
     /// where it ends.
     lowered_at: Vec<usize>,
+    /// Per process, its [`lower::idle_branch`]: resumed while that branch's condition is
+    /// false, the process is left waiting, and while it holds it goes on after it.
+    idle: Vec<Option<lower::IdleBranch>>,
     /// Break values executed since the last [`EventKernel::take_breaks`].
     breaks: Vec<(QuantityId, f64)>,
     break_count: usize,
@@ -121,9 +124,12 @@ impl<'d> EventKernel<'d> {
                 waits.count() == 1 && !has_until[i] && !calls(p)
             })
             .collect();
+        let mut idle = Vec::with_capacity(design.processes.len());
         for (i, p) in design.processes.iter().enumerate() {
             lowered_at.push(lowered.len());
-            lowered.extend(lower(design, &signals, i, p));
+            let ops = lower(design, &signals, i, p);
+            idle.push(lower::idle_branch(&ops, p).filter(|_| one_plain_wait[i]));
+            lowered.extend(ops);
         }
         lowered_at.push(lowered.len());
         let procs: Vec<ProcState> = design.processes.iter().map(ProcState::new).collect();
@@ -148,6 +154,7 @@ impl<'d> EventKernel<'d> {
             procs,
             lowered,
             lowered_at,
+            idle,
             timeouts: BinaryHeap::new(),
             timeout_of: vec![f64::INFINITY; design.processes.len()],
             waiters,
@@ -387,10 +394,30 @@ impl<'d> EventKernel<'d> {
         for k in 0..self.resume.len() {
             let i = self.resume[k];
             self.last_process = i;
+            let code = &self.lowered[self.lowered_at[i]..self.lowered_at[i + 1]];
+            let state = &mut self.procs[i];
+            // Waiting at its one wait (not at the start of the run), resumed at its first
+            // branch: with the condition false it would go back to that wait as it is
+            // (nothing to report from a function either, or that would be emitted in its
+            // name); with the condition true it goes on after the branch.
+            let mut resumed = lower::Resume::Run;
+            if let Some(at) = self.idle[i]
+                && let Some(op) = code.get(at.pc)
+                && state.waiting_at.is_some()
+                && self.io.function_reports.borrow().is_empty()
+            {
+                resumed = lower::resume(op, at, &self.signals.states, &state.vars);
+            }
             self.timeout_of[i] = f64::INFINITY;
             // The lowered instructions first, without the interpreter's context.
-            let code = &self.lowered[self.lowered_at[i]..self.lowered_at[i + 1]];
-            let ran = lower::run(code, &mut self.procs[i], &mut self.signals, now);
+            let ran = match resumed {
+                lower::Resume::Idle => continue,
+                lower::Resume::At { pc, steps } => {
+                    state.pc = pc;
+                    lower::run_from(code, state, &mut self.signals, now, steps)
+                }
+                lower::Resume::Run => lower::run(code, state, &mut self.signals, now),
+            };
             let suspend = match ran {
                 Ran::Suspended(s) if self.io.function_reports.borrow().is_empty() => s,
                 ran => self.run_general(i, ran, now, analog, on_report)?,
