@@ -51,8 +51,17 @@ pub(crate) struct EventKernel<'d> {
     design: &'d Design,
     pub signals: Signals,
     procs: Vec<ProcState>,
-    /// Each process's code lowered ([`super::lower`]).
-    lowered: Vec<Vec<Op<'d>>>,
+    /// Every process's code lowered ([`super::lower`]), one process after the other in
+    /// process order: a cycle runs its processes in that order, so their instructions are
+    /// read as one forward stream (a vector per process scattered them over the heap, among
+    /// lowering's temporaries).
+    lowered: Vec<Op<'d>>,
+    /// Where each process's lowered code starts in `lowered`, and after the last process
+    /// where it ends.
+    lowered_at: Vec<usize>,
+    /// Per process, its [`lower::idle_branch`]: resumed while that branch's condition is
+    /// false, the process is left waiting, and while it holds it goes on after it.
+    idle: Vec<Option<lower::IdleBranch>>,
     /// Break values executed since the last [`EventKernel::take_breaks`].
     breaks: Vec<(QuantityId, f64)>,
     break_count: usize,
@@ -103,9 +112,26 @@ impl<'d> EventKernel<'d> {
                 .map_err(|e| SimError::BadOption { message: e.message })?;
         }
         let signals = Signals::new(design)?;
-        let lowered = (design.processes.iter().enumerate())
-            .map(|(i, p)| lower(design, &signals, i, p))
+        let calls = |p: &Process| p.code.iter().any(|c| matches!(c, Instr::Call { .. }));
+        let mut lowered = Vec::new();
+        let mut lowered_at = Vec::with_capacity(design.processes.len() + 1);
+        let has_until: Vec<bool> = (design.processes.iter())
+            .map(|p| (p.code.iter()).any(|c| matches!(c, Instr::Wait { until: Some(_), .. })))
             .collect();
+        let one_plain_wait: Vec<bool> = (design.processes.iter().enumerate())
+            .map(|(i, p)| {
+                let waits = p.code.iter().filter(|c| matches!(c, Instr::Wait { .. }));
+                waits.count() == 1 && !has_until[i] && !calls(p)
+            })
+            .collect();
+        let mut idle = Vec::with_capacity(design.processes.len());
+        for (i, p) in design.processes.iter().enumerate() {
+            lowered_at.push(lowered.len());
+            let ops = lower(design, &signals, i, p);
+            idle.push(lower::idle_branch(&ops, p).filter(|_| one_plain_wait[i]));
+            lowered.extend(ops);
+        }
+        lowered_at.push(lowered.len());
         let procs: Vec<ProcState> = design.processes.iter().map(ProcState::new).collect();
         let mut waiters = vec![Vec::new(); design.signals.len()];
         for (i, p) in procs.iter().enumerate() {
@@ -116,19 +142,9 @@ impl<'d> EventKernel<'d> {
                 waiters[s.index()].push(i);
             }
         }
-        let calls = |p: &Process| p.code.iter().any(|c| matches!(c, Instr::Call { .. }));
         let dynamic = (design.processes.iter().enumerate())
             .filter(|(_, p)| calls(p))
             .map(|(i, _)| i)
-            .collect();
-        let has_until: Vec<bool> = (design.processes.iter())
-            .map(|p| (p.code.iter()).any(|c| matches!(c, Instr::Wait { until: Some(_), .. })))
-            .collect();
-        let one_plain_wait = (design.processes.iter().enumerate())
-            .map(|(i, p)| {
-                let waits = p.code.iter().filter(|c| matches!(c, Instr::Wait { .. }));
-                waits.count() == 1 && !has_until[i] && !calls(p)
-            })
             .collect();
         Ok(EventKernel {
             design,
@@ -137,6 +153,8 @@ impl<'d> EventKernel<'d> {
             signals,
             procs,
             lowered,
+            lowered_at,
+            idle,
             timeouts: BinaryHeap::new(),
             timeout_of: vec![f64::INFINITY; design.processes.len()],
             waiters,
@@ -376,9 +394,30 @@ impl<'d> EventKernel<'d> {
         for k in 0..self.resume.len() {
             let i = self.resume[k];
             self.last_process = i;
+            let code = &self.lowered[self.lowered_at[i]..self.lowered_at[i + 1]];
+            let state = &mut self.procs[i];
+            // Waiting at its one wait (not at the start of the run), resumed at its first
+            // branch: with the condition false it would go back to that wait as it is
+            // (nothing to report from a function either, or that would be emitted in its
+            // name); with the condition true it goes on after the branch.
+            let mut resumed = lower::Resume::Run;
+            if let Some(at) = self.idle[i]
+                && let Some(op) = code.get(at.pc)
+                && state.waiting_at.is_some()
+                && self.io.function_reports.borrow().is_empty()
+            {
+                resumed = lower::resume(op, at, &self.signals.states, &state.vars);
+            }
             self.timeout_of[i] = f64::INFINITY;
             // The lowered instructions first, without the interpreter's context.
-            let ran = lower::run(&self.lowered[i], &mut self.procs[i], &mut self.signals, now);
+            let ran = match resumed {
+                lower::Resume::Idle => continue,
+                lower::Resume::At { pc, steps } => {
+                    state.pc = pc;
+                    lower::run_from(code, state, &mut self.signals, now, steps)
+                }
+                lower::Resume::Run => lower::run(code, state, &mut self.signals, now),
+            };
             let suspend = match ran {
                 Ran::Suspended(s) if self.io.function_reports.borrow().is_empty() => s,
                 ran => self.run_general(i, ran, now, analog, on_report)?,
@@ -436,7 +475,8 @@ impl<'d> EventKernel<'d> {
             Ran::Suspended(s) => Ok(s),
             Ran::Declined { steps } => {
                 let state = &mut self.procs[i];
-                process::run(i, process, &self.lowered[i], state, &mut cx, steps)
+                let code = &self.lowered[self.lowered_at[i]..self.lowered_at[i + 1]];
+                process::run(i, process, code, state, &mut cx, steps)
             }
         };
         // What the instruction the process suspended at (`wait until f(x)`) reported, and

@@ -702,9 +702,9 @@ pub(crate) enum Ran {
 /// the interpreter) to the step before the interpreter's first look at the cancel flag.
 #[inline(always)]
 pub(crate) fn run(ops: &[Op], state: &mut ProcState, signals: &mut Signals, now: f64) -> Ran {
-    state.waiting_at = None;
-    state.timeout_at = None;
     if state.running.is_some() {
+        state.waiting_at = None;
+        state.timeout_at = None;
         return Ran::Declined { steps: 0 };
     }
     let mut steps = 0;
@@ -717,8 +717,23 @@ pub(crate) fn run(ops: &[Op], state: &mut ProcState, signals: &mut Signals, now:
         state.pc = *target;
         steps = 1;
     }
-    // A step takes at most two instructions (and `steps` starts at one at most), so this
-    // stops at `CANCEL_CHECK - 1` at most.
+    run_from(ops, state, signals, now, steps)
+}
+
+/// [`run`] from `state.pc` of the process's own code, `steps` instructions into the
+/// activation (the process resumed: no longer waiting).
+#[inline(always)]
+pub(crate) fn run_from(
+    ops: &[Op],
+    state: &mut ProcState,
+    signals: &mut Signals,
+    now: f64,
+    mut steps: usize,
+) -> Ran {
+    state.waiting_at = None;
+    state.timeout_at = None;
+    // A step takes at most two instructions (and `steps` starts far below the limit), so
+    // this stops at `CANCEL_CHECK - 1` at most.
     while steps < CANCEL_CHECK - 2 {
         match ops
             .get(state.pc)
@@ -730,6 +745,74 @@ pub(crate) fn run(ops: &[Op], state: &mut ProcState, signals: &mut Signals, now:
         }
     }
     Ran::Declined { steps }
+}
+
+/// For a process with one wait, without a timeout or a condition (a sensitivity list), the
+/// branch that it takes first when it resumes, whose false condition leads straight back to
+/// that wait (`if rising_edge(clk)`-style bodies: `if clk = '1' then ... end if;`): with the
+/// condition false, running the process changes nothing but its instruction count, so
+/// [`resume`] lets the kernel leave it waiting (half the activations of a clocked process);
+/// with the condition true, the process goes on after the branch without evaluating it
+/// again. `None` for any other shape.
+pub(crate) fn idle_branch(ops: &[Op], process: &Process) -> Option<IdleBranch> {
+    let wait = process
+        .code
+        .iter()
+        .position(|c| matches!(c, Instr::Wait { .. }))?;
+    let Op::Wait {
+        timeout: None,
+        halts: false,
+    } = ops.get(wait)?
+    else {
+        return None;
+    };
+    // Where it resumes, through the jump there as `run` takes it.
+    let (mut pc, mut jumps) = (wait + 1, 0);
+    if let Some(Op::Jump(target)) = ops.get(pc) {
+        (pc, jumps) = (*target, 1);
+    }
+    match ops.get(pc)? {
+        Op::Branch { fails, .. } if fails.pc == wait => Some(IdleBranch { pc, jumps }),
+        _ => None,
+    }
+}
+
+/// An [`idle_branch`]: its instruction index, and the instructions a resumption takes
+/// before it (the jump back to the top of the process's loop).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct IdleBranch {
+    pub pc: usize,
+    pub jumps: usize,
+}
+
+/// What a process resumed at its [`idle_branch`] does.
+pub(crate) enum Resume {
+    /// Its condition is false: the process would go back to its wait as it is.
+    Idle,
+    /// Its condition holds: go on at `pc`, `steps` instructions into the activation.
+    At { pc: usize, steps: usize },
+    /// The lowered condition declines: run the process as usual.
+    Run,
+}
+
+/// The [`idle_branch`] `at` of a resumed process, whose instruction is `op`, evaluated as
+/// [`run`] would (and counted as it counts).
+#[inline(always)]
+pub(crate) fn resume(op: &Op, at: IdleBranch, signals: &[SignalState], vars: &[Value]) -> Resume {
+    let Op::Branch { cond, holds, .. } = op else {
+        return Resume::Run;
+    };
+    match cond.eval(signals, vars) {
+        Some(0) => Resume::Idle,
+        Some(_) => {
+            let (pc, taken) = holds.go::<true>(at.pc + 1);
+            Resume::At {
+                pc,
+                steps: at.jumps + taken,
+            }
+        }
+        None => Resume::Run,
+    }
 }
 
 /// A literal delay in seconds (as `process::seconds_of` reads one without evaluating it).
