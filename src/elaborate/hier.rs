@@ -453,7 +453,6 @@ impl<'a> Elab<'a> {
         Ok(())
     }
 
-    #[allow(clippy::too_many_arguments)]
     /// The override of the current instance's generic `name`, marked as taken.
     fn instance_override(&mut self, name: &str) -> Option<String> {
         let full = self.hier_name(name);
@@ -502,6 +501,7 @@ impl<'a> Elab<'a> {
         }
     }
 
+    #[allow(clippy::too_many_arguments)]
     fn generic(
         &mut self,
         sc: &mut Scope<'a>,

@@ -731,7 +731,7 @@ fn corner(at: &Locator, name: String, v: &Spanned<toml::Value>) -> Result<Corner
             ));
         }
     };
-    if !(min <= nominal && nominal <= max) || ![min, nominal, max].iter().all(|x| x.is_finite()) {
+    if !(min <= nominal && nominal <= max && [min, nominal, max].iter().all(|x| x.is_finite())) {
         return Err(at.error(
             span_of(v),
             format!("min {min}, nominal {nominal} and max {max} are not in order"),

@@ -246,8 +246,8 @@ pub fn read_table(path: &Path) -> Result<Table, TableError> {
     })?;
     let partial = rest
         .lines()
-        .filter_map(|l| l.strip_prefix("# partial: "))
-        .last()
+        .rev()
+        .find_map(|l| l.strip_prefix("# partial: "))
         .map(String::from);
     // A row cut short has no line end: drop it.
     let complete = match rest.rfind('\n') {
