@@ -396,6 +396,27 @@ fn spec_errors_name_the_line_and_exit_1() {
 }
 
 #[test]
+fn the_designs_own_generics_are_checked_too() {
+    let (_dir, path) = spec("[grid.parameters]\ntau = [1e-3]\n");
+    let text = std::fs::read_to_string(&path).unwrap();
+    std::fs::write(
+        &path,
+        text.replace(
+            "top = \"tb_decay\"\n",
+            "top = \"tb_decay\"\ngenerics = { taux = 1 }\n",
+        ),
+    )
+    .unwrap();
+    vams()
+        .args(["sweep", path.to_str().unwrap()])
+        .current_dir(path.parent().unwrap())
+        .assert()
+        .code(1)
+        .stderr(contains("has no generic `taux`"))
+        .stderr(contains("its generics are `tau`, `tau_max` and `steps`"));
+}
+
+#[test]
 fn instance_generics_are_set_by_their_path() {
     // `-g` reaches an instance's generic by its hierarchical name, and a wrong path is an
     // error that suggests the right one.

@@ -453,9 +453,7 @@ fn prepare_design(spec: &Spec) -> Result<Prepared, Report> {
 /// The design must elaborate with the spec's fixed generics, and every parameter must name
 /// a generic of it: a misspelt name is a spec error at its line, before any run.
 fn check_parameters(spec: &Spec, prepared: &Prepared) -> Result<(), Report> {
-    let design = prepared.elaborate(&[])?;
-    prepared.print_warnings(&design);
-    drop(design);
+    // Run 0's values: a generic without a default that every run sets elaborates too.
     let run = spec.plan.run(0);
     let names = spec.plan.names();
     let generics: Vec<(String, String)> = names
@@ -469,27 +467,44 @@ fn check_parameters(spec: &Spec, prepared: &Prepared) -> Result<(), Report> {
         generics: prepared.generics.clone(),
     };
     options.generics.extend(generics);
-    let Err(errors) =
-        elaborate_analysed(&prepared.analysis, &loaded.sources, &loaded.files, &options)
-    else {
-        return Ok(());
-    };
+    let errors =
+        match elaborate_analysed(&prepared.analysis, &loaded.sources, &loaded.files, &options) {
+            Ok(design) => {
+                prepared.print_warnings(&design);
+                return Ok(());
+            }
+            Err(errors) => errors,
+        };
     let at = spec::Locator::new(&spec.path.display().to_string(), spec.source.inner());
+    let mut unknown_fixed = Vec::new();
     for e in &errors {
         let (name, help) = match e {
             ElabError::UnknownGeneric { name, help, .. }
             | ElabError::UnknownInstanceGeneric { name, help } => (name, help),
             _ => continue,
         };
-        if let Some(k) = names.iter().position(|n| n == name) {
-            return Err(at
-                .error(
-                    spec.parameter_spans[k],
-                    format!("the design has no generic `{name}`"),
-                    help.clone(),
-                )
-                .into());
+        match names.iter().position(|n| n == name) {
+            Some(k) => {
+                return Err(at
+                    .error(
+                        spec.parameter_spans[k],
+                        format!("the design has no generic `{name}`"),
+                        help.clone(),
+                    )
+                    .into());
+            }
+            // One of `[design] generics`.
+            None => unknown_fixed.push(e),
         }
+    }
+    if !unknown_fixed.is_empty() {
+        for e in &unknown_fixed {
+            eprint!("{}", render_located(*e, &loaded.sources));
+        }
+        return Err(CliError::Elaboration {
+            count: unknown_fixed.len(),
+        }
+        .into());
     }
     // Other errors belong to the first run's values: each run reports its own.
     Ok(())
