@@ -43,6 +43,18 @@ fn rows(path: &Path) -> Vec<std::collections::HashMap<String, String>> {
         .collect()
 }
 
+/// `vams sweep SPEC --out OUT`.
+fn sweep_into(spec: &Path, out: &Path) -> Command {
+    let mut command = vams();
+    command.args([
+        "sweep",
+        spec.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    command
+}
+
 fn number(cell: &str) -> f64 {
     cell.parse()
         .unwrap_or_else(|_| panic!("`{cell}` is not a number"))
@@ -61,13 +73,7 @@ fn grid_metrics_agree_with_the_closed_forms() {
         "[grid.parameters]\ntau = [0.5e-3, 1.0e-3, 2.0e-3]\n\n{METRICS}"
     ));
     let out = dir.path().join("out");
-    vams()
-        .args([
-            "sweep",
-            path.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ])
+    sweep_into(&path, &out)
         .assert()
         .success()
         .stderr(contains("3 runs: 3 ok, 0 failed"))
@@ -112,13 +118,7 @@ fn failed_runs_are_recorded_with_their_message_and_the_sweep_goes_on() {
         "[grid.parameters]\nsteps = [1, 0]\ntau_max = [1.0, 1e-4]\n\n{METRICS}"
     ));
     let out = dir.path().join("out");
-    vams()
-        .args([
-            "sweep",
-            path.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ])
+    sweep_into(&path, &out)
         .assert()
         .success()
         .stderr(contains("4 runs: 1 ok, 3 failed"));
@@ -159,15 +159,7 @@ tau_max = { distribution = \"uniform\", min = 1.0, max = 2.0 }
 fn shards_collect_into_the_local_table_byte_for_byte() {
     let (dir, path) = spec(&format!("{MONTE_CARLO}\n{METRICS}"));
     let local = dir.path().join("local");
-    vams()
-        .args([
-            "sweep",
-            path.to_str().unwrap(),
-            "--out",
-            local.to_str().unwrap(),
-        ])
-        .assert()
-        .success();
+    sweep_into(&path, &local).assert().success();
     let sharded = dir.path().join("sharded");
     // In reverse order and with one job each: neither changes a row.
     for k in (0..3).rev() {
@@ -213,15 +205,7 @@ fn shards_collect_into_the_local_table_byte_for_byte() {
     assert!(a == b, "the collected table differs from the local one");
     // The samples are the seed's: a second local run gives the same table.
     let again = dir.path().join("again");
-    vams()
-        .args([
-            "sweep",
-            path.to_str().unwrap(),
-            "--out",
-            again.to_str().unwrap(),
-        ])
-        .assert()
-        .success();
+    sweep_into(&path, &again).assert().success();
     assert!(std::fs::read(again.join("results.csv")).unwrap() == a);
 }
 
@@ -300,13 +284,7 @@ fn an_interrupted_sweep_keeps_its_runs_and_resumes() {
         assert_eq!(row["status"], "ok");
     }
     // Without --resume the table is not overwritten.
-    vams()
-        .args([
-            "sweep",
-            path.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ])
+    sweep_into(&path, &out)
         .assert()
         .failure()
         .stderr(contains("already holds the table of a sweep"));

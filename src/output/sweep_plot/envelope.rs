@@ -436,18 +436,12 @@ mod tests {
         b.set_nominal(&times, &v, false);
         let env = b.finish();
         let empty = EnvelopeBuilder::new("none", None, 0.0, 1.0, 10).finish();
-        for name in ["e.svg", "e.png"] {
-            let path = dir.path().join(name);
-            plot_envelopes(&path, "sweep", &[env.clone(), empty.clone()]).unwrap();
-            let bytes = std::fs::read(&path).unwrap();
-            assert!(bytes.len() > 3000, "{name}: {} bytes", bytes.len());
-            if name.ends_with("svg") {
-                let text = String::from_utf8(bytes).unwrap();
-                for want in ["20 runs: min/max", "nominal", "vfb (V)", "time (s)"] {
-                    assert!(text.contains(want), "{want}");
-                }
-            }
-        }
+        super::super::assert_drawn(
+            dir.path(),
+            3000,
+            &["20 runs: min/max", "nominal", "vfb (V)", "time (s)"],
+            |path| plot_envelopes(path, "sweep", &[env.clone(), empty.clone()]),
+        );
         assert!(matches!(
             plot_envelopes(&dir.path().join("x.svg"), "t", &[empty]),
             Err(PlotError::Empty { .. })
