@@ -63,6 +63,28 @@ fn tick(v: f64, span: f64) -> String {
 
 #[cfg(test)]
 mod tests {
+    /// For the plots' tests: draws through `draw` into an SVG and a PNG in `dir`, checks each is
+    /// at least `min_bytes` long and that the SVG's text holds every one of `wants`.
+    pub(super) fn assert_drawn(
+        dir: &std::path::Path,
+        min_bytes: usize,
+        wants: &[&str],
+        draw: impl Fn(&std::path::Path) -> Result<(), crate::output::plot::PlotError>,
+    ) {
+        for name in ["picture.svg", "picture.png"] {
+            let path = dir.join(name);
+            draw(&path).unwrap();
+            let bytes = std::fs::read(&path).unwrap();
+            assert!(bytes.len() > min_bytes, "{name}: {} bytes", bytes.len());
+            if name.ends_with("svg") {
+                let text = String::from_utf8(bytes).unwrap();
+                for want in wants {
+                    assert!(text.contains(want), "{want}");
+                }
+            }
+        }
+    }
+
     use super::*;
 
     #[test]
@@ -77,28 +99,5 @@ mod tests {
             Some((0.88, 3.12))
         );
         assert_eq!(padded_range([f64::NAN].into_iter()), None);
-    }
-}
-
-/// For the plots' tests: draws through `draw` into an SVG and a PNG in `dir`, checks each is
-/// at least `min_bytes` long and that the SVG's text holds every one of `wants`.
-#[cfg(test)]
-fn assert_drawn(
-    dir: &std::path::Path,
-    min_bytes: usize,
-    wants: &[&str],
-    draw: impl Fn(&std::path::Path) -> Result<(), crate::output::plot::PlotError>,
-) {
-    for name in ["picture.svg", "picture.png"] {
-        let path = dir.join(name);
-        draw(&path).unwrap();
-        let bytes = std::fs::read(&path).unwrap();
-        assert!(bytes.len() > min_bytes, "{name}: {} bytes", bytes.len());
-        if name.ends_with("svg") {
-            let text = String::from_utf8(bytes).unwrap();
-            for want in wants {
-                assert!(text.contains(want), "{want}");
-            }
-        }
     }
 }

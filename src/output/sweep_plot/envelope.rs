@@ -436,7 +436,7 @@ mod tests {
         b.set_nominal(&times, &v, false);
         let env = b.finish();
         let empty = EnvelopeBuilder::new("none", None, 0.0, 1.0, 10).finish();
-        super::super::assert_drawn(
+        super::super::tests::assert_drawn(
             dir.path(),
             3000,
             &["20 runs: min/max", "nominal", "vfb (V)", "time (s)"],

@@ -278,7 +278,7 @@ mod tests {
         let mut unbounded = histogram("i_peak", vec![1.0, 2.0, 2.5]);
         unbounded.min_limit = Some(f64::NEG_INFINITY);
         let all = [settle, constant, failed, unbounded];
-        super::super::assert_drawn(
+        super::super::tests::assert_drawn(
             dir.path(),
             3000,
             &[

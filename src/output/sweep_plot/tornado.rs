@@ -190,7 +190,7 @@ mod tests {
             bar("kt", -0.9, 0.85),
             bar("j", 0.3, 0.25),
         ];
-        super::super::assert_drawn(
+        super::super::tests::assert_drawn(
             dir.path(),
             2000,
             &[
