@@ -353,6 +353,16 @@ fn spec_errors_name_the_line_and_exit_1() {
             "this plan has 1000000000 runs",
         ),
         (
+            "[grid.parameters]\ntau = [1e-3]\n[metrics]\nm = { kind = \"max\", of = \"xx\" }\n",
+            8,
+            "the design has no quantity or signal `xx`",
+        ),
+        (
+            "[grid.parameters]\ntau = [1e-3]\n[plots]\nenvelope = [\"x\", \"y\"]\n",
+            8,
+            "the design has no quantity or signal `y`",
+        ),
+        (
             "[grid.parameters]\ntau = [1e-3]\n[metrics]\nm = { kind = \"max\", of = \"x\", from = \"2 ms\", to = \"1 ms\" }\n",
             8,
             "metric `m`",

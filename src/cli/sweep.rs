@@ -471,7 +471,7 @@ fn check_parameters(spec: &Spec, prepared: &Prepared) -> Result<(), Report> {
         match elaborate_analysed(&prepared.analysis, &loaded.sources, &loaded.files, &options) {
             Ok(design) => {
                 prepared.print_warnings(&design);
-                return Ok(());
+                return check_columns(spec, &design);
             }
             Err(errors) => errors,
         };
@@ -507,6 +507,52 @@ fn check_parameters(spec: &Spec, prepared: &Prepared) -> Result<(), Report> {
         .into());
     }
     // Other errors belong to the first run's values: each run reports its own.
+    Ok(())
+}
+
+/// Every column a metric or the envelope reads must be a quantity or signal of the design
+/// (of run 0's): a misspelt name is a spec error at its line, not a failure of every run.
+fn check_columns(spec: &Spec, design: &crate::design::Design) -> Result<(), Report> {
+    let names: Vec<&str> = design
+        .quantities
+        .iter()
+        .map(|q| q.name.as_str())
+        .chain(design.signals.iter().map(|s| s.name.as_str()))
+        .collect();
+    let wanted = spec
+        .metrics
+        .iter()
+        .zip(&spec.metric_spans)
+        .filter_map(|(m, span)| m.column().map(|c| (c.to_string(), *span)))
+        .chain(
+            spec.envelope
+                .iter()
+                .cloned()
+                .zip(spec.envelope_spans.iter().copied()),
+        );
+    for (column, span) in wanted {
+        if names.contains(&column.as_str()) {
+            continue;
+        }
+        let closest = names
+            .iter()
+            .map(|n| (strsim::levenshtein(&column, n), *n))
+            .min_by_key(|&(d, _)| d);
+        let help = match closest {
+            Some((d, n)) if d <= column.len().max(3) / 2 + 1 => format!("did you mean `{n}`?"),
+            _ => "columns are quantities and signals by their hierarchical name, e.g. \
+                  `dut.u_motor.i` (`vams run` records them all)"
+                .to_string(),
+        };
+        let at = spec::Locator::new(&spec.path.display().to_string(), spec.source.inner());
+        return Err(at
+            .error(
+                span,
+                format!("the design has no quantity or signal `{column}`"),
+                Some(help),
+            )
+            .into());
+    }
     Ok(())
 }
 

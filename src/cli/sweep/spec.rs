@@ -33,8 +33,11 @@ pub struct Spec {
     pub plan_span: SourceSpan,
     pub parameter_spans: Vec<SourceSpan>,
     pub metrics: Vec<Metric>,
+    /// Where each metric is written.
+    pub metric_spans: Vec<SourceSpan>,
     /// The waveforms drawn as a band over all runs.
     pub envelope: Vec<String>,
+    pub envelope_spans: Vec<SourceSpan>,
     /// The plots' file extension: `svg` (default) or `png`.
     pub plot_format: &'static str,
 }
@@ -155,7 +158,7 @@ struct RawSensitivity {
 #[serde(deny_unknown_fields)]
 struct RawPlots {
     #[serde(default)]
-    envelope: Vec<String>,
+    envelope: Vec<Spanned<String>>,
     format: Option<Spanned<String>>,
 }
 
@@ -268,6 +271,7 @@ pub fn parse_spec(path: &Path, text: &str) -> Result<Spec, SpecError> {
         }
     };
     let (plan, parameter_spans) = plan(&at, plan_span, section)?;
+    let metric_spans = raw.metrics.0.iter().map(|(_, m)| span_of(m)).collect();
     let metrics = raw.metrics.validate().map_err(|errors| {
         // The first; the user fixes one at a time, as with the rest of the spec.
         let e = &errors[0];
@@ -304,12 +308,14 @@ pub fn parse_spec(path: &Path, text: &str) -> Result<Spec, SpecError> {
         plan_span,
         parameter_spans,
         metrics,
+        metric_spans,
         envelope: raw
             .plots
             .envelope
             .iter()
-            .map(|n| n.to_ascii_lowercase())
+            .map(|n| n.get_ref().to_ascii_lowercase())
             .collect(),
+        envelope_spans: raw.plots.envelope.iter().map(span_of).collect(),
     })
 }
 
