@@ -16,6 +16,13 @@ use super::{Band, Edge, Metric, MetricKind, Stat, Window};
 use crate::cli::time::format_time;
 use crate::waveform::{ColumnKind, Waveforms};
 
+/// A value for a message: 6 significant digits, so a band edge computed as 1.9 - 0.05 reads
+/// 1.85, not 1.8499999999999999.
+fn short(x: f64) -> String {
+    let rounded: f64 = format!("{x:.5e}").parse().unwrap_or(x);
+    crate::output::csv::format_number(rounded)
+}
+
 /// Why a metric has no value on a run (the sweep records it as failed for that run).
 #[derive(Clone, Debug, PartialEq, Error, Diagnostic)]
 pub enum MetricError {
@@ -45,8 +52,8 @@ pub enum MetricError {
         end: String,
     },
     #[error(
-        "metric `{metric}`: `{column}` crosses {value} {edge} {found} time(s) in the window, \
-         not {nth}"
+        "metric `{metric}`: `{column}` crosses {} {edge} {found} time(s) in the window, \
+         not {nth}", short(*value)
     )]
     #[diagnostic(code(vams::sweep::metric_cross))]
     NoCrossing {
@@ -58,8 +65,8 @@ pub enum MetricError {
         found: usize,
     },
     #[error(
-        "metric `{metric}`: `{column}` is still outside the band {low} to {high} at the end \
-         of the run"
+        "metric `{metric}`: `{column}` is still outside the band {} to {} at the end \
+         of the run", short(*low), short(*high)
     )]
     #[diagnostic(code(vams::sweep::metric_settle))]
     NeverSettles {
@@ -68,7 +75,7 @@ pub enum MetricError {
         low: f64,
         high: f64,
     },
-    #[error("metric `{metric}`: `{column}` makes no step after {from} (it is {value} there)")]
+    #[error("metric `{metric}`: `{column}` makes no step after {from} (it is {} there)", short(*value))]
     #[diagnostic(
         code(vams::sweep::metric_step),
         help("a percentage band and an overshoot are relative to the step; give an absolute band")
