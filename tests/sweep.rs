@@ -384,6 +384,26 @@ fn spec_errors_name_the_line_and_exit_1() {
 }
 
 #[test]
+fn a_sweep_of_reports_alone_records_no_waveform() {
+    // Only assertion_failures: no column is read, so no row is built (no probe would
+    // otherwise mean recording every quantity); the count is still there.
+    let (dir, path) = spec(
+        "[grid.parameters]\ntau_max = [1.0, 1e-4]\n[metrics]\nf = { kind = \"assertion_failures\", max = 0 }\n",
+    );
+    let out = dir.path().join("out");
+    sweep_into(&path, &out)
+        .assert()
+        .success()
+        .stderr(contains("yield: 1 of 2 runs meet every limit"));
+    let table = rows(&out.join("results.csv"));
+    assert_eq!(
+        (table[0]["f"].as_str(), table[0]["status"].as_str()),
+        ("0", "ok")
+    );
+    assert_eq!(table[1]["status"], "failed");
+}
+
+#[test]
 fn the_designs_own_generics_are_checked_too() {
     let (_dir, path) = spec("[grid.parameters]\ntau = [1e-3]\n");
     let text = std::fs::read_to_string(&path).unwrap();

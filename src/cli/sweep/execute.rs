@@ -9,7 +9,7 @@ use crate::diagnostics::Located;
 use crate::elaborate::{ElabOptions, elaborate_analysed};
 use crate::kernel::{Cancel, Outcome, Severity, SimError, SimOptions, simulate_into};
 use crate::source::SourceMap;
-use crate::waveform::{ColumnKind, Waveforms};
+use crate::waveform::{ColumnKind, Header, SinkError, WaveformSink, Waveforms};
 
 use super::metric::Metric;
 use super::plan::{ParamValue, Run};
@@ -29,6 +29,23 @@ pub struct Job<'a> {
     pub abstol: Option<f64>,
     pub max_step: Option<f64>,
     pub cancel: Cancel,
+}
+
+/// The sink of a run whose metrics read no column (only its reports): no row is built.
+struct NoRows;
+
+impl WaveformSink for NoRows {
+    fn start(&mut self, _: &Header) -> Result<(), SinkError> {
+        Ok(())
+    }
+
+    fn row(&mut self, _: f64, _: &[f64]) -> Result<(), SinkError> {
+        Ok(())
+    }
+
+    fn wants_rows(&self) -> bool {
+        false
+    }
 }
 
 /// A run's envelope column: times, values, and whether it holds between samples.
@@ -130,7 +147,13 @@ impl Job<'_> {
         };
         let mut waves = Waveforms::default();
         let mut reports = Vec::new();
-        let result = simulate_into(&design, &sim, &mut waves, &mut |r| reports.push(r.clone()));
+        let mut on_report = |r: &crate::kernel::Report| reports.push(r.clone());
+        // No probes would mean "record everything": with nothing to read, record nothing.
+        let result = if sim.probes.is_empty() {
+            simulate_into(&design, &sim, &mut NoRows, &mut on_report)
+        } else {
+            simulate_into(&design, &sim, &mut waves, &mut on_report)
+        };
         let end = match result {
             Ok(end) => end,
             Err(SimError::Interrupted { .. }) => return None,
