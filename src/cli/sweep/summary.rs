@@ -89,6 +89,27 @@ pub fn sensitivities(plan: &Plan, rows: &[Row], metrics: usize) -> Option<Sensit
     )
 }
 
+/// The parameter values (`v_bat = 16`) that every run out of its limits shares and some run
+/// within them does not: where a worst case lives.
+pub fn shared_by_failing(names: &[String], rows: &[&Row]) -> Vec<String> {
+    let failing: Vec<&&Row> = rows.iter().filter(|r| r.pass == Some(false)).collect();
+    let Some(first) = failing.first() else {
+        return Vec::new();
+    };
+    names
+        .iter()
+        .enumerate()
+        .filter_map(|(p, name)| {
+            let value = first.values.get(p)?;
+            let all = failing.iter().all(|r| r.values.get(p) == Some(value));
+            let telling = rows
+                .iter()
+                .any(|r| r.pass == Some(true) && r.values.get(p) != Some(value));
+            (all && telling).then(|| format!("{name} = {value}"))
+        })
+        .collect()
+}
+
 /// A number for a table: 4 significant digits.
 pub fn short(x: f64) -> String {
     if x == 0.0 {
@@ -168,6 +189,14 @@ pub fn summary(plan: &Plan, metrics: &[Metric], rows: &[Row]) -> String {
                 out,
                 "first run out of its limits: run {} ({})",
                 worst.index, worst.case
+            );
+        }
+        let shared = shared_by_failing(&plan.names(), &counted);
+        if !shared.is_empty() {
+            let _ = writeln!(
+                out,
+                "every run out of its limits has {} (not every run within them does)",
+                shared.join(", ")
             );
         }
     }
@@ -270,6 +299,29 @@ mod tests {
             "{text}"
         );
         assert!(text.contains("run 2 failed: no quiescent point"), "{text}");
+    }
+
+    #[test]
+    fn the_values_every_failing_run_shares_are_named() {
+        let row = |index: usize, values: [&str; 2], pass: bool| Row {
+            index,
+            case: "corner".into(),
+            values: values.map(String::from).to_vec(),
+            metrics: vec![],
+            pass: Some(pass),
+            status: Status::Ok,
+            message: String::new(),
+        };
+        let rows = [
+            row(0, ["9", "1"], true),
+            row(1, ["16", "1"], false),
+            row(2, ["16", "2"], false),
+            row(3, ["16", "3"], true),
+        ];
+        let refs: Vec<&Row> = rows.iter().collect();
+        let names = ["v_bat".to_string(), "r".to_string()];
+        assert_eq!(shared_by_failing(&names, &refs), ["v_bat = 16"]);
+        assert!(shared_by_failing(&names, &refs[..1]).is_empty());
     }
 
     #[test]
