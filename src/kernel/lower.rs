@@ -598,25 +598,29 @@ pub(crate) enum Mechanism {
 /// as an instruction, so the runaway limit and the cancel checks come where they did).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Next {
-    pc: usize,
-    jumps: usize,
+    /// 32 bits, as `jumps`: a smaller [`Op`] (a process's lowered code in fewer cache lines).
+    pc: u32,
+    jumps: u32,
 }
 
 impl Next {
     /// What follows instruction `pc` of `code`.
-    fn after(code: &[Instr], pc: usize) -> Next {
+    fn after(code: &[Instr], pc: usize) -> Option<Next> {
         Next::at(code, pc + 1)
     }
 
-    /// Instruction `pc` of `code`, or the target of the `Jump` there.
-    fn at(code: &[Instr], pc: usize) -> Next {
-        match code.get(pc) {
+    /// Instruction `pc` of `code`, or the target of the `Jump` there; `None` beyond 32 bits.
+    fn at(code: &[Instr], pc: usize) -> Option<Next> {
+        Some(match code.get(pc) {
             Some(Instr::Jump(target)) => Next {
-                pc: *target,
+                pc: u32::try_from(*target).ok()?,
                 jumps: 1,
             },
-            _ => Next { pc, jumps: 0 },
-        }
+            _ => Next {
+                pc: u32::try_from(pc).ok()?,
+                jumps: 0,
+            },
+        })
     }
 
     /// The instruction to go on at and the instructions taken to get there (the one that
@@ -624,7 +628,7 @@ impl Next {
     #[inline(always)]
     fn go<const THREAD: bool>(self, plain: usize) -> (usize, usize) {
         if THREAD {
-            (self.pc, 1 + self.jumps)
+            (self.pc as usize, 1 + self.jumps as usize)
         } else {
             (plain, 1)
         }
@@ -657,14 +661,14 @@ pub(crate) enum Op<'d> {
         value: Node<'d>,
         delay: f64,
         mechanism: Mechanism,
-        /// The target's integer subtype's bounds.
-        range: Option<(i64, i64)>,
+        /// The target's integer subtype's bounds (all of `i64` without a subtype).
+        range: (i64, i64),
         next: Next,
     },
     SetVar {
         var: usize,
         value: Node<'d>,
-        range: Option<(i64, i64)>,
+        range: (i64, i64),
         next: Next,
     },
 }
@@ -759,11 +763,14 @@ pub(crate) fn step<const THREAD: bool>(
 /// Whether `v` is within `range`, the bounds of the target's integer subtype (lowering
 /// keeps them for integer values only).
 #[inline(always)]
-fn in_range(v: i64, range: Option<(i64, i64)>) -> bool {
-    match range {
-        Some((lo, hi)) => lo <= v && v <= hi,
-        None => true,
-    }
+fn in_range(v: i64, (lo, hi): (i64, i64)) -> bool {
+    lo <= v && v <= hi
+}
+
+/// The bounds [`in_range`] checks: `range`, or all of `i64` (no check) without one; a pair
+/// rather than an `Option`, for a smaller [`Op`].
+fn bounds(range: Option<(i64, i64)>) -> (i64, i64) {
+    range.unwrap_or((i64::MIN, i64::MAX))
 }
 
 /// How far [`run`] got.
@@ -850,7 +857,7 @@ pub(crate) fn idle_branch(ops: &[Op], process: &Process) -> Option<IdleBranch> {
         (pc, jumps) = (*target, 1);
     }
     match ops.get(pc)? {
-        Op::Branch { fails, .. } if fails.pc == wait => Some(IdleBranch { pc, jumps }),
+        Op::Branch { fails, .. } if fails.pc as usize == wait => Some(IdleBranch { pc, jumps }),
         _ => None,
     }
 }
@@ -936,8 +943,8 @@ fn lower_one<'d>(
         Instr::JumpIfNot { cond, target } => Op::Branch {
             cond: Node::lower(cond, cx).filter(|c| c.kind == Kind::Bool)?,
             target: *target,
-            holds: Next::after(&process.code, pc),
-            fails: Next::at(&process.code, *target),
+            holds: Next::after(&process.code, pc)?,
+            fails: Next::at(&process.code, *target)?,
         },
         Instr::Wait { until, timeout, .. } => {
             let timeout = match timeout {
@@ -953,13 +960,11 @@ fn lower_one<'d>(
             let value = Node::lower(value, cx)?;
             Op::SetVar {
                 var: var.index(),
-                range: process
-                    .vars
-                    .get(var.index())?
-                    .range
-                    .filter(|_| value.kind == Kind::Int),
+                range: bounds(
+                    (process.vars.get(var.index())?.range).filter(|_| value.kind == Kind::Int),
+                ),
                 value,
-                next: Next::after(&process.code, pc),
+                next: Next::after(&process.code, pc)?,
             }
         }
         Instr::Assign {
@@ -993,11 +998,11 @@ fn lower_one<'d>(
             let value = Node::lower(value, cx)?;
             Op::Assign {
                 driver,
-                range: signal.range.filter(|_| value.kind == Kind::Int),
+                range: bounds(signal.range.filter(|_| value.kind == Kind::Int)),
                 value,
                 delay,
                 mechanism,
-                next: Next::after(&process.code, pc),
+                next: Next::after(&process.code, pc)?,
             }
         }
         _ => return None,
