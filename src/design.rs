@@ -327,6 +327,23 @@ pub struct Subprogram {
     /// The source statement of each instruction, as for [`Process::spans`].
     pub spans: Vec<Span>,
     pub span: Span,
+    /// What the function computes, when it is one of the bundled packages' whose meaning the
+    /// kernel knows (it may then evaluate a call without running `code`, which stays the
+    /// reference).
+    pub intrinsic: Option<Intrinsic>,
+}
+
+/// A bundled function the kernel evaluates without running its body, as an instance bound
+/// to its actual signal (a user's own function of the same name is never one).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Intrinsic {
+    /// `rising_edge(s)` (`rising`) or `falling_edge(s)` of `ieee.std_logic_1164`:
+    /// `s'event and to_x01(s) = '1' and to_x01(s'last_value) = '0'` (`'0'` and `'1'`
+    /// exchanged for the falling edge).
+    StdLogicEdge { signal: SignalId, rising: bool },
+    /// `rising_edge(s)` or `falling_edge(s)` of `ieee.numeric_bit`, on a `bit`:
+    /// `s'event and s = '1'` (`'0'` for the falling edge).
+    BitEdge { signal: SignalId, rising: bool },
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

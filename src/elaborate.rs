@@ -36,6 +36,7 @@ mod follow;
 mod generics;
 mod hier;
 mod inline;
+mod intrinsic;
 mod io;
 mod lengths;
 mod library;

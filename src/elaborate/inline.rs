@@ -497,6 +497,7 @@ mod tests {
                 vars: vec![var("t"), var("k")],
                 code,
                 span: Span::default(),
+                intrinsic: None,
             }],
             ..Design::default()
         }

@@ -605,6 +605,7 @@ impl<'a> Elab<'a> {
             code,
             spans,
             span: stmt.span,
+            intrinsic: None,
         };
         let vars: Vec<VarId> = outputs.iter().map(|&(_, v)| v).collect();
         let values = match super::inline::procedural_values(&self.design, &body, &frame, &vars) {

@@ -843,6 +843,7 @@ impl<'a> Elab<'a> {
             vars: Vec::new(),
             code: vec![Instr::Return(None)],
             span: sub.span,
+            intrinsic: super::intrinsic::of(sub, signals, self.sources),
         });
         sub.instances.borrow_mut().push(Instance {
             signals: signals.to_vec(),

@@ -45,6 +45,7 @@ fn subprogram(
         vars,
         code,
         span: Span::default(),
+        intrinsic: None,
     });
     SubprogramId(d.subprograms.len() as u32 - 1)
 }
