@@ -9,7 +9,7 @@ use miette::Report;
 
 use crate::analysis::{Analysis, analyse};
 use crate::design::Design;
-use crate::elaborate::{ElabOptions, ElabWarning, elaborate_analysed, find_tops};
+use crate::elaborate::{ElabError, ElabOptions, ElabWarning, elaborate_analysed, find_tops};
 
 use super::error::CliError;
 use super::load::{Loaded, load_with_libraries};
@@ -68,25 +68,29 @@ pub struct Prepared {
 }
 
 impl Prepared {
-    /// Elaborates the top with the command's generics and then `extra` (which win); the errors
-    /// are printed (the warnings are the caller's: [`print_warnings`]).
-    pub fn elaborate(&self, extra: &[(String, String)]) -> Result<Design, Report> {
-        let generics = merge_generics(self.generics.clone(), extra);
+    /// Elaborates the top with the command's generics and then `extra` (which win), giving
+    /// the errors to the caller (`vams sweep` records them per run).
+    pub fn try_elaborate(&self, extra: &[(String, String)]) -> Result<Design, Vec<ElabError>> {
         let options = ElabOptions {
             top: self.top.clone(),
-            generics,
+            generics: merge_generics(self.generics.clone(), extra),
         };
         let loaded = &self.loaded;
-        let design = elaborate_analysed(&self.analysis, &loaded.sources, &loaded.files, &options)
-            .map_err(|errors| {
+        elaborate_analysed(&self.analysis, &loaded.sources, &loaded.files, &options)
+    }
+
+    /// [`Prepared::try_elaborate`] with the errors printed (the warnings are the caller's:
+    /// [`Prepared::print_warnings`]).
+    pub fn elaborate(&self, extra: &[(String, String)]) -> Result<Design, Report> {
+        self.try_elaborate(extra).map_err(|errors| {
             for e in &errors {
-                eprint!("{}", render_located(e, &loaded.sources));
+                eprint!("{}", render_located(e, &self.loaded.sources));
             }
             CliError::Elaboration {
                 count: errors.len(),
             }
-        })?;
-        Ok(design)
+            .into()
+        })
     }
 
     /// Prints the elaboration warnings of `design`.

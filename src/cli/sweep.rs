@@ -27,7 +27,7 @@ use clap::{Args, Subcommand};
 use miette::{Diagnostic, Report};
 use thiserror::Error;
 
-use crate::elaborate::{ElabError, ElabOptions, elaborate_analysed};
+use crate::elaborate::ElabError;
 use crate::output::sweep_plot::{EnvelopeBuilder, Histogram, TornadoBar};
 
 use super::compile::{DesignArgs, Prepared, prepare};
@@ -35,7 +35,7 @@ use super::error::CliError;
 use super::load::LibrarySources;
 use super::render::render_located;
 use super::stop::{declaring_file, stop_comment};
-use execute::{Done, Job};
+use execute::Job;
 use plan::Plan;
 use spec::{Spec, read_spec};
 use table::{Identity, Row, Status, TableError, TableWriter, header, read_table};
@@ -223,16 +223,13 @@ pub fn run(args: &SweepArgs) -> Result<(), Report> {
     let metric_names: Vec<String> = spec.metrics.iter().map(|m| m.name.clone()).collect();
     let head = header(&names, &metric_names);
     let kept = previous_rows(&table_path, &identity, &head, names.len(), args)?;
-    let todo: Vec<usize> = range
-        .clone()
-        .filter(|i| !kept.iter().any(|r| r.index == *i))
-        .collect();
+    let done: std::collections::HashSet<usize> = kept.iter().map(|r| r.index).collect();
+    let todo: Vec<usize> = range.clone().filter(|i| !done.contains(i)).collect();
     let mut writer =
         TableWriter::create(&table_path, &identity, &head, &kept).map_err(SweepError::from)?;
     let job = Job {
         prepared: &prepared,
         parameters: names.clone(),
-        fixed: spec.design.generics.clone(),
         metrics: &spec.metrics,
         envelope: &spec.envelope,
         stop,
@@ -285,22 +282,8 @@ pub fn run(args: &SweepArgs) -> Result<(), Report> {
                     interrupted = true;
                     return;
                 }
-                Err(panic) => {
-                    // An internal error in one run is that run's failure, not the sweep's.
-                    let run = plan.run(todo[k]);
-                    Done {
-                        row: Row {
-                            index: run.index,
-                            case: run.case,
-                            values: run.values.iter().map(plan::ParamValue::literal).collect(),
-                            metrics: vec![None; metric_names.len()],
-                            pass: None,
-                            status: Status::Failed,
-                            message: format!("internal error: {panic}"),
-                        },
-                        traces: Vec::new(),
-                    }
-                }
+                // An internal error in one run is that run's failure, not the sweep's.
+                Err(panic) => job.failure(&plan.run(todo[k]), format!("internal error: {panic}")),
             };
             if done.row.status == Status::Failed {
                 failures += 1;
@@ -454,27 +437,15 @@ fn prepare_design(spec: &Spec) -> Result<Prepared, Report> {
 /// a generic of it: a misspelt name is a spec error at its line, before any run.
 fn check_parameters(spec: &Spec, prepared: &Prepared) -> Result<(), Report> {
     // Run 0's values: a generic without a default that every run sets elaborates too.
-    let run = spec.plan.run(0);
-    let names = spec.plan.names();
-    let generics: Vec<(String, String)> = names
-        .iter()
-        .cloned()
-        .zip(run.values.iter().map(plan::ParamValue::literal))
-        .collect();
-    let loaded = &prepared.loaded;
-    let mut options = ElabOptions {
-        top: prepared.top.clone(),
-        generics: prepared.generics.clone(),
+    let errors = match prepared.try_elaborate(&spec.plan.run(0).generics(&spec.plan.names())) {
+        Ok(design) => {
+            prepared.print_warnings(&design);
+            return check_columns(spec, &design);
+        }
+        Err(errors) => errors,
     };
-    options.generics.extend(generics);
-    let errors =
-        match elaborate_analysed(&prepared.analysis, &loaded.sources, &loaded.files, &options) {
-            Ok(design) => {
-                prepared.print_warnings(&design);
-                return check_columns(spec, &design);
-            }
-            Err(errors) => errors,
-        };
+    let names = spec.plan.names();
+    let loaded = &prepared.loaded;
     let at = spec::Locator::new(&spec.path.display().to_string(), spec.source.inner());
     let mut unknown_fixed = Vec::new();
     for e in &errors {

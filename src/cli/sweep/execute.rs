@@ -6,7 +6,6 @@
 
 use crate::cli::compile::Prepared;
 use crate::diagnostics::Located;
-use crate::elaborate::{ElabOptions, elaborate_analysed};
 use crate::kernel::{Cancel, Outcome, Severity, SimError, SimOptions, simulate_into};
 use crate::source::SourceMap;
 use crate::waveform::{ColumnKind, Header, SinkError, WaveformSink, Waveforms};
@@ -19,8 +18,6 @@ use super::table::{Row, Status};
 pub struct Job<'a> {
     pub prepared: &'a Prepared,
     pub parameters: Vec<String>,
-    /// Generics set alike in every run (the spec's `[design] generics`).
-    pub fixed: Vec<(String, String)>,
     pub metrics: &'a [Metric],
     /// The columns drawn as envelopes.
     pub envelope: &'a [String],
@@ -85,14 +82,20 @@ impl Job<'_> {
         probes
     }
 
-    /// The generics of a run: the fixed ones, then the run's parameters (which win).
-    pub fn generics(&self, run: &Run) -> Vec<(String, String)> {
-        let mut generics = self.fixed.clone();
-        for (name, value) in self.parameters.iter().zip(&run.values) {
-            generics.retain(|(n, _)| n != name);
-            generics.push((name.clone(), value.literal()));
+    /// Run `run` failed with `message`: no metric, the limits failed where there are some.
+    pub fn failure(&self, run: &Run, message: String) -> Done {
+        Done {
+            row: Row {
+                index: run.index,
+                case: run.case.clone(),
+                values: run.values.iter().map(ParamValue::literal).collect(),
+                metrics: vec![None; self.metrics.len()],
+                pass: self.has_limits().then_some(false),
+                status: Status::Failed,
+                message,
+            },
+            traces: vec![None; self.envelope.len()],
         }
-        generics
     }
 
     /// Runs `run`; `None` when the sweep was interrupted during it (nothing to record: a
@@ -101,30 +104,10 @@ impl Job<'_> {
         if self.cancel.is_cancelled() {
             return None;
         }
-        let values: Vec<String> = run.values.iter().map(ParamValue::literal).collect();
-        let failed = |message: String| Done {
-            row: Row {
-                index: run.index,
-                case: run.case.clone(),
-                values: values.clone(),
-                metrics: vec![None; self.metrics.len()],
-                pass: self.has_limits().then_some(false),
-                status: Status::Failed,
-                message,
-            },
-            traces: vec![None; self.envelope.len()],
-        };
+        let failed = |message: String| self.failure(run, message);
         let loaded = &self.prepared.loaded;
-        let options = ElabOptions {
-            top: self.prepared.top.clone(),
-            generics: self.generics(run),
-        };
-        let design = match elaborate_analysed(
-            &self.prepared.analysis,
-            &loaded.sources,
-            &loaded.files,
-            &options,
-        ) {
+        // The spec's `[design] generics` are the prepared design's; the run's values win.
+        let design = match self.prepared.try_elaborate(&run.generics(&self.parameters)) {
             Ok(d) => d,
             Err(errors) => {
                 let first = errors
@@ -224,7 +207,7 @@ impl Job<'_> {
             row: Row {
                 index: run.index,
                 case: run.case.clone(),
-                values,
+                values: run.values.iter().map(ParamValue::literal).collect(),
                 metrics,
                 pass,
                 status: Status::Ok,

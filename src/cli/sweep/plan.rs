@@ -109,6 +109,17 @@ pub struct Run {
     pub values: Vec<ParamValue>,
 }
 
+impl Run {
+    /// The generics this run sets: `names` (the plan's parameters) with its values.
+    pub fn generics(&self, names: &[String]) -> Vec<(String, String)> {
+        names
+            .iter()
+            .cloned()
+            .zip(self.values.iter().map(ParamValue::literal))
+            .collect()
+    }
+}
+
 impl Plan {
     /// The parameters, in the order of the table's columns.
     pub fn names(&self) -> Vec<String> {
