@@ -12,6 +12,7 @@ pub mod design;
 pub mod diagnostics;
 pub mod elaborate;
 pub mod extract;
+pub mod fit;
 pub mod kernel;
 pub mod lexer;
 pub mod output;

@@ -1,0 +1,402 @@
+//! Estimating a model's generics from measured waveforms (`vams fit`).
+//!
+//! Takes the free parameters ([`FreeParam`]: guess and bounds), the measured series
+//! ([`Series`]: one column of one capture each) and a [`Simulate`] that runs the model of an
+//! experiment with given parameter values and gives its simulated values at the series'
+//! times; gives the fitted values with two 95 % intervals, the correlations, the directions the
+//! captures do not determine, and the residual of each series ([`Fitted`]).
+//!
+//! The fit minimises the weighted residual of all series jointly ([`lm`]: Levenberg-Marquardt
+//! with bounds, positive parameters in log space). Weights: each series is divided by its
+//! noise (estimated from its own samples) for a first pass, then by its RMS residual after
+//! that pass for a second, so that a series the model cannot follow to its noise (a ripple
+//! the model lacks) weighs as much as it deserves and the residual per degree of freedom is
+//! about one. Then [`uncertainty`] turns the residual into intervals. It never prints, never
+//! reads files, and knows nothing of VHDL: the caller simulates.
+
+pub mod lm;
+pub mod param;
+pub mod series;
+pub mod uncertainty;
+
+pub use lm::{Ending, Settings};
+pub use param::{FreeParam, Scale};
+pub use series::Series;
+pub use uncertainty::{Uncertainty, Unidentified};
+
+use std::ops::Range;
+
+/// What runs the model: the caller's simulator.
+pub trait Simulate: Sync {
+    /// Why a simulation failed.
+    type Error: Clone + std::fmt::Display + Send;
+    /// Simulates each job (experiment, parameter values in the order of the free
+    /// parameters), in parallel where it can; each result holds, per series of that
+    /// experiment (in the order of [`Fit::series`]), the simulated values at its times.
+    fn simulate(&self, jobs: &[(usize, Vec<f64>)]) -> Vec<Result<Vec<Vec<f64>>, Self::Error>>;
+}
+
+/// A fit to set up.
+pub struct Fit<'a, S: Simulate> {
+    pub simulator: &'a S,
+    pub params: &'a [FreeParam],
+    pub series: &'a [Series],
+    pub experiments: usize,
+    pub settings: Settings,
+    /// Seed of the bootstrap.
+    pub seed: u64,
+}
+
+/// A parameter's result.
+#[derive(Debug, Clone)]
+pub struct Estimate {
+    pub value: f64,
+    /// The 95 % interval from the covariance (None where undetermined or at a bound).
+    pub interval: Option<(f64, f64)>,
+    /// The 95 % interval of the block bootstrap.
+    pub robust: Option<(f64, f64)>,
+    /// Ended at a bound.
+    pub at_bound: bool,
+    /// Per experiment, the size of the parameter's effect on the weighted residual (the
+    /// norm of its Jacobian column over the experiment's rows): where it shows.
+    pub influence: Vec<f64>,
+}
+
+/// A series' agreement.
+#[derive(Debug, Clone)]
+pub struct SeriesFit {
+    /// RMS of simulated less measured at the start, in the series' unit.
+    pub rms_start: f64,
+    /// RMS at the end.
+    pub rms: f64,
+    /// The simulated values at the end.
+    pub simulated: Vec<f64>,
+}
+
+/// The fit's result.
+#[derive(Debug, Clone)]
+pub struct Fitted {
+    pub estimates: Vec<Estimate>,
+    pub series: Vec<SeriesFit>,
+    pub uncertainty: Uncertainty,
+    pub iterations: usize,
+    /// Simulations run (each point evaluates every experiment).
+    pub simulations: usize,
+    pub ending: Ending,
+}
+
+/// The failure of a fit.
+#[derive(Debug, Clone)]
+pub enum FitError<E> {
+    /// The simulation of an experiment failed at the first guess.
+    Start(E),
+    /// The first guess gives a non-finite residual.
+    NotFinite,
+    /// A difference simulation failed.
+    Sensitivity { parameter: String, error: E },
+}
+
+impl<E: std::fmt::Display> std::fmt::Display for FitError<E> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            FitError::Start(e) => write!(f, "the simulation at the first guess failed: {e}"),
+            FitError::NotFinite => {
+                f.write_str("the simulation at the first guess gives a non-finite value")
+            }
+            FitError::Sensitivity { parameter, error } => write!(
+                f,
+                "the simulation with `{parameter}` changed slightly failed: {error}"
+            ),
+        }
+    }
+}
+
+/// The weighted residual of a fit: [`lm::Residuals`] over the caller's simulator.
+struct Weighted<'a, S: Simulate> {
+    fit: &'a Fit<'a, S>,
+    sigma: Vec<f64>,
+}
+
+impl<S: Simulate> Weighted<'_, S> {
+    /// The simulated series at each point.
+    fn simulate(&self, points: &[Vec<f64>]) -> Vec<Result<Vec<Vec<f64>>, S::Error>> {
+        let ne = self.fit.experiments;
+        let jobs: Vec<(usize, Vec<f64>)> = points
+            .iter()
+            .flat_map(|x| {
+                let values: Vec<f64> = self
+                    .fit
+                    .params
+                    .iter()
+                    .zip(x)
+                    .map(|(p, x)| p.from_x(*x))
+                    .collect();
+                (0..ne).map(move |e| (e, values.clone()))
+            })
+            .collect();
+        let mut results = self.fit.simulator.simulate(&jobs).into_iter();
+        points
+            .iter()
+            .map(|_| {
+                let per_experiment: Vec<_> = results.by_ref().take(ne).collect();
+                let mut out = vec![Vec::new(); self.fit.series.len()];
+                let mut next = vec![0usize; ne];
+                let mut sims = Vec::with_capacity(ne);
+                for r in per_experiment {
+                    sims.push(r?);
+                }
+                for (k, s) in self.fit.series.iter().enumerate() {
+                    let e = s.experiment;
+                    out[k] = std::mem::take(sims[e].get_mut(next[e]).unwrap_or(&mut Vec::new()));
+                    next[e] += 1;
+                }
+                Ok(out)
+            })
+            .collect()
+    }
+
+    fn weigh(&self, sims: &[Vec<f64>]) -> Vec<f64> {
+        let mut r = Vec::new();
+        for (k, s) in self.fit.series.iter().enumerate() {
+            let w = 1.0 / self.sigma[k];
+            let sim = &sims[k];
+            for (n, m) in s.measured.iter().enumerate() {
+                // A simulation that gave fewer values than the series has (it cannot, but a
+                // missing value must not shift the rows): NaN rejects the point.
+                r.push(sim.get(n).map_or(f64::NAN, |v| (v - m) * w));
+            }
+        }
+        r
+    }
+}
+
+impl<S: Simulate> lm::Residuals for Weighted<'_, S> {
+    type Error = S::Error;
+    fn evaluate(&self, points: &[Vec<f64>]) -> Vec<Result<Vec<f64>, S::Error>> {
+        self.simulate(points)
+            .into_iter()
+            .map(|r| r.map(|sims| self.weigh(&sims)))
+            .collect()
+    }
+}
+
+fn rms_per_series(series: &[Series], sims: &[Vec<f64>]) -> Vec<f64> {
+    series
+        .iter()
+        .zip(sims)
+        .map(|(s, sim)| {
+            let n = s.measured.len().max(1) as f64;
+            (s.measured
+                .iter()
+                .zip(sim)
+                .map(|(m, v)| (v - m) * (v - m))
+                .sum::<f64>()
+                / n)
+                .sqrt()
+        })
+        .collect()
+}
+
+impl<S: Simulate> Fit<'_, S> {
+    /// The row ranges of each series in the residual.
+    fn ranges(&self) -> Vec<Range<usize>> {
+        let mut start = 0;
+        self.series
+            .iter()
+            .map(|s| {
+                let r = start..start + s.measured.len();
+                start = r.end;
+                r
+            })
+            .collect()
+    }
+
+    fn lm_error(&self, e: lm::LmError<S::Error>) -> FitError<S::Error> {
+        match e {
+            lm::LmError::Start(e) => FitError::Start(e),
+            lm::LmError::NotFinite => FitError::NotFinite,
+            lm::LmError::Jacobian { coordinate, error } => FitError::Sensitivity {
+                parameter: self.params[coordinate].name.clone(),
+                error,
+            },
+        }
+    }
+
+    /// Runs the fit.
+    pub fn run(&self) -> Result<Fitted, FitError<S::Error>> {
+        let x0: Vec<f64> = self.params.iter().map(|p| p.to_x(p.guess)).collect();
+        let bounds: Vec<(f64, f64)> = self.params.iter().map(FreeParam::x_bounds).collect();
+        let noise: Vec<f64> = self.series.iter().map(Series::noise).collect();
+        let first = Weighted {
+            fit: self,
+            sigma: noise,
+        };
+        let pass1 =
+            lm::minimise(&first, &x0, &bounds, &self.settings).map_err(|e| self.lm_error(e))?;
+        // Reweigh by each series' own misfit; evaluate the start for its RMS on the way.
+        let points = [x0.clone(), pass1.x.clone()];
+        let mut sims = first.simulate(&points).into_iter();
+        let start_sims = sims.next().and_then(Result::ok);
+        let pass1_sims = sims
+            .next()
+            .and_then(Result::ok)
+            .ok_or(FitError::NotFinite)?;
+        let rms1 = rms_per_series(self.series, &pass1_sims);
+        let sigma = rms1
+            .iter()
+            .zip(&first.sigma)
+            .map(|(r, n)| r.max(*n * 1e-3).max(f64::MIN_POSITIVE))
+            .collect();
+        let second = Weighted { fit: self, sigma };
+        let pass2 = lm::minimise(&second, &pass1.x, &bounds, &self.settings)
+            .map_err(|e| self.lm_error(e))?;
+        let end_sims = second
+            .simulate(std::slice::from_ref(&pass2.x))
+            .into_iter()
+            .next()
+            .and_then(Result::ok)
+            .ok_or(FitError::NotFinite)?;
+        let rms = rms_per_series(self.series, &end_sims);
+        let rms_start = match &start_sims {
+            Some(s) => rms_per_series(self.series, s),
+            None => vec![f64::NAN; self.series.len()],
+        };
+        let ranges = self.ranges();
+        let u = uncertainty::analyse(
+            &pass2.jacobian,
+            &pass2.residual,
+            &ranges,
+            &pass2.at_bound,
+            self.seed,
+        );
+        let estimates = self
+            .params
+            .iter()
+            .enumerate()
+            .map(|(k, p)| {
+                let x = pass2.x[k];
+                let sd = u.sd[k];
+                let interval = (sd.is_finite() && !pass2.at_bound[k]).then(|| {
+                    let (a, b) = (p.from_x(x - u.t95 * sd), p.from_x(x + u.t95 * sd));
+                    (a.min(b), a.max(b))
+                });
+                let robust = u.bootstrap[k]
+                    .filter(|_| !pass2.at_bound[k])
+                    .map(|(lo, hi)| {
+                        let (a, b) = (p.from_x(x + lo), p.from_x(x + hi));
+                        (a.min(b), a.max(b))
+                    });
+                let influence = (0..self.experiments)
+                    .map(|e| {
+                        self.series
+                            .iter()
+                            .zip(&ranges)
+                            .filter(|(s, _)| s.experiment == e)
+                            .flat_map(|(_, r)| r.clone())
+                            .map(|row| pass2.jacobian[(row, k)].powi(2))
+                            .sum::<f64>()
+                            .sqrt()
+                    })
+                    .collect();
+                Estimate {
+                    value: p.from_x(x),
+                    interval,
+                    robust,
+                    at_bound: pass2.at_bound[k],
+                    influence,
+                }
+            })
+            .collect();
+        let series = end_sims
+            .into_iter()
+            .zip(rms)
+            .zip(rms_start)
+            .map(|((simulated, rms), rms_start)| SeriesFit {
+                rms_start,
+                rms,
+                simulated,
+            })
+            .collect();
+        Ok(Fitted {
+            estimates,
+            series,
+            uncertainty: u,
+            iterations: pass1.iterations + pass2.iterations,
+            simulations: (pass1.evaluations + pass2.evaluations + 3) * self.experiments,
+            ending: pass2.ending,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A first-order step response `k (1 - exp(-t/tau))` per experiment, with the step's
+    /// height the experiment's own: the "simulator" is the closed form.
+    struct FirstOrder;
+
+    impl Simulate for FirstOrder {
+        type Error = String;
+        fn simulate(&self, jobs: &[(usize, Vec<f64>)]) -> Vec<Result<Vec<Vec<f64>>, String>> {
+            jobs.iter()
+                .map(|(e, p)| {
+                    let (k, tau) = (p[0], p[1]);
+                    let height = [1.0, 2.0][*e];
+                    Ok(vec![
+                        (0..300)
+                            .map(|n| height * k * (1.0 - (-(n as f64) * 1e-3 / tau).exp()))
+                            .collect(),
+                    ])
+                })
+                .collect()
+        }
+    }
+
+    fn series(k: f64, tau: f64, noise: f64) -> Vec<Series> {
+        (0..2)
+            .map(|e| {
+                let height = [1.0, 2.0][e];
+                Series {
+                    experiment: e,
+                    simulated: "y".into(),
+                    label: format!("capture {e}: y"),
+                    time: (0..300).map(|n| n as f64 * 1e-3).collect(),
+                    measured: (0..300)
+                        .map(|n| {
+                            let wobble = noise * (((n * 7919 + e * 31) % 17) as f64 / 8.0 - 1.0);
+                            height * k * (1.0 - (-(n as f64) * 1e-3 / tau).exp()) + wobble
+                        })
+                        .collect(),
+                }
+            })
+            .collect()
+    }
+
+    #[test]
+    fn fits_two_experiments_jointly_and_covers_the_truth() {
+        let params = [
+            FreeParam::parse("k=1:0.1:10").unwrap(),
+            FreeParam::parse("tau=0.01").unwrap(),
+        ];
+        let series = series(2.5, 0.04, 0.01);
+        let fit = Fit {
+            simulator: &FirstOrder,
+            params: &params,
+            series: &series,
+            experiments: 2,
+            settings: Settings::default(),
+            seed: 1,
+        };
+        let f = fit.run().unwrap();
+        for (e, truth) in f.estimates.iter().zip([2.5, 0.04]) {
+            assert!((e.value - truth).abs() / truth < 0.01, "{e:?}");
+            let (lo, hi) = e.interval.unwrap();
+            assert!(lo < truth && truth < hi, "{e:?}");
+            let (lo, hi) = e.robust.unwrap();
+            assert!(lo < truth && truth < hi, "{e:?}");
+        }
+        assert!(f.series[0].rms < 0.02 && f.series[0].rms_start > 0.5);
+        assert!(f.uncertainty.unidentified.is_empty());
+    }
+}
