@@ -60,6 +60,9 @@ pub struct ReadOptions {
     pub time_column: Option<String>,
     /// Factors by channel name (`--scale current=0.1`: a 100 mV/A probe read as volts).
     pub scales: Vec<(String, f64)>,
+    /// Channels that must be there: checked against the header before any sample is read,
+    /// the error pointing at the header line.
+    pub required: Vec<String>,
     /// Whether flat runs at a channel's extremes count as clipped (infinities always do).
     pub detect_clipping: bool,
 }
@@ -69,6 +72,7 @@ impl Default for ReadOptions {
         ReadOptions {
             time_column: None,
             scales: Vec::new(),
+            required: Vec::new(),
             detect_clipping: true,
         }
     }
@@ -142,6 +146,11 @@ pub fn read(path: &Path, opts: &ReadOptions) -> Result<Capture, CaptureError> {
     parse(path, &text, opts)
 }
 
+/// Whether two column names are the same by [`Capture::channel`]'s rule.
+pub fn same_name(a: &str, b: &str) -> bool {
+    text::key(a) == text::key(b)
+}
+
 /// The closest of `names` to `wanted`, if close enough to suggest.
 pub(crate) fn closest<'a>(wanted: &str, names: impl Iterator<Item = &'a str>) -> Option<String> {
     let w = text::key(wanted);
@@ -174,6 +183,23 @@ pub fn parse(path: &Path, text: &str, opts: &ReadOptions) -> Result<Capture, Cap
             what: "a time column but no channel",
             has_header: true,
         });
+    }
+    for name in &opts.required {
+        let k = text::key(name);
+        if !layout.columns.iter().any(|c| text::key(&c.name) == k) {
+            let names = layout.header.names.iter().map(String::as_str);
+            return Err(CaptureError::MissingChannel(Box::new(MissingChannel {
+                path: path.to_path_buf(),
+                channel: name.clone(),
+                found: layout.header.names.clone(),
+                suggestion: closest(name, names),
+                src: Some(NamedSource::new(
+                    path.display().to_string(),
+                    text.to_string(),
+                )),
+                span: Some(layout.header.span.unwrap_or((0, 0)).into()),
+            })));
+        }
     }
     let mut scales = vec![1.0; layout.columns.len()];
     let mut time_factor = 1.0;

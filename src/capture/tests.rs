@@ -224,6 +224,22 @@ fn a_missing_time_column_points_at_the_header() {
 }
 
 #[test]
+fn required_channels_are_checked_before_the_samples() {
+    let opts = ReadOptions {
+        required: vec!["vout".into()],
+        ..ReadOptions::default()
+    };
+    // Too few samples, but the missing channel is what is said.
+    let text = format!("time,vin,vot\n{}", rows(5));
+    let e = parse(Path::new("step.csv"), &text, &opts).unwrap_err();
+    let CaptureError::MissingChannel(m) = &e else {
+        panic!("{e:?}")
+    };
+    assert_eq!(m.suggestion.as_deref(), Some("vot"));
+    assert_eq!(m.span.map(|s| (s.offset(), s.len())), Some((0, 12)));
+}
+
+#[test]
 fn bad_rows_point_at_the_field() {
     let text = format!("time,voltage,current\n{}0.5,1.2,abc\n{}", rows(40), rows(0));
     let e = parse_str(&text).unwrap_err();
