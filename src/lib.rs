@@ -2,11 +2,13 @@
 //!
 //! The pipeline, one module per stage (see ARCHITECTURE.md):
 //! source -> [`lexer`] -> [`parser`] ([`ast`]) -> analysis -> elaboration -> [`solver`];
-//! beside it, [`extract`] (motor parameters from scope captures) and [`output`] (plots).
+//! beside it, [`capture`] (oscilloscope exports), [`extract`] (motor parameters from scope
+//! captures) and [`output`] (plots).
 
 pub mod analog;
 pub mod analysis;
 pub mod ast;
+pub mod capture;
 pub mod cli;
 pub mod design;
 pub mod diagnostics;

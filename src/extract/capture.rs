@@ -1,17 +1,20 @@
-//! Reading oscilloscope exports: CSV text in, three sample vectors (time, voltage, current) out.
+//! The captures of `vams extract`: three sample vectors (time, voltage, current) and the
+//! experiment they belong to.
 //!
-//! Tolerates what scope exports contain: metadata lines before the header, a units row after
-//! it (whose SI prefixes, e.g. `mA`, `ms`, scale the samples), `;`, tab or `,` separators
-//! (with `;` and tab, a decimal comma is accepted), quoted fields, trailing empty columns.
-//! Columns are found by name, case-insensitively, also as `name (unit)` or `name[unit]`.
-//! It never interprets the samples: offsets, noise and physics are the caller's business.
+//! [`crate::capture`] reads the file (every layout it accepts, units and their prefixes);
+//! this module picks the time, voltage and current columns by name and turns the reader's
+//! diagnostics into extraction's, which name the experiment and the flag to give. Clipping
+//! is not looked for (the paper's method uses every sample); a scope's infinities are read
+//! as the rail. It never interprets the samples: offsets, noise and physics are the caller's
+//! business.
 
 use super::error::{BadRow, ExtractError, MissingColumn};
+use crate::capture::{self as scope, CaptureError, ReadOptions};
 use miette::NamedSource;
 use std::path::{Path, PathBuf};
 
 /// The fewest samples a capture may have.
-pub const MIN_SAMPLES: usize = 32;
+pub const MIN_SAMPLES: usize = scope::MIN_SAMPLES;
 
 /// The column names of a capture file.
 #[derive(Debug, Clone)]
@@ -83,264 +86,140 @@ pub fn read_capture(
     parse_capture(role, path, &text, cols)
 }
 
-fn clean(field: &str) -> String {
-    field
-        .trim()
-        .trim_matches('"')
-        .trim_matches('\'')
-        .trim()
-        .to_lowercase()
-}
-
-/// Whether a header field names `wanted` (exactly, or followed by a unit).
-fn names(field: &str, wanted: &str) -> bool {
-    let f = clean(field);
-    let w = wanted.trim().to_lowercase();
-    f == w
-        || f.strip_prefix(&w)
-            .is_some_and(|rest| rest.starts_with([' ', '(', '[', '/']))
-}
-
-fn split(line: &str, sep: char) -> Vec<&str> {
-    line.split(sep).collect()
-}
-
-fn number(field: &str, decimal_comma: bool) -> Option<f64> {
-    let f = field.trim().trim_matches('"').trim();
-    if f.is_empty() {
-        return None;
-    }
-    let v = if decimal_comma {
-        f.replace(',', ".").parse::<f64>().ok()
-    } else {
-        f.parse::<f64>().ok()
-    };
-    v.filter(|x| x.is_finite())
-}
-
-/// Scale of an SI-prefixed unit (`ms` -> 1e-3); 1 when unknown.
-fn unit_scale(unit: &str) -> f64 {
-    let u = unit.trim().trim_matches(['"', '(', ')', '[', ']']).trim();
-    let mut chars = u.chars();
-    let (Some(first), rest) = (chars.next(), chars.as_str()) else {
-        return 1.0;
-    };
-    if !matches!(rest, "s" | "V" | "A") {
-        return 1.0;
-    }
-    match first {
-        'm' => 1e-3,
-        'u' | 'µ' | 'μ' => 1e-6,
-        'n' => 1e-9,
-        'k' => 1e3,
-        _ => 1.0,
-    }
-}
-
-/// The unit written in a header field, as in `current (mA)` or `current[mA]`.
-fn header_unit(field: &str) -> Option<String> {
-    let f = field.trim().trim_matches('"');
-    let open = f.find(['(', '['])?;
-    Some(f[open..].to_string())
-}
-
-/// The first line that is a data row for some separator, with that separator.
-fn find_data(lines: &[(usize, &str)]) -> Option<(usize, char, bool)> {
-    for (idx, (_, line)) in lines.iter().enumerate() {
-        for (sep, comma) in [(';', true), ('\t', true), (',', false)] {
-            let fields = split(line, sep);
-            let nonempty: Vec<&&str> = fields.iter().filter(|f| !f.trim().is_empty()).collect();
-            if nonempty.len() >= 2 && nonempty.iter().all(|f| number(f, comma).is_some()) {
-                return Some((idx, sep, comma));
-            }
-        }
-    }
-    None
-}
-
-/// Parses the text of a capture (see the module header for what is tolerated).
+/// Parses the text of a capture (see [`crate::capture`] for the layouts accepted).
 pub fn parse_capture(
     role: &'static str,
     path: &Path,
     text: &str,
     cols: &Columns,
 ) -> Result<Capture, ExtractError> {
-    let path_buf = path.to_path_buf();
-    // Lines with their byte offsets, for labels.
-    let mut lines = Vec::new();
-    let mut offset = 0;
-    for raw in text.split_inclusive('\n') {
-        let line = raw.trim_end_matches(['\n', '\r']);
-        lines.push((offset, line));
-        offset += raw.len();
-    }
-    if lines.iter().all(|(_, l)| l.trim().is_empty()) {
-        return Err(ExtractError::Empty {
-            role,
-            path: path_buf,
-        });
-    }
-    let src = || NamedSource::new(path.display().to_string(), text.to_string());
-    let wanted = [
-        (&cols.time, "--time-col"),
-        (&cols.voltage, "--voltage-col"),
-        (&cols.current, "--current-col"),
-    ];
-
-    let Some((first_data, sep, comma)) = find_data(&lines) else {
-        // A header without samples is a truncated record; text without either is empty.
-        let has_header = lines.iter().any(|(_, l)| {
-            [',', ';', '\t']
-                .iter()
-                .any(|&s| split(l, s).iter().any(|f| names(f, &cols.time)))
-        });
-        return Err(if has_header {
-            ExtractError::Truncated {
-                role,
-                path: path_buf,
-                rows: 0,
-                min: MIN_SAMPLES,
-            }
-        } else {
-            ExtractError::Empty {
-                role,
-                path: path_buf,
-            }
-        });
+    let opts = ReadOptions {
+        time_column: Some(cols.time.clone()),
+        required: vec![cols.voltage.clone(), cols.current.clone()],
+        detect_clipping: false,
+        ..ReadOptions::default()
     };
-
-    // The header: the nearest line above the data holding the time column, else the line
-    // above the units row (for the diagnostic).
-    let header_idx = (0..first_data)
-        .rev()
-        .find(|&k| split(lines[k].1, sep).iter().any(|f| names(f, &cols.time)))
-        .or_else(|| {
-            (0..first_data).rev().find(|&k| {
-                let fields = split(lines[k].1, sep);
-                fields.len() >= 2 && !fields.iter().all(|f| f.trim().len() <= 3)
-            })
-        });
-    let header: Vec<&str> = header_idx
-        .map(|k| split(lines[k].1, sep))
-        .unwrap_or_default();
-    let mut idx = [0usize; 3];
-    for (slot, (name, flag)) in wanted.iter().enumerate() {
-        match header.iter().position(|f| names(f, name)) {
-            Some(p) => idx[slot] = p,
-            None => {
-                let found: Vec<String> = header
-                    .iter()
-                    .map(|f| f.trim().trim_matches('"').to_string())
-                    .filter(|f| !f.is_empty())
-                    .collect();
-                let used: Vec<usize> = idx[..slot].to_vec();
-                let suggestion = header
-                    .iter()
-                    .enumerate()
-                    .find(|(p, f)| !used.contains(p) && !f.trim().is_empty())
-                    .map(|(_, f)| f.trim().trim_matches('"').to_string())
-                    .unwrap_or_else(|| "NAME".into());
-                let (off, len) = header_idx
-                    .map(|k| (lines[k].0, lines[k].1.len()))
-                    .unwrap_or((lines[first_data].0, 0));
-                return Err(ExtractError::MissingColumn(Box::new(MissingColumn {
-                    role,
-                    path: path_buf,
-                    column: name.to_string(),
-                    found: if found.is_empty() {
-                        "no header line".into()
-                    } else {
-                        found.join(", ")
-                    },
-                    flag,
-                    suggestion,
-                    src: src(),
-                    span: (off, len).into(),
-                })));
-            }
-        }
-    }
-
-    // Units: from the header (`current (mA)`) or from a units row between header and data.
-    let mut scale = [1.0f64; 3];
-    let header_line = header_idx.unwrap_or(0);
-    for (slot, &p) in idx.iter().enumerate() {
-        if let Some(u) = header.get(p).and_then(|f| header_unit(f)) {
-            scale[slot] = unit_scale(&u);
-        }
-        for (_, line) in &lines[header_line + 1..first_data] {
-            if let Some(f) = split(line, sep).get(p) {
-                let s = unit_scale(f);
-                if s != 1.0 {
-                    scale[slot] = s;
-                }
-            }
-        }
-    }
-
-    let mut cap = Capture {
+    let cap = scope::parse(path, text, &opts).map_err(|e| diagnose(role, path, text, cols, e))?;
+    let values = |name: &str| {
+        cap.channel_or_error(name)
+            .map(|c| c.values.clone())
+            .map_err(|e| ExtractError::Capture(Box::new(e)))
+    };
+    let (v, i) = (values(&cols.voltage)?, values(&cols.current)?);
+    Ok(Capture {
         role,
-        path: path_buf.clone(),
-        ..Capture::default()
-    };
-    let needed = idx.iter().copied().max().unwrap_or(0) + 1;
-    for (k, &(off, line)) in lines.iter().enumerate().skip(first_data) {
-        if line.trim().is_empty() {
-            continue;
-        }
-        let fields = split(line, sep);
-        let bad = |reason: String| {
-            ExtractError::BadRow(Box::new(BadRow {
-                role,
-                path: path_buf.clone(),
-                line: k + 1,
-                reason,
-                src: src(),
-                span: (off, line.len()).into(),
-            }))
-        };
-        if fields.len() < needed {
-            return Err(bad(format!(
-                "{} fields where {needed} are needed (truncated line?)",
-                fields.len()
-            )));
-        }
-        // A last line without a line end and shorter than its predecessor was cut off.
-        let is_last = off + line.len() >= text.trim_end_matches(['\r', '\n']).len();
-        if is_last
-            && !text.ends_with('\n')
-            && k > first_data
-            && line.len() + 2 < lines[k - 1].1.len()
-        {
-            return Err(bad(
-                "the last line is shorter than the others and has no line end (truncated file?)"
-                    .into(),
-            ));
-        }
-        let mut vals = [0.0; 3];
-        for slot in 0..3 {
-            vals[slot] = number(fields[idx[slot]], comma)
-                .ok_or_else(|| bad(format!("`{}` is not a number", fields[idx[slot]].trim())))?
-                * scale[slot];
-        }
-        if let Some(&last) = cap.t.last() {
-            if vals[0] <= last {
-                return Err(bad("time does not increase".into()));
-            }
-        }
-        cap.t.push(vals[0]);
-        cap.v.push(vals[1]);
-        cap.i.push(vals[2]);
-    }
-    if cap.len() < MIN_SAMPLES {
-        return Err(ExtractError::Truncated {
+        path: path.to_path_buf(),
+        t: cap.time,
+        v,
+        i,
+    })
+}
+
+#[allow(clippy::too_many_arguments)]
+fn missing_column(
+    role: &'static str,
+    path: &Path,
+    text: &str,
+    column: &str,
+    found: &[String],
+    flag: &'static str,
+    suggestion: String,
+    span: (usize, usize),
+) -> ExtractError {
+    ExtractError::MissingColumn(Box::new(MissingColumn {
+        role,
+        path: path.to_path_buf(),
+        column: column.to_string(),
+        found: if found.is_empty() {
+            "no header line".into()
+        } else {
+            found.join(", ")
+        },
+        flag,
+        suggestion,
+        src: NamedSource::new(path.display().to_string(), text.to_string()),
+        span: span.into(),
+    }))
+}
+
+/// The reader's diagnostic as extraction's, naming the experiment.
+fn diagnose(
+    role: &'static str,
+    path: &Path,
+    text: &str,
+    cols: &Columns,
+    e: CaptureError,
+) -> ExtractError {
+    let path_buf = path.to_path_buf();
+    match e {
+        CaptureError::Empty { .. }
+        | CaptureError::NoData {
+            has_header: false, ..
+        } => ExtractError::Empty {
             role,
             path: path_buf,
-            rows: cap.len(),
+        },
+        CaptureError::NoData { .. } => ExtractError::Truncated {
+            role,
+            path: path_buf,
+            rows: 0,
             min: MIN_SAMPLES,
-        });
+        },
+        CaptureError::TooFewSamples { rows, min, .. } => ExtractError::Truncated {
+            role,
+            path: path_buf,
+            rows,
+            min,
+        },
+        CaptureError::MissingChannel(m) => {
+            // The columns are looked for in this order; suggest the first header field the
+            // ones before the missing one do not take.
+            let slots = [
+                (&cols.time, "--time-col"),
+                (&cols.voltage, "--voltage-col"),
+                (&cols.current, "--current-col"),
+            ];
+            let slot = slots
+                .iter()
+                .position(|(name, _)| scope::same_name(name, &m.channel))
+                .unwrap_or(0);
+            let used: Vec<usize> = slots[..slot]
+                .iter()
+                .filter_map(|(name, _)| m.found.iter().position(|f| scope::same_name(f, name)))
+                .collect();
+            let suggestion = (0..m.found.len())
+                .find(|p| !used.contains(p))
+                .map_or_else(|| "NAME".to_string(), |p| m.found[p].clone());
+            let span = m.span.map_or((0, 0), |s| (s.offset(), s.len()));
+            missing_column(
+                role,
+                path,
+                text,
+                &m.channel,
+                &m.found,
+                slots[slot].1,
+                suggestion,
+                span,
+            )
+        }
+        CaptureError::BadRow(b) => ExtractError::BadRow(Box::new(BadRow {
+            role,
+            path: path_buf,
+            line: b.line,
+            reason: b.reason,
+            src: b.src,
+            span: b.span,
+        })),
+        CaptureError::TimeNotIncreasing(n) => ExtractError::BadRow(Box::new(BadRow {
+            role,
+            path: path_buf,
+            line: n.line,
+            reason: "time does not increase".into(),
+            src: n.src,
+            span: n.span,
+        })),
+        other => ExtractError::Capture(Box::new(other)),
     }
-    Ok(cap)
 }
 
 #[cfg(test)]

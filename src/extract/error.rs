@@ -12,6 +12,9 @@
 //! * `coast_never_stops`: a coast capture that ends while the rotor still turns.
 //! * `estimate_failed`: a capture whose numbers give a non-physical value (e.g. R <= 0).
 //! * `write`: an output file (`--params`, `--plot`) that cannot be written.
+//!
+//! What the capture reader diagnoses beyond these (a channel clipped everywhere) keeps its
+//! own `vams::capture::*` code.
 
 use miette::{Diagnostic, NamedSource, SourceSpan};
 use std::path::PathBuf;
@@ -114,6 +117,11 @@ pub enum ExtractError {
         param: &'static str,
         what: String,
     },
+
+    /// Any other diagnostic of the capture reader.
+    #[error(transparent)]
+    #[diagnostic(transparent)]
+    Capture(Box<crate::capture::CaptureError>),
 
     /// An output file cannot be written.
     #[error("cannot write `{}`: {what}", path.display())]
