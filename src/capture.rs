@@ -137,6 +137,24 @@ pub enum CaptureWarning {
     },
 }
 
+/// Reads a `--scale NAME=FACTOR` argument (`current=0.1`), as a clap value parser would.
+pub fn parse_scale(arg: &str) -> Result<(String, f64), String> {
+    let (name, factor) = arg
+        .split_once('=')
+        .ok_or_else(|| format!("`{arg}` is not NAME=FACTOR (e.g. current=0.1)"))?;
+    let name = name.trim();
+    if name.is_empty() {
+        return Err(format!("`{arg}` names no channel (e.g. current=0.1)"));
+    }
+    match factor.trim().parse::<f64>() {
+        Ok(f) if f.is_finite() && f != 0.0 => Ok((name.to_string(), f)),
+        _ => Err(format!(
+            "`{}` is not a finite, non-zero factor (e.g. current=0.1)",
+            factor.trim()
+        )),
+    }
+}
+
 /// Reads and parses a capture file.
 pub fn read(path: &Path, opts: &ReadOptions) -> Result<Capture, CaptureError> {
     let text = std::fs::read_to_string(path).map_err(|source| CaptureError::Io {

@@ -61,7 +61,7 @@ impl Capture {
         c
     }
 
-    /// The samples with `from <= time <= to`.
+    /// The samples with `from <= time <= to` (the warnings stay the whole capture's).
     pub fn window(&self, from: f64, to: f64) -> Capture {
         let a = self.time.partition_point(|&t| t < from);
         let b = self.time.partition_point(|&t| t <= to).max(a);

@@ -347,6 +347,18 @@ fn large_captures_parse_fast() {
     assert!(elapsed.as_secs_f64() < 2.0);
 }
 
+#[test]
+fn scale_arguments() {
+    assert_eq!(parse_scale("current=0.1"), Ok(("current".into(), 0.1)));
+    assert_eq!(
+        parse_scale(" Channel A = 10 "),
+        Ok(("Channel A".into(), 10.0))
+    );
+    for bad in ["current", "=2", "current=0", "current=x", "current=inf"] {
+        assert!(parse_scale(bad).is_err(), "{bad}");
+    }
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(256))]
     /// Whatever the text, parsing gives a capture or a diagnostic, never a panic, and a
@@ -360,6 +372,25 @@ proptest! {
                 prop_assert_eq!(ch.values.len(), c.time.len());
             }
             let _ = c.decimated(7);
+        }
+    }
+
+    /// Text after the opening lines of each layout never panics either.
+    #[test]
+    fn never_panics_after_a_layout_header(
+        head in prop::sample::select(vec![
+            "Record Length,2500,,-0.0005,0.02\n",
+            "X,CH1,CH2,Start,Increment,\nSequence,Volt,Volt,-6e-03,2e-06,\n",
+            "x-axis,1,2\nsecond,Volt,Volt\n",
+            "Time,Channel A\n(ms),(V)\n\n",
+            "\u{feff}\"Zeit\";\"U\"\r\n\"s\";\"V\"\r\n",
+        ]),
+        body in "(([0-9.;,\t ∞e+-]{0,16})(\r?\n)){0,60}",
+    ) {
+        let text = format!("{head}{body}");
+        if let Ok(c) = parse_str(&text) {
+            prop_assert!(c.time.windows(2).all(|w| w[0] < w[1]));
+            prop_assert!(c.channels.iter().all(|ch| ch.values.iter().all(|v| v.is_finite())));
         }
     }
 
