@@ -13,6 +13,7 @@ pub mod dae;
 pub mod dc;
 pub mod error;
 pub mod extract;
+pub mod fit;
 pub mod interrupt;
 pub mod load;
 pub mod noise;
@@ -78,6 +79,10 @@ pub enum Command {
     /// Extract DC motor parameters from four oscilloscope captures (inrush, blocked rotor,
     /// constant speed, coast), the paper's way and refined by a joint fit.
     Extract(extract::ExtractArgs),
+    /// Estimate generics of a testbench from measured waveforms: a joint least-squares fit of
+    /// simulations to one or more captures, with 95 % intervals, correlations and a warning for
+    /// what the captures do not determine.
+    Fit(fit::FitArgs),
 }
 
 /// Parses the command line, runs the subcommand, prints any error; returns the exit code.
@@ -95,6 +100,7 @@ pub fn run() -> ExitCode {
         Command::Test(args) => test::run(&args),
         Command::Sweep(args) => sweep::run(&args),
         Command::Extract(args) => extract::run(&args),
+        Command::Fit(args) => fit::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -15,16 +15,15 @@
 //! let truth = MotorParams::example();
 //! let captures = synth::generate(&truth, &synth::SynthOptions::default());
 //! let x = extract(&captures, 4).expect("the synthetic captures are well-formed");
-//! let r = x.refined.params.r;
-//! assert!((r - truth.r).abs() / truth.r < 0.02);
-//! println!("paper R = {:.3} ohm, refined R = {r:.3} ohm", x.paper.r.value);
+//! let r = x.paper.r.value;
+//! assert!((r - truth.r).abs() / truth.r < 0.05);
+//! println!("paper R = {r:.3} ohm +- {:.3}", x.paper.r.se);
 //! ```
 
 pub mod capture;
 pub mod error;
 pub mod model;
 pub mod paper;
-pub mod refine;
 pub mod signal;
 pub mod synth;
 
@@ -32,7 +31,6 @@ pub use capture::{Capture, Columns};
 pub use error::ExtractError;
 pub use model::MotorParams;
 pub use paper::{Estimate, PaperEstimates, Prepared};
-pub use refine::Refined;
 
 use std::path::Path;
 
@@ -41,22 +39,15 @@ use std::path::Path;
 pub struct Extraction {
     /// The paper's estimates.
     pub paper: PaperEstimates,
-    /// The jointly fitted parameters.
-    pub refined: Refined,
     /// The prepared captures (offsets removed) and their landmarks.
     pub prepared: Prepared,
 }
 
-/// Runs the paper's method and the refinement on four captures (inrush, blocked, speed,
-/// coast) with `commutations` current commutations per revolution.
+/// Runs the paper's method on four captures (inrush, blocked, speed, coast) with
+/// `commutations` current commutations per revolution.
 pub fn extract(caps: &[Capture; 4], commutations: u32) -> Result<Extraction, ExtractError> {
     let (paper, prepared) = paper::estimate(caps, commutations)?;
-    let refined = refine::refine(&prepared, &refine::start_params(&paper));
-    Ok(Extraction {
-        paper,
-        refined,
-        prepared,
-    })
+    Ok(Extraction { paper, prepared })
 }
 
 /// Reads the four capture files (inrush, blocked, speed, coast) and extracts.
@@ -124,7 +115,7 @@ mod tests {
                 "{order:?}: {:?}",
                 result
                     .as_ref()
-                    .map(|x| x.refined.params)
+                    .map(|x| x.paper.r)
                     .map_err(|e| e.to_string())
             );
             assert!(result.is_err(), "{order:?} was accepted");
@@ -162,21 +153,18 @@ mod tests {
             "events {:?} ripple {} Hz",
             x.prepared.first_rev_events, x.prepared.ripple_hz
         );
-        let f = &x.refined;
-        eprintln!(
-            "refined ({} iterations), rms start {:?} end {:?}:",
-            f.iterations, f.rms_start, f.rms
-        );
-        let tv = truth.values();
-        let fv = f.params.values();
-        let mut errs = [0.0; 7];
-        for k in 0..7 {
-            errs[k] = report(MotorParams::NAMES[k], tv[k], fv[k]);
-        }
-        assert!(
-            errs[0] < 0.02 && errs[1] < 0.02 && errs[2] < 0.02,
-            "{errs:?}"
-        );
-        assert!(errs[4] < 0.1 && errs[5] < 0.1 && errs[6] < 0.1, "{errs:?}");
+        // The paper's method alone (the joint fit is `vams extract`'s, tested end to end in
+        // tests/extract.rs): R within 5 %, the rest within its own stated reach.
+        let errs: Vec<f64> = [
+            (truth.r, p.r),
+            (truth.l, p.l),
+            (truth.ke, p.ke),
+            (truth.j, p.j),
+        ]
+        .iter()
+        .map(|(t, e)| ((e.value - t) / t).abs())
+        .collect();
+        assert!(errs[0] < 0.05 && errs[2] < 0.05, "{errs:?}");
+        assert!(errs[1] < 0.3 && errs[3] < 0.5, "{errs:?}");
     }
 }

@@ -53,7 +53,8 @@ pub struct Estimate {
     pub value: f64,
     /// The 95 % interval from the covariance (None where undetermined or at a bound).
     pub interval: Option<(f64, f64)>,
-    /// The 95 % interval of the block bootstrap.
+    /// The 95 % interval that also holds for correlated noise and model error: the block
+    /// bootstrap's, widened to the covariance's where that is wider.
     pub robust: Option<(f64, f64)>,
     /// Ended at a bound.
     pub at_bound: bool,
@@ -242,10 +243,19 @@ impl<S: Simulate> Fit<'_, S> {
             .and_then(Result::ok)
             .ok_or(FitError::NotFinite)?;
         let rms1 = rms_per_series(self.series, &pass1_sims);
+        // Each series weighs by its own misfit (a series the model cannot follow to its noise,
+        // a ripple the model lacks, weighs as much as it deserves). Weighing by the misfit's
+        // correlation time as well was tried: on the motor's captures it let a capture with
+        // a slow misfit pull R by 1 %, against 0.1 % without.
+        let ranges = self.ranges();
         let sigma = rms1
             .iter()
             .zip(&first.sigma)
-            .map(|(r, n)| r.max(*n * 1e-3).max(f64::MIN_POSITIVE))
+            .zip(self.series)
+            .map(|((r, n), s)| match s.sigma {
+                Some(known) => known,
+                None => r.max(*n * 1e-3).max(f64::MIN_POSITIVE),
+            })
             .collect();
         let second = Weighted { fit: self, sigma };
         let pass2 = lm::minimise(&second, &pass1.x, &bounds, &self.settings)
@@ -261,13 +271,13 @@ impl<S: Simulate> Fit<'_, S> {
             Some(s) => rms_per_series(self.series, s),
             None => vec![f64::NAN; self.series.len()],
         };
-        let ranges = self.ranges();
         let u = uncertainty::analyse(
             &pass2.jacobian,
             &pass2.residual,
             &ranges,
             &pass2.at_bound,
             self.seed,
+            false,
         );
         let estimates = self
             .params
@@ -280,11 +290,17 @@ impl<S: Simulate> Fit<'_, S> {
                     let (a, b) = (p.from_x(x - u.t95 * sd), p.from_x(x + u.t95 * sd));
                     (a.min(b), a.max(b))
                 });
+                // Never narrower than the covariance's: a bootstrap of few blocks can come
+                // out narrow by chance, and an engineer designs with this one.
                 let robust = u.bootstrap[k]
                     .filter(|_| !pass2.at_bound[k])
                     .map(|(lo, hi)| {
                         let (a, b) = (p.from_x(x + lo), p.from_x(x + hi));
-                        (a.min(b), a.max(b))
+                        let (a, b) = (a.min(b), a.max(b));
+                        match interval {
+                            Some((c, d)) => (a.min(c), b.max(d)),
+                            None => (a, b),
+                        }
                     });
                 let influence = (0..self.experiments)
                     .map(|e| {
@@ -298,8 +314,16 @@ impl<S: Simulate> Fit<'_, S> {
                             .sqrt()
                     })
                     .collect();
+                // At a bound the value is the bound as given, not its round trip through
+                // the logarithm.
+                let (lo, hi) = bounds[k];
+                let value = match (p.lower, p.upper) {
+                    (Some(b), _) if x <= lo => b,
+                    (_, Some(b)) if x >= hi => b,
+                    _ => p.from_x(x),
+                };
                 Estimate {
-                    value: p.from_x(x),
+                    value,
                     interval,
                     robust,
                     at_bound: pass2.at_bound[k],
@@ -368,6 +392,8 @@ mod tests {
                             height * k * (1.0 - (-(n as f64) * 1e-3 / tau).exp()) + wobble
                         })
                         .collect(),
+                    width: Vec::new(),
+                    sigma: None,
                 }
             })
             .collect()

@@ -38,16 +38,28 @@ fn args(paths: &[PathBuf; 4]) -> Vec<String> {
 
 fn check_json(stdout: &[u8], truth: &MotorParams) {
     let v: serde_json::Value = serde_json::from_slice(stdout).expect("--json prints JSON");
-    let tol = [0.02, 0.02, 0.02, 0.02, 0.10, 0.10, 0.10];
+    // The goals: R, L and Ke within 1 %, J, D and Tcst within 5 %.
+    let tol = [0.01, 0.01, 0.01, 0.01, 0.05, 0.05, 0.05];
     for ((name, t), tol) in MotorParams::NAMES.iter().zip(truth.values()).zip(tol) {
         let got = v[*name].as_f64().unwrap_or(f64::NAN);
         let err = (got - t) / t;
-        eprintln!("{name}: true {t:.4e} got {got:.4e} ({:+.2} %)", 100.0 * err);
+        let ci = &v["ci95_bootstrap"][*name];
+        let (lo, hi) = (ci[0].as_f64().unwrap(), ci[1].as_f64().unwrap());
+        eprintln!(
+            "{name}: true {t:.4e} got {got:.4e} ({:+.2} %), 95 % {lo:.4e} .. {hi:.4e}",
+            100.0 * err
+        );
         assert!(
             err.abs() < tol,
             "{name}: {got} vs {t} ({:+.2} %)",
             100.0 * err
         );
+        // Not asserted yet: on captures with commutation ripple the fit's R sits 0.1-0.2 %
+        // low, just outside its 0.07 % interval (the ripple is a misfit the bench's model
+        // does not have); the printed line shows it.
+        if !(lo <= t && t <= hi) {
+            eprintln!("  {name}: the truth is outside the 95 % interval");
+        }
     }
     for r in ROLES {
         assert!(
@@ -85,7 +97,10 @@ fn recovers_the_demo_motor_and_writes_params_and_plots() {
     assert_eq!(names, MotorParams::NAMES);
     for r in ROLES {
         let svg = std::fs::read_to_string(plots.join(format!("{r}.svg"))).unwrap();
-        assert!(svg.len() > 10_000 && svg.contains("simulated"), "{r}.svg");
+        assert!(
+            svg.len() > 10_000 && svg.contains("fitted") && svg.contains("residual"),
+            "{r}.svg"
+        );
     }
 }
 
@@ -176,7 +191,8 @@ fn prints_a_table_for_people_and_writes_demo_captures() {
     let table = String::from_utf8_lossy(&out.get_output().stdout).to_string();
     for needle in [
         "paper's method",
-        "refined",
+        "joint fit (dc_motor)",
+        "95 % (block bootstrap)",
         "tcst_motor",
         "RMS residual",
         "coast",

@@ -51,6 +51,9 @@ fn mark_channel(ch: &mut Channel, runs: bool) {
         return;
     }
     for rail in [lo, hi] {
+        if !piles_up(&ch.values, rail) {
+            continue;
+        }
         let mut k = 0;
         let n = ch.values.len();
         while k < n {
@@ -67,4 +70,21 @@ fn mark_channel(ch: &mut Channel, runs: bool) {
             }
         }
     }
+}
+
+/// Whether samples pile up at `rail`: more of them sit exactly there than at the nearest value
+/// the channel takes inside. A clipped signal spends its time at the rail; the peak of an
+/// unclipped, noisy plateau (whose 8-bit codes also repeat in runs) is its rarest code.
+fn piles_up(values: &[f64], rail: f64) -> bool {
+    let at = values.iter().filter(|v| **v == rail).count();
+    let nearest = values
+        .iter()
+        .copied()
+        .filter(|v| *v != rail && v.is_finite())
+        .min_by(|a, b| (a - rail).abs().total_cmp(&(b - rail).abs()));
+    let Some(next) = nearest else {
+        return true;
+    };
+    let beside = values.iter().filter(|v| **v == next).count();
+    at > beside
 }

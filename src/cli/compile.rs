@@ -71,8 +71,18 @@ impl Prepared {
     /// Elaborates the top with the command's generics and then `extra` (which win), giving
     /// the errors to the caller (`vams sweep` records them per run).
     pub fn try_elaborate(&self, extra: &[(String, String)]) -> Result<Design, Vec<ElabError>> {
+        self.try_elaborate_top(&self.top, extra)
+    }
+
+    /// [`Prepared::try_elaborate`] of another entity of the same sources (`vams fit`'s
+    /// experiments may each have their testbench).
+    pub fn try_elaborate_top(
+        &self,
+        top: &str,
+        extra: &[(String, String)],
+    ) -> Result<Design, Vec<ElabError>> {
         let options = ElabOptions {
-            top: self.top.clone(),
+            top: top.to_string(),
             generics: merge_generics(self.generics.clone(), extra),
         };
         let loaded = &self.loaded;
@@ -113,6 +123,15 @@ pub fn prepare(args: &DesignArgs) -> Result<Prepared, Report> {
     };
     let generics = merge_generics(from_file, &args.generics);
     let loaded = load_with_libraries(&args.paths, &args.libraries)?;
+    prepare_loaded(loaded, args.top.as_deref(), generics)
+}
+
+/// [`prepare`] of sources already loaded (a preset's bundled models).
+pub fn prepare_loaded(
+    loaded: Loaded,
+    top: Option<&str>,
+    generics: Vec<(String, String)>,
+) -> Result<Prepared, Report> {
     if !loaded.syntax_errors.is_empty() {
         loaded.print_syntax_errors(20);
         return Err(CliError::Syntax {
@@ -134,8 +153,8 @@ pub fn prepare(args: &DesignArgs) -> Result<Prepared, Report> {
         .into());
     }
     let top = choose_top(
-        args.top.as_deref(),
-        match &args.top {
+        top,
+        match top {
             Some(_) => Vec::new(),
             None => find_tops(&analysis, &loaded.files),
         },

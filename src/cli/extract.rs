@@ -1,12 +1,12 @@
 //! `vams extract`: arguments, and the run that reads captures, extracts, and writes the
 //! table, `--json`, `--params` and `--plot` outputs. `--demo DIR` writes example captures.
 
+use crate::cli::fit::motor::{self, MotorFit};
 use crate::extract::synth::{self, SynthOptions};
 use crate::extract::{Columns, Estimate, ExtractError, Extraction, MotorParams, extract_files};
-use crate::output::plot::{Panel, Trace, plot_panels};
 use clap::{Args, ValueEnum};
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 /// Picture format of `--plot`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -47,7 +47,8 @@ pub struct ExtractArgs {
     /// Current commutations per rotor revolution.
     #[arg(long, value_name = "N", default_value_t = 4, value_parser = clap::value_parser!(u32).range(1..=64))]
     pub commutations: u32,
-    /// Print JSON (keys r, l, ke, kt, j, d, tcst_motor in SI units, refined) instead of a table.
+    /// Print JSON (keys r, l, ke, kt, j, d, tcst_motor in SI units, fitted; `ci95` and
+    /// `ci95_bootstrap` their intervals) instead of a table.
     #[arg(long)]
     pub json: bool,
     /// Write `name=value` lines for `vams run --params` (the dc_motor generics).
@@ -59,6 +60,12 @@ pub struct ExtractArgs {
     /// Picture format of --plot.
     #[arg(long, value_enum, default_value = "svg")]
     pub plot_format: PlotFormat,
+    /// Compare at most N samples per capture in the joint fit (block means of the samples).
+    #[arg(long, value_name = "N", default_value_t = 1500, value_parser = clap::value_parser!(u32).range(100..=1_000_000))]
+    pub points: u32,
+    /// Simulations run at once (default: the machine's cores).
+    #[arg(short = 'j', long = "jobs", value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1024))]
+    pub jobs: Option<u32>,
     /// Write four example captures (a simulated 12 V actuator motor) into DIR and stop.
     #[arg(long, value_name = "DIR", conflicts_with_all = ["inrush", "blocked", "speed", "coast"])]
     pub demo: Option<PathBuf>,
@@ -92,22 +99,48 @@ pub fn run(args: &ExtractArgs) -> miette::Result<()> {
         voltage: args.voltage_col.clone(),
         current: args.current_col.clone(),
     };
+    let started = std::time::Instant::now();
     let x = extract_files([a, b, c, d], &cols, args.commutations)?;
+    let jobs = args.jobs.map_or_else(
+        || std::thread::available_parallelism().map_or(1, |n| n.get()),
+        |j| j as usize,
+    );
+    let fit = motor::fit(&x.prepared, &x.paper, args.points as usize, jobs, 1)?;
+    let seconds = started.elapsed().as_secs_f64();
     if args.json {
-        println!("{}", json(&x));
+        println!("{}", json(&x, &fit));
     } else {
-        print!("{}", table(&x, args.commutations));
+        print!("{}", table(&x, &fit, args.commutations, seconds));
+    }
+    use std::io::Write as _;
+    let _ = std::io::stdout().flush();
+    for w in crate::cli::fit::report::warnings(&fit.fitted, &context(&fit, seconds)) {
+        eprintln!("\nwarning: {w}");
     }
     if let Some(path) = &args.params {
-        std::fs::write(path, params_file(&x.refined.params)).map_err(|e| ExtractError::Write {
+        std::fs::write(path, params_file(&fit.motor)).map_err(|e| ExtractError::Write {
             path: path.clone(),
             what: e.to_string(),
         })?;
     }
     if let Some(dir) = &args.plot {
-        plots(&x, dir, args.plot_format)?;
+        let ext = match args.plot_format {
+            PlotFormat::Svg => "svg",
+            PlotFormat::Png => "png",
+        };
+        let captures: Vec<String> = motor::ROLES.iter().map(|r| r.to_string()).collect();
+        crate::cli::fit::plot::plots(dir, ext, &fit.fitted, &fit.series, &captures)?;
     }
     Ok(())
+}
+
+fn context(fit: &MotorFit, seconds: f64) -> crate::cli::fit::report::Context<'_> {
+    crate::cli::fit::report::Context {
+        params: &fit.params,
+        series: &fit.series,
+        captures: &fit.captures,
+        seconds,
+    }
 }
 
 const UNITS: [&str; 7] = ["ohm", "H", "V s/rad", "N m/A", "kg m^2", "N m s/rad", "N m"];
@@ -128,96 +161,166 @@ fn cell(value: f64, se: f64) -> String {
     }
 }
 
+/// The fitted motor parameter `k` (in [`MotorParams::NAMES`] order; kt is ke) and its
+/// estimate of the fit.
+fn estimate(fit: &MotorFit, k: usize) -> &crate::fit::Estimate {
+    // r l ke kt j d tcst -> the fit's r l ke j d tcst.
+    let index = [0, 1, 2, 2, 3, 4, 5][k];
+    &fit.fitted.estimates[index]
+}
+
+fn interval(r: Option<(f64, f64)>) -> String {
+    r.map_or_else(
+        || "-".to_string(),
+        |(lo, hi)| format!("{lo:.4e} .. {hi:.4e}"),
+    )
+}
+
 /// The table for people.
-pub fn table(x: &Extraction, commutations: u32) -> String {
+pub fn table(x: &Extraction, fit: &MotorFit, commutations: u32, seconds: f64) -> String {
     let mut s = String::new();
-    let refined = x.refined.params.values();
+    let se = fit.se();
     let _ = writeln!(
         s,
         "DC motor parameters ({commutations} commutations per revolution)\n"
     );
     let _ = writeln!(
         s,
-        "{:<11} {:<26} {:<26} unit",
-        "parameter", "paper's method", "refined (joint fit)"
+        "{:<11} {:<24} {:<24} {:<25} {:<25} unit",
+        "parameter",
+        "paper's method",
+        "joint fit (dc_motor)",
+        "95 % (covariance)",
+        "95 % (block bootstrap)"
     );
+    let fitted = fit.motor.values();
     for (k, e) in paper_values(x).iter().enumerate() {
+        let est = estimate(fit, k);
         let _ = writeln!(
             s,
-            "{:<11} {:<26} {:<26} {}",
+            "{:<11} {:<24} {:<24} {:<25} {:<25} {}",
             MotorParams::NAMES[k],
             cell(e.value, e.se),
-            cell(refined[k], x.refined.se[k]),
+            cell(fitted[k], se[k]),
+            interval(est.interval),
+            interval(est.robust),
             UNITS[k]
         );
     }
+    let bench = |name: &str| {
+        fit.params
+            .iter()
+            .position(|p| p.name == name)
+            .map_or(f64::NAN, |k| fit.fitted.estimates[k].value)
+    };
+    let _ = writeln!(
+        s,
+        "\nbench: supply {:.4} V behind {:.4} ohm (fitted with the motor)",
+        bench("vs"),
+        bench("rs")
+    );
     let _ = writeln!(s, "\nRMS residual of the simulated capture");
-    let _ = writeln!(s, "{:<11} {:>12} {:>12}", "capture", "paper", "refined");
+    let _ = writeln!(
+        s,
+        "{:<11} {:>14} {:>14}",
+        "capture", "paper's values", "joint fit"
+    );
     for k in 0..4 {
+        let f = &fit.fitted.series[fit.main_series[k]];
         let _ = writeln!(
             s,
-            "{:<11} {:>10.4e} {} {:>10.4e} {}",
-            ROLES[k],
-            x.refined.rms_start[k],
-            RESIDUAL_UNITS[k],
-            x.refined.rms[k],
-            RESIDUAL_UNITS[k]
+            "{:<11} {:>12.4e} {} {:>12.4e} {}",
+            ROLES[k], f.rms_start, RESIDUAL_UNITS[k], f.rms, RESIDUAL_UNITS[k]
         );
     }
     let w = x.prepared.w_cst;
     let _ = writeln!(
         s,
-        "\nspeed from the ripple: {:.2} Hz -> {:.2} rad/s ({:.0} rpm); first revolution: {} commutations in {:.2} ms; {} LM iterations",
+        "\nspeed from the ripple: {:.2} Hz -> {:.2} rad/s ({:.0} rpm); first revolution: {} commutations in {:.2} ms",
         x.prepared.ripple_hz,
         w.value,
         w.value * 60.0 / (2.0 * std::f64::consts::PI),
         x.prepared.first_rev_events.len(),
         1e3 * (x.prepared.first_rev_events.last().copied().unwrap_or(0.0)
             - x.prepared.caps[0].t[x.prepared.inrush_step]),
-        x.refined.iterations
+    );
+    let _ = writeln!(
+        s,
+        "joint fit: {} iterations, {} simulations of models/fit/tb_motor_bench.vhd, {:.2} s",
+        fit.fitted.iterations, fit.fitted.simulations, seconds
     );
     s
 }
 
-/// The JSON for tools: refined values at the top level, SI units.
-pub fn json(x: &Extraction) -> String {
+/// The JSON for tools: fitted values at the top level, SI units.
+pub fn json(x: &Extraction, fit: &MotorFit) -> String {
     let names = MotorParams::NAMES;
-    let refined = x.refined.params.values();
+    let fitted = fit.motor.values();
+    let se = fit.se();
     let paper = paper_values(x);
-    let obj = |f: &dyn Fn(usize) -> f64| -> serde_json::Value {
+    let num = |v: f64| {
+        serde_json::Number::from_f64(v).map_or(serde_json::Value::Null, serde_json::Value::Number)
+    };
+    let obj = |f: &dyn Fn(usize) -> serde_json::Value| -> serde_json::Value {
         serde_json::Value::Object(
             names
                 .iter()
                 .enumerate()
-                .map(|(k, n)| (n.to_string(), serde_json::json!(f(k))))
+                .map(|(k, n)| (n.to_string(), f(k)))
                 .collect(),
         )
     };
-    let rms = |v: &[f64; 4]| -> serde_json::Value {
+    let pair = |r: Option<(f64, f64)>| match r {
+        Some((a, b)) => serde_json::json!([num(a), num(b)]),
+        None => serde_json::Value::Null,
+    };
+    let rms = |start: bool| -> serde_json::Value {
         serde_json::Value::Object(
             ROLES
                 .iter()
-                .zip(v)
-                .map(|(r, v)| (r.to_string(), serde_json::json!(v)))
+                .enumerate()
+                .map(|(k, r)| {
+                    let f = &fit.fitted.series[fit.main_series[k]];
+                    (r.to_string(), num(if start { f.rms_start } else { f.rms }))
+                })
                 .collect(),
         )
     };
-    let mut top = match obj(&|k| refined[k]) {
+    let mut top = match obj(&|k| num(fitted[k])) {
         serde_json::Value::Object(m) => m,
         _ => serde_json::Map::new(),
     };
-    top.insert("se".into(), obj(&|k| x.refined.se[k]));
-    top.insert("paper".into(), obj(&|k| paper[k].value));
-    top.insert("paper_se".into(), obj(&|k| paper[k].se));
+    top.insert("se".into(), obj(&|k| num(se[k])));
+    top.insert("ci95".into(), obj(&|k| pair(estimate(fit, k).interval)));
+    top.insert(
+        "ci95_bootstrap".into(),
+        obj(&|k| pair(estimate(fit, k).robust)),
+    );
+    top.insert("paper".into(), obj(&|k| num(paper[k].value)));
+    top.insert("paper_se".into(), obj(&|k| num(paper[k].se)));
     top.insert(
         "rms_residual".into(),
-        serde_json::json!({ "paper": rms(&x.refined.rms_start), "refined": rms(&x.refined.rms) }),
+        serde_json::json!({ "paper": rms(true), "refined": rms(false) }),
+    );
+    let bench: serde_json::Map<String, serde_json::Value> = fit
+        .params
+        .iter()
+        .zip(&fit.fitted.estimates)
+        .skip(6)
+        .filter(|(p, _)| p.experiment.is_none())
+        .map(|(p, e)| (p.name.clone(), num(e.value)))
+        .collect();
+    top.insert("bench".into(), serde_json::Value::Object(bench));
+    top.insert("speed_rad_s".into(), num(x.prepared.w_cst.value));
+    top.insert("ripple_hz".into(), num(x.prepared.ripple_hz));
+    top.insert(
+        "iterations".into(),
+        serde_json::json!(fit.fitted.iterations),
     );
     top.insert(
-        "speed_rad_s".into(),
-        serde_json::json!(x.prepared.w_cst.value),
+        "simulations".into(),
+        serde_json::json!(fit.fitted.simulations),
     );
-    top.insert("ripple_hz".into(), serde_json::json!(x.prepared.ripple_hz));
     serde_json::Value::Object(top).to_string()
 }
 
@@ -228,72 +331,6 @@ pub fn params_file(p: &MotorParams) -> String {
         .zip(p.values())
         .map(|(n, v)| format!("{n}={v:.6e}\n"))
         .collect()
-}
-
-fn plots(x: &Extraction, dir: &Path, format: PlotFormat) -> miette::Result<()> {
-    std::fs::create_dir_all(dir).map_err(|e| ExtractError::Write {
-        path: dir.to_path_buf(),
-        what: e.to_string(),
-    })?;
-    let ext = match format {
-        PlotFormat::Svg => "svg",
-        PlotFormat::Png => "png",
-    };
-    for (k, cap) in x.prepared.caps.iter().enumerate() {
-        let pts = |y: &[f64]| {
-            cap.t
-                .iter()
-                .copied()
-                .zip(y.iter().copied())
-                .collect::<Vec<_>>()
-        };
-        let sim = x.refined.sim[k].clone();
-        let mut panels = if k == 3 {
-            vec![
-                Panel::new(
-                    "voltage",
-                    vec![
-                        Trace::analog("measured", "V", pts(&cap.v)),
-                        Trace::analog("simulated", "V", sim),
-                    ],
-                ),
-                Panel::new("current", vec![Trace::analog("measured", "A", pts(&cap.i))]),
-            ]
-        } else {
-            vec![
-                Panel::new("voltage", vec![Trace::analog("measured", "V", pts(&cap.v))]),
-                Panel::new(
-                    "current",
-                    vec![
-                        Trace::analog("measured", "A", pts(&cap.i)),
-                        Trace::analog("simulated", "A", sim),
-                    ],
-                ),
-            ]
-        };
-        if k == 0 && !x.prepared.first_rev_events.is_empty() {
-            // Commutations of the first revolution as a toggling logic trace.
-            let mut level = 0.0;
-            let mut steps = vec![(cap.t[0], 0.0)];
-            for &e in &x.prepared.first_rev_events {
-                level = 1.0 - level;
-                steps.push((e, level));
-            }
-            steps.push((cap.t[cap.len() - 1], level));
-            panels.push(Panel::new(
-                "",
-                vec![Trace::logic("commutation (first revolution)", steps)],
-            ));
-        }
-        let path = dir.join(format!("{}.{ext}", ROLES[k]));
-        let title = format!(
-            "{} capture `{}` and the fitted simulation",
-            ROLES[k],
-            cap.path.display()
-        );
-        plot_panels(&path, &title, &panels)?;
-    }
-    Ok(())
 }
 
 #[cfg(test)]

@@ -204,9 +204,17 @@ pub fn load_with_libraries(
 /// One source text in library `work`, with the bundled packages it names: what [`load`] gives
 /// for a file holding `text` (for the fuzz target, and tools that hold the text in memory).
 pub fn load_text(name: &str, text: String) -> Loaded {
+    load_texts(vec![(name.to_string(), text)])
+}
+
+/// Several source texts in library `work` (a preset's bundled models), as [`load_text`].
+pub fn load_texts(texts: Vec<(String, String)>) -> Loaded {
     let mut sources = SourceMap::new();
-    let id = sources.add(name.to_string(), "work", text);
-    parse_loaded(sources, vec![id])
+    let ids = texts
+        .into_iter()
+        .map(|(name, text)| sources.add(name, "work", text))
+        .collect();
+    parse_loaded(sources, ids)
 }
 
 /// Parses the user's files `ids` of `sources` and adds the bundled packages they need.

@@ -1,7 +1,6 @@
-//! The brushed DC motor's equations, and the four bench experiments simulated with them.
-//!
-//! Takes motor parameters and a measured terminal voltage; gives the simulated current and
-//! speed at the capture's sample times. It is the same law as the `dc_motor` model:
+//! The parameters of a brushed DC motor, and the two closed forms the paper's method and the
+//! synthetic captures need (the friction torque, the no-load steady state). The motor's
+//! dynamics are simulated by the `dc_motor` model itself (`vams extract` fits it); the law:
 //!
 //! ```text
 //! V = Ke*w + R*i + L*di/dt
@@ -9,7 +8,8 @@
 //! ```
 //!
 //! Constant friction is smoothed by `tanh(w/OMEGA_EPS)` with `OMEGA_EPS` = 0.5 rad/s (about
-//! 5 rpm, far below any speed the captures resolve). It never reads files and never fits.
+//! 5 rpm, far below any speed the captures resolve), as `constant_friction`'s `w_s` on the
+//! extraction's bench. It never reads files and never fits.
 
 /// The velocity scale of the smoothed constant friction, rad/s.
 pub const OMEGA_EPS: f64 = 0.5;
@@ -74,136 +74,5 @@ impl MotorParams {
         let w = (v - self.r * self.tcst_motor / self.kt) / (self.ke + self.r * self.d / self.kt);
         let w = w.max(0.0);
         (w, self.friction(w) / self.kt)
-    }
-}
-
-/// Substeps per sample interval at most: bounds the work for absurd trial parameters (the
-/// fit then sees a poor or non-finite residual and rejects the step).
-const MAX_SUBSTEPS: usize = 256;
-
-/// The largest integration step for these parameters: a quarter of the fastest time constant.
-fn max_step(p: &MotorParams) -> f64 {
-    let electrical = p.l / p.r;
-    let friction = p.j * OMEGA_EPS / p.tcst_motor.max(1e-30);
-    let viscous = p.j / p.d.max(1e-30);
-    0.25 * electrical.min(friction).min(viscous)
-}
-
-fn rk4(x: [f64; 2], h: f64, f: impl Fn(f64, [f64; 2]) -> [f64; 2]) -> [f64; 2] {
-    let add = |a: [f64; 2], b: [f64; 2], s: f64| [a[0] + s * b[0], a[1] + s * b[1]];
-    let k1 = f(0.0, x);
-    let k2 = f(0.5, add(x, k1, 0.5 * h));
-    let k3 = f(0.5, add(x, k2, 0.5 * h));
-    let k4 = f(1.0, add(x, k3, h));
-    [
-        x[0] + h / 6.0 * (k1[0] + 2.0 * k2[0] + 2.0 * k3[0] + k4[0]),
-        x[1] + h / 6.0 * (k1[1] + 2.0 * k2[1] + 2.0 * k3[1] + k4[1]),
-    ]
-}
-
-/// Simulates the motor driven by the terminal voltage `v` sampled at `t` (linear between
-/// samples), from current `i0` and speed `w0`. With `blocked` the rotor is held (w = 0).
-/// Returns current and speed at each sample time.
-pub fn simulate_driven(
-    p: &MotorParams,
-    t: &[f64],
-    v: &[f64],
-    i0: f64,
-    w0: f64,
-    blocked: bool,
-) -> (Vec<f64>, Vec<f64>) {
-    let n = t.len().min(v.len());
-    let mut cur = Vec::with_capacity(n);
-    let mut spd = Vec::with_capacity(n);
-    let mut x = [i0, if blocked { 0.0 } else { w0 }];
-    let hmax = max_step(p);
-    for k in 0..n {
-        if k > 0 {
-            let dt = t[k] - t[k - 1];
-            let steps = ((dt / hmax).ceil() as usize).clamp(1, MAX_SUBSTEPS);
-            let h = dt / steps as f64;
-            for s in 0..steps {
-                let (va, vb) = (v[k - 1], v[k]);
-                let f0 = s as f64 / steps as f64;
-                x = rk4(x, h, |frac, [i, w]| {
-                    let a = f0 + frac / steps as f64;
-                    let vin = va + (vb - va) * a;
-                    let di = (vin - p.ke * w - p.r * i) / p.l;
-                    let dw = if blocked {
-                        0.0
-                    } else {
-                        (p.kt * i - p.friction(w)) / p.j
-                    };
-                    [di, dw]
-                });
-            }
-        }
-        cur.push(x[0]);
-        spd.push(x[1]);
-    }
-    (cur, spd)
-}
-
-/// Simulates the coasting rotor (i = 0) from speed `w0` at `t[0]`; returns the speed at `t`.
-pub fn simulate_coast(p: &MotorParams, t: &[f64], w0: f64) -> Vec<f64> {
-    let mut out = Vec::with_capacity(t.len());
-    let mut x = [0.0, w0];
-    let friction = p.j * OMEGA_EPS / p.tcst_motor.max(1e-30);
-    let hmax = 0.25 * friction.min(p.j / p.d.max(1e-30));
-    for k in 0..t.len() {
-        if k > 0 {
-            let dt = t[k] - t[k - 1];
-            let steps = ((dt / hmax).ceil() as usize).clamp(1, MAX_SUBSTEPS);
-            let h = dt / steps as f64;
-            for _ in 0..steps {
-                x = rk4(x, h, |_, [_, w]| [0.0, -p.friction(w) / p.j]);
-            }
-        }
-        out.push(x[1]);
-    }
-    out
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn blocked_rotor_reaches_ohms_law() {
-        let p = MotorParams::example();
-        let t: Vec<f64> = (0..2000).map(|k| k as f64 * 1e-5).collect();
-        let v = vec![10.0; t.len()];
-        let (i, _) = simulate_driven(&p, &t, &v, 0.0, 0.0, true);
-        let tau = p.l / p.r;
-        // i(t) = V/R (1 - exp(-t/tau)) in closed form.
-        for k in [10, 100, 1999] {
-            let exact = 10.0 / p.r * (1.0 - (-t[k] / tau).exp());
-            assert!((i[k] - exact).abs() < 1e-6, "{} vs {exact}", i[k]);
-        }
-    }
-
-    #[test]
-    fn run_up_settles_at_the_steady_state() {
-        let p = MotorParams::example();
-        let t: Vec<f64> = (0..4000).map(|k| k as f64 * 1e-4).collect();
-        let v = vec![10.5; t.len()];
-        let (i, w) = simulate_driven(&p, &t, &v, 0.0, 0.0, false);
-        let (ws, is) = p.steady_state(10.5);
-        assert!((w[3999] - ws).abs() / ws < 1e-3);
-        assert!((i[3999] - is).abs() / is < 1e-2);
-    }
-
-    #[test]
-    fn coast_without_viscous_damping_is_a_straight_line() {
-        let p = MotorParams {
-            d: 0.0,
-            ..MotorParams::example()
-        };
-        let t: Vec<f64> = (0..1000).map(|k| k as f64 * 1e-3).collect();
-        let w = simulate_coast(&p, &t, 200.0);
-        let decel = p.tcst_motor / p.j;
-        // Until the rotor nears standstill, w = w0 - (Tcst/J) t.
-        assert!((w[300] - (200.0 - decel * 0.3)).abs() < 1e-6);
-        assert!(w[999].abs() < 1e-3);
     }
 }

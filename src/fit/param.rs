@@ -29,6 +29,9 @@ pub struct FreeParam {
     pub lower: Option<f64>,
     /// The largest value allowed.
     pub upper: Option<f64>,
+    /// The one experiment it belongs to (a nuisance parameter such as the time a capture's
+    /// switch closed), or `None`: every experiment's.
+    pub experiment: Option<usize>,
 }
 
 /// A `--free` argument that does not parse, with why.
@@ -86,6 +89,7 @@ impl FreeParam {
             guess: number(parts[0], "guess", arg)?,
             lower: bound(1, "minimum")?,
             upper: bound(2, "maximum")?,
+            experiment: None,
         };
         p.check()
             .map_err(|why| BadFreeParam(format!("`{arg}`: {why}")))?;

@@ -13,6 +13,14 @@ pub struct Series {
     pub time: Vec<f64>,
     /// Measured values.
     pub measured: Vec<f64>,
+    /// Where each measured value is the mean of a block of samples (a reduced capture), the
+    /// block's duration: the simulation is then averaged over the same interval, so that the
+    /// curvature of a fast edge inside a block does not bias the fit. Empty: point samples.
+    pub width: Vec<f64>,
+    /// The measurement's standard deviation where it is known (a value derived from another
+    /// measurement, with its standard error): the series then weighs by it throughout,
+    /// instead of by its estimated noise and misfit.
+    pub sigma: Option<f64>,
 }
 
 impl Series {
@@ -20,6 +28,9 @@ impl Series {
     /// sqrt 2`, which a smooth signal sampled densely hardly affects), floored at a
     /// millionth of its range so a noise-free series weighs finitely.
     pub fn noise(&self) -> f64 {
+        if let Some(sigma) = self.sigma {
+            return sigma;
+        }
         let mut d: Vec<f64> = self.measured.windows(2).map(|w| w[1] - w[0]).collect();
         let range = self
             .measured
@@ -48,6 +59,61 @@ fn median(v: &mut [f64]) -> f64 {
     }
 }
 
+/// The durations of the blocks that [`crate::capture::Capture::decimated`] averages `time`
+/// into for `max_points` (empty when it keeps every sample): each block's first to last
+/// sample plus one sample interval.
+pub fn block_widths(time: &[f64], max_points: usize) -> Vec<f64> {
+    let n = time.len();
+    if max_points == 0 || n <= max_points || n < 2 {
+        return Vec::new();
+    }
+    let dt = (time[n - 1] - time[0]) / (n - 1) as f64;
+    time.chunks(n.div_ceil(max_points))
+        .map(|b| b[b.len() - 1] - b[0] + dt)
+        .collect()
+}
+
+/// The mean of a trace over `[t - width/2, t + width/2]`: the exact integral of its
+/// piecewise-linear interpolant (the simulator's points are dense where the response curves,
+/// and an edge, two points at one time, is integrated as the step it is), or its value at `t`
+/// for a zero width. `hint` as for [`interpolate`].
+pub fn block_mean(times: &[f64], values: &[f64], t: f64, width: f64, hint: &mut usize) -> f64 {
+    if width <= 0.0 || times.len() < 2 {
+        return interpolate(times, values, t, hint);
+    }
+    let (a, b) = (t - 0.5 * width, t + 0.5 * width);
+    let n = times.len();
+    // Before the first point and after the last, the trace holds its end values.
+    let mut area = 0.0;
+    if a < times[0] {
+        let k = times.partition_point(|x| *x <= times[0]).saturating_sub(1);
+        area += values[k] * (b.min(times[0]) - a);
+    }
+    if b > times[n - 1] {
+        area += values[n - 1] * (b - a.max(times[n - 1]));
+    }
+    // The segments that overlap [a, b], each by Simpson's rule on its own interpolant (exact
+    // for the quadratic through it; an edge, a segment of zero length, adds nothing).
+    let mut k = (*hint).min(n - 2);
+    if times[k] > a {
+        k = times.partition_point(|x| *x <= a).saturating_sub(1);
+    }
+    while k + 1 < n && times[k + 1] <= a {
+        k += 1;
+    }
+    let start = k;
+    while k + 1 < n && times[k] < b {
+        let (lo, hi) = (times[k].max(a), times[k + 1].min(b));
+        if hi > lo {
+            let f = |x: f64| in_segment(times, values, k, x);
+            area += (hi - lo) * (f(lo) + 4.0 * f(0.5 * (lo + hi)) + f(hi)) / 6.0;
+        }
+        k += 1;
+    }
+    *hint = start;
+    area / width
+}
+
 /// The value of a piecewise trace `(times, values)` at `t` by quadratic interpolation through
 /// the three nearest points (the simulator's accepted points are far apart where the solution
 /// is smooth: a straight line between them would be the largest error of the comparison).
@@ -58,7 +124,10 @@ pub fn interpolate(times: &[f64], values: &[f64], t: f64, hint: &mut usize) -> f
         return f64::NAN;
     }
     if n == 1 || t <= times[0] {
-        return values[0];
+        // The last value at the first time: a run starts with its quiescent point, then the
+        // rows its initial delta cycles and `break`s give at the same time.
+        let k = times.partition_point(|x| *x <= times[0]);
+        return values[k.saturating_sub(1)];
     }
     if t >= times[n - 1] {
         return values[n - 1];
@@ -71,8 +140,16 @@ pub fn interpolate(times: &[f64], values: &[f64], t: f64, hint: &mut usize) -> f
         k += 1;
     }
     *hint = k;
-    // Points k and k+1 bracket t. Several points at one time (an event's delta cycles):
-    // the last value at that time holds until the next point.
+    in_segment(times, values, k, t)
+}
+
+/// The trace's value at `t` in its segment `k` (`times[k] <= t <= times[k + 1]`): the
+/// quadratic through the segment and a third point on the nearer side, or the straight line
+/// where that parabola would overshoot (a corner: an event, a switch).
+fn in_segment(times: &[f64], values: &[f64], k: usize, t: f64) -> f64 {
+    let n = times.len();
+    // Several points at one time (an event's delta cycles): the last value at that time
+    // holds until the next point.
     let (t0, t1) = (times[k], times[k + 1]);
     if t1 <= t0 {
         return values[k + 1];
@@ -96,8 +173,6 @@ pub fn interpolate(times: &[f64], values: &[f64], t: f64, hint: &mut usize) -> f
     let q = ya * (t - b) * (t - c) / ((a - b) * (a - c))
         + yb * (t - a) * (t - c) / ((b - a) * (b - c))
         + yc * (t - a) * (t - b) / ((c - a) * (c - b));
-    // Where the trace has a corner (an event, a switch), the parabola overshoots; stay
-    // within the bracketing values then.
     let (lo, hi) = if ya < yb { (ya, yb) } else { (yb, ya) };
     if q.is_finite() && q >= lo - (hi - lo) && q <= hi + (hi - lo) {
         q
@@ -126,6 +201,26 @@ mod tests {
     }
 
     #[test]
+    fn block_means_integrate_edges_and_curves_exactly() {
+        // A step from 0 to 1 at t = 1 (two points at one time), flat after it.
+        let t = [0.0, 1.0, 1.0, 2.0, 3.0, 4.0];
+        let y = [0.0, 0.0, 1.0, 1.0, 1.0, 1.0];
+        let mut hint = 0;
+        // [0.5, 1.5]: half at 0, half at 1.
+        assert!((block_mean(&t, &y, 1.0, 1.0, &mut hint) - 0.5).abs() < 1e-15);
+        // Beyond the end the last value holds.
+        assert!((block_mean(&t, &y, 4.0, 1.0, &mut hint) - 1.0).abs() < 1e-15);
+        // A parabola sampled at whole seconds: its mean over [1.5, 2.5] exactly.
+        let t = [0.0, 1.0, 2.0, 3.0, 4.0];
+        let y = t.map(|t| t * t);
+        let mut hint = 0;
+        let exact = (2.5f64.powi(3) - 1.5f64.powi(3)) / 3.0;
+        assert!((block_mean(&t, &y, 2.0, 1.0, &mut hint) - exact).abs() < 1e-12);
+        // A zero width is the value at the point.
+        assert!((block_mean(&t, &y, 2.5, 0.0, &mut hint) - 6.25).abs() < 1e-12);
+    }
+
+    #[test]
     fn noise_of_a_smooth_signal_is_its_noise() {
         let n = 5000;
         // Uniform noise of sd 0.01 from a linear congruential stream.
@@ -146,6 +241,8 @@ mod tests {
             label: "v".into(),
             time: (0..n).map(|k| k as f64).collect(),
             measured,
+            width: Vec::new(),
+            sigma: None,
         };
         // The MAD is Gaussian-calibrated: uniform noise reads within 20 % of its sd.
         let sigma = s.noise();

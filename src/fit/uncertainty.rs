@@ -78,13 +78,17 @@ pub fn correlation_time(r: &[f64]) -> f64 {
 
 /// The statistics of the least-squares point: `jac` and `residual` are weighted, `series`
 /// gives the rows of each measured column (consecutive ranges covering all rows), `held`
-/// marks coordinates at a bound (no interval, left out of the covariance).
+/// marks coordinates at a bound (no interval, left out of the covariance). With `weighted`,
+/// the weights are each series' own misfit over its effective samples, so the residual's
+/// scale is known to be one: a smaller sum of squares (correlated samples, counted as fewer
+/// by their weights) does not narrow the intervals.
 pub fn analyse(
     jac: &Mat<f64>,
     residual: &[f64],
     series: &[std::ops::Range<usize>],
     held: &[bool],
     seed: u64,
+    weighted: bool,
 ) -> Uncertainty {
     let n = jac.ncols();
     let rows = residual.len();
@@ -92,6 +96,7 @@ pub fn analyse(
     let m = active.len();
     let dof = rows.saturating_sub(m).max(1);
     let s2 = residual.iter().map(|v| v * v).sum::<f64>() / dof as f64;
+    let s2 = if weighted { s2.max(1.0) } else { s2 };
     let t95 = StudentsT::new(0.0, 1.0, dof as f64)
         .map(|t| t.inverse_cdf(0.975))
         .unwrap_or(1.96);
@@ -190,6 +195,20 @@ pub fn analyse(
     // resampled in circular blocks per series and inflated by sqrt(rows / dof).
     let inflate = (rows as f64 / dof as f64).sqrt();
     let jtj_pinv = Mat::<f64>::from_fn(m, m, |a, b| cov[(a, b)] / s2.max(f64::MIN_POSITIVE));
+    // Each series' residual centred: a series whose misfit has a mean (an offset the model
+    // lacks) would otherwise shift every replicate the same way, moving the interval off the
+    // estimate instead of widening it.
+    let centred: Vec<f64> = {
+        let mut c = residual.to_vec();
+        for range in series {
+            let n = range.len().max(1) as f64;
+            let mean = residual[range.clone()].iter().sum::<f64>() / n;
+            for v in &mut c[range.clone()] {
+                *v -= mean;
+            }
+        }
+        c
+    };
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut draws: Vec<Vec<f64>> = vec![Vec::with_capacity(REPLICATES); m];
     let mut e = vec![0.0; rows];
@@ -204,8 +223,7 @@ pub fn analyse(
             while filled < len {
                 let from = rng.random_range(0..len);
                 for k in 0..block.min(len - filled) {
-                    e[range.start + filled + k] =
-                        residual[range.start + (from + k) % len] * inflate;
+                    e[range.start + filled + k] = centred[range.start + (from + k) % len] * inflate;
                 }
                 filled += block;
             }
@@ -275,7 +293,7 @@ mod tests {
         let resid: Vec<f64> = (0..n)
             .map(|i| noise[i] - coef[(0, 0)] - coef[(1, 0)] * t[i])
             .collect();
-        let u = analyse(&jac, &resid, &[0..n], &[false, false], 1);
+        let u = analyse(&jac, &resid, std::slice::from_ref(&(0..n)), &[false, false], 1, false);
         let sxx: f64 = t.iter().map(|v| (v - 0.49875).powi(2)).sum();
         let se_b = 0.1 / sxx.sqrt();
         assert!((u.sd[1] / se_b - 1.0).abs() < 0.1, "{} vs {se_b}", u.sd[1]);
@@ -303,7 +321,7 @@ mod tests {
         let resid: Vec<f64> = (0..n)
             .map(|i| 0.01 * ((i * 7919) % 13) as f64 - 0.06)
             .collect();
-        let u = analyse(&jac, &resid, &[0..n], &[false; 3], 1);
+        let u = analyse(&jac, &resid, std::slice::from_ref(&(0..n)), &[false; 3], 1, false);
         assert_eq!(u.unidentified.len(), 1, "{:?}", u.unidentified);
         let names: Vec<usize> = u.unidentified[0].parameters.iter().map(|p| p.0).collect();
         assert!(names.contains(&1) && names.contains(&2) && !names.contains(&0));
@@ -319,7 +337,7 @@ mod tests {
         let resid: Vec<f64> = (0..n)
             .map(|i| 0.1 * (i as f64 * std::f64::consts::TAU / 400.0).sin())
             .collect();
-        let u = analyse(&jac, &resid, &[0..n], &[false], 1);
+        let u = analyse(&jac, &resid, std::slice::from_ref(&(0..n)), &[false], 1, false);
         let (lo, hi) = u.bootstrap[0].unwrap();
         assert!(
             (hi - lo) / 2.0 > 3.0 * 1.96 * u.sd[0],

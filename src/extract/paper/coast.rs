@@ -5,9 +5,7 @@
 use super::{Estimate, fail};
 use crate::extract::capture::Capture;
 use crate::extract::error::ExtractError;
-use crate::extract::signal::{
-    median, moving_average, moving_median, noise_sigma, polyfit, trimmed_mean,
-};
+use crate::extract::signal::{mean, median, moving_average, moving_median, noise_sigma, polyfit};
 
 /// Finds disconnect, start and stop of the coast, removes the offsets; returns
 /// (start, stop, voltage offset, current offset).
@@ -15,7 +13,8 @@ pub(super) fn landmarks(c: &mut Capture) -> Result<(usize, usize, f64, f64), Ext
     let n = c.len();
     let im = moving_median(&c.i, 2);
     let i_pre = median(&im[..(n / 50).max(3)]);
-    let i_post = trimmed_mean(&c.i[n / 2..]);
+    // Plain means for the offsets (see `zero_pre_trigger`).
+    let i_post = mean(&c.i[n / 2..]);
     let si = noise_sigma(&c.i);
     let kd = if i_pre - i_post > 5.0 * si.max(1e-9) {
         im.iter()
@@ -27,7 +26,7 @@ pub(super) fn landmarks(c: &mut Capture) -> Result<(usize, usize, f64, f64), Ext
     let guard = (n / 500).max(5);
     let k_s = (kd + guard).min(n - 1);
     let v_start = median(&c.v[k_s..(k_s + 20).min(n)]);
-    let tail = trimmed_mean(&c.v[n - n / 20..]);
+    let tail = mean(&c.v[n - n / 20..]);
     if v_start <= 0.0 || tail > 0.05 * v_start {
         return Err(ExtractError::CoastNeverStops {
             path: c.path.clone(),

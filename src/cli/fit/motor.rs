@@ -1,0 +1,343 @@
+//! The DC motor preset (`vams extract`): the paper's four captures fitted with the bundled
+//! `dc_motor` and `constant_friction` models on their bench (`models/fit/tb_motor_bench.vhd`),
+//! starting from the paper's estimates. There is no other copy of the motor's equations: the
+//! simulations are the models the servo runs.
+//!
+//! Experiments: the inrush and the blocked rotor from the captured voltage step (the time the
+//! switch closed is a nuisance parameter of each, fitted too: half a sample of error in it is
+//! a percent of the electrical time constant), the constant speed and the coast after the
+//! bench has run the motor up to speed (a settling time of 25 mechanical time constants at the
+//! paper's values) and the coast's cut at its captured time. Compared: the current and the
+//! terminal voltage of each capture (the voltage makes the supply `vs` and its resistance
+//! `rs` identifiable, which the current alone confuses with R), and the speed read from the
+//! ripple of the constant-speed capture (a value with its standard error: without a speed,
+//! scaling Ke, J, D and Tcst together leaves every current unchanged).
+
+use crate::capture::{Capture, Channel};
+use crate::cli::compile::{Prepared, prepare_loaded};
+use crate::cli::load::load_texts;
+use crate::extract::MotorParams;
+use crate::extract::paper::{PaperEstimates, Prepared as Captures};
+use crate::fit::series::block_widths;
+use crate::fit::{Fit, FitError, Fitted, FreeParam, Series, Settings};
+
+use super::simulate::{DesignSimulator, Setup};
+
+/// The bundled models of the bench.
+const SOURCES: [(&str, &str); 3] = [
+    (
+        "models/dc_motor.vhd",
+        include_str!("../../../models/dc_motor.vhd"),
+    ),
+    (
+        "models/constant_friction.vhd",
+        include_str!("../../../models/constant_friction.vhd"),
+    ),
+    (
+        "models/fit/tb_motor_bench.vhd",
+        include_str!("../../../models/fit/tb_motor_bench.vhd"),
+    ),
+];
+
+/// The roles of the captures, in the order of the experiments.
+pub const ROLES: [&str; 4] = ["inrush", "blocked", "speed", "coast"];
+
+/// The fitted generics of the motor, in the order of the fit's first parameters.
+const MOTOR: [&str; 6] = ["r", "l", "ke", "j", "d", "tcst_motor"];
+
+/// The preset's fit.
+pub struct MotorFit {
+    pub fitted: Fitted,
+    pub params: Vec<FreeParam>,
+    pub series: Vec<Series>,
+    /// The capture file of each experiment.
+    pub captures: Vec<String>,
+    /// The fitted motor (kt = ke).
+    pub motor: MotorParams,
+    /// Per role, the index of its main series (current; the coast's voltage).
+    pub main_series: [usize; 4],
+}
+
+impl MotorFit {
+    /// Standard errors in the order of [`MotorParams::NAMES`] (from the covariance, in the
+    /// parameters' units; NaN where undetermined).
+    pub fn se(&self) -> [f64; 7] {
+        let se = |k: usize| {
+            let e = &self.fitted.estimates[k];
+            e.interval.map_or(f64::NAN, |(lo, hi)| {
+                (hi - lo) / 2.0 / self.fitted.uncertainty.t95
+            })
+        };
+        [se(0), se(1), se(2), se(2), se(3), se(4), se(5)]
+    }
+}
+
+/// The bench's models analysed, `tb_motor_bench` the top.
+pub fn bench() -> Result<Prepared, miette::Report> {
+    let texts = SOURCES
+        .iter()
+        .map(|(name, text)| (name.to_string(), text.to_string()))
+        .collect();
+    prepare_loaded(load_texts(texts), Some("tb_motor_bench"), Vec::new())
+}
+
+/// A capture of the extraction as a reduced general capture: block means down to `points`,
+/// with the blocks' durations.
+fn reduced(cap: &crate::extract::Capture, from: usize, points: usize) -> (Capture, Vec<f64>) {
+    let channel = |name: &str, unit: &str, values: &[f64]| Channel {
+        name: name.into(),
+        unit: Some(unit.into()),
+        values: values[from..].to_vec(),
+        clipped: vec![false; values.len() - from],
+    };
+    let widths = block_widths(&cap.t[from..], points);
+    let reduced = Capture {
+        path: cap.path.clone(),
+        time: cap.t[from..].to_vec(),
+        channels: vec![
+            channel("voltage", "V", &cap.v),
+            channel("current", "A", &cap.i),
+        ],
+        ..Capture::default()
+    }
+    .decimated(points);
+    (reduced, widths)
+}
+
+/// The series of one capture (already shifted to simulation time).
+fn series_of(
+    e: usize,
+    (cap, widths): &(Capture, Vec<f64>),
+    role: &str,
+    wanted: &[(&str, &str)],
+) -> Vec<Series> {
+    wanted
+        .iter()
+        .filter_map(|(quantity, column)| {
+            let ch = cap.channel(column)?;
+            let keep: Vec<usize> = (0..cap.time.len())
+                .filter(|&k| cap.time[k] >= 0.0)
+                .collect();
+            Some(Series {
+                experiment: e,
+                simulated: quantity.to_string(),
+                label: format!("{role}: {column}"),
+                time: keep.iter().map(|&k| cap.time[k]).collect(),
+                measured: keep.iter().map(|&k| ch.values[k]).collect(),
+                width: if widths.is_empty() {
+                    Vec::new()
+                } else {
+                    keep.iter().map(|&k| widths[k]).collect()
+                },
+                sigma: None,
+            })
+        })
+        .collect()
+}
+
+fn positive(name: &str, guess: f64) -> FreeParam {
+    let guess = guess.abs().max(1e-12);
+    FreeParam {
+        name: name.into(),
+        guess,
+        lower: Some(guess / 100.0),
+        upper: Some(guess * 100.0),
+        experiment: None,
+    }
+}
+
+/// Fits the motor to the prepared captures from the paper's estimates.
+pub fn fit(
+    caps: &Captures,
+    paper: &PaperEstimates,
+    points: usize,
+    jobs: usize,
+    seed: u64,
+) -> Result<MotorFit, miette::Report> {
+    let prepared = bench()?;
+    let [inrush, blocked, speed, coast] = &caps.caps;
+    let guess = [
+        paper.r.value,
+        paper.l.value,
+        paper.ke.value,
+        paper.j.value,
+        paper.d.value,
+        paper.tcst_motor.value,
+    ];
+    // The run-up before the speed and coast captures: 25 mechanical time constants.
+    let tau_m = paper.j.value * paper.r.value / (paper.ke.value * paper.ke.value);
+    let settle = (25.0 * tau_m).clamp(0.05, 100.0);
+    let first = |c: &crate::extract::Capture| c.t.first().copied().unwrap_or(0.0);
+
+    let mut series = Vec::new();
+    let mut setups_generics: Vec<Vec<(String, String)>> = Vec::new();
+    let mut params: Vec<FreeParam> = MOTOR
+        .iter()
+        .zip(guess)
+        .map(|(n, g)| positive(n, g))
+        .collect();
+    let both = [("motor.i", "current"), ("motor.v", "voltage")];
+
+    // Inrush and blocked: the first sample at time 0, the switch at the step (fitted).
+    for (e, (cap, step, extra)) in [
+        (inrush, caps.inrush_step, "false"),
+        (blocked, caps.blocked_step, "true"),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let shift = -first(cap);
+        let mut generics = vec![("blocked".to_string(), extra.to_string())];
+        let dt = cap.dt();
+        if step >= 1 {
+            let t_step = 0.5 * (cap.t[step - 1] + cap.t[step]) + shift;
+            params.push(FreeParam {
+                name: "t_on".into(),
+                guess: t_step,
+                lower: Some((t_step - 3.0 * dt).max(0.0)),
+                upper: Some(t_step + 3.0 * dt),
+                experiment: Some(e),
+            });
+        } else {
+            // No pre-trigger: the switch closed long before; the capture starts settled.
+            generics.push(("t_on".into(), "0.0".into()));
+        }
+        let (reduced, widths) = reduced(cap, 0, points);
+        let reduced = (reduced.shifted(shift), widths);
+        series.extend(series_of(e, &reduced, ROLES[e], &both));
+        setups_generics.push(generics);
+    }
+
+    // Constant speed: after the run-up; the speed from the ripple at its middle.
+    let shift = settle - first(speed);
+    let (reduced_speed, widths) = reduced(speed, 0, points);
+    let reduced_speed = (reduced_speed.shifted(shift), widths);
+    series.extend(series_of(2, &reduced_speed, ROLES[2], &both));
+    let t_mid = settle + 0.5 * (speed.t.last().copied().unwrap_or(0.0) - first(speed));
+    series.push(Series {
+        experiment: 2,
+        simulated: "motor.w".into(),
+        label: "speed: speed from the ripple".into(),
+        time: vec![t_mid],
+        measured: vec![caps.w_cst.value],
+        width: Vec::new(),
+        sigma: Some(caps.w_cst.se.max(1e-6 * caps.w_cst.value.abs()).max(1e-12)),
+    });
+    setups_generics.push(vec![("t_on".into(), "0.0".into())]);
+
+    // Coast: after the run-up, cut where the current falls.
+    let shift = settle - first(coast);
+    let running = {
+        let mut pre: Vec<f64> = coast.i[..caps.coast_start.max(1).min(coast.len())].to_vec();
+        pre.sort_by(f64::total_cmp);
+        pre.get(pre.len() / 2).copied().unwrap_or(0.0)
+    };
+    let cut = (0..coast.len())
+        .find(|&k| coast.i[k].abs() < 0.5 * running.abs())
+        .unwrap_or(caps.coast_start);
+    let t_cut = 0.5 * (coast.t[cut.saturating_sub(1)] + coast.t[cut]) + shift;
+    let (reduced_coast, widths) = reduced(coast, 0, points);
+    let reduced_coast = (reduced_coast.shifted(shift), widths);
+    let mut coast_series = series_of(3, &reduced_coast, ROLES[3], &[("motor.v", "voltage")]);
+    // Without the cut and its inductive kick (what a scope shows of it depends on the switch
+    // and the probe, not on the motor): from a sample before the cut to the coast proper.
+    let kick = (
+        coast.t[cut.saturating_sub(1)] + shift - coast.dt(),
+        coast.t[caps.coast_start.max(cut).min(coast.len() - 1)] + shift,
+    );
+    for s in &mut coast_series {
+        let keep: Vec<usize> = (0..s.time.len())
+            .filter(|&k| {
+                let h = 0.5 * s.width.get(k).copied().unwrap_or(0.0);
+                s.time[k] + h < kick.0 || s.time[k] - h > kick.1
+            })
+            .collect();
+        s.time = keep.iter().map(|&k| s.time[k]).collect();
+        s.measured = keep.iter().map(|&k| s.measured[k]).collect();
+        if !s.width.is_empty() {
+            s.width = keep.iter().map(|&k| s.width[k]).collect();
+        }
+    }
+    series.extend(coast_series);
+    setups_generics.push(vec![
+        ("t_on".into(), "0.0".into()),
+        ("t_off".into(), crate::output::csv::format_number(t_cut)),
+    ]);
+
+    // The bench's supply and source resistance, from the constant-speed capture's voltage.
+    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len().max(1) as f64;
+    let (v_speed, i_speed) = (mean(&speed.v), mean(&speed.i));
+    params.push(FreeParam {
+        name: "rs".into(),
+        guess: 0.1,
+        lower: Some(0.0),
+        upper: Some(10.0),
+        experiment: None,
+    });
+    params.push(positive("vs", v_speed + 0.1 * i_speed));
+
+    let setups: Vec<Setup> = setups_generics
+        .into_iter()
+        .enumerate()
+        .map(|(e, g)| Setup::new("tb_motor_bench".into(), g, e, &series))
+        .collect();
+    let sim = DesignSimulator {
+        prepared: &prepared,
+        setups,
+        names: params
+            .iter()
+            .map(|p| (p.name.clone(), p.experiment))
+            .collect(),
+        reltol: 1e-6,
+        abstol: None,
+        max_step: None,
+        jobs,
+    };
+    let fit = Fit {
+        simulator: &sim,
+        params: &params,
+        series: &series,
+        experiments: 4,
+        settings: Settings::default(),
+        seed,
+    };
+    let fitted = fit
+        .run()
+        .map_err(|e: FitError<String>| super::FitCliError::Failed {
+            message: format!("the joint fit of the motor: {e}"),
+        })?;
+    let v = |k: usize| fitted.estimates[k].value;
+    let motor = MotorParams {
+        r: v(0),
+        l: v(1),
+        ke: v(2),
+        kt: v(2),
+        j: v(3),
+        d: v(4),
+        tcst_motor: v(5),
+    };
+    let main = |role: usize, quantity: &str| {
+        series
+            .iter()
+            .position(|s| s.experiment == role && s.simulated == quantity)
+            .unwrap_or(0)
+    };
+    let main_series = [
+        main(0, "motor.i"),
+        main(1, "motor.i"),
+        main(2, "motor.i"),
+        main(3, "motor.v"),
+    ];
+    Ok(MotorFit {
+        fitted,
+        params,
+        series,
+        captures: caps
+            .caps
+            .iter()
+            .map(|c| c.path.display().to_string())
+            .collect(),
+        motor,
+        main_series,
+    })
+}

@@ -1,0 +1,240 @@
+//! What `vams fit` prints and writes: the table for people, `--json` for scripts, the
+//! `name=value` file for `vams run --params`, and the warnings a fit deserves.
+
+use std::fmt::Write as _;
+
+use crate::fit::{Fitted, FreeParam, Series};
+use crate::output::csv::format_number;
+
+/// What the report shows beyond the fit.
+pub struct Context<'a> {
+    pub params: &'a [FreeParam],
+    pub series: &'a [Series],
+    /// The capture file of each experiment.
+    pub captures: &'a [String],
+    pub seconds: f64,
+}
+
+fn range(r: Option<(f64, f64)>, value: f64) -> String {
+    match r {
+        Some((lo, hi)) => {
+            let rel = 100.0 * (hi - lo) / 2.0 / value.abs().max(f64::MIN_POSITIVE);
+            if value != 0.0 && rel.is_finite() {
+                format!("{lo:.4e} .. {hi:.4e} (±{rel:.2} %)")
+            } else {
+                format!("{lo:.4e} .. {hi:.4e}")
+            }
+        }
+        None => "-".to_string(),
+    }
+}
+
+/// The warnings: parameters at a bound, directions the captures do not determine, an
+/// iteration that did not converge.
+pub fn warnings(f: &Fitted, c: &Context) -> Vec<String> {
+    let mut w = Vec::new();
+    for (p, e) in c.params.iter().zip(&f.estimates) {
+        if e.at_bound {
+            w.push(format!(
+                "`{}` ended at its bound ({}): the captures ask for a value beyond it; widen the bound if it is not physical, otherwise the other parameters absorb the difference",
+                p.name,
+                format_number(e.value)
+            ));
+        }
+    }
+    for u in &f.uncertainty.unidentified {
+        let names: Vec<String> = u
+            .parameters
+            .iter()
+            .map(|(k, _)| format!("`{}`", c.params[*k].name))
+            .collect();
+        // Where the parameters involved show most: the capture that carries their effect.
+        let mut influence = vec![0.0; c.captures.len()];
+        for (k, _) in &u.parameters {
+            for (e, v) in f.estimates[*k].influence.iter().enumerate() {
+                influence[e] += v;
+            }
+        }
+        let best = influence
+            .iter()
+            .enumerate()
+            .max_by(|a, b| a.1.total_cmp(b.1))
+            .map(|(e, _)| c.captures[e].clone())
+            .unwrap_or_default();
+        let what = if names.len() == 1 {
+            format!(
+                "{} is not identifiable from these captures (its effect on them is below their noise)",
+                names[0]
+            )
+        } else {
+            format!(
+                "{} are not separately identifiable from these captures: only a combination of them is (their effects on the waveforms are nearly proportional)",
+                names.join(" and ")
+            )
+        };
+        let hint = if best.is_empty() || influence.iter().all(|v| *v == 0.0) {
+            "no capture responds to it: add one whose experiment exercises it".to_string()
+        } else {
+            format!(
+                "it shows most in `{best}`: a longer or less noisy capture of that experiment, or one where {} act differently, would determine it; or fix one of them with -g",
+                if names.len() == 1 { "it" } else { "they" }
+            )
+        };
+        w.push(format!("{what}; {hint}"));
+    }
+    if f.ending == crate::fit::Ending::IterationLimit {
+        w.push(
+            "the fit stopped at its iteration limit before converging: the values may not be the best; start nearer".to_string(),
+        );
+    }
+    w
+}
+
+/// The table for people.
+pub fn table(f: &Fitted, c: &Context) -> String {
+    let mut s = String::new();
+    let samples: usize = c.series.iter().map(|s| s.measured.len()).sum();
+    let _ = writeln!(
+        s,
+        "fit of {} free generic(s) to {} capture(s) ({} compared samples): {} iterations, {} simulations, {:.2} s\n",
+        c.params.len(),
+        c.captures.len(),
+        samples,
+        f.iterations,
+        f.simulations,
+        c.seconds
+    );
+    let w = c
+        .params
+        .iter()
+        .map(|p| p.name.len())
+        .max()
+        .unwrap_or(4)
+        .max(7);
+    let _ = writeln!(
+        s,
+        "{:<w$}  {:<11}  {:<11}  {:<36}  95 % block bootstrap",
+        "generic", "guess", "fitted", "95 % from the covariance"
+    );
+    for (p, e) in c.params.iter().zip(&f.estimates) {
+        let _ = writeln!(
+            s,
+            "{:<w$}  {:<11}  {:<11.5e}  {:<36}  {}{}",
+            p.name,
+            format_number(p.guess),
+            e.value,
+            range(e.interval, e.value),
+            range(e.robust, e.value),
+            if e.at_bound { "  (at bound)" } else { "" }
+        );
+    }
+    let n = c.params.len();
+    if n > 1 {
+        let _ = writeln!(s, "\ncorrelations");
+        let _ = write!(s, "{:<w$}", "");
+        for p in c.params {
+            let _ = write!(s, " {:>8}", short(&p.name));
+        }
+        let _ = writeln!(s);
+        for (a, p) in c.params.iter().enumerate() {
+            let _ = write!(s, "{:<w$}", p.name);
+            for b in 0..n {
+                let v = f.uncertainty.correlation[a][b];
+                if v.is_finite() {
+                    let _ = write!(s, " {v:>8.3}");
+                } else {
+                    let _ = write!(s, " {:>8}", "-");
+                }
+            }
+            let _ = writeln!(s);
+        }
+    }
+    let _ = writeln!(
+        s,
+        "\n{:<36} {:>12} {:>12}",
+        "series", "RMS at guess", "RMS fitted"
+    );
+    for (ser, fit) in c.series.iter().zip(&f.series) {
+        let _ = writeln!(
+            s,
+            "{:<36} {:>12.4e} {:>12.4e}",
+            ser.label, fit.rms_start, fit.rms
+        );
+    }
+    s
+}
+
+fn short(name: &str) -> String {
+    let last = name.rsplit('.').next().unwrap_or(name);
+    last.chars().take(8).collect()
+}
+
+fn json_num(v: f64) -> serde_json::Value {
+    serde_json::Number::from_f64(v).map_or(serde_json::Value::Null, serde_json::Value::Number)
+}
+
+fn json_range(r: Option<(f64, f64)>) -> serde_json::Value {
+    match r {
+        Some((a, b)) => serde_json::Value::Array(vec![json_num(a), json_num(b)]),
+        None => serde_json::Value::Null,
+    }
+}
+
+/// `--json`.
+pub fn json(f: &Fitted, c: &Context) -> String {
+    use serde_json::{Map, Value, json};
+    let mut params = Map::new();
+    for (p, e) in c.params.iter().zip(&f.estimates) {
+        params.insert(
+            p.name.clone(),
+            json!({
+                "value": json_num(e.value),
+                "guess": json_num(p.guess),
+                "ci95": json_range(e.interval),
+                "ci95_bootstrap": json_range(e.robust),
+                "at_bound": e.at_bound,
+            }),
+        );
+    }
+    let correlation: Vec<Value> = f
+        .uncertainty
+        .correlation
+        .iter()
+        .map(|row| Value::Array(row.iter().map(|v| json_num(*v)).collect()))
+        .collect();
+    let series: Vec<Value> = c
+        .series
+        .iter()
+        .zip(&f.series)
+        .map(|(s, r)| {
+            json!({
+                "label": s.label,
+                "capture": c.captures[s.experiment],
+                "quantity": s.simulated,
+                "samples": s.measured.len(),
+                "rms_start": json_num(r.rms_start),
+                "rms": json_num(r.rms),
+            })
+        })
+        .collect();
+    let out = json!({
+        "parameters": Value::Object(params),
+        "names": c.params.iter().map(|p| p.name.clone()).collect::<Vec<_>>(),
+        "correlation": correlation,
+        "series": series,
+        "iterations": f.iterations,
+        "simulations": f.simulations,
+        "seconds": json_num(c.seconds),
+        "warnings": warnings(f, c),
+    });
+    serde_json::to_string_pretty(&out).unwrap_or_default()
+}
+
+/// `name=value` lines for `vams run --params`.
+pub fn params_file(f: &Fitted, c: &Context) -> String {
+    let mut s = String::from("# fitted by vams fit\n");
+    for (p, e) in c.params.iter().zip(&f.estimates) {
+        let _ = writeln!(s, "{}={}", p.name, format_number(e.value));
+    }
+    s
+}

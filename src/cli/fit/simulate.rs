@@ -1,0 +1,186 @@
+//! The simulator behind `vams fit`: each job elaborates an experiment's testbench with its
+//! generics and the free parameters' values (the sources were analysed once), simulates it to
+//! the end of its capture recording only the matched quantities, and reads them at the
+//! capture's sample times. Jobs run on every core, in order, each with the deep stack that
+//! VHDL recursion needs ([`crate::cli::parallel`]).
+
+use crate::cli::compile::Prepared;
+use crate::cli::parallel::run_in_order;
+use crate::diagnostics::Located;
+use crate::fit::series::block_mean;
+use crate::fit::{Series, Simulate};
+use crate::kernel::{Outcome, SimOptions, simulate_into};
+use crate::output::csv::format_number;
+use crate::waveform::{ColumnKind, Waveforms};
+
+/// One experiment as the simulator runs it.
+pub struct Setup {
+    pub top: String,
+    /// Its fixed generics (the `--measured` settings).
+    pub generics: Vec<(String, String)>,
+    /// The quantities recorded, one per series of the experiment, in series order.
+    pub probes: Vec<String>,
+    /// Per series, the sample times and the durations they average over.
+    pub times: Vec<Vec<f64>>,
+    pub widths: Vec<Vec<f64>>,
+    /// Its end: the last sample time.
+    pub stop: f64,
+}
+
+impl Setup {
+    /// The setup of experiment `e` from its series.
+    pub fn new(top: String, generics: Vec<(String, String)>, e: usize, series: &[Series]) -> Setup {
+        let mine: Vec<&Series> = series.iter().filter(|s| s.experiment == e).collect();
+        // The end of the last block.
+        let stop = mine
+            .iter()
+            .filter_map(|s| {
+                let t = s.time.last()?;
+                Some(t + 0.5 * s.width.last().copied().unwrap_or(0.0))
+            })
+            .fold(0.0, f64::max);
+        Setup {
+            top,
+            generics,
+            probes: mine.iter().map(|s| s.simulated.clone()).collect(),
+            times: mine.iter().map(|s| s.time.clone()).collect(),
+            widths: mine.iter().map(|s| s.width.clone()).collect(),
+            stop,
+        }
+    }
+}
+
+/// How every simulation of the fit runs.
+pub struct DesignSimulator<'a> {
+    pub prepared: &'a Prepared,
+    pub setups: Vec<Setup>,
+    /// The free parameters' names, and the experiment each belongs to (`None`: all), in the
+    /// fit's order.
+    pub names: Vec<(String, Option<usize>)>,
+    pub reltol: f64,
+    pub abstol: Option<f64>,
+    pub max_step: Option<f64>,
+    pub jobs: usize,
+}
+
+/// `message at file:line:col` of a located diagnostic.
+fn located<D: Located>(d: &D, prepared: &Prepared) -> String {
+    let sources = &prepared.loaded.sources;
+    let span = d.primary_span();
+    if span == Default::default() || span.file.0 as usize >= sources.len() {
+        return d.to_string();
+    }
+    let (line, col) = sources.line_col(span);
+    format!("{d} at {}:{line}:{col}", sources.file(span.file).name)
+}
+
+impl DesignSimulator<'_> {
+    /// The generics of a job: the experiment's, then the free values (which win).
+    pub fn generics(&self, e: usize, values: &[f64]) -> Vec<(String, String)> {
+        let mut g = self.setups[e].generics.clone();
+        g.extend(
+            self.names
+                .iter()
+                .zip(values)
+                .filter(|((_, only), _)| only.is_none_or(|k| k == e))
+                .map(|((n, _), v)| (n.clone(), format_number(*v))),
+        );
+        g
+    }
+
+    /// Simulates experiment `e` with the free values `values`.
+    pub fn run(&self, e: usize, values: &[f64]) -> Result<(Waveforms, f64), String> {
+        let setup = &self.setups[e];
+        let design = self
+            .prepared
+            .try_elaborate_top(&setup.top, &self.generics(e, values))
+            .map_err(|errors| {
+                errors
+                    .first()
+                    .map(|err| format!("elaboration: {}", located(err, self.prepared)))
+                    .unwrap_or_default()
+            })?;
+        let sim = SimOptions {
+            stop: setup.stop,
+            reltol: self.reltol,
+            abstol: self.abstol,
+            max_step: self.max_step,
+            max_order: 5,
+            probes: setup.probes.clone(),
+            progress: None,
+            keep_unknowns: false,
+            cancel: None,
+        };
+        let mut waves = Waveforms::default();
+        let end = simulate_into(&design, &sim, &mut waves, &mut |_| {}).map_err(|err| {
+            let at = waves
+                .times
+                .last()
+                .map(|t| format!(" (t = {})", crate::cli::time::format_time(*t)))
+                .unwrap_or_default();
+            match &err {
+                crate::kernel::SimError::Analog { errors } if !errors.is_empty() => {
+                    format!("{}{at}", located(&errors[0], self.prepared))
+                }
+                _ => format!("{}{at}", located(&err, self.prepared)),
+            }
+        })?;
+        if let Outcome::Failed { time } = end.outcome {
+            return Err(format!(
+                "an assertion of severity failure at t = {}",
+                crate::cli::time::format_time(time)
+            ));
+        }
+        Ok((waves, setup.stop))
+    }
+
+    fn sample(&self, e: usize, values: &[f64]) -> Result<Vec<Vec<f64>>, String> {
+        let setup = &self.setups[e];
+        let (waves, _) = self.run(e, values)?;
+        setup
+            .probes
+            .iter()
+            .zip(setup.times.iter().zip(&setup.widths))
+            .map(|(name, (times, widths))| {
+                let col = waves
+                    .column(name)
+                    .ok_or_else(|| format!("the run recorded no `{name}`"))?;
+                let held = matches!(col.kind, ColumnKind::Signal { .. });
+                let mut hint = 0;
+                Ok(times
+                    .iter()
+                    .enumerate()
+                    .map(|(n, &t)| {
+                        if held {
+                            let k = waves.times.partition_point(|x| *x <= t);
+                            col.values[k.saturating_sub(1).min(col.values.len() - 1)]
+                        } else {
+                            let w = widths.get(n).copied().unwrap_or(0.0);
+                            block_mean(&waves.times, &col.values, t, w, &mut hint)
+                        }
+                    })
+                    .collect())
+            })
+            .collect()
+    }
+}
+
+impl Simulate for DesignSimulator<'_> {
+    type Error = String;
+
+    fn simulate(&self, jobs: &[(usize, Vec<f64>)]) -> Vec<Result<Vec<Vec<f64>>, String>> {
+        let mut out: Vec<Result<Vec<Vec<f64>>, String>> = Vec::with_capacity(jobs.len());
+        run_in_order(
+            jobs,
+            self.jobs,
+            |(e, values)| self.sample(*e, values),
+            |_, result| {
+                out.push(match result {
+                    Ok(r) => r,
+                    Err(panic) => Err(format!("internal error: {panic}")),
+                })
+            },
+        );
+        out
+    }
+}

@@ -1,0 +1,289 @@
+//! `vams fit` end to end on `tests/fit/rc.vhd` (a step through R into C, whose response has a
+//! closed form): synthetic captures at known values, with Gaussian noise and 8-bit
+//! quantisation, written in two oscilloscopes' layouts; the fitted values against the truth,
+//! their intervals covering it, parameters the captures cannot separate flagged, bounds
+//! respected, and the diagnostics of bad input.
+
+use std::path::{Path, PathBuf};
+
+use assert_cmd::Command;
+use predicates::str::contains;
+use rand::{RngExt, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+const RC: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/fit/rc.vhd");
+
+fn vams() -> Command {
+    Command::cargo_bin("vams").expect("the vams binary is built for integration tests")
+}
+
+/// The truth of the synthetic captures.
+const R: f64 = 2.2e3;
+const C: f64 = 0.47e-6;
+const V: f64 = 5.0;
+
+/// A seeded Gaussian stream (ChaCha8 and Box-Muller). Not a bare xorshift: its streams from
+/// neighbouring seeds are linearly related, which made the two captures' noises correlated.
+struct Noise(ChaCha8Rng);
+
+impl Noise {
+    fn new(seed: u64) -> Self {
+        Noise(ChaCha8Rng::seed_from_u64(seed))
+    }
+
+    fn gauss(&mut self) -> f64 {
+        let u1: f64 = self.0.random_range(f64::EPSILON..1.0);
+        let u2: f64 = self.0.random_range(0.0..1.0);
+        (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
+    }
+}
+
+/// The capacitor's voltage of `tb_rc` (mode 0 charges, 1 discharges; the switch at 1 ms),
+/// at the scope's times (trigger at 0 = simulation time 1 ms, 0.5 ms of pre-trigger), with
+/// noise of `sd` volts and 8-bit quantisation over 0..6 V.
+fn samples(mode: u32, sd: f64, seed: u64) -> Vec<(f64, f64)> {
+    let mut noise = Noise::new(seed);
+    let lsb = 6.0 / 256.0;
+    (0..10_000)
+        .map(|k| {
+            let t = -0.5e-3 + k as f64 * 0.6e-6;
+            let charged = if t < 0.0 {
+                0.0
+            } else {
+                V * (1.0 - (-t / (R * C)).exp())
+            };
+            let v = if mode == 0 { charged } else { V - charged };
+            let q = ((v + sd * noise.gauss()) / lsb).round() * lsb;
+            (t, q)
+        })
+        .collect()
+}
+
+/// A Keysight InfiniiVision export (`x-axis,1` and a units row) of the charge.
+fn keysight(dir: &Path, sd: f64, seed: u64) -> PathBuf {
+    let mut text = String::from("x-axis,1\nsecond,Volt\n");
+    for (t, v) in samples(0, sd, seed) {
+        text.push_str(&format!("{t:.6e},{v:.5e}\n"));
+    }
+    let path = dir.join("charge.csv");
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+/// A PicoScope export (`Time,Channel A`, units `(ms),(mV)`, European decimal commas with
+/// `;`) of the discharge.
+fn picoscope(dir: &Path, sd: f64, seed: u64) -> PathBuf {
+    let mut text = String::from("Time;Channel A\n(ms);(mV)\n\n");
+    for (t, v) in samples(1, sd, seed + (1 << 32)) {
+        text.push_str(&format!("{};{}\n", t * 1e3, v * 1e3).replace('.', ","));
+    }
+    let path = dir.join("discharge.csv");
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+/// `vams fit --json` of both captures; returns the parsed JSON and stderr.
+fn fit(dir: &Path, sd: f64, seed: u64, extra: &[&str]) -> (serde_json::Value, String) {
+    let charge = keysight(dir, sd, seed);
+    let discharge = picoscope(dir, sd, seed);
+    let out = vams()
+        .arg("fit")
+        .arg(RC)
+        .args(["--top", "tb_rc", "--json", "-g", "r=2.2e3"])
+        .arg("--measured")
+        .arg(format!("{}:mode=0,shift=1ms", charge.display()))
+        .arg("--measured")
+        .arg(format!("{}:mode=1,shift=1ms", discharge.display()))
+        .args(["--match", "vc=1", "--match", "vc=Channel A"])
+        .args(extra)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert!(out.status.success(), "vams fit failed: {stderr}");
+    let json = serde_json::from_slice(&out.stdout).expect("--json prints JSON");
+    (json, stderr)
+}
+
+fn value(j: &serde_json::Value, name: &str) -> (f64, (f64, f64), (f64, f64)) {
+    let p = &j["parameters"][name];
+    let pair = |v: &serde_json::Value| (v[0].as_f64().unwrap(), v[1].as_f64().unwrap());
+    (
+        p["value"].as_f64().unwrap(),
+        pair(&p["ci95"]),
+        pair(&p["ci95_bootstrap"]),
+    )
+}
+
+#[test]
+fn recovers_c_and_the_step_from_two_scopes_captures() {
+    let dir = tempfile::tempdir().unwrap();
+    let (j, stderr) = fit(
+        dir.path(),
+        0.02,
+        1,
+        &["--free", "c=1e-6:1e-9:1e-3", "--free", "v_step=4"],
+    );
+    // 20 mV of noise on 2 x 10 000 samples: c within 0.2 %, the step within 0.1 %. One draw
+    // misses a 95 % interval one time in twenty (coverage is the test below): here each
+    // estimate must be within twice its intervals' half-widths of the truth.
+    let near = |name: &str, truth: f64, tol: f64| {
+        let (v, ci, boot) = value(&j, name);
+        assert!((v - truth).abs() / truth < tol, "{name} = {v}");
+        for (lo, hi) in [ci, boot] {
+            assert!(lo < v && v < hi, "{name}: {lo} {v} {hi}");
+            assert!((v - truth).abs() < (hi - lo), "{name} = {v}: {lo} .. {hi}");
+        }
+    };
+    near("c", C, 2e-3);
+    near("v_step", V, 1e-3);
+    // The fit's residual is the noise (averaged over blocks of five samples), not a misfit.
+    for s in j["series"].as_array().unwrap() {
+        let rms = s["rms"].as_f64().unwrap();
+        assert!(rms < 0.02, "{s}");
+    }
+    assert!(!stderr.contains("warning"), "{stderr}");
+}
+
+#[test]
+fn r_and_c_together_are_not_identifiable() {
+    let dir = tempfile::tempdir().unwrap();
+    let charge = keysight(dir.path(), 0.02, 3);
+    vams()
+        .arg("fit")
+        .arg(RC)
+        .args(["--top", "tb_rc", "--match", "vc=1"])
+        .arg("--measured")
+        .arg(format!("{}:mode=0,shift=1ms", charge.display()))
+        .args(["--free", "r=1e3", "--free", "c=1e-6"])
+        .assert()
+        .success()
+        .stderr(
+            contains("`c` and `r` are not separately identifiable")
+                .or(contains("`r` and `c` are not separately identifiable")),
+        );
+}
+
+use predicates::prelude::PredicateBooleanExt;
+
+#[test]
+fn a_bound_holds_and_is_reported() {
+    let dir = tempfile::tempdir().unwrap();
+    let (j, stderr) = fit(dir.path(), 0.02, 5, &["--free", "c=1e-6:6e-7:2e-6"]);
+    let p = &j["parameters"]["c"];
+    assert_eq!(p["value"].as_f64().unwrap(), 6e-7, "{p}");
+    assert_eq!(p["at_bound"], true);
+    assert!(p["ci95"].is_null());
+    assert!(stderr.contains("`c` ended at its bound"), "{stderr}");
+}
+
+/// Reduced coverage check (the full one, 100 draws, is `coverage_of_100_noise_draws`):
+/// over 20 seeded noise draws the covariance's interval holds the truth in at least 16.
+#[test]
+fn intervals_cover_the_truth_in_most_noise_draws() {
+    coverage(20, 16);
+}
+
+#[test]
+#[ignore = "slow: 100 fits; run with --ignored"]
+fn coverage_of_100_noise_draws() {
+    coverage(100, 90);
+}
+
+fn coverage(draws: u64, at_least: usize) {
+    let dir = tempfile::tempdir().unwrap();
+    let mut covered = 0;
+    for seed in 0..draws {
+        let (j, _) = fit(
+            dir.path(),
+            0.05,
+            100 + seed,
+            &["--free", "c=1e-6", "--points", "500"],
+        );
+        let (c, ci, _) = value(&j, "c");
+        eprintln!(
+            "seed {seed}: c = {c:e}, z = {:.2}",
+            (c - C) / ((ci.1 - ci.0) / 3.92)
+        );
+        if ci.0 < C && C < ci.1 {
+            covered += 1;
+        }
+    }
+    eprintln!("covered {covered} of {draws}");
+    assert!(covered >= at_least, "covered {covered} of {draws}");
+}
+
+#[test]
+fn bad_input_is_diagnosed_before_any_simulation() {
+    let dir = tempfile::tempdir().unwrap();
+    let charge = keysight(dir.path(), 0.02, 7);
+    let measured = format!("{}:mode=0,shift=1ms", charge.display());
+    let run = |extra: &[&str]| {
+        vams()
+            .arg("fit")
+            .arg(RC)
+            .args(["--top", "tb_rc", "--measured", &measured])
+            .args(extra)
+            .assert()
+            .code(1)
+    };
+    // A column no capture has, with the closest one offered.
+    run(&["--match", "vc=2", "--free", "c=1e-6"])
+        .stderr(contains("has none of the matched columns"));
+    // A quantity the design lacks.
+    run(&["--match", "vcc=1", "--free", "c=1e-6"]).stderr(contains("did you mean `vc`?"));
+    // A generic the design lacks.
+    run(&["--match", "vc=1", "--free", "cap=1e-6"]).stderr(contains("cap"));
+    // A guess outside its bounds.
+    run(&["--match", "vc=1", "--free", "c=1e-6:2e-6:3e-6"]).stderr(contains("outside its bounds"));
+    // A capture that does not overlap the simulated time.
+    vams()
+        .arg("fit")
+        .arg(RC)
+        .args(["--top", "tb_rc", "--match", "vc=1", "--free", "c=1e-6"])
+        .arg("--measured")
+        .arg(format!("{}:mode=0,shift=-1", charge.display()))
+        .assert()
+        .code(1)
+        .stderr(contains("usable samples"));
+    // A file that is not there.
+    vams()
+        .arg("fit")
+        .arg(RC)
+        .args(["--top", "tb_rc", "--match", "vc=1", "--free", "c=1e-6"])
+        .args(["--measured", "/nonexistent/capture.csv"])
+        .assert()
+        .code(1)
+        .stderr(contains("capture.csv"));
+}
+
+#[test]
+fn plots_and_params_are_written() {
+    let dir = tempfile::tempdir().unwrap();
+    let params = dir.path().join("fitted.params");
+    let plots = dir.path().join("plots");
+    let (_, stderr) = fit(
+        dir.path(),
+        0.02,
+        9,
+        &[
+            "--free",
+            "c=1e-6",
+            "--write-params",
+            params.to_str().unwrap(),
+            "--plot",
+            plots.to_str().unwrap(),
+        ],
+    );
+    let text = std::fs::read_to_string(&params).unwrap();
+    let c: f64 = text
+        .lines()
+        .find_map(|l| l.strip_prefix("c="))
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(f64::NAN);
+    assert!((c - C).abs() / C < 2e-3, "{text}");
+    for name in ["charge.svg", "discharge.svg"] {
+        let svg = std::fs::read_to_string(plots.join(name)).unwrap();
+        assert!(svg.contains("<svg") && svg.contains("residual"), "{name}");
+    }
+    assert!(stderr.contains("wrote"), "{stderr}");
+}
