@@ -269,13 +269,14 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_element_last_value ... ok"))
         .stdout(contains("test tb_resolved_initial_value ... ok"))
         .stdout(contains("test tb_edge_functions ... ok"))
+        .stdout(contains("test tb_shared_idle_conditions ... ok"))
         // tests/ac/: the AC models also run in the time domain (spectral sources are zero).
         .stdout(contains("test tb_rc_lowpass ... ok"))
         .stdout(contains("test tb_attributes ... ok"))
         // tests/noise/: so do the noise models (noise sources are zero there too).
         .stdout(contains("test tb_rc_thermal ... ok"))
         .stdout(contains("test tb_divider ... ok"))
-        .stdout(contains("152 passed, 0 failed"));
+        .stdout(contains("153 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it

@@ -125,10 +125,19 @@ impl<'d> EventKernel<'d> {
             })
             .collect();
         let mut idle = Vec::with_capacity(design.processes.len());
+        // Idle branches with equal conditions of signals alone share a class.
+        let mut classes = rustc_hash::FxHashMap::default();
         for (i, p) in design.processes.iter().enumerate() {
             lowered_at.push(lowered.len());
             let ops = lower(design, &signals, i, p);
-            idle.push(lower::idle_branch(&ops, p).filter(|_| one_plain_wait[i]));
+            let mut branch = lower::idle_branch(&ops, p).filter(|_| one_plain_wait[i]);
+            if let Some(at) = &mut branch
+                && let Some(key) = lower::idle_key(&ops, *at)
+            {
+                let next = u32::try_from(classes.len()).unwrap_or(lower::NO_CLASS);
+                at.class = *classes.entry(key).or_insert(next);
+            }
+            idle.push(branch);
             lowered.extend(ops);
         }
         lowered_at.push(lowered.len());
@@ -391,6 +400,10 @@ impl<'d> EventKernel<'d> {
     ) -> Result<Option<Outcome>, SimError> {
         let before = self.break_count;
         let mut outcome = None;
+        // The class of the last idle-branch condition of signals alone evaluated in this
+        // cycle, and its value (see `lower::CondKey`): signals do not change while processes
+        // run.
+        let mut known = (lower::NO_CLASS, None);
         for k in 0..self.resume.len() {
             let i = self.resume[k];
             self.last_process = i;
@@ -399,14 +412,15 @@ impl<'d> EventKernel<'d> {
             // Waiting at its one wait (not at the start of the run), resumed at its first
             // branch: with the condition false it would go back to that wait as it is
             // (nothing to report from a function either, or that would be emitted in its
-            // name); with the condition true it goes on after the branch.
+            // name); with the condition true it goes on after the branch. A condition of
+            // signals alone that an earlier process of this cycle evaluated is not evaluated
+            // again (nor its instruction read).
             let mut resumed = lower::Resume::Run;
             if let Some(at) = self.idle[i]
-                && let Some(op) = code.get(at.pc)
                 && state.waiting_at.is_some()
                 && self.io.function_reports.borrow().is_empty()
             {
-                resumed = lower::resume(op, at, &self.signals.states, &state.vars);
+                resumed = at.resume(code, &self.signals.states, &state.vars, &mut known);
             }
             self.timeout_of[i] = f64::INFINITY;
             // The lowered instructions first, without the interpreter's context.

@@ -20,7 +20,7 @@ use super::process::{ProcState, Suspend, later};
 use super::signals::{Delay, SignalState, Signals};
 
 /// The kind of a lowered value, known when the expression is lowered.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub(crate) enum Kind {
     Int,
     /// An enumeration position.
@@ -64,7 +64,7 @@ impl Kind {
 }
 
 /// An operand read in place.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 enum Leaf {
     Const(i64),
     Signal(usize, Kind),
@@ -92,7 +92,7 @@ enum Leaf {
 
 /// `rising_edge(s)` or `falling_edge(s)` of `ieee.std_logic_1164` (`x01`) or of
 /// `ieee.numeric_bit`: whether `s` had an event in this cycle and went to the edge's level.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 struct Edge {
     signal: u32,
     rising: bool,
@@ -229,7 +229,7 @@ impl Leaf {
 /// An operator on two lowered values of one kind: integer arithmetic, comparisons (of
 /// positions, booleans as 0 and 1, which order as VHDL's `false < true`), logic on booleans
 /// and bits.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 enum Operator {
     Add,
     Sub,
@@ -432,6 +432,42 @@ impl<'d> Node<'d> {
             Shape::Steps { first, steps } => eval_steps(first, steps, signals, vars),
             Shape::Edge(edge) => edge.read(signals),
         }
+    }
+}
+
+impl Leaf {
+    /// Whether it reads signals and constants only (no variable of the process).
+    fn reads_signals_only(self) -> bool {
+        !matches!(self, Leaf::Var(..) | Leaf::VarElement { .. })
+    }
+}
+
+/// A condition that reads signals and constants only, as a value: two processes whose idle
+/// branches ([`idle_branch`]) have equal keys have conditions of equal value in any one
+/// cycle (signals change only in the update phase), so the kernel evaluates it once per
+/// cycle for all of them (the 1001 stages of the shift register all test `clk = '1'`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) struct CondKey(KeyShape);
+
+/// The shapes of [`CondKey`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+enum KeyShape {
+    Leaf(Leaf),
+    WithConst(Leaf, Operator, i64),
+    Edge(Edge),
+}
+
+impl Node<'_> {
+    /// Its [`CondKey`], for the simple shapes that read signals and constants only.
+    fn key(&self) -> Option<CondKey> {
+        Some(CondKey(match self.shape {
+            Shape::Leaf(leaf) if leaf.reads_signals_only() => KeyShape::Leaf(leaf),
+            Shape::WithConst(leaf, op, c) if leaf.reads_signals_only() => {
+                KeyShape::WithConst(leaf, op, c)
+            }
+            Shape::Edge(edge) => KeyShape::Edge(edge),
+            _ => return None,
+        }))
     }
 }
 
@@ -857,18 +893,34 @@ pub(crate) fn idle_branch(ops: &[Op], process: &Process) -> Option<IdleBranch> {
         (pc, jumps) = (*target, 1);
     }
     match ops.get(pc)? {
-        Op::Branch { fails, .. } if fails.pc as usize == wait => Some(IdleBranch { pc, jumps }),
+        Op::Branch { holds, fails, .. } if fails.pc as usize == wait => {
+            let (to, taken) = holds.go::<true>(pc + 1);
+            Some(IdleBranch {
+                pc,
+                then: u32::try_from(to).ok()?,
+                steps: u32::try_from(jumps + taken).ok()?,
+                class: NO_CLASS,
+            })
+        }
         _ => None,
     }
 }
 
-/// An [`idle_branch`]: its instruction index, and the instructions a resumption takes
-/// before it (the jump back to the top of the process's loop).
+/// An [`idle_branch`]: its instruction index, where the process goes on when its condition
+/// holds and the instructions it has then taken (the jump back to the top of the process's
+/// loop, the branch and the jump it takes with it), and the class of its condition.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct IdleBranch {
     pub pc: usize,
-    pub jumps: usize,
+    pub then: u32,
+    pub steps: u32,
+    /// The kernel's number for its condition's `key`, shared by the idle branches with
+    /// equal keys ([`NO_CLASS`]: none, evaluated for each process).
+    pub class: u32,
 }
+
+/// [`IdleBranch::class`] of a condition that is evaluated for each process.
+pub(crate) const NO_CLASS: u32 = u32::MAX;
 
 /// What a process resumed at its [`idle_branch`] does.
 pub(crate) enum Resume {
@@ -880,23 +932,46 @@ pub(crate) enum Resume {
     Run,
 }
 
-/// The [`idle_branch`] `at` of a resumed process, whose instruction is `op`, evaluated as
-/// [`run`] would (and counted as it counts).
-#[inline(always)]
-pub(crate) fn resume(op: &Op, at: IdleBranch, signals: &[SignalState], vars: &[Value]) -> Resume {
-    let Op::Branch { cond, holds, .. } = op else {
-        return Resume::Run;
-    };
-    match cond.eval(signals, vars) {
-        Some(0) => Resume::Idle,
-        Some(_) => {
-            let (pc, taken) = holds.go::<true>(at.pc + 1);
-            Resume::At {
-                pc,
-                steps: at.jumps + taken,
+impl IdleBranch {
+    /// What the process of code `ops` does when it resumes at this branch; `known`, the
+    /// class of the last condition evaluated in this cycle and its value (`None`: the
+    /// lowered condition declined), is used and updated for a condition of signals alone.
+    #[inline(always)]
+    pub fn resume(
+        self,
+        ops: &[Op],
+        signals: &[SignalState],
+        vars: &[Value],
+        known: &mut (u32, Option<bool>),
+    ) -> Resume {
+        let holds = if self.class != NO_CLASS && self.class == known.0 {
+            known.1
+        } else {
+            let holds = match ops.get(self.pc) {
+                Some(Op::Branch { cond, .. }) => cond.eval(signals, vars).map(|c| c != 0),
+                _ => None,
+            };
+            if self.class != NO_CLASS {
+                *known = (self.class, holds);
             }
+            holds
+        };
+        match holds {
+            Some(false) => Resume::Idle,
+            Some(true) => Resume::At {
+                pc: self.then as usize,
+                steps: self.steps as usize,
+            },
+            None => Resume::Run,
         }
-        None => Resume::Run,
+    }
+}
+
+/// The [`CondKey`] of the condition of the [`idle_branch`] `at` of `ops`, if it has one.
+pub(crate) fn idle_key(ops: &[Op], at: IdleBranch) -> Option<CondKey> {
+    match ops.get(at.pc)? {
+        Op::Branch { cond, .. } => cond.key(),
+        _ => None,
     }
 }
 
