@@ -29,7 +29,8 @@ entity tb_motor_bench is
     t_on       : real := 0.0;      -- [s] the switch closes (<= 0: closed from the start)
     t_off      : real := 1.0e9;    -- [s] the switch opens
     blocked    : boolean := false; -- the rotor held
-    w_s        : real := 0.5       -- [rad/s] velocity scale of the friction's smoothing
+    w_s        : real := 0.5;      -- [rad/s] velocity scale of the friction's smoothing
+    self_check : boolean := true   -- assert the no-load speed at 290 ms (off while fitting)
   );
 end entity tb_motor_bench;
 
@@ -71,7 +72,7 @@ begin
     constant w_ss : real := (vs - (r + rs) * tcst_motor / ke) / (ke + (r + rs) * d / ke);
   begin
     wait for 290 ms;
-    if t_on <= 0.0 and t_off > 1.0 and not blocked then
+    if self_check and t_on <= 0.0 and t_off > 1.0 and not blocked then
       assert abs(speed - w_ss) < 1.0e-3 * w_ss
         report "the run-up ends at " & real'image(speed) & " rad/s, the closed form says "
                & real'image(w_ss)

@@ -279,7 +279,12 @@ pub fn fit(
     let setups: Vec<Setup> = setups_generics
         .into_iter()
         .enumerate()
-        .map(|(e, g)| Setup::new("tb_motor_bench".into(), g, e, &series))
+        .map(|(e, mut g)| {
+            // The bench's own check of the no-load speed is for `vams test`, not for the
+            // fit's trial values.
+            g.push(("self_check".into(), "false".into()));
+            Setup::new("tb_motor_bench".into(), g, e, &series)
+        })
         .collect();
     let sim = DesignSimulator {
         prepared: &prepared,
