@@ -393,6 +393,7 @@ mod tests {
                         })
                         .collect(),
                     width: Vec::new(),
+                    sample_interval: 0.0,
                     sigma: None,
                 }
             })

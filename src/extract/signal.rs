@@ -298,7 +298,7 @@ pub fn dominant_frequency(y: &[f64], dt: f64, fmin: f64, fmax: f64) -> Option<Pe
     const MOST: usize = 8192;
     if y.len() > MOST {
         let m = y.len().div_ceil(MOST);
-        let reduced: Vec<f64> = y.chunks_exact(m).map(|b| mean(b)).collect();
+        let reduced: Vec<f64> = y.chunks_exact(m).map(mean).collect();
         return dominant_frequency(&reduced, dt * m as f64, fmin, fmax);
     }
     let n = y.len();

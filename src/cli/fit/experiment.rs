@@ -136,6 +136,8 @@ pub struct Loaded {
     pub capture: Capture,
     /// The duration of each reduced sample's block (empty: the samples as read).
     pub widths: Vec<f64>,
+    /// The interval of the samples as read.
+    pub sample_interval: f64,
     /// Capture time + shift = simulation time.
     pub shift: f64,
 }
@@ -159,10 +161,12 @@ pub fn load(m: &Measured, read: &ReadOptions, points: usize) -> Result<Loaded, m
     };
     let shift = m.shift.unwrap_or(-first);
     let widths = crate::fit::series::block_widths(&capture.time, points);
+    let sample_interval = crate::fit::series::sample_interval(&capture.time);
     let capture = capture.shifted(shift).decimated(points);
     Ok(Loaded {
         capture,
         widths,
+        sample_interval,
         shift,
     })
 }
@@ -211,6 +215,11 @@ pub fn series(
             time,
             measured,
             width,
+            sample_interval: if loaded.widths.is_empty() {
+                0.0
+            } else {
+                loaded.sample_interval
+            },
             sigma: None,
         });
     }

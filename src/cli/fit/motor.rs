@@ -18,7 +18,7 @@ use crate::cli::compile::{Prepared, prepare_loaded};
 use crate::cli::load::load_texts;
 use crate::extract::MotorParams;
 use crate::extract::paper::{PaperEstimates, Prepared as Captures};
-use crate::fit::series::block_widths;
+use crate::fit::series::{block_widths, sample_interval};
 use crate::fit::{Fit, FitError, Fitted, FreeParam, Series, Settings};
 
 use super::simulate::{DesignSimulator, Setup};
@@ -83,7 +83,7 @@ pub fn bench() -> Result<Prepared, miette::Report> {
 
 /// A capture of the extraction as a reduced general capture: block means down to `points`,
 /// with the blocks' durations.
-fn reduced(cap: &crate::extract::Capture, from: usize, points: usize) -> (Capture, Vec<f64>) {
+fn reduced(cap: &crate::extract::Capture, from: usize, points: usize) -> (Capture, Vec<f64>, f64) {
     let channel = |name: &str, unit: &str, values: &[f64]| Channel {
         name: name.into(),
         unit: Some(unit.into()),
@@ -101,13 +101,13 @@ fn reduced(cap: &crate::extract::Capture, from: usize, points: usize) -> (Captur
         ..Capture::default()
     }
     .decimated(points);
-    (reduced, widths)
+    (reduced, widths, sample_interval(&cap.t[from..]))
 }
 
 /// The series of one capture (already shifted to simulation time).
 fn series_of(
     e: usize,
-    (cap, widths): &(Capture, Vec<f64>),
+    (cap, widths, dt): &(Capture, Vec<f64>, f64),
     role: &str,
     wanted: &[(&str, &str)],
 ) -> Vec<Series> {
@@ -129,6 +129,7 @@ fn series_of(
                 } else {
                     keep.iter().map(|&k| widths[k]).collect()
                 },
+                sample_interval: if widths.is_empty() { 0.0 } else { *dt },
                 sigma: None,
             })
         })
@@ -202,16 +203,16 @@ pub fn fit(
             // No pre-trigger: the switch closed long before; the capture starts settled.
             generics.push(("t_on".into(), "0.0".into()));
         }
-        let (reduced, widths) = reduced(cap, 0, points);
-        let reduced = (reduced.shifted(shift), widths);
+        let (reduced, widths, dt) = reduced(cap, 0, points);
+        let reduced = (reduced.shifted(shift), widths, dt);
         series.extend(series_of(e, &reduced, ROLES[e], &both));
         setups_generics.push(generics);
     }
 
     // Constant speed: after the run-up; the speed from the ripple at its middle.
     let shift = settle - first(speed);
-    let (reduced_speed, widths) = reduced(speed, 0, points);
-    let reduced_speed = (reduced_speed.shifted(shift), widths);
+    let (reduced_speed, widths, dt) = reduced(speed, 0, points);
+    let reduced_speed = (reduced_speed.shifted(shift), widths, dt);
     series.extend(series_of(2, &reduced_speed, ROLES[2], &both));
     let t_mid = settle + 0.5 * (speed.t.last().copied().unwrap_or(0.0) - first(speed));
     series.push(Series {
@@ -221,6 +222,7 @@ pub fn fit(
         time: vec![t_mid],
         measured: vec![caps.w_cst.value],
         width: Vec::new(),
+        sample_interval: 0.0,
         sigma: Some(caps.w_cst.se.max(1e-6 * caps.w_cst.value.abs()).max(1e-12)),
     });
     setups_generics.push(vec![("t_on".into(), "0.0".into())]);
@@ -236,8 +238,8 @@ pub fn fit(
         .find(|&k| coast.i[k].abs() < 0.5 * running.abs())
         .unwrap_or(caps.coast_start);
     let t_cut = 0.5 * (coast.t[cut.saturating_sub(1)] + coast.t[cut]) + shift;
-    let (reduced_coast, widths) = reduced(coast, 0, points);
-    let reduced_coast = (reduced_coast.shifted(shift), widths);
+    let (reduced_coast, widths, dt) = reduced(coast, 0, points);
+    let reduced_coast = (reduced_coast.shifted(shift), widths, dt);
     let mut coast_series = series_of(3, &reduced_coast, ROLES[3], &[("motor.v", "voltage")]);
     // Without the cut and its inductive kick (what a scope shows of it depends on the switch
     // and the probe, not on the motor): from a sample before the cut to the coast proper.

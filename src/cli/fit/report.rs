@@ -76,8 +76,11 @@ pub fn warnings(f: &Fitted, c: &Context) -> Vec<String> {
             "no capture responds to it: add one whose experiment exercises it".to_string()
         } else {
             format!(
-                "it shows most in `{best}`: a longer or less noisy capture of that experiment, or one where {} act differently, would determine it; or fix one of them with -g",
-                if names.len() == 1 { "it" } else { "they" }
+                "{} most in `{best}`: a longer or less noisy capture of that experiment, or one where {}, would determine {}; or fix {} with -g",
+                if names.len() == 1 { "it shows" } else { "they show" },
+                if names.len() == 1 { "it acts more strongly" } else { "they act differently" },
+                if names.len() == 1 { "it" } else { "them" },
+                if names.len() == 1 { "it" } else { "one of them" }
             )
         };
         w.push(format!("{what}; {hint}"));

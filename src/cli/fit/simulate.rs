@@ -23,6 +23,8 @@ pub struct Setup {
     /// Per series, the sample times and the durations they average over.
     pub times: Vec<Vec<f64>>,
     pub widths: Vec<Vec<f64>>,
+    /// Per series, the interval of the samples its blocks were made of.
+    pub sample_intervals: Vec<f64>,
     /// Its end: the last sample time.
     pub stop: f64,
 }
@@ -45,6 +47,7 @@ impl Setup {
             probes: mine.iter().map(|s| s.simulated.clone()).collect(),
             times: mine.iter().map(|s| s.time.clone()).collect(),
             widths: mine.iter().map(|s| s.width.clone()).collect(),
+            sample_intervals: mine.iter().map(|s| s.sample_interval).collect(),
             stop,
         }
     }
@@ -141,7 +144,8 @@ impl DesignSimulator<'_> {
             .probes
             .iter()
             .zip(setup.times.iter().zip(&setup.widths))
-            .map(|(name, (times, widths))| {
+            .zip(&setup.sample_intervals)
+            .map(|((name, (times, widths)), &dt)| {
                 let col = waves
                     .column(name)
                     .ok_or_else(|| format!("the run recorded no `{name}`"))?;
@@ -156,7 +160,7 @@ impl DesignSimulator<'_> {
                             col.values[k.saturating_sub(1).min(col.values.len() - 1)]
                         } else {
                             let w = widths.get(n).copied().unwrap_or(0.0);
-                            block_mean(&waves.times, &col.values, t, w, &mut hint)
+                            block_mean(&waves.times, &col.values, t, w, dt, &mut hint)
                         }
                     })
                     .collect())
