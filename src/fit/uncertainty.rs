@@ -293,7 +293,14 @@ mod tests {
         let resid: Vec<f64> = (0..n)
             .map(|i| noise[i] - coef[(0, 0)] - coef[(1, 0)] * t[i])
             .collect();
-        let u = analyse(&jac, &resid, std::slice::from_ref(&(0..n)), &[false, false], 1, false);
+        let u = analyse(
+            &jac,
+            &resid,
+            std::slice::from_ref(&(0..n)),
+            &[false, false],
+            1,
+            false,
+        );
         let sxx: f64 = t.iter().map(|v| (v - 0.49875).powi(2)).sum();
         let se_b = 0.1 / sxx.sqrt();
         assert!((u.sd[1] / se_b - 1.0).abs() < 0.1, "{} vs {se_b}", u.sd[1]);
@@ -321,7 +328,14 @@ mod tests {
         let resid: Vec<f64> = (0..n)
             .map(|i| 0.01 * ((i * 7919) % 13) as f64 - 0.06)
             .collect();
-        let u = analyse(&jac, &resid, std::slice::from_ref(&(0..n)), &[false; 3], 1, false);
+        let u = analyse(
+            &jac,
+            &resid,
+            std::slice::from_ref(&(0..n)),
+            &[false; 3],
+            1,
+            false,
+        );
         assert_eq!(u.unidentified.len(), 1, "{:?}", u.unidentified);
         let names: Vec<usize> = u.unidentified[0].parameters.iter().map(|p| p.0).collect();
         assert!(names.contains(&1) && names.contains(&2) && !names.contains(&0));
@@ -337,7 +351,14 @@ mod tests {
         let resid: Vec<f64> = (0..n)
             .map(|i| 0.1 * (i as f64 * std::f64::consts::TAU / 400.0).sin())
             .collect();
-        let u = analyse(&jac, &resid, std::slice::from_ref(&(0..n)), &[false], 1, false);
+        let u = analyse(
+            &jac,
+            &resid,
+            std::slice::from_ref(&(0..n)),
+            &[false],
+            1,
+            false,
+        );
         let (lo, hi) = u.bootstrap[0].unwrap();
         assert!(
             (hi - lo) / 2.0 > 3.0 * 1.96 * u.sd[0],
