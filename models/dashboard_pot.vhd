@@ -4,7 +4,10 @@
 -- Conservation (electrical): branch wiper -> electrical_ref, voltage v across,
 -- current i through (an ideal source: the IC's REF input draws no current).
 --   v = setting,  setting = v_set0, and v_set0 + dv_step from t_step on
--- The step is a discontinuity of v: break on setting.
+-- The step is a discontinuity of v: break on setting.  With tr_step > 0 the
+-- driver turns the dial slowly: v follows setting'ramp(tr_step), a linear ramp
+-- from t_step to t_step + tr_step (models/fit/tb_servo_fit.vhd uses it to make
+-- the servo brake and restart).
 
 library ieee;
 use ieee.electrical_systems.all;
@@ -13,7 +16,8 @@ entity dashboard_pot is
   generic (
     v_set0  : real := 1.0;   -- [V] reference at t = 0; the tracking run's first set point
     t_step  : real := -1.0;  -- [s] time at which the driver turns the dial; < 0: never
-    dv_step : real := 1.0    -- [V] change of the reference at t_step; the paper's +1 V (Figure 6)
+    dv_step : real := 1.0;   -- [V] change of the reference at t_step; the paper's +1 V (Figure 6)
+    tr_step : real := 0.0    -- [s] duration of the change; 0: a step (the paper's Figure 6)
   );
   port (terminal wiper : electrical);
 end entity dashboard_pot;
@@ -22,7 +26,12 @@ architecture behavioral of dashboard_pot is
   quantity v across i through wiper to electrical_ref;
   signal setting : real := v_set0;  -- [V]
 begin
-  v == setting;
+  stepped : if tr_step <= 0.0 generate
+    v == setting;
+  end generate;
+  ramped : if tr_step > 0.0 generate
+    v == setting'ramp(tr_step);
+  end generate;
 
   break on setting;
 

@@ -91,7 +91,8 @@ entity headlight_system is
     -- dashboard_pot
     vref0             : real := 1.0;      -- [V] reference at t = 0 (dashboard_pot)
     t_ref_step        : real := -1.0;     -- [s] time of the reference step; < 0: none (dashboard_pot)
-    dv_ref            : real := 1.0       -- [V] reference step (dashboard_pot)
+    dv_ref            : real := 1.0;      -- [V] reference step (dashboard_pot)
+    tr_ref            : real := 0.0       -- [s] duration of the reference change; 0: a step (dashboard_pot)
   );
   port (
     terminal bat, supply, conn1, conn2, ref, fb : electrical;
@@ -157,6 +158,6 @@ begin
     port map (slider => rack, wiper => fb);
 
   u_dashboard_pot : entity work.dashboard_pot(behavioral)
-    generic map (v_set0 => vref0, t_step => t_ref_step, dv_step => dv_ref)
+    generic map (v_set0 => vref0, t_step => t_ref_step, dv_step => dv_ref, tr_step => tr_ref)
     port map (wiper => ref);
 end architecture structural;

@@ -164,6 +164,8 @@ fn the_repository_testbenches_pass_by_default() {
         .stdout(contains("test tb_overvoltage ... ok"))
         .stdout(contains("test tb_rc ... ok"))
         .stdout(contains("test tb_tracking ... ok"))
+        .stdout(contains("test tb_motor_bench ... ok"))
+        .stdout(contains("test tb_servo_fit ... ok"))
         .stdout(contains("test tb_rlc_elimination ... ok"))
         .stdout(contains("test tb_configuration_specification ... ok"))
         .stdout(contains("test tb_configuration_declaration ... ok"))
@@ -276,7 +278,7 @@ fn the_repository_testbenches_pass_by_default() {
         // tests/noise/: so do the noise models (noise sources are zero there too).
         .stdout(contains("test tb_rc_thermal ... ok"))
         .stdout(contains("test tb_divider ... ok"))
-        .stdout(contains("154 passed, 0 failed"));
+        .stdout(contains("155 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it
