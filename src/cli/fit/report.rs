@@ -77,10 +77,22 @@ pub fn warnings(f: &Fitted, c: &Context) -> Vec<String> {
         } else {
             format!(
                 "{} most in `{best}`: a longer or less noisy capture of that experiment, or one where {}, would determine {}; or fix {} with -g",
-                if names.len() == 1 { "it shows" } else { "they show" },
-                if names.len() == 1 { "it acts more strongly" } else { "they act differently" },
+                if names.len() == 1 {
+                    "it shows"
+                } else {
+                    "they show"
+                },
+                if names.len() == 1 {
+                    "it acts more strongly"
+                } else {
+                    "they act differently"
+                },
                 if names.len() == 1 { "it" } else { "them" },
-                if names.len() == 1 { "it" } else { "one of them" }
+                if names.len() == 1 {
+                    "it"
+                } else {
+                    "one of them"
+                }
             )
         };
         w.push(format!("{what}; {hint}"));
