@@ -17,24 +17,18 @@ mod simulate;
 use std::path::PathBuf;
 use std::time::Instant;
 
-use clap::{Args, ValueEnum};
+use clap::Args;
 use miette::Report;
 
 use crate::capture::ReadOptions;
 use crate::cli::compile::{DesignArgs, Prepared, prepare};
+use crate::cli::extract::PlotFormat;
 use crate::cli::render::render_located;
 use crate::fit::{Fit, FreeParam, Series, Settings};
 
 pub use error::FitCliError;
 use experiment::{Match, Measured};
 use simulate::{DesignSimulator, Setup};
-
-/// Picture format of `--plot`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum PlotFormat {
-    Svg,
-    Png,
-}
 
 /// Arguments of `vams fit`.
 #[derive(Debug, Args)]

@@ -111,17 +111,19 @@ pub fn analyse(
             ((2.0 * tau).ceil() as usize).clamp(1, (s.len() / 4).max(1))
         })
         .collect();
+    // Nothing free, or no eigen-decomposition: no interval for anyone.
+    let undetermined = || Uncertainty {
+        dof,
+        s2,
+        sd: vec![f64::NAN; n],
+        t95,
+        bootstrap: vec![None; n],
+        correlation: vec![vec![f64::NAN; n]; n],
+        unidentified: Vec::new(),
+        block_lengths: block_lengths.clone(),
+    };
     if m == 0 {
-        return Uncertainty {
-            dof,
-            s2,
-            sd,
-            t95,
-            bootstrap,
-            correlation,
-            unidentified,
-            block_lengths,
-        };
+        return undetermined();
     }
     let ja = Mat::<f64>::from_fn(rows, m, |i, j| jac[(i, active[j])]);
     let jtj = ja.transpose() * &ja;
@@ -131,16 +133,7 @@ pub fn analyse(
     // determined. Those directions are dropped from the inverse (a pseudo-inverse), so the
     // determined parameters still get their intervals.
     let Ok(eig) = fisher.self_adjoint_eigen(faer::Side::Lower) else {
-        return Uncertainty {
-            dof,
-            s2,
-            sd,
-            t95,
-            bootstrap,
-            correlation,
-            unidentified,
-            block_lengths,
-        };
+        return undetermined();
     };
     let lambda: Vec<f64> = (0..m).map(|i| eig.S().column_vector()[i]).collect();
     let u = eig.U();
