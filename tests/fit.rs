@@ -287,3 +287,41 @@ fn plots_and_params_are_written() {
     }
     assert!(stderr.contains("wrote"), "{stderr}");
 }
+
+#[test]
+fn a_capture_aligned_by_its_trigger() {
+    let dir = tempfile::tempdir().unwrap();
+    let charge = keysight(dir.path(), 0.005, 11);
+    // vc crosses 2.5 V at tau ln 2 after the switch (1 ms in simulation time).
+    let at = 1e-3 + R * C * std::f64::consts::LN_2;
+    let out = vams()
+        .arg("fit")
+        .arg(RC)
+        .args([
+            "--top", "tb_rc", "--json", "-g", "r=2.2e3", "--match", "vc=1",
+        ])
+        .args(["--free", "c=1e-6"])
+        .arg("--measured")
+        .arg(format!("{}:mode=0,trigger=1@2.5,at={at}", charge.display()))
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let (c, _, _) = value(&j, "c");
+    // The trigger is read from noisy samples: a few microseconds of alignment, 1 % of tau.
+    assert!((c - C).abs() / C < 0.02, "c = {c}");
+    // A level the capture never reaches is an error naming it.
+    vams()
+        .arg("fit")
+        .arg(RC)
+        .args(["--top", "tb_rc", "--match", "vc=1", "--free", "c=1e-6"])
+        .arg("--measured")
+        .arg(format!("{}:mode=0,trigger=1@9", charge.display()))
+        .assert()
+        .code(1)
+        .stderr(contains("never crosses 9 upwards"));
+}

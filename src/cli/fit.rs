@@ -39,8 +39,10 @@ pub struct FitArgs {
     #[command(flatten)]
     pub design: DesignArgs,
     /// A capture and its experiment: `FILE` or `FILE:KEY=VALUE,...` with `top=ENTITY`,
-    /// `shift=TIME` (added to the capture's times; default: its first sample at time 0),
-    /// `from=TIME`, `to=TIME` (capture times compared), and generics of that experiment.
+    /// `shift=TIME` (added to the capture's times; default: its first sample at time 0) or
+    /// `trigger=CHANNEL@LEVEL` [`edge=falling`] [`at=TIME`] (the first crossing placed at
+    /// `at`, default 0), `from=TIME`, `to=TIME` (capture times compared), and generics of
+    /// that experiment.
     #[arg(long, value_name = "FILE[:K=V,...]", required = true)]
     pub measured: Vec<String>,
     /// A generic to estimate, with its first guess and optional bounds (repeatable):

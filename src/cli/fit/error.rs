@@ -12,7 +12,7 @@ pub enum FitCliError {
     #[diagnostic(
         code(vams::fit::measured),
         help(
-            "write FILE or FILE:KEY=VALUE,...; keys: `top=ENTITY`, `shift=TIME` (added to the capture's times), `from=TIME`, `to=TIME` (the part of the capture compared), any other is a generic of that experiment, e.g. `coast.csv:experiment=3,shift=2 ms`"
+            "write FILE or FILE:KEY=VALUE,...; keys: `top=ENTITY`, `shift=TIME` (added to the capture's times) or `trigger=CHANNEL@LEVEL` with `edge=falling` and `at=TIME`, `from=TIME`, `to=TIME` (the part of the capture compared), any other is a generic of that experiment, e.g. `coast.csv:experiment=3,shift=2 ms`"
         )
     )]
     Measured { arg: String, why: String },

@@ -21,6 +21,11 @@ pub struct Measured {
     /// The part of the capture compared (capture time).
     pub from: Option<f64>,
     pub to: Option<f64>,
+    /// Align by a trigger instead: the first crossing of `level` by the channel (rising
+    /// unless `edge=falling`) is placed at simulation time `at` (default 0).
+    pub trigger: Option<(String, f64)>,
+    pub rising: bool,
+    pub at: Option<f64>,
     /// Generics of this experiment.
     pub generics: Vec<(String, String)>,
 }
@@ -59,6 +64,9 @@ impl Measured {
             shift: None,
             from: None,
             to: None,
+            trigger: None,
+            rising: true,
+            at: None,
             generics: Vec::new(),
         };
         for kv in settings.split(',').filter(|s| !s.trim().is_empty()) {
@@ -79,8 +87,36 @@ impl Measured {
                 "shift" => m.shift = Some(time(v)?),
                 "from" => m.from = Some(time(v)?),
                 "to" => m.to = Some(time(v)?),
+                "at" => m.at = Some(time(v)?),
+                "trigger" => {
+                    let parsed = v.rsplit_once('@').and_then(|(ch, level)| {
+                        let level: f64 = level.trim().parse().ok()?;
+                        (!ch.trim().is_empty() && level.is_finite())
+                            .then(|| (ch.trim().to_string(), level))
+                    });
+                    m.trigger = Some(parsed.ok_or_else(|| {
+                        bad(format!(
+                            "`trigger={v}`: expected CHANNEL@LEVEL, e.g. `trigger=CH1@2.5`"
+                        ))
+                    })?);
+                }
+                "edge" => {
+                    m.rising = match v.to_ascii_lowercase().as_str() {
+                        "rising" => true,
+                        "falling" => false,
+                        _ => return Err(bad(format!("`edge={v}`: expected rising or falling"))),
+                    }
+                }
                 _ => m.generics.push((k, v.to_string())),
             }
+        }
+        if m.trigger.is_some() && m.shift.is_some() {
+            return Err(bad("give `shift=` or `trigger=`, not both".into()));
+        }
+        if m.trigger.is_none() && (m.at.is_some() || !m.rising) {
+            return Err(bad(
+                "`at=` and `edge=` go with `trigger=CHANNEL@LEVEL`".into()
+            ));
         }
         if let (Some(a), Some(b)) = (m.from, m.to)
             && a >= b
@@ -159,7 +195,23 @@ pub fn load(m: &Measured, read: &ReadOptions, points: usize) -> Result<Loaded, m
         }
         .into());
     };
-    let shift = m.shift.unwrap_or(-first);
+    let shift = match &m.trigger {
+        Some((channel, level)) => {
+            capture.channel_or_error(channel)?;
+            let Some(t) = capture.trigger_time(channel, *level, m.rising) else {
+                return Err(FitCliError::TooShort {
+                    path: m.path.clone(),
+                    why: format!(
+                        "`{channel}` never crosses {level} {}: no trigger to align by",
+                        if m.rising { "upwards" } else { "downwards" }
+                    ),
+                }
+                .into());
+            };
+            m.at.unwrap_or(0.0) - t
+        }
+        None => m.shift.unwrap_or(-first),
+    };
     let widths = crate::fit::series::block_widths(&capture.time, points);
     let sample_interval = crate::fit::series::sample_interval(&capture.time);
     let capture = capture.shifted(shift).decimated(points);
@@ -267,6 +319,17 @@ mod tests {
         assert!(Measured::parse(":a=1").is_err());
         assert!(Measured::parse("x.csv:shift=abc").is_err());
         assert!(Measured::parse("x.csv:from=2ms,to=1ms").is_err());
+        let m = Measured::parse("x.csv:trigger=Channel A@2.5,edge=falling,at=1ms").unwrap();
+        assert_eq!(m.trigger, Some(("Channel A".to_string(), 2.5)));
+        assert!(!m.rising && (m.at.unwrap() - 1e-3).abs() < 1e-15);
+        for bad in [
+            "x.csv:trigger=CH1",
+            "x.csv:trigger=CH1@2.5,shift=1ms",
+            "x.csv:at=1ms",
+            "x.csv:trigger=CH1@1,edge=up",
+        ] {
+            assert!(Measured::parse(bad).is_err(), "{bad}");
+        }
     }
 
     #[test]
