@@ -167,6 +167,29 @@ pub fn prepare_loaded(
     })
 }
 
+/// The help for `name` when `design` records no quantity or signal of that name (a sweep's
+/// metric column, a fit's matched quantity): the closest name, or how names are written;
+/// `None` when it has one.
+pub fn unknown_probe_help(design: &Design, name: &str) -> Option<String> {
+    let names = design
+        .quantities
+        .iter()
+        .map(|q| q.name.as_str())
+        .chain(design.signals.iter().map(|s| s.name.as_str()));
+    if names.clone().any(|n| n == name) {
+        return None;
+    }
+    let closest = names
+        .map(|n| (strsim::levenshtein(name, n), n))
+        .min_by_key(|&(d, _)| d);
+    Some(match closest {
+        Some((d, n)) if d <= name.len().max(3) / 2 + 1 => format!("did you mean `{n}`?"),
+        _ => "columns are quantities and signals by their hierarchical name, e.g. \
+              `dut.u_motor.i` (`vams run` records them all)"
+            .to_string(),
+    })
+}
+
 /// Loads, parses and elaborates; every diagnostic is printed before the summary error.
 pub fn compile(args: &DesignArgs) -> Result<Compiled, Report> {
     let prepared = prepare(args)?;

@@ -101,10 +101,7 @@ pub fn run(args: &ExtractArgs) -> miette::Result<()> {
     };
     let started = std::time::Instant::now();
     let x = extract_files([a, b, c, d], &cols, args.commutations)?;
-    let jobs = args.jobs.map_or_else(
-        || std::thread::available_parallelism().map_or(1, |n| n.get()),
-        |j| j as usize,
-    );
+    let jobs = crate::cli::parallel::threads(args.jobs);
     let fit = motor::fit(&x.prepared, &x.paper, args.points as usize, jobs, 1)?;
     let seconds = started.elapsed().as_secs_f64();
     if args.json {

@@ -21,7 +21,7 @@ use clap::Args;
 use miette::Report;
 
 use crate::capture::ReadOptions;
-use crate::cli::compile::{DesignArgs, Prepared, prepare};
+use crate::cli::compile::{DesignArgs, Prepared, prepare, unknown_probe_help};
 use crate::cli::extract::PlotFormat;
 use crate::cli::render::render_located;
 use crate::fit::{Fit, FreeParam, Series, Settings};
@@ -169,21 +169,12 @@ fn load_series(p: &Parsed, points: usize) -> Result<Vec<Series>, Report> {
                 .iter()
                 .flat_map(|l| l.capture.channels.iter().map(|c| c.name.clone()))
                 .collect();
-            let closest = available
-                .iter()
-                .map(|n| {
-                    (
-                        strsim::levenshtein(&mt.column.to_lowercase(), &n.to_lowercase()),
-                        n,
-                    )
-                })
-                .min_by_key(|&(d, _)| d);
-            let help = match closest {
-                Some((d, n)) if d <= mt.column.len().max(3) / 2 + 1 => {
-                    format!("did you mean `{n}`?")
-                }
-                _ => format!("the captures' columns are {}", available.join(", ")),
-            };
+            // Suggested by the rule that finds channels (`1` is `CH1`, `ch3` is not `ch1`).
+            let help =
+                match crate::capture::closest(&mt.column, available.iter().map(String::as_str)) {
+                    Some(n) => format!("did you mean `{n}`?"),
+                    None => format!("the captures' columns are {}", available.join(", ")),
+                };
             return Err(FitCliError::NoColumn {
                 quantity: mt.quantity.clone(),
                 column: mt.column.clone(),
@@ -215,23 +206,9 @@ fn check_design(sim: &DesignSimulator, p: &Parsed) -> Result<(), Report> {
                 .into());
             }
         };
-        let names: Vec<&str> = design
-            .quantities
-            .iter()
-            .map(|q| q.name.as_str())
-            .chain(design.signals.iter().map(|s| s.name.as_str()))
-            .collect();
         for probe in &setup.probes {
-            if names.contains(&probe.as_str()) {
+            let Some(help) = unknown_probe_help(&design, probe) else {
                 continue;
-            }
-            let closest = names
-                .iter()
-                .map(|n| (strsim::levenshtein(probe, n), *n))
-                .min_by_key(|&(d, _)| d);
-            let help = match closest {
-                Some((d, n)) if d <= probe.len().max(3) / 2 + 1 => format!("did you mean `{n}`?"),
-                _ => "name a quantity or signal by its hierarchical name, e.g. `dut.u_motor.i` (`vams run` records them all)".to_string(),
             };
             return Err(FitCliError::NoQuantity {
                 top: setup.top.clone(),
@@ -263,10 +240,7 @@ pub fn run(args: &FitArgs) -> Result<(), Report> {
             )
         })
         .collect();
-    let jobs = args.jobs.map_or_else(
-        || std::thread::available_parallelism().map_or(1, |n| n.get()),
-        |j| j as usize,
-    );
+    let jobs = crate::cli::parallel::threads(args.jobs);
     let sim = DesignSimulator {
         prepared: &prepared,
         setups,

@@ -17,6 +17,14 @@ fn panic_message(payload: &(dyn std::any::Any + Send)) -> String {
     }
 }
 
+/// The threads of a command's `--jobs N`: N, or every core of the machine.
+pub fn threads(jobs: Option<u32>) -> usize {
+    jobs.map_or_else(
+        || std::thread::available_parallelism().map_or(1, |n| n.get()),
+        |j| j as usize,
+    )
+}
+
 /// Runs `work` on every item with up to `jobs` threads; calls `done(index, result)` in index
 /// order on the calling thread.
 pub fn run_in_order<T: Sync, R: Send>(

@@ -55,6 +55,30 @@ pub fn render_sim_error(error: &SimError, sources: &SourceMap) -> String {
     out
 }
 
+/// `message at file:line:col` of a located diagnostic, on one line (a table cell, a fit's
+/// failed trial); the message alone where it has no span in `sources`.
+pub fn located_line<D: Located>(d: &D, sources: &SourceMap) -> String {
+    let span = d.primary_span();
+    if span == Default::default() || span.file.0 as usize >= sources.len() {
+        return d.to_string();
+    }
+    let (line, col) = sources.line_col(span);
+    format!("{d} at {}:{line}:{col}", sources.file(span.file).name)
+}
+
+/// A failed simulation on one line: the first of the analog system's errors or the error
+/// itself, located, and the last time recorded (`last`) where there is one.
+pub fn sim_error_line(error: &SimError, last: Option<f64>, sources: &SourceMap) -> String {
+    let message = match error {
+        SimError::Analog { errors } if !errors.is_empty() => located_line(&errors[0], sources),
+        _ => located_line(error, sources),
+    };
+    let at = last
+        .map(|t| format!(" (t = {})", format_time(t)))
+        .unwrap_or_default();
+    format!("{message}{at}")
+}
+
 /// The lower-case name of a severity, as VHDL spells it.
 pub fn severity_name(severity: Severity) -> &'static str {
     match severity {

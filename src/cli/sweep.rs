@@ -30,7 +30,7 @@ use thiserror::Error;
 use crate::elaborate::ElabError;
 use crate::output::sweep_plot::{EnvelopeBuilder, Histogram, TornadoBar};
 
-use super::compile::{DesignArgs, Prepared, prepare};
+use super::compile::{DesignArgs, Prepared, prepare, unknown_probe_help};
 use super::error::CliError;
 use super::load::LibrarySources;
 use super::render::render_located;
@@ -258,10 +258,7 @@ pub fn run(args: &SweepArgs) -> Result<(), Report> {
     let mut rows = kept;
     let mut write_failure = None;
     let bar = progress_bar(todo.len());
-    let jobs = args.jobs.map_or_else(
-        || std::thread::available_parallelism().map_or(1, |n| n.get()),
-        |j| j as usize,
-    );
+    let jobs = crate::cli::parallel::threads(args.jobs);
     let plan = &spec.plan;
     let mut failures = 0;
     // Once a run is interrupted, later ones are not recorded either (a few may have finished
@@ -484,12 +481,6 @@ fn check_parameters(spec: &Spec, prepared: &Prepared) -> Result<(), Report> {
 /// Every column a metric or the envelope reads must be a quantity or signal of the design
 /// (of run 0's): a misspelt name is a spec error at its line, not a failure of every run.
 fn check_columns(spec: &Spec, design: &crate::design::Design) -> Result<(), Report> {
-    let names: Vec<&str> = design
-        .quantities
-        .iter()
-        .map(|q| q.name.as_str())
-        .chain(design.signals.iter().map(|s| s.name.as_str()))
-        .collect();
     let wanted = spec
         .metrics
         .iter()
@@ -502,18 +493,8 @@ fn check_columns(spec: &Spec, design: &crate::design::Design) -> Result<(), Repo
                 .zip(spec.envelope_spans.iter().copied()),
         );
     for (column, span) in wanted {
-        if names.contains(&column.as_str()) {
+        let Some(help) = unknown_probe_help(design, &column) else {
             continue;
-        }
-        let closest = names
-            .iter()
-            .map(|n| (strsim::levenshtein(&column, n), *n))
-            .min_by_key(|&(d, _)| d);
-        let help = match closest {
-            Some((d, n)) if d <= column.len().max(3) / 2 + 1 => format!("did you mean `{n}`?"),
-            _ => "columns are quantities and signals by their hierarchical name, e.g. \
-                  `dut.u_motor.i` (`vams run` records them all)"
-                .to_string(),
         };
         let at = spec::Locator::new(&spec.path.display().to_string(), spec.source.inner());
         return Err(at

@@ -291,10 +291,7 @@ pub fn run(args: &TestArgs) -> Result<(), Report> {
         .cloned()
         .collect();
     let analysis = analyse(&loaded.sources, &files);
-    let jobs = args
-        .jobs
-        .map(|j| j as usize)
-        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
+    let jobs = crate::cli::parallel::threads(args.jobs);
     println!(
         "running {} testbench(es) on {jobs} thread(s)",
         benches.len()

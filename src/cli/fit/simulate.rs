@@ -6,7 +6,7 @@
 
 use crate::cli::compile::Prepared;
 use crate::cli::parallel::run_in_order;
-use crate::diagnostics::Located;
+use crate::cli::render::{located_line, sim_error_line};
 use crate::fit::series::block_mean;
 use crate::fit::{Series, Simulate};
 use crate::kernel::{Outcome, SimOptions, simulate_into};
@@ -66,17 +66,6 @@ pub struct DesignSimulator<'a> {
     pub jobs: usize,
 }
 
-/// `message at file:line:col` of a located diagnostic.
-fn located<D: Located>(d: &D, prepared: &Prepared) -> String {
-    let sources = &prepared.loaded.sources;
-    let span = d.primary_span();
-    if span == Default::default() || span.file.0 as usize >= sources.len() {
-        return d.to_string();
-    }
-    let (line, col) = sources.line_col(span);
-    format!("{d} at {}:{line}:{col}", sources.file(span.file).name)
-}
-
 impl DesignSimulator<'_> {
     /// The generics of a job: the experiment's, then the free values (which win).
     pub fn generics(&self, e: usize, values: &[f64]) -> Vec<(String, String)> {
@@ -92,15 +81,16 @@ impl DesignSimulator<'_> {
     }
 
     /// Simulates experiment `e` with the free values `values`.
-    pub fn run(&self, e: usize, values: &[f64]) -> Result<(Waveforms, f64), String> {
+    pub fn run(&self, e: usize, values: &[f64]) -> Result<Waveforms, String> {
         let setup = &self.setups[e];
+        let sources = &self.prepared.loaded.sources;
         let design = self
             .prepared
             .try_elaborate_top(&setup.top, &self.generics(e, values))
             .map_err(|errors| {
                 errors
                     .first()
-                    .map(|err| format!("elaboration: {}", located(err, self.prepared)))
+                    .map(|err| format!("elaboration: {}", located_line(err, sources)))
                     .unwrap_or_default()
             })?;
         let sim = SimOptions {
@@ -115,31 +105,20 @@ impl DesignSimulator<'_> {
             cancel: None,
         };
         let mut waves = Waveforms::default();
-        let end = simulate_into(&design, &sim, &mut waves, &mut |_| {}).map_err(|err| {
-            let at = waves
-                .times
-                .last()
-                .map(|t| format!(" (t = {})", crate::cli::time::format_time(*t)))
-                .unwrap_or_default();
-            match &err {
-                crate::kernel::SimError::Analog { errors } if !errors.is_empty() => {
-                    format!("{}{at}", located(&errors[0], self.prepared))
-                }
-                _ => format!("{}{at}", located(&err, self.prepared)),
-            }
-        })?;
+        let end = simulate_into(&design, &sim, &mut waves, &mut |_| {})
+            .map_err(|err| sim_error_line(&err, waves.times.last().copied(), sources))?;
         if let Outcome::Failed { time } = end.outcome {
             return Err(format!(
                 "an assertion of severity failure at t = {}",
                 crate::cli::time::format_time(time)
             ));
         }
-        Ok((waves, setup.stop))
+        Ok(waves)
     }
 
     fn sample(&self, e: usize, values: &[f64]) -> Result<Vec<Vec<f64>>, String> {
         let setup = &self.setups[e];
-        let (waves, _) = self.run(e, values)?;
+        let waves = self.run(e, values)?;
         setup
             .probes
             .iter()

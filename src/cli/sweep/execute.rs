@@ -5,9 +5,8 @@
 //! with its message, never a stopped sweep.
 
 use crate::cli::compile::Prepared;
-use crate::diagnostics::Located;
+use crate::cli::render::{located_line, sim_error_line};
 use crate::kernel::{Cancel, Outcome, Severity, SimError, SimOptions, simulate_into};
-use crate::source::SourceMap;
 use crate::waveform::{ColumnKind, Header, SinkError, WaveformSink, Waveforms};
 
 use super::metric::Metric;
@@ -53,16 +52,6 @@ pub struct Done {
     pub row: Row,
     /// Per envelope column, its trace (`None` where the run has no such column).
     pub traces: Vec<Option<Trace>>,
-}
-
-/// `message at file:line:col` of a located diagnostic.
-fn located<D: Located>(d: &D, sources: &SourceMap) -> String {
-    let span = d.primary_span();
-    if span == Default::default() || span.file.0 as usize >= sources.len() {
-        return d.to_string();
-    }
-    let (line, col) = sources.line_col(span);
-    format!("{d} at {}:{line}:{col}", sources.file(span.file).name)
 }
 
 impl Job<'_> {
@@ -112,7 +101,7 @@ impl Job<'_> {
             Err(errors) => {
                 let first = errors
                     .first()
-                    .map(|e| located(e, &loaded.sources))
+                    .map(|e| located_line(e, &loaded.sources))
                     .unwrap_or_default();
                 return Some(failed(format!("elaboration: {first}")));
             }
@@ -141,18 +130,8 @@ impl Job<'_> {
             Ok(end) => end,
             Err(SimError::Interrupted { .. }) => return None,
             Err(e) => {
-                let message = match &e {
-                    SimError::Analog { errors } if !errors.is_empty() => {
-                        located(&errors[0], &loaded.sources)
-                    }
-                    _ => located(&e, &loaded.sources),
-                };
-                let last = waves
-                    .times
-                    .last()
-                    .map(|t| format!(" (t = {})", crate::cli::time::format_time(*t)))
-                    .unwrap_or_default();
-                return Some(failed(format!("{message}{last}")));
+                let message = sim_error_line(&e, waves.times.last().copied(), &loaded.sources);
+                return Some(failed(message));
             }
         };
         if let Outcome::Failed { time } = end.outcome {
