@@ -171,6 +171,26 @@ impl<S: Simulate> Weighted<'_, S> {
     }
 }
 
+impl<S: Simulate> Weighted<'_, S> {
+    /// The simulated series behind a weighted residual (`measured + r sigma`): what a point
+    /// the iteration evaluated gave, without simulating it again.
+    fn unweigh(&self, residual: &[f64]) -> Vec<Vec<f64>> {
+        let mut rows = residual.iter();
+        self.fit
+            .series
+            .iter()
+            .zip(&self.sigma)
+            .map(|(s, sigma)| {
+                s.measured
+                    .iter()
+                    .zip(rows.by_ref())
+                    .map(|(m, r)| m + r * sigma)
+                    .collect()
+            })
+            .collect()
+    }
+}
+
 impl<S: Simulate> lm::Residuals for Weighted<'_, S> {
     type Error = S::Error;
     fn evaluate(&self, points: &[Vec<f64>]) -> Vec<Result<Vec<f64>, S::Error>> {
@@ -234,15 +254,9 @@ impl<S: Simulate> Fit<'_, S> {
         };
         let pass1 =
             lm::minimise(&first, &x0, &bounds, &self.settings).map_err(|e| self.lm_error(e))?;
-        // Reweigh by each series' own misfit; evaluate the start for its RMS on the way.
-        let points = [x0.clone(), pass1.x.clone()];
-        let mut sims = first.simulate(&points).into_iter();
-        let start_sims = sims.next().and_then(Result::ok);
-        let pass1_sims = sims
-            .next()
-            .and_then(Result::ok)
-            .ok_or(FitError::NotFinite)?;
-        let rms1 = rms_per_series(self.series, &pass1_sims);
+        // Reweigh by each series' own misfit.
+        let rms_start = rms_per_series(self.series, &first.unweigh(&pass1.start_residual));
+        let rms1 = rms_per_series(self.series, &first.unweigh(&pass1.residual));
         // Each series weighs by its own misfit (a series the model cannot follow to its noise,
         // a ripple the model lacks, weighs as much as it deserves). Weighing by the misfit's
         // correlation time as well was tried: on the motor's captures it let a capture with
@@ -260,17 +274,8 @@ impl<S: Simulate> Fit<'_, S> {
         let second = Weighted { fit: self, sigma };
         let pass2 = lm::minimise(&second, &pass1.x, &bounds, &self.settings)
             .map_err(|e| self.lm_error(e))?;
-        let end_sims = second
-            .simulate(std::slice::from_ref(&pass2.x))
-            .into_iter()
-            .next()
-            .and_then(Result::ok)
-            .ok_or(FitError::NotFinite)?;
+        let end_sims = second.unweigh(&pass2.residual);
         let rms = rms_per_series(self.series, &end_sims);
-        let rms_start = match &start_sims {
-            Some(s) => rms_per_series(self.series, s),
-            None => vec![f64::NAN; self.series.len()],
-        };
         let u = uncertainty::analyse(
             &pass2.jacobian,
             &pass2.residual,
@@ -346,7 +351,7 @@ impl<S: Simulate> Fit<'_, S> {
             series,
             uncertainty: u,
             iterations: pass1.iterations + pass2.iterations,
-            simulations: (pass1.evaluations + pass2.evaluations + 3) * self.experiments,
+            simulations: (pass1.evaluations + pass2.evaluations) * self.experiments,
             ending: pass2.ending,
         })
     }

@@ -74,7 +74,8 @@ pub struct Solution {
     pub cost: f64,
     /// The Jacobian of the residual at `x` (rows by coordinates).
     pub jacobian: Mat<f64>,
-    /// The cost at the start.
+    /// The weighted residual at the start, and its sum of squares.
+    pub start_residual: Vec<f64>,
     pub start_cost: f64,
     /// Jacobians computed.
     pub iterations: usize,
@@ -172,7 +173,7 @@ pub fn minimise<R: Residuals>(
         return Err(LmError::NotFinite);
     }
     let mut c = cost(&r);
-    let start_cost = c;
+    let (start_residual, start_cost) = (r.clone(), c);
     let mut lambda = 1e-3;
     let mut iterations = 0;
     let mut ending = Ending::IterationLimit;
@@ -271,6 +272,7 @@ pub fn minimise<R: Residuals>(
         residual: r,
         cost: c,
         jacobian: jac,
+        start_residual,
         start_cost,
         iterations,
         evaluations,
