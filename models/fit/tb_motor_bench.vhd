@@ -42,6 +42,9 @@ architecture bench of tb_motor_bench is
   quantity speed across shaft to rotational_v_ref;
   signal closed : boolean := t_on <= 0.0;
   constant r_open : real := 1.0e6;
+  -- At t = 0 the armature carries what the open switch lets through (the quiescent state
+  -- the captures' pre-trigger shows), or nothing when the switch is closed from the start.
+  constant i_start : real := real(boolean'pos(t_on > 0.0)) * vs / (r_open + r);
 begin
   vsup == vs;
   if closed use
@@ -82,7 +85,7 @@ begin
   end process;
 
   motor : entity work.dc_motor
-    generic map (r => r, l => l, kt => ke, ke => ke, d => d, j => j)
+    generic map (r => r, l => l, kt => ke, ke => ke, d => d, j => j, i0 => i_start)
     port map (p => p, n => electrical_ref, shaft => shaft);
 
   friction : entity work.constant_friction
