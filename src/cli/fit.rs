@@ -47,8 +47,16 @@ pub struct FitArgs {
     pub measured: Vec<String>,
     /// A generic to estimate, with its first guess and optional bounds (repeatable):
     /// `r=8`, `r=8:1:20`, `dut.u_motor.j=1e-6:1e-8:`.
-    #[arg(long = "free", value_name = "NAME=GUESS[:MIN:MAX]", required = true)]
+    #[arg(
+        long = "free",
+        value_name = "NAME=GUESS[:MIN:MAX]",
+        required_unless_present = "free_each"
+    )]
     pub free: Vec<String>,
+    /// A generic estimated separately for each capture (repeatable), e.g. the time each
+    /// capture's switch closed or its probe's offset: reported as `NAME@CAPTURE`.
+    #[arg(long = "free-each", value_name = "NAME=GUESS[:MIN:MAX]")]
+    pub free_each: Vec<String>,
     /// A quantity or signal of the testbench compared with a column of the captures
     /// (repeatable): `dut.i=current`.
     #[arg(long = "match", value_name = "QUANTITY=COLUMN", required = true)]
@@ -101,19 +109,28 @@ struct Parsed {
 }
 
 fn parse(args: &FitArgs) -> Result<Parsed, FitCliError> {
-    let mut params: Vec<FreeParam> = Vec::new();
-    for f in &args.free {
-        let p = FreeParam::parse(f).map_err(|e| FitCliError::Free(e.to_string()))?;
-        if params.iter().any(|q| q.name == p.name) {
-            return Err(FitCliError::Free(format!("`{}` is given twice", p.name)));
-        }
-        params.push(p);
-    }
     let measured = args
         .measured
         .iter()
         .map(|m| Measured::parse(m))
         .collect::<Result<Vec<_>, _>>()?;
+    let mut params: Vec<FreeParam> = Vec::new();
+    let each = args.free_each.iter().map(|f| (f, true));
+    for (f, each) in args.free.iter().map(|f| (f, false)).chain(each) {
+        let p = FreeParam::parse(f).map_err(|e| FitCliError::Free(e.to_string()))?;
+        if params.iter().any(|q| q.name == p.name) {
+            return Err(FitCliError::Free(format!("`{}` is given twice", p.name)));
+        }
+        if each {
+            // One copy per experiment, each set only in its own simulations.
+            params.extend((0..measured.len()).map(|e| FreeParam {
+                experiment: Some(e),
+                ..p.clone()
+            }));
+        } else {
+            params.push(p);
+        }
+    }
     for m in &measured {
         if let Some((name, _)) = m
             .generics

@@ -15,6 +15,31 @@ pub struct Context<'a> {
     pub seconds: f64,
 }
 
+impl Context<'_> {
+    /// How parameter `k` is named in reports: its generic, and for one of a single
+    /// experiment (`--free-each`) `@` and the capture's file stem (its number where two
+    /// captures share a stem).
+    pub fn label(&self, k: usize) -> String {
+        let p = &self.params[k];
+        let Some(e) = p.experiment else {
+            return p.name.clone();
+        };
+        let stem = |path: &str| {
+            std::path::Path::new(path)
+                .file_stem()
+                .map(|s| s.to_string_lossy().into_owned())
+                .unwrap_or_default()
+        };
+        let own = self.captures.get(e).map(|c| stem(c)).unwrap_or_default();
+        let shared = self.captures.iter().filter(|c| stem(c) == own).count() > 1;
+        if own.is_empty() || shared {
+            format!("{}@{}", p.name, e + 1)
+        } else {
+            format!("{}@{own}", p.name)
+        }
+    }
+}
+
 fn range(r: Option<(f64, f64)>, value: f64) -> String {
     match r {
         Some((lo, hi)) => {
@@ -33,11 +58,11 @@ fn range(r: Option<(f64, f64)>, value: f64) -> String {
 /// iteration that did not converge.
 pub fn warnings(f: &Fitted, c: &Context) -> Vec<String> {
     let mut w = Vec::new();
-    for (p, e) in c.params.iter().zip(&f.estimates) {
+    for (k, e) in f.estimates.iter().enumerate() {
         if e.at_bound {
             w.push(format!(
                 "`{}` ended at its bound ({}): the captures ask for a value beyond it; widen the bound if it is not physical, otherwise the other parameters absorb the difference",
-                p.name,
+                c.label(k),
                 format_number(e.value)
             ));
         }
@@ -46,7 +71,7 @@ pub fn warnings(f: &Fitted, c: &Context) -> Vec<String> {
         let names: Vec<String> = u
             .parameters
             .iter()
-            .map(|(k, _)| format!("`{}`", c.params[*k].name))
+            .map(|(k, _)| format!("`{}`", c.label(*k)))
             .collect();
         // Where the parameters involved show most: the capture that carries their effect.
         let mut influence = vec![0.0; c.captures.len()];
@@ -119,10 +144,10 @@ pub fn table(f: &Fitted, c: &Context) -> String {
         f.simulations,
         c.seconds
     );
-    let w = c
-        .params
+    let labels: Vec<String> = (0..c.params.len()).map(|k| c.label(k)).collect();
+    let w = labels
         .iter()
-        .map(|p| p.name.len())
+        .map(|l| l.chars().count())
         .max()
         .unwrap_or(4)
         .max(7);
@@ -131,11 +156,11 @@ pub fn table(f: &Fitted, c: &Context) -> String {
         "{:<w$}  {:<11}  {:<11}  {:<36}  95 % block bootstrap",
         "generic", "guess", "fitted", "95 % from the covariance"
     );
-    for (p, e) in c.params.iter().zip(&f.estimates) {
+    for ((p, e), label) in c.params.iter().zip(&f.estimates).zip(&labels) {
         let _ = writeln!(
             s,
             "{:<w$}  {:<11}  {:<11.5e}  {:<36}  {}{}",
-            p.name,
+            label,
             format_number(p.guess),
             e.value,
             range(e.interval, e.value),
@@ -147,12 +172,12 @@ pub fn table(f: &Fitted, c: &Context) -> String {
     if n > 1 {
         let _ = writeln!(s, "\ncorrelations");
         let _ = write!(s, "{:<w$}", "");
-        for p in c.params {
-            let _ = write!(s, " {:>8}", short(&p.name));
+        for label in &labels {
+            let _ = write!(s, " {:>8}", short(label));
         }
         let _ = writeln!(s);
-        for (a, p) in c.params.iter().enumerate() {
-            let _ = write!(s, "{:<w$}", p.name);
+        for (a, label) in labels.iter().enumerate() {
+            let _ = write!(s, "{:<w$}", label);
             for b in 0..n {
                 let v = f.uncertainty.correlation[a][b];
                 if v.is_finite() {
@@ -199,9 +224,9 @@ fn json_range(r: Option<(f64, f64)>) -> serde_json::Value {
 pub fn json(f: &Fitted, c: &Context) -> String {
     use serde_json::{Map, Value, json};
     let mut params = Map::new();
-    for (p, e) in c.params.iter().zip(&f.estimates) {
+    for (k, (p, e)) in c.params.iter().zip(&f.estimates).enumerate() {
         params.insert(
-            p.name.clone(),
+            c.label(k),
             json!({
                 "value": json_num(e.value),
                 "guess": json_num(p.guess),
@@ -234,7 +259,7 @@ pub fn json(f: &Fitted, c: &Context) -> String {
         .collect();
     let out = json!({
         "parameters": Value::Object(params),
-        "names": c.params.iter().map(|p| p.name.clone()).collect::<Vec<_>>(),
+        "names": (0..c.params.len()).map(|k| c.label(k)).collect::<Vec<_>>(),
         "correlation": correlation,
         "series": series,
         "iterations": f.iterations,
@@ -248,8 +273,10 @@ pub fn json(f: &Fitted, c: &Context) -> String {
 /// `name=value` lines for `vams run --params`.
 pub fn params_file(f: &Fitted, c: &Context) -> String {
     let mut s = String::from("# fitted by vams fit\n");
-    for (p, e) in c.params.iter().zip(&f.estimates) {
-        let _ = writeln!(s, "{}={}", p.name, format_number(e.value));
+    for (k, (p, e)) in c.params.iter().zip(&f.estimates).enumerate() {
+        // A value of one capture's experiment is no generic of the design: kept as a comment.
+        let comment = if p.experiment.is_some() { "# " } else { "" };
+        let _ = writeln!(s, "{comment}{}={}", c.label(k), format_number(e.value));
     }
     s
 }
