@@ -33,8 +33,15 @@ pub trait Simulate: Sync {
     /// Simulates each job (experiment, parameter values in the order of the free
     /// parameters), in parallel where it can; each result holds, per series of that
     /// experiment (in the order of [`Fit::series`]), the simulated values at its times.
-    fn simulate(&self, jobs: &[(usize, Vec<f64>)]) -> Vec<Result<Vec<Vec<f64>>, Self::Error>>;
+    fn simulate(&self, jobs: &[(usize, Vec<f64>)]) -> Vec<Result<Simulated, Self::Error>>;
 }
+
+/// One experiment's simulated series (see [`Simulate::simulate`]). `None` at a point the
+/// simulation cannot be compared at: a jump of the simulated trace (a switch) within a sample
+/// interval of it. A sampled jump tells only which side of it each sample lies on; compared
+/// there, a switching time's sensitivity would be the jump over the difference step whenever
+/// the step crosses a sample, and its interval as narrow as that step.
+pub type Simulated = Vec<Vec<Option<f64>>>;
 
 /// A fit to set up.
 pub struct Fit<'a, S: Simulate> {
@@ -120,7 +127,7 @@ struct Weighted<'a, S: Simulate> {
 
 impl<S: Simulate> Weighted<'_, S> {
     /// The simulated series at each point.
-    fn simulate(&self, points: &[Vec<f64>]) -> Vec<Result<Vec<Vec<f64>>, S::Error>> {
+    fn simulate(&self, points: &[Vec<f64>]) -> Vec<Result<Simulated, S::Error>> {
         let ne = self.fit.experiments;
         let jobs: Vec<(usize, Vec<f64>)> = points
             .iter()
@@ -156,15 +163,20 @@ impl<S: Simulate> Weighted<'_, S> {
             .collect()
     }
 
-    fn weigh(&self, sims: &[Vec<f64>]) -> Vec<f64> {
+    fn weigh(&self, sims: &[Vec<Option<f64>>]) -> Vec<f64> {
         let mut r = Vec::new();
         for (k, s) in self.fit.series.iter().enumerate() {
             let w = 1.0 / self.sigma[k];
             let sim = &sims[k];
             for (n, m) in s.measured.iter().enumerate() {
                 // A simulation that gave fewer values than the series has (it cannot, but a
-                // missing value must not shift the rows): NaN rejects the point.
-                r.push(sim.get(n).map_or(f64::NAN, |v| (v - m) * w));
+                // missing value must not shift the rows): NaN rejects the point. A point not
+                // compared keeps its row with a residual of zero.
+                r.push(match sim.get(n) {
+                    Some(Some(v)) => (v - m) * w,
+                    Some(None) => 0.0,
+                    None => f64::NAN,
+                });
             }
         }
         r
@@ -367,14 +379,14 @@ mod tests {
 
     impl Simulate for FirstOrder {
         type Error = String;
-        fn simulate(&self, jobs: &[(usize, Vec<f64>)]) -> Vec<Result<Vec<Vec<f64>>, String>> {
+        fn simulate(&self, jobs: &[(usize, Vec<f64>)]) -> Vec<Result<Simulated, String>> {
             jobs.iter()
                 .map(|(e, p)| {
                     let (k, tau) = (p[0], p[1]);
                     let height = [1.0, 2.0][*e];
                     Ok(vec![
                         (0..300)
-                            .map(|n| height * k * (1.0 - (-(n as f64) * 1e-3 / tau).exp()))
+                            .map(|n| Some(height * k * (1.0 - (-(n as f64) * 1e-3 / tau).exp())))
                             .collect(),
                     ])
                 })

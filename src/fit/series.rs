@@ -17,11 +17,9 @@ pub struct Series {
     /// block's duration: the simulation is then averaged over the same interval, so that the
     /// curvature of a fast edge inside a block does not bias the fit. Empty: point samples.
     pub width: Vec<f64>,
-    /// The interval of the samples the blocks were made of (0: unknown). Where a block holds
-    /// an edge of the simulation (a switch), the simulation is sampled at the block's own
-    /// sample times: the mean of samples across a jump is not the mean over time (half a
-    /// sample's worth of the jump, which a fitted switching time would absorb by moving half
-    /// a sample, and the inductance of a motor with it).
+    /// The interval of the samples the blocks were made of (0: unknown): a point or block
+    /// within one such interval of a jump of the simulation (a switch) is not compared
+    /// ([`near_jump`]).
     pub sample_interval: f64,
     /// The measurement's standard deviation where it is known (a value derived from another
     /// measurement, with its standard error): the series then weighs by it throughout,
@@ -87,39 +85,35 @@ pub fn sample_interval(time: &[f64]) -> f64 {
     }
 }
 
+/// Whether the trace jumps (two points at one time with different values: a switch, a
+/// `break`) within `[t - width/2 - dt, t + width/2 + dt]`: a block, or a point sample, within
+/// a sample interval `dt` of a jump. Such a point is not compared (see
+/// [`crate::fit::Simulated`]); the margin of a whole sample keeps a point out while a
+/// switching time moves by less than a sample around it, so that a difference step never
+/// moves the jump across a compared sample.
+pub fn near_jump(times: &[f64], values: &[f64], t: f64, width: f64, dt: f64) -> bool {
+    let reach = 0.5 * width.max(0.0) + dt.max(0.0);
+    let (a, b) = (t - reach, t + reach);
+    let from = times.partition_point(|x| *x < a).max(1);
+    let to = times.partition_point(|x| *x <= b).min(times.len());
+    (from..to).any(|k| {
+        times[k] == times[k - 1] && {
+            let (u, v) = (values[k - 1], values[k]);
+            (u - v).abs() > 1e-9 * u.abs().max(v.abs())
+        }
+    })
+}
+
 /// The mean of a trace over `[t - width/2, t + width/2]`: the exact integral of its
 /// piecewise-linear interpolant (the simulator's points are dense where the response curves,
 /// and an edge, two points at one time, is integrated as the step it is), or its value at `t`
 /// for a zero width. `hint` as for [`interpolate`].
-pub fn block_mean(
-    times: &[f64],
-    values: &[f64],
-    t: f64,
-    width: f64,
-    dt: f64,
-    hint: &mut usize,
-) -> f64 {
+pub fn block_mean(times: &[f64], values: &[f64], t: f64, width: f64, hint: &mut usize) -> f64 {
     if width <= 0.0 || times.len() < 2 {
         return interpolate(times, values, t, hint);
     }
     let (a, b) = (t - 0.5 * width, t + 0.5 * width);
     let n = times.len();
-    let samples = if dt > 0.0 { (width / dt).round() } else { 0.0 };
-    if samples >= 1.0 {
-        // An edge (two points at one time) inside the block: the samples' own mean.
-        let from = times.partition_point(|x| *x < a);
-        let to = times.partition_point(|x| *x <= b);
-        let edge = (from.max(1)..to.min(n)).any(|k| times[k] == times[k - 1]);
-        if edge {
-            let count = samples as usize;
-            let first = a + 0.5 * dt;
-            let mut h = from.saturating_sub(1);
-            let sum: f64 = (0..count)
-                .map(|j| interpolate(times, values, first + j as f64 * dt, &mut h))
-                .sum();
-            return sum / count as f64;
-        }
-    }
     // Before the first point and after the last, the trace holds its end values.
     let mut area = 0.0;
     if a < times[0] {
@@ -244,25 +238,34 @@ mod tests {
         let y = [0.0, 0.0, 1.0, 1.0, 1.0, 1.0];
         let mut hint = 0;
         // [0.5, 1.5]: half at 0, half at 1.
-        assert!((block_mean(&t, &y, 1.0, 1.0, 0.0, &mut hint) - 0.5).abs() < 1e-15);
+        assert!((block_mean(&t, &y, 1.0, 1.0, &mut hint) - 0.5).abs() < 1e-15);
         // Beyond the end the last value holds.
-        assert!((block_mean(&t, &y, 4.0, 1.0, 0.0, &mut hint) - 1.0).abs() < 1e-15);
+        assert!((block_mean(&t, &y, 4.0, 1.0, &mut hint) - 1.0).abs() < 1e-15);
         // A parabola sampled at whole seconds: its mean over [1.5, 2.5] exactly.
         let t = [0.0, 1.0, 2.0, 3.0, 4.0];
         let y = t.map(|t| t * t);
         let mut hint = 0;
         let exact = (2.5f64.powi(3) - 1.5f64.powi(3)) / 3.0;
-        assert!((block_mean(&t, &y, 2.0, 1.0, 0.0, &mut hint) - exact).abs() < 1e-12);
-        // With the samples' interval known, a block across the edge is the mean of its samples:
-        // [0.5, 1.5] sampled at 0.75, 1.25 (dt 0.5) reads 0 and 1.
-        let t2 = [0.0, 1.1, 1.1, 2.0];
-        let y2 = [0.0, 0.0, 1.0, 1.0];
-        let mut h2 = 0;
-        assert!((block_mean(&t2, &y2, 1.0, 1.0, 0.5, &mut h2) - 0.5).abs() < 1e-15);
-        // Over time it would be 0.4.
-        assert!((block_mean(&t2, &y2, 1.0, 1.0, 0.0, &mut h2) - 0.4).abs() < 1e-15);
+        assert!((block_mean(&t, &y, 2.0, 1.0, &mut hint) - exact).abs() < 1e-12);
         // A zero width is the value at the point.
-        assert!((block_mean(&t, &y, 2.5, 0.0, 0.0, &mut hint) - 6.25).abs() < 1e-12);
+        assert!((block_mean(&t, &y, 2.5, 0.0, &mut hint) - 6.25).abs() < 1e-12);
+    }
+
+    #[test]
+    fn points_within_a_sample_of_a_jump_are_near_it() {
+        // A jump at 1.1 (two points at one time), and a continuous kink at 3 (two points at
+        // one time with one value: a break that changes nothing of this trace).
+        let t = [0.0, 1.1, 1.1, 2.0, 3.0, 3.0, 4.0];
+        let y = [0.0, 0.0, 1.0, 1.0, 1.0, 1.0, 0.0];
+        // Points 0.5 apart: 1.0 and 1.5 are within a sample of the jump, 0.5 and 2.0 are not.
+        for (t0, near) in [(0.5, false), (1.0, true), (1.5, true), (2.0, false)] {
+            assert_eq!(near_jump(&t, &y, t0, 0.0, 0.5), near, "{t0}");
+        }
+        // The kink is no jump.
+        assert!(!near_jump(&t, &y, 3.0, 0.0, 0.5));
+        // A block [0, 0.8] reaches the jump with its margin of 0.5; [-0.5, 0.1] does not.
+        assert!(near_jump(&t, &y, 0.4, 0.8, 0.5));
+        assert!(!near_jump(&t, &y, -0.2, 0.6, 0.5));
     }
 
     #[test]

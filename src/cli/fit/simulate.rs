@@ -7,8 +7,8 @@
 use crate::cli::compile::Prepared;
 use crate::cli::parallel::run_in_order;
 use crate::cli::render::{located_line, sim_error_line};
-use crate::fit::series::block_mean;
-use crate::fit::{Series, Simulate};
+use crate::fit::series::{block_mean, near_jump};
+use crate::fit::{Series, Simulate, Simulated};
 use crate::kernel::{Outcome, SimOptions, simulate_into};
 use crate::output::csv::format_number;
 use crate::waveform::{ColumnKind, Waveforms};
@@ -116,7 +116,7 @@ impl DesignSimulator<'_> {
         Ok(waves)
     }
 
-    fn sample(&self, e: usize, values: &[f64]) -> Result<Vec<Vec<f64>>, String> {
+    fn sample(&self, e: usize, values: &[f64]) -> Result<Simulated, String> {
         let setup = &self.setups[e];
         let waves = self.run(e, values)?;
         setup
@@ -136,10 +136,11 @@ impl DesignSimulator<'_> {
                     .map(|(n, &t)| {
                         if held {
                             let k = waves.times.partition_point(|x| *x <= t);
-                            col.values[k.saturating_sub(1).min(col.values.len() - 1)]
+                            Some(col.values[k.saturating_sub(1).min(col.values.len() - 1)])
                         } else {
                             let w = widths.get(n).copied().unwrap_or(0.0);
-                            block_mean(&waves.times, &col.values, t, w, dt, &mut hint)
+                            (!near_jump(&waves.times, &col.values, t, w, dt))
+                                .then(|| block_mean(&waves.times, &col.values, t, w, &mut hint))
                         }
                     })
                     .collect())
@@ -151,8 +152,8 @@ impl DesignSimulator<'_> {
 impl Simulate for DesignSimulator<'_> {
     type Error = String;
 
-    fn simulate(&self, jobs: &[(usize, Vec<f64>)]) -> Vec<Result<Vec<Vec<f64>>, String>> {
-        let mut out: Vec<Result<Vec<Vec<f64>>, String>> = Vec::with_capacity(jobs.len());
+    fn simulate(&self, jobs: &[(usize, Vec<f64>)]) -> Vec<Result<Simulated, String>> {
+        let mut out: Vec<Result<Simulated, String>> = Vec::with_capacity(jobs.len());
         run_in_order(
             jobs,
             self.jobs,
