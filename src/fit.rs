@@ -25,6 +25,7 @@ pub use series::Series;
 pub use uncertainty::{Uncertainty, Unidentified};
 
 use std::ops::Range;
+use std::sync::Mutex;
 
 /// What runs the model: the caller's simulator.
 pub trait Simulate: Sync {
@@ -85,6 +86,8 @@ pub struct SeriesFit {
 #[derive(Debug, Clone)]
 pub struct Fitted {
     pub estimates: Vec<Estimate>,
+    /// The fitted offsets ([`Series::offset`]), by number.
+    pub offsets: Vec<Estimate>,
     pub series: Vec<SeriesFit>,
     pub uncertainty: Uncertainty,
     pub iterations: usize,
@@ -119,17 +122,55 @@ impl<E: std::fmt::Display> std::fmt::Display for FitError<E> {
     }
 }
 
-/// The weighted residual of a fit: [`lm::Residuals`] over the caller's simulator.
+/// The weighted residual of a fit: [`lm::Residuals`] over the caller's simulator. The
+/// optimiser's vector holds the parameters' coordinates, then the offsets' (in units of their
+/// series' magnitude, [`Fit::offset_units`]).
 struct Weighted<'a, S: Simulate> {
     fit: &'a Fit<'a, S>,
     sigma: Vec<f64>,
+    units: Vec<f64>,
+    /// The last point simulated alone (a trial step, the start) with its series: the
+    /// sensitivities to the offsets change no simulated value, and reuse it.
+    last: Mutex<Option<(Vec<f64>, Simulated)>>,
 }
 
-impl<S: Simulate> Weighted<'_, S> {
-    /// The simulated series at each point.
+impl<'a, S: Simulate> Weighted<'a, S> {
+    fn new(fit: &'a Fit<'a, S>, sigma: Vec<f64>) -> Self {
+        Weighted {
+            fit,
+            sigma,
+            units: fit.offset_units(),
+            last: Mutex::new(None),
+        }
+    }
+
+    /// The simulated series at each point: each distinct set of parameter values simulated
+    /// once (points that differ only in offsets share it).
     fn simulate(&self, points: &[Vec<f64>]) -> Vec<Result<Simulated, S::Error>> {
         let ne = self.fit.experiments;
-        let jobs: Vec<(usize, Vec<f64>)> = points
+        let np = self.fit.params.len();
+        let key = |x: &Vec<f64>| x[..np.min(x.len())].to_vec();
+        let cached = self
+            .last
+            .lock()
+            .ok()
+            .and_then(|last| last.as_ref().map(|(k, sims)| (k.clone(), sims.clone())));
+        // Which distinct parameter vector each point simulates (None: the cached one).
+        let mut distinct: Vec<Vec<f64>> = Vec::new();
+        let slot: Vec<Option<usize>> = points
+            .iter()
+            .map(|x| {
+                let k = key(x);
+                if cached.as_ref().is_some_and(|(c, _)| *c == k) {
+                    return None;
+                }
+                Some(distinct.iter().position(|d| *d == k).unwrap_or_else(|| {
+                    distinct.push(k);
+                    distinct.len() - 1
+                }))
+            })
+            .collect();
+        let jobs: Vec<(usize, Vec<f64>)> = distinct
             .iter()
             .flat_map(|x| {
                 let values: Vec<f64> = self
@@ -143,7 +184,7 @@ impl<S: Simulate> Weighted<'_, S> {
             })
             .collect();
         let mut results = self.fit.simulator.simulate(&jobs).into_iter();
-        points
+        let simulated: Vec<Result<Simulated, S::Error>> = distinct
             .iter()
             .map(|_| {
                 let per_experiment: Vec<_> = results.by_ref().take(ne).collect();
@@ -160,15 +201,40 @@ impl<S: Simulate> Weighted<'_, S> {
                 }
                 Ok(out)
             })
+            .collect();
+        // A point simulated alone is where the iteration stands next (a start, a trial).
+        if let ([only], [Ok(sims)]) = (distinct.as_slice(), simulated.as_slice())
+            && let Ok(mut last) = self.last.lock()
+        {
+            *last = Some((only.clone(), sims.clone()));
+        }
+        slot.iter()
+            .map(|s| match s {
+                Some(k) => simulated[*k].clone(),
+                // The cached vector exists whenever a point maps to it.
+                None => Ok(cached
+                    .as_ref()
+                    .map(|(_, sims)| sims.clone())
+                    .unwrap_or_default()),
+            })
             .collect()
     }
 
-    fn weigh(&self, sims: &[Vec<Option<f64>>]) -> Vec<f64> {
+    /// Offset `k`'s value at the optimiser's vector `x`.
+    fn offset(&self, x: &[f64], k: usize) -> f64 {
+        let np = self.fit.params.len();
+        x.get(np + k).copied().unwrap_or(0.0) * self.units.get(k).copied().unwrap_or(1.0)
+    }
+
+    fn weigh(&self, x: &[f64], sims: &[Vec<Option<f64>>]) -> Vec<f64> {
         let mut r = Vec::new();
         for (k, s) in self.fit.series.iter().enumerate() {
             let w = 1.0 / self.sigma[k];
             let sim = &sims[k];
+            // The probe reads the simulated value plus its offset.
+            let m0 = s.offset.map_or(0.0, |o| self.offset(x, o));
             for (n, m) in s.measured.iter().enumerate() {
+                let m = &(m - m0);
                 // A simulation that gave fewer values than the series has (it cannot, but a
                 // missing value must not shift the rows): NaN rejects the point. A point not
                 // compared keeps its row with a residual of zero.
@@ -208,8 +274,22 @@ impl<S: Simulate> lm::Residuals for Weighted<'_, S> {
     fn evaluate(&self, points: &[Vec<f64>]) -> Vec<Result<Vec<f64>, S::Error>> {
         self.simulate(points)
             .into_iter()
-            .map(|r| r.map(|sims| self.weigh(&sims)))
+            .zip(points)
+            .map(|(r, x)| r.map(|sims| self.weigh(x, &sims)))
             .collect()
+    }
+}
+
+/// The second interval's reach around the estimate (optimiser's coordinates): the
+/// bootstrap's, widened to the estimates without one series.
+fn robust_range(
+    bootstrap: Option<(f64, f64)>,
+    leave_one_out: Option<(f64, f64)>,
+) -> Option<(f64, f64)> {
+    match (bootstrap, leave_one_out) {
+        (Some((a, b)), Some((c, d))) => Some((a.min(c), b.max(d))),
+        (b, None) => b,
+        (None, l) => l,
     }
 }
 
@@ -249,21 +329,54 @@ impl<S: Simulate> Fit<'_, S> {
             lm::LmError::Start(e) => FitError::Start(e),
             lm::LmError::NotFinite => FitError::NotFinite,
             lm::LmError::Jacobian { coordinate, error } => FitError::Sensitivity {
-                parameter: self.params[coordinate].name.clone(),
+                parameter: self.params.get(coordinate).map_or_else(
+                    || format!("offset {}", coordinate - self.params.len()),
+                    |p| p.name.clone(),
+                ),
                 error,
             },
         }
     }
 
+    /// How many offsets the series name ([`Series::offset`]).
+    pub fn offset_count(&self) -> usize {
+        (self.series.iter().filter_map(|s| s.offset).max()).map_or(0, |k| k + 1)
+    }
+
+    /// Each offset's unit in the optimiser's vector: the RMS of the measured values of the
+    /// first series that names it, so that a step of the optimiser is of the signal's size.
+    fn offset_units(&self) -> Vec<f64> {
+        (0..self.offset_count())
+            .map(|k| {
+                self.series
+                    .iter()
+                    .find(|s| s.offset == Some(k))
+                    .map(|s| {
+                        let n = s.measured.len().max(1) as f64;
+                        (s.measured.iter().map(|v| v * v).sum::<f64>() / n).sqrt()
+                    })
+                    .filter(|u| u.is_finite() && *u > 0.0)
+                    .unwrap_or(1.0)
+            })
+            .collect()
+    }
+
     /// Runs the fit.
     pub fn run(&self) -> Result<Fitted, FitError<S::Error>> {
-        let x0: Vec<f64> = self.params.iter().map(|p| p.to_x(p.guess)).collect();
-        let bounds: Vec<(f64, f64)> = self.params.iter().map(FreeParam::x_bounds).collect();
+        let offsets = self.offset_count();
+        let np = self.params.len();
+        // The offsets start at zero and are unbounded.
+        let x0: Vec<f64> = (self.params.iter().map(|p| p.to_x(p.guess)))
+            .chain(std::iter::repeat_n(0.0, offsets))
+            .collect();
+        let bounds: Vec<(f64, f64)> = (self.params.iter().map(FreeParam::x_bounds))
+            .chain(std::iter::repeat_n(
+                (f64::NEG_INFINITY, f64::INFINITY),
+                offsets,
+            ))
+            .collect();
         let noise: Vec<f64> = self.series.iter().map(Series::noise).collect();
-        let first = Weighted {
-            fit: self,
-            sigma: noise,
-        };
+        let first = Weighted::new(self, noise.clone());
         let pass1 =
             lm::minimise(&first, &x0, &bounds, &self.settings).map_err(|e| self.lm_error(e))?;
         // Reweigh by each series' own misfit.
@@ -274,16 +387,16 @@ impl<S: Simulate> Fit<'_, S> {
         // correlation time as well was tried: on the motor's captures it let a capture with
         // a slow misfit pull R by 1 %, against 0.1 % without.
         let ranges = self.ranges();
-        let sigma = rms1
+        let sigma: Vec<f64> = rms1
             .iter()
-            .zip(&first.sigma)
+            .zip(&noise)
             .zip(self.series)
             .map(|((r, n), s)| match s.sigma {
                 Some(known) => known,
                 None => r.max(*n * 1e-3).max(f64::MIN_POSITIVE),
             })
             .collect();
-        let second = Weighted { fit: self, sigma };
+        let second = Weighted::new(self, sigma);
         let pass2 = lm::minimise(&second, &pass1.x, &bounds, &self.settings)
             .map_err(|e| self.lm_error(e))?;
         let end_sims = second.unweigh(&pass2.residual);
@@ -296,6 +409,27 @@ impl<S: Simulate> Fit<'_, S> {
             self.seed,
             false,
         );
+        let units = second.units.clone();
+        let offsets = (0..offsets)
+            .map(|k| {
+                let (x, sd, unit) = (pass2.x[np + k], u.sd[np + k], units[k]);
+                let interval = sd
+                    .is_finite()
+                    .then_some(((x - u.t95 * sd) * unit, (x + u.t95 * sd) * unit));
+                let robust =
+                    robust_range(u.bootstrap[np + k], u.leave_one_out[np + k]).map(|(lo, hi)| {
+                        let (a, b) = ((x + lo) * unit, (x + hi) * unit);
+                        interval.map_or((a, b), |(c, d)| (a.min(c), b.max(d)))
+                    });
+                Estimate {
+                    value: x * unit,
+                    interval,
+                    robust,
+                    at_bound: false,
+                    influence: Vec::new(),
+                }
+            })
+            .collect();
         let estimates = self
             .params
             .iter()
@@ -307,9 +441,10 @@ impl<S: Simulate> Fit<'_, S> {
                     let (a, b) = (p.from_x(x - u.t95 * sd), p.from_x(x + u.t95 * sd));
                     (a.min(b), a.max(b))
                 });
-                // Never narrower than the covariance's: a bootstrap of few blocks can come
-                // out narrow by chance, and an engineer designs with this one.
-                let robust = u.bootstrap[k]
+                // Never narrower than the covariance's (a bootstrap of few blocks can come
+                // out narrow by chance, and an engineer designs with this one), and holding
+                // the interval without any one series that does not alone determine it.
+                let robust = robust_range(u.bootstrap[k], u.leave_one_out[k])
                     .filter(|_| !pass2.at_bound[k])
                     .map(|(lo, hi)| {
                         let (a, b) = (p.from_x(x + lo), p.from_x(x + hi));
@@ -360,6 +495,7 @@ impl<S: Simulate> Fit<'_, S> {
             .collect();
         Ok(Fitted {
             estimates,
+            offsets,
             series,
             uncertainty: u,
             iterations: pass1.iterations + pass2.iterations,
@@ -412,6 +548,7 @@ mod tests {
                     width: Vec::new(),
                     sample_interval: 0.0,
                     sigma: None,
+                    offset: None,
                 }
             })
             .collect()
@@ -442,5 +579,40 @@ mod tests {
         }
         assert!(f.series[0].rms < 0.02 && f.series[0].rms_start > 0.5);
         assert!(f.uncertainty.unidentified.is_empty());
+    }
+
+    #[test]
+    fn a_probe_offset_is_fitted_and_counted() {
+        // Both captures read 0.3 high through one probe (offset 0); the step starts at
+        // zero, so the offset is told apart from the height.
+        let params = [
+            FreeParam::parse("k=1:0.1:10").unwrap(),
+            FreeParam::parse("tau=0.01").unwrap(),
+        ];
+        let mut series = series(2.5, 0.04, 0.01);
+        for s in &mut series {
+            s.offset = Some(0);
+            s.measured.iter_mut().for_each(|v| *v += 0.3);
+        }
+        let fit = Fit {
+            simulator: &FirstOrder,
+            params: &params,
+            series: &series,
+            experiments: 2,
+            settings: Settings::default(),
+            seed: 1,
+        };
+        let f = fit.run().unwrap();
+        for (e, truth) in f.estimates.iter().zip([2.5, 0.04]) {
+            assert!((e.value - truth).abs() / truth < 0.01, "{e:?}");
+            let (lo, hi) = e.interval.unwrap();
+            assert!(lo < truth && truth < hi, "{e:?}");
+        }
+        let o = &f.offsets[0];
+        assert!((o.value - 0.3).abs() < 0.01, "{o:?}");
+        let (lo, hi) = o.interval.unwrap();
+        assert!(lo < 0.3 && 0.3 < hi, "{o:?}");
+        // The simulated series as the probe reads them: the offset included.
+        assert!(f.series[0].rms < 0.02, "{}", f.series[0].rms);
     }
 }

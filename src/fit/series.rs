@@ -25,6 +25,12 @@ pub struct Series {
     /// measurement, with its standard error): the series then weighs by it throughout,
     /// instead of by its estimated noise and misfit.
     pub sigma: Option<f64>,
+    /// The measuring channel's additive offset (a probe's zero), fitted with the parameters:
+    /// the measured value is the simulated one plus offset number `k`, shared by every series
+    /// that names `k` (one probe in several captures). `None`: the channel reads true. An
+    /// offset estimated beforehand and subtracted is exact to the fit, and its error, common
+    /// to every sample of a capture, then escapes the intervals: fitted, it is counted.
+    pub offset: Option<usize>,
 }
 
 impl Series {
@@ -292,6 +298,7 @@ mod tests {
             width: Vec::new(),
             sample_interval: 0.0,
             sigma: None,
+            offset: None,
         };
         // The MAD is Gaussian-calibrated: uniform noise reads within 20 % of its sd.
         let sigma = s.noise();

@@ -11,7 +11,10 @@
 //!   systematic misfit of an imperfect model keep their structure), each replicate solved
 //!   for the Gauss-Newton step it causes with the fit's Jacobian (a linearised bootstrap:
 //!   2 000 replicates cost a few small solves, not 2 000 fits). Wider than the first when the
-//!   residual is correlated, as it is whenever the model misses something.
+//!   residual is correlated, as it is whenever the model misses something. The caller widens
+//!   it to hold the first interval and the intervals without each one series
+//!   ([`leave_one_out`]): a misfit that the parameters absorb leaves little in the residual
+//!   to resample, but shows as captures that disagree.
 //!
 //! Identifiability from the eigenvalues of the Fisher information `J^T J / s^2` in the
 //! optimiser's coordinates (relative changes for log-scaled parameters): a direction whose
@@ -56,6 +59,10 @@ pub struct Uncertainty {
     pub unidentified: Vec<Unidentified>,
     /// Per series, the bootstrap's block length (samples).
     pub block_lengths: Vec<usize>,
+    /// Per coordinate, the reach (below and above the estimate) of the 95 % intervals the fit
+    /// would give with one series left out ([`leave_one_out`]); None where no series can be
+    /// left out without losing it.
+    pub leave_one_out: Vec<Option<(f64, f64)>>,
 }
 
 /// Integrated autocorrelation time of a sequence, in samples (1 for white noise): `1 + 2 sum
@@ -121,6 +128,7 @@ pub fn analyse(
         correlation: vec![vec![f64::NAN; n]; n],
         unidentified: Vec::new(),
         block_lengths: block_lengths.clone(),
+        leave_one_out: vec![None; n],
     };
     if m == 0 {
         return undetermined();
@@ -239,6 +247,13 @@ pub fn analyse(
         let q = |p: f64| d[((p * (d.len() - 1) as f64).round() as usize).min(d.len() - 1)];
         bootstrap[active[a]] = Some((q(0.025), q(0.975)));
     }
+    let shifts = leave_one_out(&ja, residual, series, &sd_active(&sd, &active), t95);
+    let mut loo = vec![None; n];
+    for (a, shift) in shifts.into_iter().enumerate() {
+        if !entangled[a] {
+            loo[active[a]] = shift;
+        }
+    }
     Uncertainty {
         dof,
         s2,
@@ -248,7 +263,88 @@ pub fn analyse(
         correlation,
         unidentified,
         block_lengths,
+        leave_one_out: loo,
     }
+}
+
+fn sd_active(sd: &[f64], active: &[usize]) -> Vec<f64> {
+    active.iter().map(|&k| sd[k]).collect()
+}
+
+/// The intervals the fit would give with one series left out, as reaches below and above the
+/// estimate: the estimate moves by one Gauss-Newton step from the least-squares point without
+/// that series' rows, `(H - H_s)^-1 J_s^T r_s` with `H = J^T J` (exact for a linear model),
+/// and its interval is `t95` standard deviations of `(H - H_s)^-1` either side. Captures that
+/// agree within their noise move the estimate by about a standard deviation; a model that
+/// misses something one capture shows (a commutation ripple the model lacks) moves it further,
+/// and an interval that does not hold what the fit without that capture says hides the
+/// disagreement. A series without which a coordinate's standard deviation would grow more
+/// than threefold is the one that determines it: its removal says nothing about agreement,
+/// and is not counted for that coordinate. `sd` is each coordinate's standard deviation with
+/// every series (NaN: none).
+pub fn leave_one_out(
+    jac: &Mat<f64>,
+    residual: &[f64],
+    series: &[std::ops::Range<usize>],
+    sd: &[f64],
+    t95: f64,
+) -> Vec<Option<(f64, f64)>> {
+    let m = jac.ncols();
+    let mut out: Vec<Option<(f64, f64)>> = vec![None; m];
+    let h = jac.transpose() * jac;
+    let s2 = {
+        let dof = residual.len().saturating_sub(m).max(1);
+        residual.iter().map(|v| v * v).sum::<f64>() / dof as f64
+    };
+    for range in series {
+        if range.is_empty() {
+            continue;
+        }
+        let rows = range.len();
+        let js = jac.subrows(range.start, rows);
+        let hs = js.transpose() * js;
+        let rest = Mat::<f64>::from_fn(m, m, |a, b| h[(a, b)] - hs[(a, b)]);
+        let Ok(eig) = rest.self_adjoint_eigen(faer::Side::Lower) else {
+            continue;
+        };
+        let lambda: Vec<f64> = (0..m).map(|i| eig.S().column_vector()[i]).collect();
+        let u = eig.U();
+        let largest = lambda.iter().copied().fold(0.0f64, f64::max);
+        // Directions the remaining series leave undetermined are dropped, and every
+        // coordinate entangled with them skipped, as for the intervals.
+        let weak: Vec<bool> = lambda
+            .iter()
+            .map(|&l| l <= largest * 1e-13 || l * s2.recip().min(f64::MAX) < 1.0)
+            .collect();
+        let g: Vec<f64> = (0..m)
+            .map(|a| {
+                (0..rows)
+                    .map(|i| js[(i, a)] * residual[range.start + i])
+                    .sum()
+            })
+            .collect();
+        for a in 0..m {
+            if (0..m).any(|i| weak[i] && u[(a, i)].abs() > 0.2) || !sd[a].is_finite() {
+                continue;
+            }
+            let (mut var, mut step) = (0.0, 0.0);
+            for i in (0..m).filter(|&i| !weak[i]) {
+                let ua = u[(a, i)];
+                var += ua * ua / lambda[i];
+                step += ua * (0..m).map(|b| u[(b, i)] * g[b]).sum::<f64>() / lambda[i];
+            }
+            let sd_without = (var * s2).sqrt();
+            if sd_without > 3.0 * sd[a] {
+                continue;
+            }
+            let reach = (step - t95 * sd_without, step + t95 * sd_without);
+            out[a] = Some(match out[a] {
+                Some((lo, hi)) => (lo.min(reach.0), hi.max(reach.1)),
+                None => reach,
+            });
+        }
+    }
+    out
 }
 
 #[cfg(test)]
@@ -359,5 +455,31 @@ mod tests {
             u.sd[0]
         );
         assert!(u.block_lengths[0] > 50);
+    }
+
+    #[test]
+    fn leaving_out_a_disagreeing_series_moves_the_estimate_to_the_others() {
+        // A constant `a` measured by three series of 100 rows each, unit weights: two read 1.0,
+        // one reads 1.3 (a model that misses something that series shows). Least squares
+        // gives 1.1; without the odd series 1.0, without one of the others 1.15.
+        let rows = 300;
+        let jac = Mat::<f64>::from_fn(rows, 1, |_, _| 1.0);
+        let a = 1.1;
+        let measured = |i: usize| if i >= 200 { 1.3 } else { 1.0 };
+        let residual: Vec<f64> = (0..rows).map(|i| a - measured(i)).collect();
+        let series = [0..100, 100..200, 200..300];
+        let sd = [0.1 / (rows as f64).sqrt()];
+        // Without a series the estimate rests on 200 rows: its sd is sqrt(s2 / 200), with s2
+        // the residual's variance (6 / 299), and the interval 2 sd either side.
+        let sd200 = (6.0 / 299.0 / 200.0f64).sqrt();
+        let shifts = leave_one_out(&jac, &residual, &series, &sd, 2.0);
+        let (lo, hi) = shifts[0].unwrap();
+        assert!((lo - (-0.1 - 2.0 * sd200)).abs() < 1e-12, "{lo}");
+        assert!((hi - (0.05 + 2.0 * sd200)).abs() < 1e-12, "{hi}");
+        // A series that alone determines the coordinate is not left out: with one series,
+        // nothing remains.
+        let whole = std::iter::once(0..rows).collect::<Vec<_>>();
+        let one = leave_one_out(&jac, &residual, &whole, &sd, 2.0);
+        assert_eq!(one[0], None);
     }
 }

@@ -267,12 +267,9 @@ pub fn series(
             time,
             measured,
             width,
-            sample_interval: if loaded.widths.is_empty() {
-                0.0
-            } else {
-                loaded.sample_interval
-            },
+            sample_interval: loaded.sample_interval,
             sigma: None,
+            offset: None,
         });
     }
     if out.is_empty() {

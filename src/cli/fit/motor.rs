@@ -104,16 +104,17 @@ fn reduced(cap: &crate::extract::Capture, from: usize, points: usize) -> (Captur
     (reduced, widths, sample_interval(&cap.t[from..]))
 }
 
-/// The series of one capture (already shifted to simulation time).
+/// The series of one capture (already shifted to simulation time): per quantity, the
+/// capture's column and the number of its probe's offset.
 fn series_of(
     e: usize,
     (cap, widths, dt): &(Capture, Vec<f64>, f64),
     role: &str,
-    wanted: &[(&str, &str)],
+    wanted: &[(&str, &str, usize)],
 ) -> Vec<Series> {
     wanted
         .iter()
-        .filter_map(|(quantity, column)| {
+        .filter_map(|(quantity, column, offset)| {
             let ch = cap.channel(column)?;
             let keep: Vec<usize> = (0..cap.time.len())
                 .filter(|&k| cap.time[k] >= 0.0)
@@ -129,8 +130,9 @@ fn series_of(
                 } else {
                     keep.iter().map(|&k| widths[k]).collect()
                 },
-                sample_interval: if widths.is_empty() { 0.0 } else { *dt },
+                sample_interval: *dt,
                 sigma: None,
+                offset: Some(*offset),
             })
         })
         .collect()
@@ -177,7 +179,16 @@ pub fn fit(
         .zip(guess)
         .map(|(n, g)| positive(n, g))
         .collect();
-    let both = [("motor.i", "current"), ("motor.v", "voltage")];
+    // Each probe's offset is fitted (a zero estimated from a capture's pre-trigger and
+    // subtracted would be exact to the fit, and its error, common to a whole capture, would
+    // escape the intervals: it made R's interval half its scatter). Inrush and blocked each
+    // have their own, read against their pre-trigger; the constant-speed capture has no zero
+    // of its own and shares the coast's, read against its standstill (the paper's procedure).
+    let offsets = |e: usize| if e < 2 { [2 * e, 2 * e + 1] } else { [4, 5] };
+    let both = |e: usize| {
+        let [i, v] = offsets(e);
+        [("motor.i", "current", i), ("motor.v", "voltage", v)]
+    };
 
     // Inrush and blocked: the first sample at time 0, the switch at the step (fitted).
     for (e, (cap, step, extra)) in [
@@ -205,7 +216,7 @@ pub fn fit(
         }
         let (reduced, widths, dt) = reduced(cap, 0, points);
         let reduced = (reduced.shifted(shift), widths, dt);
-        series.extend(series_of(e, &reduced, ROLES[e], &both));
+        series.extend(series_of(e, &reduced, ROLES[e], &both(e)));
         setups_generics.push(generics);
     }
 
@@ -213,7 +224,7 @@ pub fn fit(
     let shift = settle - first(speed);
     let (reduced_speed, widths, dt) = reduced(speed, 0, points);
     let reduced_speed = (reduced_speed.shifted(shift), widths, dt);
-    series.extend(series_of(2, &reduced_speed, ROLES[2], &both));
+    series.extend(series_of(2, &reduced_speed, ROLES[2], &both(2)));
     let t_mid = settle + 0.5 * (speed.t.last().copied().unwrap_or(0.0) - first(speed));
     series.push(Series {
         experiment: 2,
@@ -224,6 +235,7 @@ pub fn fit(
         width: Vec::new(),
         sample_interval: 0.0,
         sigma: Some(caps.w_cst.se.max(1e-6 * caps.w_cst.value.abs()).max(1e-12)),
+        offset: None,
     });
     setups_generics.push(vec![("t_on".into(), "0.0".into())]);
 
@@ -240,7 +252,9 @@ pub fn fit(
     let t_cut = 0.5 * (coast.t[cut.saturating_sub(1)] + coast.t[cut]) + shift;
     let (reduced_coast, widths, dt) = reduced(coast, 0, points);
     let reduced_coast = (reduced_coast.shifted(shift), widths, dt);
-    let mut coast_series = series_of(3, &reduced_coast, ROLES[3], &[("motor.v", "voltage")]);
+    // The current too: at standstill it is the zero of the current probe that the
+    // constant-speed capture shares.
+    let mut coast_series = series_of(3, &reduced_coast, ROLES[3], &both(3));
     // Without the cut and its inductive kick (what a scope shows of it depends on the switch
     // and the probe, not on the motor): from a sample before the cut to the coast proper.
     let kick = (
@@ -295,7 +309,10 @@ pub fn fit(
             .iter()
             .map(|p| (p.name.clone(), p.experiment))
             .collect(),
-        reltol: 1e-6,
+        reltol: std::env::var("HACK_RELTOL")
+            .ok()
+            .and_then(|v| v.parse().ok())
+            .unwrap_or(1e-6),
         abstol: None,
         max_step: None,
         jobs,

@@ -20,7 +20,14 @@ impl Context<'_> {
     /// experiment (`--free-each`) `@` and the capture's file stem (its number where two
     /// captures share a stem).
     pub fn label(&self, k: usize) -> String {
-        let p = &self.params[k];
+        let Some(p) = self.params.get(k) else {
+            // An offset's coordinate follows the parameters'.
+            let o = k - self.params.len();
+            return match self.series.iter().find(|s| s.offset == Some(o)) {
+                Some(s) => format!("the offset of {}", s.label),
+                None => format!("offset {o}"),
+            };
+        };
         let Some(e) = p.experiment else {
             return p.name.clone();
         };
@@ -76,7 +83,10 @@ pub fn warnings(f: &Fitted, c: &Context) -> Vec<String> {
         // Where the parameters involved show most: the capture that carries their effect.
         let mut influence = vec![0.0; c.captures.len()];
         for (k, _) in &u.parameters {
-            for (e, v) in f.estimates[*k].influence.iter().enumerate() {
+            let Some(estimate) = f.estimates.get(*k) else {
+                continue;
+            };
+            for (e, v) in estimate.influence.iter().enumerate() {
                 influence[e] += v;
             }
         }
