@@ -19,7 +19,7 @@
 //!
 //! One job per module: `server` the loop and dispatch, `workspace` the files and open
 //! documents, `position` byte offsets to UTF-16 positions, `diagnostics`, `hover`,
-//! `navigation` (definition, references), `symbols`, `completion`, `lens` (run a testbench),
+//! `navigation` (definition, references), `quantity` (a quantity's role and unit for hover), `symbols`, `completion`, `lens` (run a testbench),
 //! `syntax` (finding a declaration's syntax for hover).
 
 mod completion;
@@ -28,6 +28,7 @@ mod hover;
 mod lens;
 mod navigation;
 mod position;
+mod quantity;
 mod server;
 mod symbols;
 mod syntax;

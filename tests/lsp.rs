@@ -186,6 +186,7 @@ fn hover_shows_a_quantity_with_its_role() {
     assert!(text.contains("**through** quantity"), "{text}");
     assert!(text.contains("from `outp` to `electrical_ref`"), "{text}");
     assert!(text.contains("quantity vout across ic through"), "{text}");
+    assert!(text.contains("subtype `current`, unit `A`"), "{text}");
     // Nothing under the cursor: null.
     let hover = client.call("textDocument/hover", at(&cell, 0, 0));
     assert_eq!(hover, Value::Null);

@@ -6,10 +6,10 @@
 use lsp_types::{Hover, HoverContents, MarkupContent, MarkupKind};
 
 use crate::analysis::{Analysis, DeclKind, Declaration};
-use crate::ast::{self, InterfaceDecl, QuantityDecl};
-use crate::source::{FileId, SourceMap, Span};
+use crate::source::{FileId, Span};
 
-use super::syntax::{Node, declaration_around};
+use super::quantity;
+use super::syntax::declaration_around;
 use super::workspace::Workspace;
 
 /// Longest declaration text shown, in lines.
@@ -31,8 +31,11 @@ pub fn hover(ws: &Workspace, file: FileId, offset: u32) -> Option<Hover> {
         text.push_str(&format!("```vhdl\n{source}\n```\n\n"));
     }
     text.push_str(&describe(analysis, decl));
-    if let Some(role) = node.and_then(|n| quantity_role(n, decl.span, host.sources())) {
+    if let Some(role) = node.and_then(|n| quantity::role(n, decl.span, host.sources())) {
         text.push_str(&format!("\n\n{role}"));
+    }
+    if let Some((subtype, unit)) = node.and_then(|n| quantity::unit(host, n, decl.span)) {
+        text.push_str(&format!("\n\nsubtype `{subtype}`, unit `{unit}`"));
     }
     if decl.span != Span::default() {
         let sources = host.sources();
@@ -102,73 +105,6 @@ pub fn describe(analysis: &Analysis, decl: &Declaration) -> String {
         DeclKind::Component(_) => format!("component `{name}`"),
         DeclKind::Library => format!("library `{name}`"),
         DeclKind::Opaque => format!("`{name}`"),
-    }
-}
-
-/// A quantity's role and tolerance group, from its declaration's syntax.
-fn quantity_role(node: Node, name: Span, sources: &SourceMap) -> Option<String> {
-    let text = |e: &ast::Expr| sources.snippet(e.span).to_string();
-    let tolerance = |t: Option<&ast::Expr>| {
-        t.map(|e| format!("; tolerance group {}", text(e)))
-            .unwrap_or_default()
-    };
-    match node {
-        Node::Decl(d) => match &d.kind {
-            ast::DeclKind::Quantity(QuantityDecl::Branch {
-                across,
-                through,
-                plus,
-                minus,
-            }) => {
-                let branch = match (plus, minus) {
-                    (Some(p), Some(m)) => format!(" from `{}` to `{}`", text(p), text(m)),
-                    (Some(p), None) => format!(" from `{}` to the reference", text(p)),
-                    _ => String::new(),
-                };
-                let find = |list: &[ast::BranchName]| {
-                    list.iter()
-                        .find(|b| b.names.iter().any(|n| n.span == name))
-                        .map(|b| tolerance(b.tolerance.as_ref()))
-                };
-                if let Some(tol) = find(across) {
-                    Some(format!("**across** quantity of the branch{branch}{tol}"))
-                } else {
-                    find(through)
-                        .map(|tol| format!("**through** quantity of the branch{branch}{tol}"))
-                }
-            }
-            ast::DeclKind::Quantity(QuantityDecl::Free { subtype, .. }) => Some(format!(
-                "**free** quantity{}",
-                tolerance(subtype.tolerance.as_ref())
-            )),
-            ast::DeclKind::Quantity(QuantityDecl::Source {
-                subtype, spectrum, ..
-            }) => {
-                let kind = if spectrum.is_some() {
-                    "spectrum"
-                } else {
-                    "noise"
-                };
-                Some(format!(
-                    "**{kind} source** quantity{}",
-                    tolerance(subtype.tolerance.as_ref())
-                ))
-            }
-            _ => None,
-        },
-        Node::Interface(InterfaceDecl {
-            class: Some(ast::ObjectClass::Quantity),
-            mode,
-            subtype,
-            ..
-        }) => {
-            let mode = mode.map_or("in".to_string(), |m| format!("{m:?}").to_ascii_lowercase());
-            Some(format!(
-                "**quantity port** (mode {mode}){}",
-                tolerance(subtype.tolerance.as_ref())
-            ))
-        }
-        Node::Interface(_) => None,
     }
 }
 

@@ -54,20 +54,21 @@ type Answer = Result<Value, (ErrorCode, String)>;
 
 impl Server {
     pub fn new(connection: Connection, roots: Vec<PathBuf>, debounce: Duration) -> Server {
-        let mut workspace = Workspace::new();
-        for root in &roots {
-            workspace.load_folder(root);
-        }
         let mut server = Server {
             connection,
-            workspace,
+            workspace: Workspace::new(),
             published: Published::default(),
             roots,
             debounce,
             last_change: None,
         };
-        let updates = server.published.saved(&server.workspace);
-        server.publish(updates);
+        server.guarded("loading the workspace", |s| {
+            for root in &s.roots {
+                s.workspace.load_folder(root);
+            }
+            let updates = s.published.saved(&s.workspace);
+            s.publish(updates);
+        });
         server
     }
 
@@ -111,9 +112,7 @@ impl Server {
                 }
                 Message::Notification(note) => {
                     let method = note.method.clone();
-                    if catch_unwind(AssertUnwindSafe(|| self.notification(note))).is_err() {
-                        eprintln!("vams lsp: internal error handling {method}; going on");
-                    }
+                    self.guarded(&method, |s| s.notification(note));
                 }
                 Message::Response(_) => {}
             }
@@ -248,13 +247,31 @@ impl Server {
         }
     }
 
+    /// After a panic while the workspace changed: the same files analysed from scratch, or,
+    /// should that fail too, the stdlib alone (the client's next edits bring files back).
+    fn recover(&mut self) {
+        let ws = &self.workspace;
+        self.workspace = catch_unwind(AssertUnwindSafe(|| ws.rebuilt())).unwrap_or_default();
+    }
+
+    /// Runs `f`, which changes the workspace; a panic in it is logged and the workspace
+    /// rebuilt, since its host may be half updated.
+    fn guarded(&mut self, what: &str, f: impl FnOnce(&mut Server)) {
+        if catch_unwind(AssertUnwindSafe(|| f(self))).is_err() {
+            eprintln!("vams lsp: internal error in {what}; analysing the files again");
+            self.recover();
+        }
+    }
+
     /// Analyses the changes not analysed yet and publishes what they changed.
     fn analyse_pending(&mut self) {
         self.last_change = None;
-        if self.workspace.flush() {
-            let updates = self.published.changed(&self.workspace);
-            self.publish(updates);
-        }
+        self.guarded("an analysis", |s| {
+            if s.workspace.flush() {
+                let updates = s.published.changed(&s.workspace);
+                s.publish(updates);
+            }
+        });
     }
 
     fn publish(&self, updates: Vec<PublishDiagnosticsParams>) {

@@ -38,6 +38,17 @@ impl Workspace {
         }
     }
 
+    /// The same files analysed from scratch: after a caught panic, when the host's tables
+    /// may be half updated. Deferred text is kept as deferred.
+    pub fn rebuilt(&self) -> Workspace {
+        let mut fresh = Workspace::new();
+        for (id, uri, _) in self.user_files() {
+            fresh.set_text(uri, self.text(id).to_string());
+        }
+        fresh.pending = self.pending.clone();
+        fresh
+    }
+
     /// Loads every VHDL file under `root` (recursively; unreadable files are skipped, since
     /// the client names them again when it opens them).
     pub fn load_folder(&mut self, root: &Path) {
