@@ -46,9 +46,6 @@ use lsp_types::{
 use miette::Diagnostic;
 use thiserror::Error;
 
-pub use position::LineIndex;
-pub use workspace::Workspace;
-
 /// Why a session ended badly.
 #[derive(Debug, Error, Diagnostic)]
 pub enum LspError {

@@ -336,3 +336,28 @@ fn unknown_methods_and_bad_parameters_answer_errors() {
     assert!(client.alive());
     assert!(client.shutdown().success());
 }
+
+#[test]
+fn an_unsaved_buffer_with_crlf_and_multi_byte_text_is_cleared_when_closed() {
+    let (_dir, mut client, _cell, _bench) = start();
+    // A comment with characters of 2 and 4 bytes (1 and 2 UTF-16 units) before the error,
+    // CRLF line ends.
+    let text = "-- é𝄞\r\nentity e is\r\nend entity e;\r\narchitecture a of e is\r\n\
+                begin\r\n  é𝄞 : assert undeclared_name;\r\nend architecture a;\r\n";
+    let uri = Url::parse("untitled:Untitled-1").expect("a URI");
+    client.notify("textDocument/didOpen", open_params(&uri, text));
+    let diags = client.diagnostics_for(&uri, PATIENCE).expect("diagnostics");
+    assert!(!diags.is_empty(), "{diags:?}");
+    // The lexer's complaint about the label's first character: line 5, column 2 in UTF-16.
+    assert_eq!(
+        diags[0]["range"]["start"],
+        json!({ "line": 5, "character": 2 }),
+        "{diags:?}"
+    );
+    client.notify(
+        "textDocument/didClose",
+        json!({ "textDocument": { "uri": uri } }),
+    );
+    let diags = client.diagnostics_for(&uri, PATIENCE).expect("cleared");
+    assert!(diags.is_empty(), "{diags:?}");
+}

@@ -77,10 +77,6 @@ impl Workspace {
         self.pending.insert(uri.clone(), text);
     }
 
-    pub fn has_pending(&self) -> bool {
-        !self.pending.is_empty()
-    }
-
     /// Analyses the text deferred since the last flush; returns whether there was any.
     pub fn flush(&mut self) -> bool {
         let pending = std::mem::take(&mut self.pending);
