@@ -361,3 +361,50 @@ fn an_unsaved_buffer_with_crlf_and_multi_byte_text_is_cleared_when_closed() {
     let diags = client.diagnostics_for(&uri, PATIENCE).expect("cleared");
     assert!(diags.is_empty(), "{diags:?}");
 }
+
+#[test]
+fn saving_a_cell_elaborates_the_bench_that_uses_it() {
+    let (_dir, mut client, cell, bench) = start();
+    // The cell loses an equation: analysis is content, the bench's analog system is not.
+    let short = CELL.replace("  vin == drive;\n", "");
+    client.notify("textDocument/didOpen", open_params(&cell, &short));
+    client.notify(
+        "textDocument/didSave",
+        json!({ "textDocument": { "uri": cell } }),
+    );
+    let diags = client
+        .diagnostics_for(&cell, PATIENCE)
+        .expect("after the save");
+    assert_eq!(diags.len(), 1, "{diags:?}");
+    assert_eq!(diags[0]["code"], "vams::analog::count");
+    let (line, column) = position_of(&short, "vr == r");
+    assert_eq!(
+        diags[0]["range"]["start"],
+        json!({ "line": line, "character": column })
+    );
+    // Saving the bench's own file keeps it (the cell is as it was).
+    client.notify(
+        "textDocument/didSave",
+        json!({ "textDocument": { "uri": bench } }),
+    );
+    let sym = client.call(
+        "textDocument/documentSymbol",
+        json!({ "textDocument": { "uri": cell } }),
+    );
+    assert!(sym.is_array());
+    assert!(client.notes.iter().all(|n| n.params["uri"] != json!(cell)));
+    // Mended and saved: cleared.
+    client.notify(
+        "textDocument/didChange",
+        json!({
+            "textDocument": { "uri": cell, "version": 2 },
+            "contentChanges": [{ "text": CELL }],
+        }),
+    );
+    client.notify(
+        "textDocument/didSave",
+        json!({ "textDocument": { "uri": cell } }),
+    );
+    let diags = client.diagnostics_for(&cell, PATIENCE).expect("cleared");
+    assert!(diags.is_empty(), "{diags:?}");
+}

@@ -1,6 +1,6 @@
 //! The workspace's diagnostics as LSP diagnostics: syntax and analysis errors of every user
 //! file after each change (the front end's, at once), elaboration and analog-system errors of
-//! the workspace's testbenches after a save, with the message, label and help line that
+//! the workspace's testbenches after a save (those that reach the saved file), with the message, label and help line that
 //! `vams check` prints. [`Published`] remembers what each file was last sent, so that only
 //! changes go out and a fixed file is cleared.
 
@@ -10,8 +10,11 @@ use lsp_types::{Diagnostic, DiagnosticSeverity, NumberOrString, PublishDiagnosti
 use rustc_hash::FxHashMap;
 
 use crate::analog::AnalogSystem;
+use crate::analysis::UnitKind;
 use crate::diagnostics::Located;
-use crate::elaborate::{ElabOptions, ElabWarning, elaborate_analysed, top_candidates};
+use crate::elaborate::{
+    ElabOptions, ElabWarning, TopCandidate, elaborate_analysed, top_candidates,
+};
 use crate::source::{FileId, Span};
 
 use super::position::LineIndex;
@@ -78,41 +81,80 @@ pub fn front_end(ws: &Workspace) -> ByFile {
     out
 }
 
-/// Elaborates each testbench of the workspace (an entity without ports, or named `tb_*`,
-/// that nothing instantiates and that has an architecture and defaults for its generics) and
-/// builds its analog system when it has no open analog port: the errors and warnings found,
-/// each once, leaving out those at a place analysis reported already (as `vams check`).
-pub fn testbenches(ws: &Workspace) -> ByFile {
+/// What elaborating one testbench found, and the files its units were in (a save of one of
+/// them, then or now, elaborates it again).
+#[derive(Default)]
+pub struct Bench {
+    files: Vec<FileId>,
+    found: ByFile,
+}
+
+/// Elaborates the testbenches of the workspace (an entity without ports, or named `tb_*`,
+/// that nothing instantiates and that has an architecture and defaults for its generics) that
+/// reach file `saved` (all when `None`), and builds the analog system of each that has no
+/// open analog port: the errors and warnings found, leaving out those at a place analysis
+/// reported already (as `vams check`). `benches` holds each bench's last findings; those of
+/// benches that are gone are dropped.
+pub fn testbenches(ws: &Workspace, saved: Option<FileId>, benches: &mut FxHashMap<String, Bench>) {
     let host = ws.host();
-    let (analysis, sources, files) = (host.analysis(), host.sources(), host.files());
+    let (analysis, files) = (host.analysis(), host.files());
     let analysed: Vec<Span> = analysis.errors().map(|e| e.primary_span()).collect();
-    let mut found = Found::default();
+    let mut now = FxHashMap::default();
     for top in top_candidates(analysis, files) {
         let is_user = ws.uri(top.span.file).is_some();
         let is_bench = top.name.starts_with("tb_") || !entity_has_ports(ws, top.span);
         if !(is_user && is_bench && top.has_architecture && top.can_elaborate()) {
             continue;
         }
-        let options = ElabOptions {
-            top: top.name.clone(),
-            generics: Vec::new(),
+        let entity = analysis.units.iter().position(|u| {
+            u.kind == UnitKind::Entity && u.name == top.name && u.file == top.span.file
+        });
+        let mut reached: Vec<FileId> = (entity.map(|e| analysis.reached_from(e)))
+            .into_iter()
+            .flatten()
+            .map(|u| analysis.units[u].file)
+            .collect();
+        reached.sort();
+        reached.dedup();
+        let previous = benches.remove(&top.name);
+        let unchanged =
+            |b: &Bench| saved.is_some_and(|f| !b.files.contains(&f) && !reached.contains(&f));
+        let bench = match previous {
+            Some(b) if unchanged(&b) => b,
+            _ => Bench {
+                found: elaborate_bench(ws, &top, &analysed),
+                files: reached,
+            },
         };
-        match elaborate_analysed(analysis, sources, files, &options) {
-            Err(errors) => found.add(ws, &errors, &analysed, DiagnosticSeverity::ERROR),
-            Ok(design) => {
-                let warnings: Vec<ElabWarning> =
-                    design.warnings.iter().map(ElabWarning::from).collect();
-                found.add(ws, &warnings, &analysed, DiagnosticSeverity::WARNING);
-                if top.is_closed() && !design.quantities.is_empty() {
-                    match AnalogSystem::new(&design) {
-                        Ok(system) => found.add(
-                            ws,
-                            &system.warnings(&design),
-                            &analysed,
-                            DiagnosticSeverity::WARNING,
-                        ),
-                        Err(errors) => found.add(ws, &errors, &analysed, DiagnosticSeverity::ERROR),
-                    }
+        now.insert(top.name.clone(), bench);
+    }
+    *benches = now;
+}
+
+/// Elaborates one testbench and builds its analog system: what they found.
+fn elaborate_bench(ws: &Workspace, top: &TopCandidate, analysed: &[Span]) -> ByFile {
+    let host = ws.host();
+    let (analysis, sources, files) = (host.analysis(), host.sources(), host.files());
+    let mut found = Found::default();
+    let options = ElabOptions {
+        top: top.name.clone(),
+        generics: Vec::new(),
+    };
+    match elaborate_analysed(analysis, sources, files, &options) {
+        Err(errors) => found.add(ws, &errors, analysed, DiagnosticSeverity::ERROR),
+        Ok(design) => {
+            let warnings: Vec<ElabWarning> =
+                design.warnings.iter().map(ElabWarning::from).collect();
+            found.add(ws, &warnings, analysed, DiagnosticSeverity::WARNING);
+            if top.is_closed() && !design.quantities.is_empty() {
+                match AnalogSystem::new(&design) {
+                    Ok(system) => found.add(
+                        ws,
+                        &system.warnings(&design),
+                        analysed,
+                        DiagnosticSeverity::WARNING,
+                    ),
+                    Err(errors) => found.add(ws, &errors, analysed, DiagnosticSeverity::ERROR),
                 }
             }
         }
@@ -178,7 +220,7 @@ fn within_analysed(span: Span, analysed: &[Span]) -> bool {
 #[derive(Default)]
 pub struct Published {
     front: ByFile,
-    testbenches: ByFile,
+    benches: FxHashMap<String, Bench>,
     sent: HashMap<Url, Vec<Diagnostic>>,
 }
 
@@ -190,10 +232,11 @@ impl Published {
         self.updates(ws)
     }
 
-    /// After a save: both anew.
-    pub fn saved(&mut self, ws: &Workspace) -> Vec<PublishDiagnosticsParams> {
+    /// After a save of `file` (of every file when `None`: the workspace loaded): the front
+    /// end's anew, and those of the testbenches that reach the file.
+    pub fn saved(&mut self, ws: &Workspace, file: Option<FileId>) -> Vec<PublishDiagnosticsParams> {
         self.front = front_end(ws);
-        self.testbenches = testbenches(ws);
+        testbenches(ws, file, &mut self.benches);
         self.updates(ws)
     }
 
@@ -210,7 +253,17 @@ impl Published {
         let mut now: HashMap<Url, Vec<Diagnostic>> = HashMap::new();
         for (id, uri, _) in ws.user_files() {
             let mut list = self.front.get(&id).cloned().unwrap_or_default();
-            list.extend(self.testbenches.get(&id).into_iter().flatten().cloned());
+            // Benches in name order, so that the list does not change with a map's order;
+            // what several benches share, once.
+            let mut names: Vec<&String> = self.benches.keys().collect();
+            names.sort();
+            for name in names {
+                for d in self.benches[name].found.get(&id).into_iter().flatten() {
+                    if !list.contains(d) {
+                        list.push(d.clone());
+                    }
+                }
+            }
             now.insert(uri.clone(), list);
         }
         let mut out = Vec::new();

@@ -66,7 +66,7 @@ impl Server {
             for root in &s.roots {
                 s.workspace.load_folder(root);
             }
-            let updates = s.published.saved(&s.workspace);
+            let updates = s.published.saved(&s.workspace, None);
             s.publish(updates);
         });
         server
@@ -221,7 +221,8 @@ impl Server {
                 if let Some(text) = p.text {
                     self.workspace.set_text(&p.text_document.uri, text);
                 }
-                let updates = self.published.saved(&self.workspace);
+                let saved = self.workspace.id(&p.text_document.uri);
+                let updates = self.published.saved(&self.workspace, saved);
                 self.publish(updates);
             }
             DidCloseTextDocument::METHOD => {
