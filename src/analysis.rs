@@ -91,6 +91,56 @@ pub struct AnalysedUnit {
     pub scopes: Vec<(Span, Vec<RegionId>)>,
 }
 
+/// The predefined attributes vams analyses and elaborates (LRM 16.1 and 1076.1's
+/// `'dot`, `'integ`, `'above`, ...; user attributes are declared names), sorted: what an
+/// editor offers after a tick.
+pub const PREDEFINED_ATTRIBUTES: &[&str] = &[
+    "above",
+    "across",
+    "active",
+    "ascending",
+    "base",
+    "contribution",
+    "delayed",
+    "dot",
+    "driving",
+    "driving_value",
+    "event",
+    "high",
+    "image",
+    "instance_name",
+    "integ",
+    "last_active",
+    "last_event",
+    "last_value",
+    "left",
+    "leftof",
+    "length",
+    "low",
+    "ltf",
+    "path_name",
+    "pos",
+    "pred",
+    "quiet",
+    "ramp",
+    "range",
+    "reference",
+    "reverse_range",
+    "right",
+    "rightof",
+    "simple_name",
+    "slew",
+    "stable",
+    "succ",
+    "through",
+    "tolerance",
+    "transaction",
+    "val",
+    "value",
+    "zoh",
+    "ztf",
+];
+
 /// A library of analysed units with the declarations and types they share.
 #[derive(Clone, Debug, Default)]
 pub struct Analysis {
@@ -160,6 +210,19 @@ impl Analysis {
                 .flat_map(|u| u.references.iter()),
             offset,
         )
+    }
+
+    /// The declaration whose own name is at byte `offset` of `file` (the name written in a
+    /// declaration, where `declaration_at` finds no use), for an editor's cursor on it.
+    pub fn declared_at(&self, file: FileId, offset: u32) -> Option<DeclId> {
+        let named = |d: &Declaration| {
+            d.span.file == file
+                && d.span.start <= offset
+                && offset < d.span.end.max(d.span.start + 1)
+                && d.span.len() == d.name.len()
+        };
+        let i = self.decls.iter().position(named)?;
+        Some(DeclId(i as u32))
     }
 
     /// Every use of declaration `d`, in file order of the units (its declaration included).

@@ -16,6 +16,7 @@ pub mod extract;
 pub mod fit;
 pub mod interrupt;
 pub mod load;
+pub mod lsp;
 pub mod noise;
 pub mod op;
 pub mod parallel;
@@ -83,6 +84,9 @@ pub enum Command {
     /// simulations to one or more captures, with 95 % intervals, correlations and a warning for
     /// what the captures do not determine.
     Fit(fit::FitArgs),
+    /// Serve editors: a language server (LSP) on standard input and output, with
+    /// diagnostics, hover, definitions, references, symbols, completion and testbench runs.
+    Lsp(lsp::LspArgs),
 }
 
 /// Parses the command line, runs the subcommand, prints any error; returns the exit code.
@@ -101,6 +105,7 @@ pub fn run() -> ExitCode {
         Command::Sweep(args) => sweep::run(&args),
         Command::Extract(args) => extract::run(&args),
         Command::Fit(args) => fit::run(&args),
+        Command::Lsp(args) => lsp::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -17,6 +17,7 @@ pub mod extract;
 pub mod fit;
 pub mod kernel;
 pub mod lexer;
+pub mod lsp;
 pub mod output;
 pub mod parser;
 pub mod solver;

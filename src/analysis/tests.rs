@@ -465,3 +465,39 @@ fn an_element_of_a_terminal_array_resolves_to_the_array() {
     let declared_at = top.find("node :").expect("the declaration") as u32;
     assert_eq!(a.decl(d).span.start, declared_at);
 }
+
+#[test]
+fn the_predefined_attributes_are_sorted_and_include_the_analog_ones() {
+    use crate::analysis::PREDEFINED_ATTRIBUTES as ATTRS;
+    assert!(ATTRS.windows(2).all(|w| w[0] < w[1]), "sorted, each once");
+    for a in [
+        "dot", "integ", "above", "delayed", "ltf", "zoh", "slew", "ramp",
+    ] {
+        assert!(ATTRS.contains(&a), "{a}");
+    }
+    for a in [
+        "reference",
+        "contribution",
+        "across",
+        "through",
+        "tolerance",
+    ] {
+        assert!(ATTRS.contains(&a), "{a}");
+    }
+}
+
+#[test]
+fn a_declarations_own_name_is_found_under_the_cursor() {
+    let text = "entity e is\nend entity e;\narchitecture a of e is\n\
+                \x20 signal s : bit;\nbegin\n  s <= '1';\nend architecture a;";
+    let (sources, files) = load(&[text]);
+    let a = analyse(&sources, &files);
+    let file = files.last().expect("the user file").0;
+    let declared = text.find("s :").expect("the declaration") as u32;
+    let d = a.declared_at(file, declared).expect("found");
+    assert_eq!(a.decl(d).name, "s");
+    // The use resolves to the same declaration; `signal` itself names nothing.
+    let used = text.find("s <=").expect("the use") as u32;
+    assert_eq!(a.declaration_at(file, used), Some(d));
+    assert_eq!(a.declared_at(file, declared - 3), None);
+}
