@@ -554,22 +554,26 @@ mod tests {
             .collect()
     }
 
-    #[test]
-    fn fits_two_experiments_jointly_and_covers_the_truth() {
+    /// `k` and `tau` of [`FirstOrder`] fitted to `series`.
+    fn fit_first_order(series: &[Series]) -> Fitted {
         let params = [
             FreeParam::parse("k=1:0.1:10").unwrap(),
             FreeParam::parse("tau=0.01").unwrap(),
         ];
-        let series = series(2.5, 0.04, 0.01);
         let fit = Fit {
             simulator: &FirstOrder,
             params: &params,
-            series: &series,
+            series,
             experiments: 2,
             settings: Settings::default(),
             seed: 1,
         };
-        let f = fit.run().unwrap();
+        fit.run().unwrap()
+    }
+
+    #[test]
+    fn fits_two_experiments_jointly_and_covers_the_truth() {
+        let f = fit_first_order(&series(2.5, 0.04, 0.01));
         for (e, truth) in f.estimates.iter().zip([2.5, 0.04]) {
             assert!((e.value - truth).abs() / truth < 0.01, "{e:?}");
             let (lo, hi) = e.interval.unwrap();
@@ -585,24 +589,12 @@ mod tests {
     fn a_probe_offset_is_fitted_and_counted() {
         // Both captures read 0.3 high through one probe (offset 0); the step starts at
         // zero, so the offset is told apart from the height.
-        let params = [
-            FreeParam::parse("k=1:0.1:10").unwrap(),
-            FreeParam::parse("tau=0.01").unwrap(),
-        ];
         let mut series = series(2.5, 0.04, 0.01);
         for s in &mut series {
             s.offset = Some(0);
             s.measured.iter_mut().for_each(|v| *v += 0.3);
         }
-        let fit = Fit {
-            simulator: &FirstOrder,
-            params: &params,
-            series: &series,
-            experiments: 2,
-            settings: Settings::default(),
-            seed: 1,
-        };
-        let f = fit.run().unwrap();
+        let f = fit_first_order(&series);
         for (e, truth) in f.estimates.iter().zip([2.5, 0.04]) {
             assert!((e.value - truth).abs() / truth < 0.01, "{e:?}");
             let (lo, hi) = e.interval.unwrap();
