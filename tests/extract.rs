@@ -241,9 +241,11 @@ fn motor_coverage(draws: u64) -> Vec<(&'static str, usize)> {
 
 #[test]
 fn motor_intervals_hold_the_truth_in_most_draws() {
-    // A reduced form of the 100-draw test below: 10 draws, at most one miss per parameter.
-    for (name, held) in motor_coverage(10) {
-        assert!(held >= 9, "{name}: the truth inside in {held} of 10 draws");
+    // A reduced form of the 100-draw test below (which held the truth in all 100 for every
+    // parameter): 4 draws, at most one miss per parameter. Four, because `cargo test` builds
+    // vams unoptimised and each fit then takes most of a minute.
+    for (name, held) in motor_coverage(4) {
+        assert!(held >= 3, "{name}: the truth inside in {held} of 4 draws");
     }
 }
 
