@@ -309,10 +309,7 @@ pub fn fit(
             .iter()
             .map(|p| (p.name.clone(), p.experiment))
             .collect(),
-        reltol: std::env::var("HACK_RELTOL")
-            .ok()
-            .and_then(|v| v.parse().ok())
-            .unwrap_or(1e-6),
+        reltol: 1e-6,
         abstol: None,
         max_step: None,
         jobs,
