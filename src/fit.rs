@@ -234,7 +234,7 @@ impl<'a, S: Simulate> Weighted<'a, S> {
             // The probe reads the simulated value plus its offset.
             let m0 = s.offset.map_or(0.0, |o| self.offset(x, o));
             for (n, m) in s.measured.iter().enumerate() {
-                let m = &(m - m0);
+                let m = m - m0;
                 // A simulation that gave fewer values than the series has (it cannot, but a
                 // missing value must not shift the rows): NaN rejects the point. A point not
                 // compared keeps its row with a residual of zero.
@@ -280,8 +280,33 @@ impl<S: Simulate> lm::Residuals for Weighted<'_, S> {
     }
 }
 
+/// An interval's ends.
+type Ends = (f64, f64);
+
+/// The two 95 % intervals of coordinate `k` at `x` (see [`Estimate`]), as values (`value`
+/// maps a coordinate to its value). The second is never narrower than the first (a bootstrap
+/// of few blocks can come out narrow by chance, and an engineer designs with this one), and
+/// holds the interval without any one series that does not alone determine the coordinate.
+fn intervals(
+    u: &Uncertainty,
+    k: usize,
+    x: f64,
+    value: impl Fn(f64) -> f64,
+) -> (Option<Ends>, Option<Ends>) {
+    let ordered = |a: f64, b: f64| (a.min(b), a.max(b));
+    let sd = u.sd[k];
+    let interval = sd
+        .is_finite()
+        .then(|| ordered(value(x - u.t95 * sd), value(x + u.t95 * sd)));
+    let robust = robust_range(u.bootstrap[k], u.leave_one_out[k]).map(|(lo, hi)| {
+        let (a, b) = ordered(value(x + lo), value(x + hi));
+        interval.map_or((a, b), |(c, d)| (a.min(c), b.max(d)))
+    });
+    (interval, robust)
+}
+
 /// The second interval's reach around the estimate (optimiser's coordinates): the
-/// bootstrap's, widened to the estimates without one series.
+/// bootstrap's, widened to the intervals without one series.
 fn robust_range(
     bootstrap: Option<(f64, f64)>,
     leave_one_out: Option<(f64, f64)>,
@@ -376,7 +401,7 @@ impl<S: Simulate> Fit<'_, S> {
             ))
             .collect();
         let noise: Vec<f64> = self.series.iter().map(Series::noise).collect();
-        let first = Weighted::new(self, noise.clone());
+        let first = Weighted::new(self, noise);
         let pass1 =
             lm::minimise(&first, &x0, &bounds, &self.settings).map_err(|e| self.lm_error(e))?;
         // Reweigh by each series' own misfit.
@@ -387,9 +412,9 @@ impl<S: Simulate> Fit<'_, S> {
         // correlation time as well was tried: on the motor's captures it let a capture with
         // a slow misfit pull R by 1 %, against 0.1 % without.
         let ranges = self.ranges();
-        let sigma: Vec<f64> = rms1
+        let sigma = rms1
             .iter()
-            .zip(&noise)
+            .zip(&first.sigma)
             .zip(self.series)
             .map(|((r, n), s)| match s.sigma {
                 Some(known) => known,
@@ -409,18 +434,10 @@ impl<S: Simulate> Fit<'_, S> {
             self.seed,
             false,
         );
-        let units = second.units.clone();
         let offsets = (0..offsets)
             .map(|k| {
-                let (x, sd, unit) = (pass2.x[np + k], u.sd[np + k], units[k]);
-                let interval = sd
-                    .is_finite()
-                    .then_some(((x - u.t95 * sd) * unit, (x + u.t95 * sd) * unit));
-                let robust =
-                    robust_range(u.bootstrap[np + k], u.leave_one_out[np + k]).map(|(lo, hi)| {
-                        let (a, b) = ((x + lo) * unit, (x + hi) * unit);
-                        interval.map_or((a, b), |(c, d)| (a.min(c), b.max(d)))
-                    });
+                let (x, unit) = (pass2.x[np + k], second.units[k]);
+                let (interval, robust) = intervals(&u, np + k, x, |x| x * unit);
                 Estimate {
                     value: x * unit,
                     interval,
@@ -436,24 +453,11 @@ impl<S: Simulate> Fit<'_, S> {
             .enumerate()
             .map(|(k, p)| {
                 let x = pass2.x[k];
-                let sd = u.sd[k];
-                let interval = (sd.is_finite() && !pass2.at_bound[k]).then(|| {
-                    let (a, b) = (p.from_x(x - u.t95 * sd), p.from_x(x + u.t95 * sd));
-                    (a.min(b), a.max(b))
-                });
-                // Never narrower than the covariance's (a bootstrap of few blocks can come
-                // out narrow by chance, and an engineer designs with this one), and holding
-                // the interval without any one series that does not alone determine it.
-                let robust = robust_range(u.bootstrap[k], u.leave_one_out[k])
-                    .filter(|_| !pass2.at_bound[k])
-                    .map(|(lo, hi)| {
-                        let (a, b) = (p.from_x(x + lo), p.from_x(x + hi));
-                        let (a, b) = (a.min(b), a.max(b));
-                        match interval {
-                            Some((c, d)) => (a.min(c), b.max(d)),
-                            None => (a, b),
-                        }
-                    });
+                let (interval, robust) = if pass2.at_bound[k] {
+                    (None, None)
+                } else {
+                    intervals(&u, k, x, |x| p.from_x(x))
+                };
                 let influence = (0..self.experiments)
                     .map(|e| {
                         self.series

@@ -145,31 +145,25 @@ pub fn analyse(
     };
     let lambda: Vec<f64> = (0..m).map(|i| eig.S().column_vector()[i]).collect();
     let u = eig.U();
-    let largest = lambda.iter().copied().fold(0.0f64, f64::max);
-    let mut weak = vec![false; m];
-    for i in 0..m {
+    let weak = weak_directions(&lambda);
+    for i in (0..m).filter(|&i| weak[i]) {
         let l = lambda[i];
-        if l < 1.0 || l <= largest * 1e-13 {
-            weak[i] = true;
-            let mut parameters: Vec<(usize, f64)> = (0..m)
-                .map(|k| (active[k], u[(k, i)]))
-                .filter(|(_, w)| w.abs() > 0.2)
-                .collect();
-            parameters.sort_by(|a, b| b.1.abs().total_cmp(&a.1.abs()));
-            unidentified.push(Unidentified {
-                parameters,
-                sd: if l > 0.0 {
-                    1.0 / l.sqrt()
-                } else {
-                    f64::INFINITY
-                },
-            });
-        }
+        let mut parameters: Vec<(usize, f64)> = (0..m)
+            .map(|k| (active[k], u[(k, i)]))
+            .filter(|(_, w)| w.abs() > 0.2)
+            .collect();
+        parameters.sort_by(|a, b| b.1.abs().total_cmp(&a.1.abs()));
+        unidentified.push(Unidentified {
+            parameters,
+            sd: if l > 0.0 {
+                1.0 / l.sqrt()
+            } else {
+                f64::INFINITY
+            },
+        });
     }
     // Coordinates entangled with an undetermined direction get no interval.
-    let entangled: Vec<bool> = (0..m)
-        .map(|k| (0..m).any(|i| weak[i] && u[(k, i)].abs() > 0.2))
-        .collect();
+    let entangled: Vec<bool> = (0..m).map(|k| entangled_in(u, &weak, k)).collect();
     let cov = Mat::<f64>::from_fn(m, m, |a, b| {
         (0..m)
             .filter(|&i| !weak[i])
@@ -247,7 +241,8 @@ pub fn analyse(
         let q = |p: f64| d[((p * (d.len() - 1) as f64).round() as usize).min(d.len() - 1)];
         bootstrap[active[a]] = Some((q(0.025), q(0.975)));
     }
-    let shifts = leave_one_out(&ja, residual, series, &sd_active(&sd, &active), t95);
+    let sd_active: Vec<f64> = active.iter().map(|&k| sd[k]).collect();
+    let shifts = leave_one_out(&ja, residual, series, s2, &sd_active, t95);
     let mut loo = vec![None; n];
     for (a, shift) in shifts.into_iter().enumerate() {
         if !entangled[a] {
@@ -267,8 +262,21 @@ pub fn analyse(
     }
 }
 
-fn sd_active(sd: &[f64], active: &[usize]) -> Vec<f64> {
-    active.iter().map(|&k| sd[k]).collect()
+/// The eigen-directions of a Fisher information (eigenvalues `lambda`, each the inverse of
+/// the variance along its direction) that the data do not determine: a standard deviation
+/// above one, or an eigenvalue that is rounding beside the largest.
+fn weak_directions(lambda: &[f64]) -> Vec<bool> {
+    let largest = lambda.iter().copied().fold(0.0f64, f64::max);
+    lambda
+        .iter()
+        .map(|&l| l < 1.0 || l <= largest * 1e-13)
+        .collect()
+}
+
+/// Whether coordinate `k` takes part in a weak direction (a component above 0.2 of its unit
+/// eigenvector `u`'s column).
+fn entangled_in(u: faer::MatRef<'_, f64>, weak: &[bool], k: usize) -> bool {
+    (0..weak.len()).any(|i| weak[i] && u[(k, i)].abs() > 0.2)
 }
 
 /// The intervals the fit would give with one series left out, as reaches below and above the
@@ -286,16 +294,14 @@ pub fn leave_one_out(
     jac: &Mat<f64>,
     residual: &[f64],
     series: &[std::ops::Range<usize>],
+    s2: f64,
     sd: &[f64],
     t95: f64,
 ) -> Vec<Option<(f64, f64)>> {
     let m = jac.ncols();
     let mut out: Vec<Option<(f64, f64)>> = vec![None; m];
     let h = jac.transpose() * jac;
-    let s2 = {
-        let dof = residual.len().saturating_sub(m).max(1);
-        residual.iter().map(|v| v * v).sum::<f64>() / dof as f64
-    };
+    let s2 = s2.max(f64::MIN_POSITIVE);
     for range in series {
         if range.is_empty() {
             continue;
@@ -303,19 +309,16 @@ pub fn leave_one_out(
         let rows = range.len();
         let js = jac.subrows(range.start, rows);
         let hs = js.transpose() * js;
-        let rest = Mat::<f64>::from_fn(m, m, |a, b| h[(a, b)] - hs[(a, b)]);
+        // The Fisher information of the other series.
+        let rest = Mat::<f64>::from_fn(m, m, |a, b| (h[(a, b)] - hs[(a, b)]) / s2);
         let Ok(eig) = rest.self_adjoint_eigen(faer::Side::Lower) else {
             continue;
         };
         let lambda: Vec<f64> = (0..m).map(|i| eig.S().column_vector()[i]).collect();
         let u = eig.U();
-        let largest = lambda.iter().copied().fold(0.0f64, f64::max);
         // Directions the remaining series leave undetermined are dropped, and every
         // coordinate entangled with them skipped, as for the intervals.
-        let weak: Vec<bool> = lambda
-            .iter()
-            .map(|&l| l <= largest * 1e-13 || l * s2.recip().min(f64::MAX) < 1.0)
-            .collect();
+        let weak = weak_directions(&lambda);
         let g: Vec<f64> = (0..m)
             .map(|a| {
                 (0..rows)
@@ -324,16 +327,17 @@ pub fn leave_one_out(
             })
             .collect();
         for a in 0..m {
-            if (0..m).any(|i| weak[i] && u[(a, i)].abs() > 0.2) || !sd[a].is_finite() {
+            if entangled_in(u, &weak, a) || !sd[a].is_finite() {
                 continue;
             }
+            // (H - H_s)^-1 = F^-1 / s2 with F the information of the other series.
             let (mut var, mut step) = (0.0, 0.0);
             for i in (0..m).filter(|&i| !weak[i]) {
                 let ua = u[(a, i)];
                 var += ua * ua / lambda[i];
-                step += ua * (0..m).map(|b| u[(b, i)] * g[b]).sum::<f64>() / lambda[i];
+                step += ua * (0..m).map(|b| u[(b, i)] * g[b]).sum::<f64>() / lambda[i] / s2;
             }
-            let sd_without = (var * s2).sqrt();
+            let sd_without = var.sqrt();
             if sd_without > 3.0 * sd[a] {
                 continue;
             }
@@ -472,14 +476,16 @@ mod tests {
         // Without a series the estimate rests on 200 rows: its sd is sqrt(s2 / 200), with s2
         // the residual's variance (6 / 299), and the interval 2 sd either side.
         let sd200 = (6.0 / 299.0 / 200.0f64).sqrt();
-        let shifts = leave_one_out(&jac, &residual, &series, &sd, 2.0);
+        // s2 as the fit computes it: the residual's sum of squares over its degrees of freedom.
+        let s2 = 6.0 / 299.0;
+        let shifts = leave_one_out(&jac, &residual, &series, s2, &sd, 2.0);
         let (lo, hi) = shifts[0].unwrap();
         assert!((lo - (-0.1 - 2.0 * sd200)).abs() < 1e-12, "{lo}");
         assert!((hi - (0.05 + 2.0 * sd200)).abs() < 1e-12, "{hi}");
         // A series that alone determines the coordinate is not left out: with one series,
         // nothing remains.
         let whole = std::iter::once(0..rows).collect::<Vec<_>>();
-        let one = leave_one_out(&jac, &residual, &whole, &sd, 2.0);
+        let one = leave_one_out(&jac, &residual, &whole, s2, &sd, 2.0);
         assert_eq!(one[0], None);
     }
 }
