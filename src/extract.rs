@@ -5,8 +5,9 @@
 //! paper's estimates with standard errors, the parameters refined by a joint least-squares
 //! fit of simulations to all four captures, and the RMS residual of each capture. The
 //! pipeline: [`capture`] reads scope exports, [`paper`] runs the paper's method on them with
-//! [`signal`]'s robust regression and spectral tools, [`refine`] fits [`model`]'s
-//! simulations by Levenberg-Marquardt. [`synth`] makes synthetic captures for tests and demos.
+//! [`signal`]'s robust regression and spectral tools; the joint fit (`vams extract`, a preset of
+//! [`crate::fit`] on the bundled motor models) starts from them and takes the commutation
+//! ripple out with [`ripple`]. [`synth`] makes synthetic captures for tests and demos.
 //! It never prints and never writes files: the CLI does.
 //!
 //! ```
@@ -24,6 +25,7 @@ pub mod capture;
 pub mod error;
 pub mod model;
 pub mod paper;
+pub mod ripple;
 pub mod signal;
 pub mod synth;
 

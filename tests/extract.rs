@@ -36,9 +36,10 @@ fn args(paths: &[PathBuf; 4]) -> Vec<String> {
         .collect()
 }
 
-/// A parameter's second 95 % interval (the one that accounts for model error) in `--json`.
-fn second_interval(v: &serde_json::Value, name: &str) -> (f64, f64) {
-    let ci = &v["ci95_bootstrap"][name];
+/// A parameter's 95 % interval of `key` in `--json`: `ci95` (the covariance's) or
+/// `ci95_bootstrap` (the second, which accounts for model error).
+fn interval(v: &serde_json::Value, key: &str, name: &str) -> (f64, f64) {
+    let ci = &v[key][name];
     (ci[0].as_f64().unwrap(), ci[1].as_f64().unwrap())
 }
 
@@ -49,18 +50,16 @@ fn check_json(stdout: &[u8], truth: &MotorParams) {
     for ((name, t), tol) in MotorParams::NAMES.iter().zip(truth.values()).zip(tol) {
         let got = v[*name].as_f64().unwrap_or(f64::NAN);
         let err = (got - t) / t;
-        let (lo, hi) = second_interval(&v, name);
-        eprintln!(
-            "{name}: true {t:.4e} got {got:.4e} ({:+.2} %), 95 % {lo:.4e} .. {hi:.4e}",
-            100.0 * err
-        );
+        eprintln!("{name}: true {t:.4e} got {got:.4e} ({:+.2} %)", 100.0 * err);
         assert!(
             err.abs() < tol,
             "{name}: {got} vs {t} ({:+.2} %)",
             100.0 * err
         );
-        // The second interval accounts for model error (the commutation ripple the bench's
-        // model lacks pulls R low): it holds the truth.
+        // The second interval, which accounts for model error, holds the truth here; the
+        // covariance interval misses it in about one draw of twenty for each parameter, as
+        // a 95 % interval does (the coverage tests below count both).
+        let (lo, hi) = interval(&v, "ci95_bootstrap", name);
         assert!(lo <= t && t <= hi, "{name}: {t} outside {lo} .. {hi}");
     }
     for r in ROLES {
@@ -194,7 +193,7 @@ fn prints_a_table_for_people_and_writes_demo_captures() {
     for needle in [
         "paper's method",
         "joint fit (dc_motor)",
-        "95 % (block bootstrap)",
+        "95 % (with model error)",
         "tcst_motor",
         "RMS residual",
         "coast",
@@ -204,11 +203,11 @@ fn prints_a_table_for_people_and_writes_demo_captures() {
 }
 
 /// Fits the demo motor's captures from `draws` seeded noise draws (the scope's usual sizes,
-/// ripple, offsets) and counts, per parameter, the draws whose second interval (the one that
-/// accounts for model error) holds the truth.
-fn motor_coverage(draws: u64) -> Vec<(&'static str, usize)> {
+/// ripple, offsets) and counts, per parameter, the draws whose covariance interval and whose
+/// second interval hold the truth.
+fn motor_coverage(draws: u64) -> Vec<(&'static str, [usize; 2])> {
     let truth = MotorParams::example();
-    let mut held = [0usize; MotorParams::NAMES.len()];
+    let mut held = [[0usize; 2]; MotorParams::NAMES.len()];
     for seed in 0..draws {
         let dir = tempfile::tempdir().unwrap();
         let o = SynthOptions {
@@ -224,11 +223,13 @@ fn motor_coverage(draws: u64) -> Vec<(&'static str, usize)> {
             .success();
         let v: serde_json::Value = serde_json::from_slice(&out.get_output().stdout).unwrap();
         for ((name, t), held) in MotorParams::NAMES.iter().zip(truth.values()).zip(&mut held) {
-            let (lo, hi) = second_interval(&v, name);
-            if lo <= t && t <= hi {
-                *held += 1;
-            } else {
-                eprintln!("draw {seed}: {name} {t:e} outside {lo:e} .. {hi:e}");
+            for (key, held) in ["ci95", "ci95_bootstrap"].into_iter().zip(held) {
+                let (lo, hi) = interval(&v, key, name);
+                if lo <= t && t <= hi {
+                    *held += 1;
+                } else {
+                    eprintln!("draw {seed}: {name} {t:e} outside {key} {lo:e} .. {hi:e}");
+                }
             }
         }
     }
@@ -237,22 +238,27 @@ fn motor_coverage(draws: u64) -> Vec<(&'static str, usize)> {
 
 #[test]
 fn motor_intervals_hold_the_truth_in_most_draws() {
-    // A reduced form of the 100-draw test below (which held the truth in all 100 for every
-    // parameter): 4 draws, at most one miss per parameter. Four, because `cargo test` builds
-    // vams unoptimised and each fit then takes most of a minute.
-    for (name, held) in motor_coverage(4) {
-        assert!(held >= 3, "{name}: the truth inside in {held} of 4 draws");
+    // A reduced form of the 100-draw test below: 4 draws, at most one miss per parameter and
+    // interval. Four, because `cargo test` builds vams unoptimised and each fit then takes
+    // most of a minute.
+    for (name, [covariance, second]) in motor_coverage(4) {
+        assert!(
+            covariance >= 3 && second >= 3,
+            "{name}: the truth inside the covariance interval in {covariance} of 4 draws, \
+             the second in {second}"
+        );
     }
 }
 
 #[test]
 #[ignore = "slow: 100 fits; run with --ignored"]
 fn motor_intervals_hold_the_truth_in_90_of_100_draws() {
-    for (name, held) in motor_coverage(100) {
-        eprintln!("{name}: {held} of 100");
+    for (name, [covariance, second]) in motor_coverage(100) {
+        eprintln!("{name}: covariance {covariance} of 100, second {second} of 100");
         assert!(
-            held >= 90,
-            "{name}: the truth inside in {held} of 100 draws"
+            covariance >= 90 && second >= 90,
+            "{name}: the truth inside the covariance interval in {covariance} of 100 draws, \
+             the second in {second}"
         );
     }
 }

@@ -40,6 +40,8 @@ architecture bench of tb_motor_bench is
   quantity vsup across isup through supply to electrical_ref;
   quantity vsw across isw through supply to p;
   quantity speed across shaft to rotational_v_ref;
+  -- The rotor's angle since t = 0: `vams extract` reads the commutation ripple's phase from it.
+  quantity angle : real;
   signal closed : boolean := t_on <= 0.0;
   constant r_open : real := 1.0e6;
   -- At t = 0 the armature carries what the open switch lets through (the quiescent state
@@ -53,6 +55,7 @@ begin
     vsw == r_open * isw;
   end use;
   break on closed;
+  angle == speed'integ;
 
   switch : process
     variable now_s : real := 0.0;

@@ -102,7 +102,14 @@ pub fn run(args: &ExtractArgs) -> miette::Result<()> {
     let started = std::time::Instant::now();
     let x = extract_files([a, b, c, d], &cols, args.commutations)?;
     let jobs = crate::cli::parallel::threads(args.jobs);
-    let fit = motor::fit(&x.prepared, &x.paper, args.points as usize, jobs, 1)?;
+    let fit = motor::fit(
+        &x.prepared,
+        &x.paper,
+        args.points as usize,
+        jobs,
+        1,
+        args.commutations,
+    )?;
     let seconds = started.elapsed().as_secs_f64();
     if args.json {
         println!("{}", json(&x, &fit));
@@ -188,7 +195,7 @@ pub fn table(x: &Extraction, fit: &MotorFit, commutations: u32, seconds: f64) ->
         "paper's method",
         "joint fit (dc_motor)",
         "95 % (covariance)",
-        "95 % (block bootstrap)"
+        "95 % (with model error)"
     );
     let fitted = fit.motor.values();
     for (k, e) in paper_values(x).iter().enumerate() {

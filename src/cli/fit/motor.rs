@@ -18,10 +18,11 @@ use crate::cli::compile::{Prepared, prepare_loaded};
 use crate::cli::load::load_texts;
 use crate::extract::MotorParams;
 use crate::extract::paper::{PaperEstimates, Prepared as Captures};
+use crate::extract::ripple::RippleModel;
 use crate::fit::series::{block_widths, sample_interval};
-use crate::fit::{Fit, FitError, Fitted, FreeParam, Series, Settings};
+use crate::fit::{Fit, FitError, Fitted, FreeParam, Series, Settings, Simulate, Simulated};
 
-use super::simulate::{DesignSimulator, Setup};
+use super::simulate::{DesignSimulator, Setup, simulate_jobs};
 
 /// The bundled models of the bench.
 const SOURCES: [(&str, &str); 3] = [
@@ -44,6 +45,42 @@ pub const ROLES: [&str; 4] = ["inrush", "blocked", "speed", "coast"];
 
 /// The fitted generics of the motor, in the order of the fit's first parameters.
 const MOTOR: [&str; 6] = ["r", "l", "ke", "j", "d", "tcst_motor"];
+
+/// The bench with the commutation ripple of the inrush current ([`RippleModel`]): the
+/// rotor starts from rest there, and its first commutation period is a swell of the current
+/// that, without the ripple, reads as a lower resistance. The other captures average many
+/// periods (or none: the blocked rotor), and their ripple's phase after the run-up would make
+/// the residual hang on the whole run-up's angle.
+struct MotorBench<'a> {
+    bench: DesignSimulator<'a>,
+    ripple: RippleModel,
+    /// Per experiment, the series with a ripple: the index among the experiment's series and
+    /// the measured values.
+    rippled: Vec<Vec<(usize, Vec<f64>)>>,
+}
+
+impl MotorBench<'_> {
+    /// The bench's quantity the ripple's phase is read from.
+    const ANGLE: &'static str = "angle";
+
+    fn sample(&self, e: usize, values: &[f64]) -> Result<Simulated, String> {
+        let waves = self.bench.run(e, values)?;
+        let mut simulated = self.bench.sample(e, &waves)?;
+        for (k, measured) in &self.rippled[e] {
+            let angle = self.bench.read(e, &waves, Self::ANGLE, *k)?;
+            simulated[*k] = self.ripple.apply(&simulated[*k], &angle, measured);
+        }
+        Ok(simulated)
+    }
+}
+
+impl Simulate for MotorBench<'_> {
+    type Error = String;
+
+    fn simulate(&self, jobs: &[(usize, Vec<f64>)]) -> Vec<Result<Simulated, String>> {
+        simulate_jobs(jobs, self.bench.jobs, |e, values| self.sample(e, values))
+    }
+}
 
 /// The preset's fit.
 pub struct MotorFit {
@@ -156,6 +193,7 @@ pub fn fit(
     points: usize,
     jobs: usize,
     seed: u64,
+    commutations: u32,
 ) -> Result<MotorFit, miette::Report> {
     let prepared = bench()?;
     let [inrush, blocked, speed, coast] = &caps.caps;
@@ -292,7 +330,7 @@ pub fn fit(
     });
     params.push(positive("vs", v_speed + 0.1 * i_speed));
 
-    let setups: Vec<Setup> = setups_generics
+    let mut setups: Vec<Setup> = setups_generics
         .into_iter()
         .enumerate()
         .map(|(e, mut g)| {
@@ -302,17 +340,31 @@ pub fn fit(
             Setup::new("tb_motor_bench".into(), g, e, &series)
         })
         .collect();
-    let sim = DesignSimulator {
-        prepared: &prepared,
-        setups,
-        names: params
-            .iter()
-            .map(|p| (p.name.clone(), p.experiment))
-            .collect(),
-        reltol: 1e-6,
-        abstol: None,
-        max_step: None,
-        jobs,
+    // The inrush current's ripple, by the rotor's angle.
+    setups[0].record.push(MotorBench::ANGLE.into());
+    let mut rippled = vec![Vec::new(); 4];
+    rippled[0] = series
+        .iter()
+        .filter(|s| s.experiment == 0)
+        .enumerate()
+        .filter(|(_, s)| s.simulated == "motor.i")
+        .map(|(k, s)| (k, s.measured.clone()))
+        .collect();
+    let sim = MotorBench {
+        bench: DesignSimulator {
+            prepared: &prepared,
+            setups,
+            names: params
+                .iter()
+                .map(|p| (p.name.clone(), p.experiment))
+                .collect(),
+            reltol: 1e-6,
+            abstol: None,
+            max_step: None,
+            jobs,
+        },
+        ripple: RippleModel::commutation(commutations),
+        rippled,
     };
     let fit = Fit {
         simulator: &sim,

@@ -163,7 +163,7 @@ pub fn table(f: &Fitted, c: &Context) -> String {
         .max(7);
     let _ = writeln!(
         s,
-        "{:<w$}  {:<11}  {:<11}  {:<36}  95 % block bootstrap",
+        "{:<w$}  {:<11}  {:<11}  {:<36}  95 % with model error",
         "generic", "guess", "fitted", "95 % from the covariance"
     );
     for ((p, e), label) in c.params.iter().zip(&f.estimates).zip(&labels) {

@@ -27,6 +27,9 @@ pub struct Setup {
     pub sample_intervals: Vec<f64>,
     /// Its end: the last sample time.
     pub stop: f64,
+    /// Quantities recorded beside the probes, for a caller that reads more of the run
+    /// ([`DesignSimulator::read`]).
+    pub record: Vec<String>,
 }
 
 impl Setup {
@@ -49,6 +52,7 @@ impl Setup {
             widths: mine.iter().map(|s| s.width.clone()).collect(),
             sample_intervals: mine.iter().map(|s| s.sample_interval).collect(),
             stop,
+            record: Vec::new(),
         }
     }
 }
@@ -99,7 +103,7 @@ impl DesignSimulator<'_> {
             abstol: self.abstol,
             max_step: self.max_step,
             max_order: 5,
-            probes: setup.probes.clone(),
+            probes: setup.probes.iter().chain(&setup.record).cloned().collect(),
             progress: None,
             keep_unknowns: false,
             cancel: None,
@@ -116,36 +120,45 @@ impl DesignSimulator<'_> {
         Ok(waves)
     }
 
-    fn sample(&self, e: usize, values: &[f64]) -> Result<Simulated, String> {
+    /// The simulated values of experiment `e` at its series' times.
+    pub fn sample(&self, e: usize, waves: &Waveforms) -> Result<Simulated, String> {
         let setup = &self.setups[e];
-        let waves = self.run(e, values)?;
-        setup
-            .probes
-            .iter()
-            .zip(setup.times.iter().zip(&setup.widths))
-            .zip(&setup.sample_intervals)
-            .map(|((name, (times, widths)), &dt)| {
-                let col = waves
-                    .column(name)
-                    .ok_or_else(|| format!("the run recorded no `{name}`"))?;
-                let held = matches!(col.kind, ColumnKind::Signal { .. });
-                let mut hint = 0;
-                Ok(times
-                    .iter()
-                    .enumerate()
-                    .map(|(n, &t)| {
-                        if held {
-                            let k = waves.times.partition_point(|x| *x <= t);
-                            Some(col.values[k.saturating_sub(1).min(col.values.len() - 1)])
-                        } else {
-                            let w = widths.get(n).copied().unwrap_or(0.0);
-                            (!near_jump(&waves.times, &col.values, t, w, dt))
-                                .then(|| block_mean(&waves.times, &col.values, t, w, &mut hint))
-                        }
-                    })
-                    .collect())
-            })
+        (0..setup.probes.len())
+            .map(|k| self.read(e, waves, &setup.probes[k], k))
             .collect()
+    }
+
+    /// Quantity `name` of a run of experiment `e` at the times of its series `k`: a signal
+    /// as held at each time, a quantity as the mean over each block, `None` within a sample
+    /// interval of a jump.
+    pub fn read(
+        &self,
+        e: usize,
+        waves: &Waveforms,
+        name: &str,
+        k: usize,
+    ) -> Result<Vec<Option<f64>>, String> {
+        let setup = &self.setups[e];
+        let (times, widths, dt) = (&setup.times[k], &setup.widths[k], setup.sample_intervals[k]);
+        let col = waves
+            .column(name)
+            .ok_or_else(|| format!("the run recorded no `{name}`"))?;
+        let held = matches!(col.kind, ColumnKind::Signal { .. });
+        let mut hint = 0;
+        Ok(times
+            .iter()
+            .enumerate()
+            .map(|(n, &t)| {
+                if held {
+                    let k = waves.times.partition_point(|x| *x <= t);
+                    Some(col.values[k.saturating_sub(1).min(col.values.len() - 1)])
+                } else {
+                    let w = widths.get(n).copied().unwrap_or(0.0);
+                    (!near_jump(&waves.times, &col.values, t, w, dt))
+                        .then(|| block_mean(&waves.times, &col.values, t, w, &mut hint))
+                }
+            })
+            .collect())
     }
 }
 
@@ -153,18 +166,30 @@ impl Simulate for DesignSimulator<'_> {
     type Error = String;
 
     fn simulate(&self, jobs: &[(usize, Vec<f64>)]) -> Vec<Result<Simulated, String>> {
-        let mut out: Vec<Result<Simulated, String>> = Vec::with_capacity(jobs.len());
-        run_in_order(
-            jobs,
-            self.jobs,
-            |(e, values)| self.sample(*e, values),
-            |_, result| {
-                out.push(match result {
-                    Ok(r) => r,
-                    Err(panic) => Err(format!("internal error: {panic}")),
-                })
-            },
-        );
-        out
+        simulate_jobs(jobs, self.jobs, |e, values| {
+            self.run(e, values).and_then(|w| self.sample(e, &w))
+        })
     }
+}
+
+/// Runs `job` (experiment, free values) for each job on `threads` cores, the results in the
+/// jobs' order; a job that panics is an error of its own.
+pub fn simulate_jobs(
+    jobs: &[(usize, Vec<f64>)],
+    threads: usize,
+    job: impl Fn(usize, &[f64]) -> Result<Simulated, String> + Sync,
+) -> Vec<Result<Simulated, String>> {
+    let mut out: Vec<Result<Simulated, String>> = Vec::with_capacity(jobs.len());
+    run_in_order(
+        jobs,
+        threads,
+        |(e, values)| job(*e, values),
+        |_, result| {
+            out.push(match result {
+                Ok(r) => r,
+                Err(panic) => Err(format!("internal error: {panic}")),
+            })
+        },
+    );
+    out
 }
