@@ -37,6 +37,7 @@ mod record;
 mod signals;
 mod solve_error;
 mod textio;
+mod timeouts;
 
 #[cfg(test)]
 mod tests;

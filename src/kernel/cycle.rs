@@ -509,25 +509,25 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
     /// rows nobody wants: every time point up to the stop time, nothing recorded; returns
     /// the time reached.
     fn run_digital(&mut self, on_report: &mut dyn FnMut(&Report)) -> Result<f64, SimError> {
-        let mut t = 0.0;
+        if self.outcome.is_some() {
+            return Ok(0.0);
+        }
         let view = AnalogView {
             values: &self.values,
             derivatives: &self.derivatives,
         };
-        while self.outcome.is_none() {
-            let next = self.kernel.next_time(t);
-            if next <= t {
-                self.outcome = self.kernel.run_time_point(t, &view, on_report)?;
-                self.kernel.discard_breaks();
-                continue;
+        let (progress, cancel) = (&mut self.progress, &self.cancel);
+        let between = |t: f64| {
+            progress.tick(t);
+            match cancel {
+                Some(c) if c.is_cancelled() => Err(SimError::Interrupted { time: t }),
+                _ => Ok(()),
             }
-            if t >= self.stop {
-                break;
-            }
-            t = next.min(self.stop);
-            self.progress.tick(t);
-            self.check_cancelled(t)?;
-        }
+        };
+        let (t, outcome) = self
+            .kernel
+            .run_digital(self.stop, &view, on_report, between)?;
+        self.outcome = outcome;
         Ok(t)
     }
 

@@ -761,8 +761,10 @@ impl Signals {
     }
 
     /// The update phase at `now`: transactions due become driving values; effective values are
-    /// recomputed; `events` lists the signals whose value changed.
-    #[inline]
+    /// recomputed; `events` lists the signals whose value changed. Inlined into the kernel's
+    /// cycle always: in `EventKernel::run_digital`'s loop the compiler otherwise made it a
+    /// call of its own, twice per time point.
+    #[inline(always)]
     pub fn update(&mut self, now: f64, design: &Design) -> Result<(), SimError> {
         // Only the signals active in the last phase have flags set (`set` gives an event
         // to active signals only).
