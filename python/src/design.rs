@@ -6,7 +6,7 @@ use std::path::PathBuf;
 
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyString};
-use vams::cli::compile::{Compiled, compile_quietly};
+use vams::cli::compile::{Compiled, Prepared, compile_quietly, prepare_quietly};
 use vams::cli::load::{LibrarySources, load_with_libraries, parse_library};
 use vams::cli::params::parse_generic;
 use vams::cli::time::parse_positive_time;
@@ -56,6 +56,16 @@ impl DesignSpec {
     pub fn compile(&self) -> Result<(Compiled, Vec<Finding>), Failure> {
         let loaded = load_with_libraries(&self.paths, &self.libraries)?;
         Ok(compile_quietly(
+            loaded,
+            self.top.as_deref(),
+            self.generics.clone(),
+        )?)
+    }
+
+    /// Loads, parses and analyses, the top chosen, for elaborating several times (a sweep).
+    pub fn prepare(&self) -> Result<Prepared, Failure> {
+        let loaded = load_with_libraries(&self.paths, &self.libraries)?;
+        Ok(prepare_quietly(
             loaded,
             self.top.as_deref(),
             self.generics.clone(),

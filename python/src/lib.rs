@@ -13,6 +13,7 @@ mod error;
 mod frame;
 mod interrupt;
 mod run;
+mod sweep;
 
 use pyo3::prelude::*;
 
@@ -25,12 +26,14 @@ fn vams(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(analyses::dae, m)?)?;
     m.add_function(wrap_pyfunction!(analyses::ac, m)?)?;
     m.add_function(wrap_pyfunction!(analyses::noise, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::dc, m)?)?;
     m.add_class::<diagnostic::Diagnostic>()?;
     m.add_class::<run::RunResult>()?;
     m.add_class::<run::Report>()?;
     m.add_class::<analyses::Dae>()?;
     m.add_class::<analyses::AcResult>()?;
     m.add_class::<analyses::NoiseResult>()?;
+    m.add_class::<sweep::DcResult>()?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

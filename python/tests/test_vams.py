@@ -214,3 +214,21 @@ def test_noise_of_a_divider_is_4kt_times_the_parallel_resistance(root):
     assert len(parts) == 2
     assert np.allclose(sum(parts.values()), n.total, rtol=1e-12)
     assert n.input_gain is None
+
+
+def test_dc_sweep_of_an_integer_generic(root):
+    # n + 1 equal resistors from 1 V: vout = 1 / (n + 1).
+    d = vams.dc(root / "tests" / "dc" / "divider.vhd", ("n", 1, 5, 1), probes=["vout"])
+    assert d.name == "n" and d.columns == ["vout"]
+    assert list(d.values) == [1, 2, 3, 4, 5]
+    assert np.allclose(d["vout"], 1 / (d.values + 1), rtol=1e-9)
+    assert set(d.direction) == {1.0}
+
+
+def test_dc_sweep_stops_where_there_is_no_quiescent_point(root):
+    with pytest.raises(vams.VamsError, match="stopped at p = -0.25") as caught:
+        vams.dc(root / "tests" / "dc" / "no_root.vhd", ("p", 1, -1, -0.25))
+    assert "x * x == p" in str(caught.value)
+    partial = caught.value.result
+    assert list(partial.values) == [1.0, 0.75, 0.5, 0.25, 0.0]
+    assert np.allclose(partial["x"] ** 2, partial.values, atol=1e-6)
