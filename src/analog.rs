@@ -35,6 +35,7 @@ mod tests;
 
 pub use build::{Origin, Unknown};
 pub use error::{AnalogError, AnalogWarning};
+pub use listing::{Dae, DaeEliminated, DaeEquation, DaeIndexReduction, DaeUnknown};
 pub use small_signal::SmallSignalModel;
 pub use tolerance::TOLERANCE_GROUPS;
 
@@ -1123,6 +1124,11 @@ impl AnalogSystem {
     /// source location (`file:line`) and text.
     pub fn listing(&self, design: &Design, sources: &crate::source::SourceMap) -> String {
         listing::listing(self, design, sources)
+    }
+
+    /// The equation system as data: what [`AnalogSystem::listing`] shows.
+    pub fn dae(&self, design: &Design, sources: &crate::source::SourceMap) -> Option<Dae> {
+        listing::dae(self, design, sources)
     }
 
     /// Each Jacobian entry `(row, column)` with whether the equation reads the unknown

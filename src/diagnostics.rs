@@ -159,12 +159,92 @@ pub fn to_report<D: Located>(diag: &D, sources: &SourceMap) -> Report {
 /// Renders a diagnostic as plain text (no colour, fixed width): what the CLI prints when
 /// stderr is not a terminal, and what golden tests compare.
 pub fn render_plain<D: Located>(diag: &D, sources: &SourceMap) -> String {
-    let report = to_report(diag, sources);
+    plain(to_report(diag, sources).as_ref())
+}
+
+/// Renders a diagnostic as plain text (no colour, fixed width).
+fn plain(diag: &dyn Diagnostic) -> String {
     let handler = GraphicalReportHandler::new_themed(GraphicalTheme::unicode_nocolor())
         .with_width(100)
         .with_links(false);
     let mut out = String::new();
     // Writing into a String cannot fail.
-    let _ = handler.render_report(&mut out, report.as_ref());
+    let _ = handler.render_report(&mut out, diag);
     out
+}
+
+/// How serious a [`Finding`] is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Level {
+    Error,
+    Warning,
+}
+
+impl Level {
+    pub fn name(self) -> &'static str {
+        match self {
+            Level::Error => "error",
+            Level::Warning => "warning",
+        }
+    }
+}
+
+/// A diagnostic as data for library users (the Python package): where it is (file name, line
+/// and column from 1; an empty file and 0 for a diagnostic about no place in the sources),
+/// its level, code, message, label and help, and the report it renders from.
+#[derive(Debug)]
+pub struct Finding {
+    pub file: String,
+    pub line: usize,
+    pub column: usize,
+    pub level: Level,
+    pub code: Option<String>,
+    pub message: String,
+    pub label: Option<String>,
+    pub help: Option<String>,
+    /// The diagnostic with its file's text attached, for rendering.
+    pub report: Report,
+}
+
+impl Finding {
+    /// A diagnostic located in `sources`, rendered with its file's text as `vams check`
+    /// renders it; one whose span is not in `sources` is taken as about no place.
+    pub fn located<D: Located>(d: &D, sources: &SourceMap, level: Level) -> Finding {
+        let span = d.primary_span();
+        if span.file.0 as usize >= sources.len() {
+            return Finding::unlocated(Report::new(d.clone()), level);
+        }
+        let (line, column) = sources.line_col(span);
+        Finding {
+            file: sources.file(span.file).name.clone(),
+            line,
+            column,
+            ..Finding::unlocated(to_report(d, sources), level)
+        }
+    }
+
+    /// A diagnostic about no place in the sources (a missing file, a summary).
+    pub fn unlocated(report: Report, level: Level) -> Finding {
+        let d: &dyn Diagnostic = report.as_ref();
+        let code = d.code().map(|c| c.to_string());
+        let message = d.to_string();
+        let label = (d.labels().into_iter().flatten()).find_map(|l| l.label().map(str::to_string));
+        let help = d.help().map(|h| h.to_string());
+        Finding {
+            file: String::new(),
+            line: 0,
+            column: 0,
+            level,
+            code,
+            message,
+            label,
+            help,
+            report,
+        }
+    }
+
+    /// The text `vams check` prints for it when stderr is not a terminal.
+    pub fn render_plain(&self) -> String {
+        plain(self.report.as_ref())
+    }
 }

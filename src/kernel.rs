@@ -168,6 +168,24 @@ pub struct SimStats {
     pub breaks: usize,
 }
 
+impl SimStats {
+    /// Every counter with its name, in the order `vams run --stats` lists them.
+    pub fn named(&self) -> [(&'static str, usize); 10] {
+        [
+            ("accepted steps", self.accepted_steps),
+            ("rejected steps", self.rejected_steps),
+            ("Newton failures", self.newton_failures),
+            ("Newton iterations", self.newton_iterations),
+            ("factorizations", self.factorizations),
+            ("pivot searches", self.pivot_searches),
+            ("residual evaluations", self.residual_evaluations),
+            ("events", self.events),
+            ("delta cycles", self.delta_cycles),
+            ("breaks", self.breaks),
+        ]
+    }
+}
+
 #[derive(Clone, Debug)]
 pub struct SimResult {
     pub waveforms: Waveforms,

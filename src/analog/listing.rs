@@ -3,8 +3,6 @@
 //! Formulas are the assembled residuals (constants folded, before source scaling) printed with
 //! unknown and signal names and the fewest parentheses that keep VHDL's precedence.
 
-use std::fmt::Write;
-
 use super::AnalogSystem;
 use super::build::{self, Origin};
 use super::sym::{Bin, Sym, Un};
@@ -21,16 +19,69 @@ fn location(span: Span, sources: &SourceMap) -> String {
     }
 }
 
-pub fn listing(sys: &AnalogSystem, design: &Design, sources: &SourceMap) -> String {
-    let mut out = String::new();
-    // `sys` was built from `design`, so assembling it again succeeds; the system keeps only
-    // the reduced equations, and the listing shows the model's own.
-    let Ok(asm) = build::assemble(design, &sys.implicit_flows) else {
-        return out;
-    };
+/// The equation system of `vams dae` as data: what [`Dae`]'s text shows.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Dae {
+    /// The model's unknowns, in assembly order.
+    pub unknowns: Vec<DaeUnknown>,
+    /// The model's equations (residuals, each `= 0`), in assembly order.
+    pub equations: Vec<DaeEquation>,
+    /// What index reduction added, when the model has index 2 or more.
+    pub index_reduction: Option<DaeIndexReduction>,
+    /// The solver's unknowns when some were eliminated (else every unknown is one).
+    pub solver_unknowns: Vec<String>,
+    /// The unknowns eliminated, each as a formula of the solver's unknowns.
+    pub eliminated: Vec<DaeEliminated>,
+    /// How many unknowns the system has: the model's, and the derivatives index reduction
+    /// made unknowns.
+    pub all_unknowns: usize,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct DaeUnknown {
+    pub name: String,
+    /// True when some equation reads its derivative.
+    pub differential: bool,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct DaeEquation {
+    /// Where it comes from: `file:line` of a simultaneous statement, or what generated it.
+    pub origin: String,
+    /// The residual, with unknown and signal names (the equation is `residual = 0`).
+    pub residual: String,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct DaeIndexReduction {
+    /// The structural index of the model as written.
+    pub index: usize,
+    /// The equations added, numbered after the model's.
+    pub added: Vec<DaeEquation>,
+    /// The derivatives made algebraic unknowns.
+    pub dummies: Vec<String>,
+    /// The unknowns whose derivatives remain.
+    pub states: Vec<String>,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct DaeEliminated {
+    /// Its index among the unknowns.
+    pub unknown: usize,
+    pub name: String,
+    /// Its value in terms of the solver's unknowns.
+    pub formula: String,
+    /// The equation it was solved from.
+    pub equation: usize,
+}
+
+/// The equation system of `sys`; `None` when `design` (which `sys` was built from, so never
+/// expected) does not assemble.
+pub fn dae(sys: &AnalogSystem, design: &Design, sources: &SourceMap) -> Option<Dae> {
+    // The system keeps only the reduced equations, and the listing shows the model's own.
+    let asm = build::assemble(design, &sys.implicit_flows).ok()?;
     let names: Vec<String> = asm.unknowns.iter().map(|u| u.name(design)).collect();
-    let n = names.len();
-    let mut differential = vec![false; n];
+    let mut differential = vec![false; names.len()];
     for r in &asm.residuals {
         r.visit(&mut |e| {
             if let Sym::Dot(j) = e {
@@ -38,52 +89,107 @@ pub fn listing(sys: &AnalogSystem, design: &Design, sources: &SourceMap) -> Stri
             }
         });
     }
-    let width = names.iter().map(String::len).max().unwrap_or(0);
-    // Writing into a String cannot fail.
-    let _ = writeln!(out, "unknowns ({n}):");
-    for (i, name) in names.iter().enumerate() {
-        let kind = if differential[i] {
-            "differential"
-        } else {
-            "algebraic"
-        };
-        let _ = writeln!(out, "  {i:>3}  {name:<width$}  {kind}");
-    }
-    let _ = writeln!(out, "equations ({}):", asm.residuals.len());
+    let unknowns = (names.iter().zip(differential))
+        .map(|(name, differential)| DaeUnknown {
+            name: name.clone(),
+            differential,
+        })
+        .collect();
     let printer = Printer {
         names: &names,
         design,
     };
-    let origins: Vec<String> = asm
-        .origins
-        .iter()
-        .map(|origin| match *origin {
-            Origin::User(k) => location(design.equations[k].span, sources),
-            Origin::Delayed(k) => location(design.delays[k].span, sources),
-            other => other.describe(design),
+    let equations = (asm.origins.iter().zip(&asm.residuals))
+        .map(|(origin, r)| DaeEquation {
+            origin: match *origin {
+                Origin::User(k) => location(design.equations[k].span, sources),
+                Origin::Delayed(k) => location(design.delays[k].span, sources),
+                other => other.describe(design),
+            },
+            residual: printer.text(r),
         })
         .collect();
-    write_equations(&mut out, &printer, 0, origins.iter().zip(&asm.residuals));
-    let names: &[String] = match &sys.index_reduced {
-        Some(reduced) => {
-            let _ = writeln!(
+    let index_reduction = sys.index_reduced.as_ref().map(|reduced| {
+        let printer = Printer {
+            names: &reduced.names,
+            design,
+        };
+        DaeIndexReduction {
+            index: reduced.index,
+            added: (reduced.equations.iter())
+                .map(|(from, r)| DaeEquation {
+                    origin: from.clone(),
+                    residual: printer.text(r),
+                })
+                .collect(),
+            dummies: reduced.dummies.clone(),
+            states: reduced.states.clone(),
+        }
+    });
+    let names = sys.index_reduced.as_ref().map_or(&names, |r| &r.names);
+    let printer = Printer {
+        names: &sys.names,
+        design,
+    };
+    let eliminated = (sys.eliminated.iter())
+        .map(|e| DaeEliminated {
+            unknown: e.unknown,
+            name: names[e.unknown].clone(),
+            formula: printer.text(&e.replacement),
+            equation: e.solved_from,
+        })
+        .collect::<Vec<_>>();
+    Some(Dae {
+        unknowns,
+        equations,
+        index_reduction,
+        solver_unknowns: match eliminated.is_empty() {
+            true => Vec::new(),
+            false => sys.names.clone(),
+        },
+        eliminated,
+        all_unknowns: names.len(),
+    })
+}
+
+pub fn listing(sys: &AnalogSystem, design: &Design, sources: &SourceMap) -> String {
+    dae(sys, design, sources).map_or_else(String::new, |d| d.to_string())
+}
+
+/// The text of `vams dae`.
+impl std::fmt::Display for Dae {
+    fn fmt(&self, out: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let n = self.unknowns.len();
+        let width = self
+            .unknowns
+            .iter()
+            .map(|u| u.name.len())
+            .max()
+            .unwrap_or(0);
+        writeln!(out, "unknowns ({n}):")?;
+        for (i, u) in self.unknowns.iter().enumerate() {
+            let kind = match u.differential {
+                true => "differential",
+                false => "algebraic",
+            };
+            writeln!(out, "  {i:>3}  {:<width$}  {kind}", u.name)?;
+        }
+        writeln!(out, "equations ({}):", self.equations.len())?;
+        write_equations(out, 0, &self.equations)?;
+        if let Some(reduced) = &self.index_reduction {
+            writeln!(
                 out,
                 "index reduction (the model has index {}): {} equation(s) added",
                 reduced.index,
-                reduced.equations.len()
-            );
-            let printer = Printer {
-                names: &reduced.names,
-                design,
-            };
-            let added = reduced.equations.iter().map(|(from, r)| (from, r));
-            write_equations(&mut out, &printer, asm.residuals.len(), added);
-            let _ = writeln!(
+                reduced.added.len()
+            )?;
+            write_equations(out, self.equations.len(), &reduced.added)?;
+            writeln!(
                 out,
                 "  dummy derivatives (algebraic unknowns): {}",
                 reduced.dummies.join(", ")
-            );
-            let _ = writeln!(
+            )?;
+            writeln!(
                 out,
                 "  states: {} (chosen at the initial guesses; a run chooses again at its \
                  initial break values)",
@@ -91,65 +197,50 @@ pub fn listing(sys: &AnalogSystem, design: &Design, sources: &SourceMap) -> Stri
                     true => "none".to_string(),
                     false => reduced.states.join(", "),
                 }
-            );
-            &reduced.names
+            )?;
         }
-        None => &names,
-    };
-    let n = names.len();
-    if sys.eliminated.is_empty() {
-        return out;
-    }
-    let _ = writeln!(
-        out,
-        "solver unknowns ({} of {n}): {}",
-        sys.names.len(),
-        sys.names.join(", ")
-    );
-    let _ = writeln!(out, "eliminated ({}):", sys.eliminated.len());
-    let printer = Printer {
-        names: &sys.names,
-        design,
-    };
-    let width = sys
-        .eliminated
-        .iter()
-        .map(|e| names[e.unknown].len())
-        .max()
-        .unwrap_or(0);
-    for e in &sys.eliminated {
-        let mut formula = String::new();
-        printer.print(&e.replacement, 0, &mut formula);
-        let name = &names[e.unknown];
-        let _ = writeln!(
+        if self.eliminated.is_empty() {
+            return Ok(());
+        }
+        writeln!(
             out,
-            "  {:>3}  {name:<width$} = {formula}   (equation {})",
-            e.unknown, e.solved_from
-        );
+            "solver unknowns ({} of {}): {}",
+            self.solver_unknowns.len(),
+            self.all_unknowns,
+            self.solver_unknowns.join(", ")
+        )?;
+        writeln!(out, "eliminated ({}):", self.eliminated.len())?;
+        let width = (self.eliminated.iter())
+            .map(|e| e.name.len())
+            .max()
+            .unwrap_or(0);
+        for e in &self.eliminated {
+            writeln!(
+                out,
+                "  {:>3}  {:<width$} = {}   (equation {})",
+                e.unknown, e.name, e.formula, e.equation
+            )?;
+        }
+        Ok(())
     }
-    out
 }
 
 /// One line per equation, numbered from `first`: number, origin (padded to the widest) and
-/// formula.
-fn write_equations<'e>(
-    out: &mut String,
-    printer: &Printer,
+/// residual.
+fn write_equations(
+    out: &mut std::fmt::Formatter<'_>,
     first: usize,
-    equations: impl Iterator<Item = (&'e String, &'e Sym)> + Clone,
-) {
-    let width = equations
-        .clone()
-        .map(|(from, _)| from.len())
+    equations: &[DaeEquation],
+) -> std::fmt::Result {
+    let width = (equations.iter())
+        .map(|e| e.origin.len())
         .max()
         .unwrap_or(0);
-    for (i, (from, r)) in equations.enumerate() {
-        let mut formula = String::new();
-        printer.print(r, 0, &mut formula);
+    for (i, e) in equations.iter().enumerate() {
         let i = i + first;
-        // Writing into a String cannot fail.
-        let _ = writeln!(out, "  {i:>3}  {from:<width$}  {formula} = 0");
+        writeln!(out, "  {i:>3}  {:<width$}  {} = 0", e.origin, e.residual)?;
     }
+    Ok(())
 }
 
 struct Printer<'a> {
@@ -244,6 +335,13 @@ fn bin_name(op: Bin) -> &'static str {
 }
 
 impl Printer<'_> {
+    /// `e` as text.
+    fn text(&self, e: &Sym) -> String {
+        let mut out = String::new();
+        self.print(e, 0, &mut out);
+        out
+    }
+
     /// Prints `e`, parenthesised when it binds less tightly than `context` requires.
     fn print(&self, e: &Sym, context: u8, out: &mut String) {
         let p = precedence(e);

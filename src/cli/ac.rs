@@ -168,7 +168,7 @@ pub fn parse_frequency(text: &str) -> Result<f64, String> {
 
 /// The probed quantities: the named ones, or every quantity but the spectral and noise
 /// sources and those elaboration generated (named with a tick, as `vams run` leaves them out).
-pub(super) fn probes(design: &Design, names: &[String]) -> Result<Vec<QuantityId>, CliError> {
+pub fn probes(design: &Design, names: &[String]) -> Result<Vec<QuantityId>, CliError> {
     if names.is_empty() {
         let sources: Vec<QuantityId> = (design.spectral_sources.iter().map(|s| s.quantity))
             .chain(design.noise_sources.iter().map(|s| s.quantity))
@@ -220,7 +220,7 @@ pub struct Response {
 
 /// The design linearised about its quiescent point: the solver's system, the point, and the
 /// small-signal model.
-pub(super) struct Linearised {
+pub struct Linearised {
     pub system: AnalogSystem,
     pub x: Vec<f64>,
     pub xdot: Vec<f64>,
@@ -228,9 +228,17 @@ pub(super) struct Linearised {
 }
 
 /// Why a design could not be linearised: the diagnostics, rendered, and the summary error.
-pub(super) struct NotLinearised {
+pub struct NotLinearised {
     pub diagnostics: String,
     pub error: CliError,
+}
+
+impl NotLinearised {
+    /// Prints the diagnostics on stderr and gives the summary error.
+    pub fn print(self) -> Report {
+        eprint!("{}", self.diagnostics);
+        self.error.into()
+    }
 }
 
 /// Linearises an elaborated design about its quiescent point (see [`respond`]); the errors
@@ -239,15 +247,12 @@ pub(super) fn linearise(
     design: &Design,
     sources: &crate::source::SourceMap,
 ) -> Result<Linearised, Report> {
-    linearise_quietly(design, sources).map_err(|failure| {
-        eprint!("{}", failure.diagnostics);
-        failure.error.into()
-    })
+    linearise_quietly(design, sources).map_err(NotLinearised::print)
 }
 
 /// [`linearise`], the diagnostics rendered into the failure rather than printed (`vams
 /// test` reports them with the testbench).
-pub(super) fn linearise_quietly(
+pub fn linearise_quietly(
     design: &Design,
     sources: &crate::source::SourceMap,
 ) -> Result<Linearised, NotLinearised> {
@@ -312,7 +317,7 @@ pub(super) fn linearise_quietly(
 }
 
 /// The response of `probes` at `frequencies` of a linearised design.
-pub(super) fn respond(
+pub fn respond(
     top: &str,
     linearised: &mut Linearised,
     probes: &[QuantityId],

@@ -21,15 +21,15 @@ use miette::Report;
 use crate::analog::AnalogSystem;
 use crate::analysis::{Analysis, analyse};
 use crate::ast::DesignFile;
-use crate::diagnostics::Located;
+use crate::diagnostics::{Finding, Level, Located};
 use crate::elaborate::{
     ElabOptions, ElabWarning, TopCandidate, elaborate_analysed, top_candidates,
 };
 use crate::source::{FileId, Span};
 
 use super::error::CliError;
-use super::load::{Loaded, load_with_libraries};
-use super::render::render_located;
+use super::load::{InputError, LibrarySources, Loaded, load_with_libraries};
+use super::render::render;
 
 /// Arguments of `vams check`.
 #[derive(Debug, Args)]
@@ -56,8 +56,15 @@ struct Tally {
     /// Tops elaborated, and those whose analog system was built.
     elaborated: usize,
     analog_checked: usize,
-    /// Rendered diagnostics already printed (tops share instantiated entities).
-    printed: HashSet<String>,
+    /// Rendered diagnostics already found (tops share instantiated entities).
+    seen: HashSet<String>,
+    /// At most how many diagnostics of a file or a top to print on stderr as they are
+    /// found; `None`: print nothing.
+    echo: Option<usize>,
+    /// Every diagnostic, once, in the order found.
+    found: Vec<Finding>,
+    /// Why some candidates were not elaborated or checked alone.
+    notes: Vec<String>,
     /// Where analysis reported an error: elaboration, which still does its own name lookup,
     /// finds the same ones again.
     analysed_spans: Vec<Span>,
@@ -82,36 +89,87 @@ impl Tally {
         })
     }
 
-    /// Prints the diagnostics not printed before, at most `max`; returns how many were new.
-    fn print<D: Located>(&mut self, errors: &[D], loaded: &Loaded, max: usize) -> usize {
+    /// Keeps the diagnostics not found before (and prints them, at most the echo's number);
+    /// returns how many were new.
+    fn keep<D: Located>(&mut self, errors: &[D], loaded: &Loaded, level: Level) -> usize {
         let mut new = 0;
+        let max = self.echo.unwrap_or(0);
         for e in errors {
             if self.already_analysed(e.primary_span()) {
                 continue;
             }
-            let text = render_located(e, &loaded.sources);
-            if self.printed.insert(text.clone()) {
+            let finding = Finding::located(e, &loaded.sources, level);
+            if self.seen.insert(finding.render_plain()) {
                 if new < max {
-                    eprint!("{text}");
+                    eprint!("{}", render(finding.report.as_ref()));
                 }
                 new += 1;
+                self.found.push(finding);
             }
         }
-        if new > max {
+        if self.echo.is_some() && new > max {
             eprintln!("  ... and {} more\n", new - max);
         }
         new
     }
+
+    /// A note on what was not checked, printed when echoing.
+    fn note(&mut self, text: String) {
+        if self.echo.is_some() {
+            eprintln!("note: {text}");
+        }
+        self.notes.push(text);
+    }
+}
+
+/// What `vams check` found.
+#[derive(Debug)]
+pub struct Checked {
+    /// Every diagnostic (errors and warnings), each once, in the order found: syntax,
+    /// analysis, then elaboration and the analog system top by top.
+    pub findings: Vec<Finding>,
+    /// Why some top candidates were not elaborated or their analog system not built.
+    pub notes: Vec<String>,
+    /// The closing line: what was checked and the error counts by stage.
+    pub summary: String,
+    /// How many errors (warnings not counted).
+    pub errors: usize,
 }
 
 /// Runs the check; every diagnostic goes to stderr.
 pub fn run(args: &CheckArgs) -> Result<(), Report> {
-    let loaded = load_with_libraries(&args.paths, &args.libraries)?;
-    loaded.print_syntax_errors(args.max_errors);
+    let checked = diagnose(&args.paths, &args.libraries, Some(args.max_errors))?;
+    eprintln!("{}", checked.summary);
+    match checked.errors {
+        0 => Ok(()),
+        count => Err(CliError::CheckFailed { count }.into()),
+    }
+}
+
+/// Checks the sources under `paths` (library `work`) and `libraries` as `vams check` does,
+/// printing at most `echo` diagnostics per file or top on stderr as they are found (nothing
+/// when `None`) and giving them all back.
+pub fn diagnose(
+    paths: &[PathBuf],
+    libraries: &[LibrarySources],
+    echo: Option<usize>,
+) -> Result<Checked, InputError> {
+    let loaded = load_with_libraries(paths, libraries)?;
+    if let Some(max) = echo {
+        loaded.print_syntax_errors(max);
+    }
     let mut tally = Tally {
         syntax: loaded.error_count(),
+        echo,
         ..Tally::default()
     };
+    for (_, errors) in &loaded.syntax_errors {
+        (tally.found).extend(
+            errors
+                .iter()
+                .map(|e| Finding::located(e, &loaded.sources, Level::Error)),
+        );
+    }
     // A file with syntax errors is left out; the others are analysed and elaborated, so
     // that one broken file among many does not hide the rest's errors.
     let kept: Vec<(FileId, DesignFile)>;
@@ -125,35 +183,29 @@ pub fn run(args: &CheckArgs) -> Result<(), Report> {
         let left_out: Vec<&str> = (loaded.syntax_errors.iter())
             .map(|(id, _)| loaded.sources.file(*id).name.as_str())
             .collect();
-        eprintln!(
-            "note: {} file(s) with syntax errors left out of the analysis ({}); what they \
-             declare is missing to the other files",
+        tally.note(format!(
+            "{} file(s) with syntax errors left out of the analysis ({}); what they declare \
+             is missing to the other files",
             left_out.len(),
             left_out.join(", ")
-        );
+        ));
         kept.as_slice()
     };
     // Every unit of every file, whether or not a top reaches it.
     let analysis = analyse(&loaded.sources, files);
     for unit in &analysis.units {
-        tally.analysis += tally.print(&unit.errors, &loaded, args.max_errors);
+        tally.analysis += tally.keep(&unit.errors, &loaded, Level::Error);
     }
     tally.analysed_spans = analysis.errors().map(|e| e.primary_span()).collect();
     for candidate in top_candidates(&analysis, files) {
-        check_top(
-            &candidate,
-            &analysis,
-            &loaded,
-            files,
-            args.max_errors,
-            &mut tally,
-        );
+        check_top(&candidate, &analysis, &loaded, files, &mut tally);
     }
-    eprintln!("{}", summary(&loaded, &tally));
-    match tally.errors() {
-        0 => Ok(()),
-        count => Err(CliError::CheckFailed { count }.into()),
-    }
+    Ok(Checked {
+        summary: summary(&loaded, &tally),
+        errors: tally.errors(),
+        findings: tally.found,
+        notes: tally.notes,
+    })
 }
 
 /// Elaborates one candidate and builds its analog system, counting and printing the errors.
@@ -162,24 +214,23 @@ fn check_top(
     analysis: &Analysis,
     loaded: &Loaded,
     files: &[(FileId, DesignFile)],
-    max: usize,
     tally: &mut Tally,
 ) {
     if !top.has_architecture && top.configurations.is_empty() {
-        eprintln!(
-            "note: `{}` is not elaborated: it has no architecture (an entity declaration alone \
-             is legal; `vams run` needs one)",
+        tally.note(format!(
+            "`{}` is not elaborated: it has no architecture (an entity declaration alone is \
+             legal; `vams run` needs one)",
             top.name
-        );
+        ));
         return;
     }
     if !top.can_elaborate() {
-        eprintln!(
-            "note: `{}` is not elaborated: no default for generic(s) {}; it is analysed, and \
-             what depends on the generics' values is checked where it is instantiated",
+        tally.note(format!(
+            "`{}` is not elaborated: no default for generic(s) {}; it is analysed, and what \
+             depends on the generics' values is checked where it is instantiated",
             top.name,
             quoted(&top.generics_without_default)
-        );
+        ));
         return;
     }
     // An entity that configuration declarations configure is elaborated through them.
@@ -188,7 +239,7 @@ fn check_top(
         configurations => configurations,
     };
     for name in names {
-        check_elaborated(name, top, analysis, loaded, files, max, tally);
+        check_elaborated(name, top, analysis, loaded, files, tally);
     }
 }
 
@@ -200,7 +251,6 @@ fn check_elaborated(
     analysis: &Analysis,
     loaded: &Loaded,
     files: &[(FileId, DesignFile)],
-    max: usize,
     tally: &mut Tally,
 ) {
     let options = ElabOptions {
@@ -211,19 +261,19 @@ fn check_elaborated(
     let design = match elaborate_analysed(analysis, &loaded.sources, files, &options) {
         Ok(design) => design,
         Err(errors) => {
-            tally.elaboration += tally.print(&errors, loaded, max);
+            tally.elaboration += tally.keep(&errors, loaded, Level::Error);
             return;
         }
     };
     // Warnings are not errors: printed once, not counted.
     let warnings: Vec<ElabWarning> = design.warnings.iter().map(ElabWarning::from).collect();
-    tally.print(&warnings, loaded, max);
+    tally.keep(&warnings, loaded, Level::Warning);
     if !top.is_closed() {
-        eprintln!(
-            "note: the analog system of `{}` is not checked alone: port(s) {} would be open",
+        tally.note(format!(
+            "the analog system of `{}` is not checked alone: port(s) {} would be open",
             top.name,
             quoted(&top.analog_ports)
-        );
+        ));
         return;
     }
     if design.quantities.is_empty() {
@@ -232,9 +282,9 @@ fn check_elaborated(
     tally.analog_checked += 1;
     match AnalogSystem::new(&design) {
         Ok(system) => {
-            tally.print(&system.warnings(&design), loaded, max);
+            tally.keep(&system.warnings(&design), loaded, Level::Warning);
         }
-        Err(errors) => tally.analog += tally.print(&errors, loaded, max),
+        Err(errors) => tally.analog += tally.keep(&errors, loaded, Level::Error),
     }
 }
 

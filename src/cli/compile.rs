@@ -9,12 +9,14 @@ use miette::Report;
 
 use crate::analysis::{Analysis, analyse};
 use crate::design::Design;
+use crate::diagnostics::{Finding, Level, Located};
 use crate::elaborate::{ElabError, ElabOptions, ElabWarning, elaborate_analysed, find_tops};
+use crate::source::SourceMap;
 
 use super::error::CliError;
 use super::load::{Loaded, load_with_libraries};
 use super::params::{merge_generics, parse_generic, read_params};
-use super::render::render_located;
+use super::render::render;
 
 /// Sources, top entity and generic overrides.
 #[derive(Debug, Args)]
@@ -42,6 +44,38 @@ pub struct DesignArgs {
 pub struct Compiled {
     pub loaded: Loaded,
     pub design: Design,
+}
+
+/// Why sources did not give a design: the diagnostics of the stage that failed, and the
+/// summary error (for a library user to show or raise; the commands print them).
+#[derive(Debug)]
+pub struct NotCompiled {
+    pub findings: Vec<Finding>,
+    pub error: Report,
+}
+
+impl NotCompiled {
+    fn new<D: Located>(errors: &[D], sources: &SourceMap, error: CliError) -> NotCompiled {
+        NotCompiled {
+            findings: located(errors, sources, Level::Error),
+            error: error.into(),
+        }
+    }
+
+    /// Prints the diagnostics on stderr and gives the summary error.
+    pub fn print(self) -> Report {
+        for f in &self.findings {
+            eprint!("{}", render(f.report.as_ref()));
+        }
+        self.error
+    }
+}
+
+/// Each of `diagnostics` as a [`Finding`] of `level`.
+fn located<D: Located>(diagnostics: &[D], sources: &SourceMap, level: Level) -> Vec<Finding> {
+    (diagnostics.iter())
+        .map(|d| Finding::located(d, sources, level))
+        .collect()
 }
 
 /// The top entity: the one given, or the single candidate.
@@ -89,27 +123,34 @@ impl Prepared {
         elaborate_analysed(&self.analysis, &loaded.sources, &loaded.files, &options)
     }
 
+    /// [`Prepared::try_elaborate`] with the errors as [`Finding`]s.
+    pub fn elaborate_quietly(&self, extra: &[(String, String)]) -> Result<Design, NotCompiled> {
+        self.try_elaborate(extra).map_err(|errors| {
+            let count = errors.len();
+            NotCompiled::new(
+                &errors,
+                &self.loaded.sources,
+                CliError::Elaboration { count },
+            )
+        })
+    }
+
     /// [`Prepared::try_elaborate`] with the errors printed (the warnings are the caller's:
     /// [`Prepared::print_warnings`]).
     pub fn elaborate(&self, extra: &[(String, String)]) -> Result<Design, Report> {
-        self.try_elaborate(extra).map_err(|errors| {
-            for e in &errors {
-                eprint!("{}", render_located(e, &self.loaded.sources));
-            }
-            CliError::Elaboration {
-                count: errors.len(),
-            }
-            .into()
-        })
+        self.elaborate_quietly(extra).map_err(NotCompiled::print)
+    }
+
+    /// The elaboration warnings of `design`.
+    pub fn warnings(&self, design: &Design) -> Vec<Finding> {
+        let warnings: Vec<ElabWarning> = design.warnings.iter().map(ElabWarning::from).collect();
+        located(&warnings, &self.loaded.sources, Level::Warning)
     }
 
     /// Prints the elaboration warnings of `design`.
     pub fn print_warnings(&self, design: &Design) {
-        for u in &design.warnings {
-            eprint!(
-                "{}",
-                render_located(&ElabWarning::from(u), &self.loaded.sources)
-            );
+        for w in self.warnings(design) {
+            eprint!("{}", render(w.report.as_ref()));
         }
     }
 }
@@ -133,32 +174,53 @@ pub fn prepare_loaded(
     generics: Vec<(String, String)>,
 ) -> Result<Prepared, Report> {
     if !loaded.syntax_errors.is_empty() {
+        // At most 20 a file on a terminal.
         loaded.print_syntax_errors(20);
         return Err(CliError::Syntax {
             count: loaded.error_count(),
         }
         .into());
     }
+    prepare_quietly(loaded, top, generics).map_err(NotCompiled::print)
+}
+
+/// [`prepare_loaded`] with the diagnostics as [`Finding`]s instead of printed.
+pub fn prepare_quietly(
+    loaded: Loaded,
+    top: Option<&str>,
+    generics: Vec<(String, String)>,
+) -> Result<Prepared, NotCompiled> {
+    if !loaded.syntax_errors.is_empty() {
+        let errors: Vec<_> = (loaded.syntax_errors.iter())
+            .flat_map(|(_, errors)| errors.iter().cloned())
+            .collect();
+        let count = errors.len();
+        return Err(NotCompiled::new(
+            &errors,
+            &loaded.sources,
+            CliError::Syntax { count },
+        ));
+    }
     // Every unit of every file is analysed, as a VHDL tool analyses each file before it
     // elaborates: an error in a unit the top does not reach still fails the run.
     let analysis = analyse(&loaded.sources, &loaded.files);
-    let errors: Vec<_> = analysis.errors().collect();
+    let errors: Vec<_> = analysis.errors().cloned().collect();
     if !errors.is_empty() {
-        for e in &errors {
-            eprint!("{}", render_located(*e, &loaded.sources));
-        }
-        return Err(CliError::Analysis {
-            count: errors.len(),
-        }
-        .into());
+        let count = errors.len();
+        return Err(NotCompiled::new(
+            &errors,
+            &loaded.sources,
+            CliError::Analysis { count },
+        ));
     }
-    let top = choose_top(
-        top,
-        match top {
-            Some(_) => Vec::new(),
-            None => find_tops(&analysis, &loaded.files),
-        },
-    )?;
+    let candidates = match top {
+        Some(_) => Vec::new(),
+        None => find_tops(&analysis, &loaded.files),
+    };
+    let top = choose_top(top, candidates).map_err(|e| NotCompiled {
+        findings: Vec::new(),
+        error: e.into(),
+    })?;
     Ok(Prepared {
         loaded,
         analysis,
@@ -171,11 +233,16 @@ pub fn prepare_loaded(
 /// metric column, a fit's matched quantity): the closest name, or how names are written;
 /// `None` when it has one.
 pub fn unknown_probe_help(design: &Design, name: &str) -> Option<String> {
-    let names = design
-        .quantities
-        .iter()
-        .map(|q| q.name.as_str())
+    let names = (design.quantities.iter().map(|q| q.name.as_str()))
         .chain(design.signals.iter().map(|s| s.name.as_str()));
+    unknown_name_help(names, name)
+}
+
+/// [`unknown_probe_help`] among the recorded `names` (a run's columns).
+pub fn unknown_name_help<'a>(
+    names: impl Iterator<Item = &'a str> + Clone,
+    name: &str,
+) -> Option<String> {
     if names.clone().any(|n| n == name) {
         return None;
     }
@@ -199,6 +266,23 @@ pub fn compile(args: &DesignArgs) -> Result<Compiled, Report> {
         loaded: prepared.loaded,
         design,
     })
+}
+
+/// Parses, analyses and elaborates sources already loaded, the diagnostics as [`Finding`]s
+/// instead of printed: the design and its elaboration warnings, or why there is none.
+pub fn compile_quietly(
+    loaded: Loaded,
+    top: Option<&str>,
+    generics: Vec<(String, String)>,
+) -> Result<(Compiled, Vec<Finding>), NotCompiled> {
+    let prepared = prepare_quietly(loaded, top, generics)?;
+    let design = prepared.elaborate_quietly(&[])?;
+    let warnings = prepared.warnings(&design);
+    let compiled = Compiled {
+        loaded: prepared.loaded,
+        design,
+    };
+    Ok((compiled, warnings))
 }
 
 /// Ends the life of what a one-shot command built without dropping it: the process exits

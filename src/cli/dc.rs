@@ -14,13 +14,14 @@ use miette::Report;
 use rustc_hash::FxHashMap;
 
 use crate::design::Design;
-use crate::kernel::{SimError, SimOptions, operating_point};
+use crate::diagnostics::Finding;
+use crate::kernel::{Cancel, SimError, SimOptions, operating_point};
 use crate::output::atomic::{commit, temp_path};
 use crate::output::csv::{format_number, push_number};
 use crate::output::plot::{Panel, Trace, plot_panels_over};
 
 use super::ac::csv_path;
-use super::compile::{DesignArgs, Prepared, discard_at_exit, prepare};
+use super::compile::{DesignArgs, NotCompiled, Prepared, discard_at_exit, prepare};
 use super::error::CliError;
 use super::interrupt::{cancel_on_ctrl_c, remove_on_exit};
 use super::render::render_sim_error;
@@ -163,8 +164,8 @@ struct Solved {
 
 /// Why one point could not be solved.
 enum PointError {
-    /// The design did not elaborate with that value (printed already): the sweep ends.
-    Elaboration(Report),
+    /// The design did not elaborate with that value: the sweep ends.
+    Elaboration(NotCompiled),
     /// No quiescent point: worth approaching in smaller steps.
     Solve(SimError),
 }
@@ -174,8 +175,10 @@ enum PointError {
 struct PointSolver<'a> {
     prepared: &'a Prepared,
     sweep: &'a Sweep,
-    /// Whether the elaboration warnings were printed (once, not per point).
-    warned: bool,
+    /// The elaboration warnings, once the first point is elaborated (not per point).
+    warnings: Option<Vec<Finding>>,
+    /// Print the warnings as they are found.
+    echo: bool,
 }
 
 impl PointSolver<'_> {
@@ -183,11 +186,13 @@ impl PointSolver<'_> {
         let extra = [(self.sweep.name.clone(), self.sweep.literal(value))];
         let mut design = self
             .prepared
-            .elaborate(&extra)
+            .elaborate_quietly(&extra)
             .map_err(PointError::Elaboration)?;
-        if !self.warned {
-            self.prepared.print_warnings(&design);
-            self.warned = true;
+        if self.warnings.is_none() {
+            if self.echo {
+                self.prepared.print_warnings(&design);
+            }
+            self.warnings = Some(self.prepared.warnings(&design));
         }
         if let Some(guess) = guess {
             seed(&mut design, guess);
@@ -435,40 +440,52 @@ fn write_error(path: &Path, e: &dyn std::fmt::Display) -> CliError {
     }
 }
 
-/// Runs `vams dc`.
-pub fn run(args: &DcArgs) -> Result<(), Report> {
-    let started = Instant::now();
-    let sweep = Sweep::parse(&args.sweep)?;
-    let prepared = prepare(&args.design)?;
+/// The points of a sweep, solved in order, each from the last one's quantities.
+pub struct Swept {
+    columns: Columns,
+    /// Why the sweep stopped before its last point: the note for the CSV and the error.
+    pub ending: Option<(String, CliError)>,
+    /// The solver's diagnostic of the point that failed, rendered.
+    pub failure: String,
+    /// The elaboration warnings (of the first point).
+    pub warnings: Vec<Finding>,
+    /// How many points the sweep has (both ways counted).
+    pub planned: usize,
+}
+
+impl Swept {
+    /// The probed curves (every quantity but the spectral sources without `probes`).
+    pub fn curves(&self, probes: &[String]) -> Result<Curves, CliError> {
+        self.columns.curves(probes)
+    }
+}
+
+/// Sweeps `sweep` over the design of `prepared` (up to TO and back with `both_ways`) until
+/// the end, a point without a quiescent point or `cancel`; with `echo`, the warnings and the
+/// failed point's diagnostic are printed as they are found. An elaboration error ends it.
+pub fn sweep_points(
+    prepared: &Prepared,
+    sweep: &Sweep,
+    both_ways: bool,
+    cancel: &Cancel,
+    echo: bool,
+) -> Result<Swept, NotCompiled> {
     let mut values: Vec<(f64, f64)> = sweep.values.iter().map(|&v| (v, 1.0)).collect();
-    if args.both_ways {
+    if both_ways {
         // Back from the turning point, which is not solved twice.
         let back = sweep.values.iter().rev().skip(1).map(|&v| (v, -1.0));
         values.extend(back);
     }
-    let csv = args.output.as_deref().map(Pending::create).transpose()?;
-    let plot = match args.plot.as_deref().map(Pending::create).transpose() {
-        Ok(p) => p,
-        Err(e) => {
-            if let Some(c) = &csv {
-                c.abandon();
-            }
-            return Err(e.into());
-        }
-    };
-    let pending: Vec<&Pending> = csv.iter().chain(plot.iter()).collect();
-    remove_on_exit(pending.iter().map(|p| p.temp.clone()).collect());
-    let abandon = || pending.iter().for_each(|p| p.abandon());
-
-    let cancel = cancel_on_ctrl_c();
     let mut solver = PointSolver {
-        prepared: &prepared,
-        sweep: &sweep,
-        warned: false,
+        prepared,
+        sweep,
+        warnings: None,
+        echo,
     };
     let mut columns = Columns::default();
     let mut last: Option<(f64, Point)> = None;
     let mut ending: Option<(String, CliError)> = None;
+    let mut failure = String::new();
     for &(value, direction) in &values {
         if cancel.is_cancelled() {
             ending = Some((
@@ -486,12 +503,12 @@ pub fn run(args: &DcArgs) -> Result<(), Report> {
         let from = last.as_ref().map(|(v, p)| (*v, p));
         let solved = match solver.approach(from, value) {
             Ok(solved) => solved,
-            Err(PointError::Elaboration(report)) => {
-                abandon();
-                return Err(report);
-            }
+            Err(PointError::Elaboration(errors)) => return Err(errors),
             Err(PointError::Solve(error)) => {
-                eprint!("{}", render_sim_error(&error, &prepared.loaded.sources));
+                failure = render_sim_error(&error, &prepared.loaded.sources);
+                if echo {
+                    eprint!("{failure}");
+                }
                 ending = Some((
                     format!(
                         "stopped at {} = {}: no quiescent point",
@@ -510,9 +527,42 @@ pub fn run(args: &DcArgs) -> Result<(), Report> {
         columns.push(value, direction, &solved);
         last = Some((value, solved.point));
     }
+    Ok(Swept {
+        columns,
+        ending,
+        failure,
+        warnings: solver.warnings.unwrap_or_default(),
+        planned: values.len(),
+    })
+}
 
+/// Runs `vams dc`.
+pub fn run(args: &DcArgs) -> Result<(), Report> {
+    let started = Instant::now();
+    let sweep = Sweep::parse(&args.sweep)?;
+    let prepared = prepare(&args.design)?;
+    let csv = args.output.as_deref().map(Pending::create).transpose()?;
+    let plot = match args.plot.as_deref().map(Pending::create).transpose() {
+        Ok(p) => p,
+        Err(e) => {
+            if let Some(c) = &csv {
+                c.abandon();
+            }
+            return Err(e.into());
+        }
+    };
+    let pending: Vec<&Pending> = csv.iter().chain(plot.iter()).collect();
+    remove_on_exit(pending.iter().map(|p| p.temp.clone()).collect());
+    let abandon = || pending.iter().for_each(|p| p.abandon());
+
+    let cancel = cancel_on_ctrl_c();
+    let swept = sweep_points(&prepared, &sweep, args.both_ways, &cancel, true).map_err(|e| {
+        abandon();
+        e.print()
+    })?;
+    let ending = &swept.ending;
     // What was computed is written, whole or cut short.
-    let curves = columns.curves(&args.probe).inspect_err(|_| abandon())?;
+    let curves = swept.curves(&args.probe).inspect_err(|_| abandon())?;
     let note = ending.as_ref().map(|(text, _)| text.as_str());
     let mut written = Vec::new();
     if curves.rows.is_empty() {
@@ -562,11 +612,11 @@ pub fn run(args: &DcArgs) -> Result<(), Report> {
         "swept {} over {} of {} point(s) in {:.2} s{files}",
         sweep.name,
         curves.rows.len(),
-        values.len(),
+        swept.planned,
         started.elapsed().as_secs_f64()
     );
     discard_at_exit(prepared);
-    match ending {
+    match swept.ending {
         Some((_, error)) => Err(error.into()),
         None => Ok(()),
     }

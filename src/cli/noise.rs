@@ -18,7 +18,9 @@ use crate::output::noise_plot::{NoiseTrace, plot_noise};
 use crate::solver::ac::AcSolver;
 use crate::solver::noise::{Injection, integrate, noise_at};
 
-use super::ac::{Linearised, SweepArgs, csv_path, linearise, probes, write_text};
+use super::ac::{
+    Linearised, NotLinearised, SweepArgs, csv_path, linearise_quietly, probes, write_text,
+};
 use super::compile::{DesignArgs, compile, discard_at_exit};
 use super::error::CliError;
 use super::render::render_located;
@@ -70,7 +72,7 @@ pub struct NoiseTable {
 }
 
 /// The index of the spectral source quantity `name` in `design.spectral_sources`.
-fn input_source(design: &Design, name: &str) -> Result<usize, CliError> {
+pub fn input_source(design: &Design, name: &str) -> Result<usize, CliError> {
     let wanted = name.trim().to_ascii_lowercase();
     let quantity_name = |k: usize| design.quantities[k].name.as_str();
     let found =
@@ -100,22 +102,26 @@ fn input_source(design: &Design, name: &str) -> Result<usize, CliError> {
     })
 }
 
-/// Runs the analysis on an elaborated design; the errors are printed as they are found.
-fn analyse(
+/// Runs the analysis on an elaborated design: the noise at `probe` at each frequency, and
+/// the transfer from the spectral source `input` (an index of `design.spectral_sources`).
+pub fn analyse(
     design: &Design,
     sources: &crate::source::SourceMap,
     probe: QuantityId,
     input: Option<usize>,
     frequencies: Vec<f64>,
-) -> Result<NoiseTable, Report> {
+) -> Result<NoiseTable, NotLinearised> {
     let top = || design.top.clone();
-    let solve_error = |reason: String| CliError::AcSolve { top: top(), reason };
+    let solve_error = |reason: String| NotLinearised {
+        diagnostics: String::new(),
+        error: CliError::AcSolve { top: top(), reason },
+    };
     let Linearised {
         system,
         x,
         xdot,
         mut model,
-    } = linearise(design, sources)?;
+    } = linearise_quietly(design, sources)?;
     let output = system
         .linear_output(probe, &x, &xdot)
         .ok_or_else(|| solve_error("the probe has no small-signal expression".into()))?;
@@ -134,9 +140,9 @@ fn analyse(
         frequencies,
     };
     for &f in &table.frequencies {
-        let densities = model.noise_densities(f).map_err(|e| {
-            eprint!("{}", render_located(&e, sources));
-            CliError::NoiseDensity { top: top() }
+        let densities = model.noise_densities(f).map_err(|e| NotLinearised {
+            diagnostics: render_located(&e, sources),
+            error: CliError::NoiseDensity { top: top() },
         })?;
         let point = noise_at(&mut solver, f, &output, &injections, &densities, &extra)
             .map_err(|e| solve_error(e.to_string()))?;
@@ -258,7 +264,8 @@ pub fn run(args: &NoiseArgs) -> Result<(), Report> {
         .as_deref()
         .map(|name| input_source(design, name))
         .transpose()?;
-    let table = analyse(design, &compiled.loaded.sources, probe, input, grid)?;
+    let table = analyse(design, &compiled.loaded.sources, probe, input, grid)
+        .map_err(NotLinearised::print)?;
     let quantity = |q: QuantityId| {
         let q = &design.quantities[q.index()];
         (q.name.as_str(), q.unit.as_deref())

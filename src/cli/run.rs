@@ -11,11 +11,11 @@ use miette::Report;
 use crate::kernel::{Outcome, SimEnd, SimError, SimOptions, SimStats, simulate_into};
 use crate::output::stream::{PlotRequest, Request, StreamError, Streams};
 
-use super::compile::{DesignArgs, compile, discard_at_exit};
+use super::compile::{DesignArgs, NotCompiled, compile, discard_at_exit};
 use super::error::CliError;
 use super::progress::ProgressBar;
-use super::render::{format_report, render_located, render_sim_error};
-use super::stop::{declaring_file, panel_comments, stop_comment};
+use super::render::{format_report, render_sim_error};
+use super::stop::{declaring_file, panel_comments, stop_time};
 use super::time::{format_time, parse_positive_time};
 
 /// Arguments of `vams run`.
@@ -170,27 +170,7 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
     let started = Instant::now();
     let compiled = compile(&args.design)?;
     let (loaded, design) = (&compiled.loaded, &compiled.design);
-    let stop = match args.stop {
-        Some(t) => t,
-        None => match declaring_file(loaded, &design.top)
-            .and_then(|f| stop_comment(&loaded.sources, f))
-        {
-            Some(Ok(t)) => t,
-            Some(Err(e)) => {
-                eprint!("{}", render_located(&e, &loaded.sources));
-                return Err(CliError::NoStop {
-                    top: design.top.clone(),
-                }
-                .into());
-            }
-            None => {
-                return Err(CliError::NoStop {
-                    top: design.top.clone(),
-                }
-                .into());
-            }
-        },
-    };
+    let stop = stop_time(loaded, &design.top, args.stop).map_err(NotCompiled::print)?;
     let panels = panel_groups(&args.panel);
     let bar = ProgressBar::for_stderr(stop);
     let options = SimOptions {
@@ -362,20 +342,15 @@ pub fn summary(top: &str, stop: f64, result: &SimEnd, wall: f64, written: &[Stri
 
 /// Every counter of [`SimStats`], one per line.
 pub fn stats_table(stats: &SimStats) -> String {
-    let rows = [
-        ("accepted steps", stats.accepted_steps),
-        ("rejected steps", stats.rejected_steps),
-        ("  Newton failures", stats.newton_failures),
-        ("Newton iterations", stats.newton_iterations),
-        ("factorizations", stats.factorizations),
-        ("pivot searches", stats.pivot_searches),
-        ("residual evaluations", stats.residual_evaluations),
-        ("events", stats.events),
-        ("delta cycles", stats.delta_cycles),
-        ("breaks", stats.breaks),
-    ];
-    rows.iter()
-        .map(|(name, n)| format!("  {name:<18} {n:>10}\n"))
+    (stats.named().iter())
+        .map(|&(name, n)| {
+            // Newton failures are a part of the rejected steps above them.
+            let name = match name {
+                "Newton failures" => "  Newton failures",
+                other => other,
+            };
+            format!("  {name:<18} {n:>10}\n")
+        })
         .collect()
 }
 

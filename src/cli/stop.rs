@@ -5,9 +5,11 @@
 //! test`).
 
 use crate::ast::LibraryUnit;
+use crate::diagnostics::{Finding, Level};
 use crate::source::{FileId, SourceMap, Span};
 
 use super::ac_assert::AcAssertion;
+use super::compile::NotCompiled;
 use super::error::{CliError, SourceError};
 use super::load::Loaded;
 use super::time::parse_positive_time;
@@ -107,6 +109,30 @@ pub fn declaring_file(loaded: &Loaded, name: &str) -> Option<FileId> {
             )
         })
         .map(|(id, _)| *id)
+}
+
+/// The stop time of a run of `top`: `given`, or else the stop comment of the file that
+/// declares it; without either, or with a comment that does not read, why not.
+pub fn stop_time(loaded: &Loaded, top: &str, given: Option<f64>) -> Result<f64, NotCompiled> {
+    if let Some(t) = given {
+        return Ok(t);
+    }
+    let no_stop = |findings| NotCompiled {
+        findings,
+        error: CliError::NoStop {
+            top: top.to_string(),
+        }
+        .into(),
+    };
+    match declaring_file(loaded, top).and_then(|f| stop_comment(&loaded.sources, f)) {
+        Some(Ok(t)) => Ok(t),
+        Some(Err(e)) => Err(no_stop(vec![Finding::located(
+            &e,
+            &loaded.sources,
+            Level::Error,
+        )])),
+        None => Err(no_stop(Vec::new())),
+    }
 }
 
 #[cfg(test)]
