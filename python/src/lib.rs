@@ -8,6 +8,7 @@
 mod analyses;
 mod check;
 mod design;
+mod design_space;
 mod diagnostic;
 mod error;
 mod frame;
@@ -27,6 +28,7 @@ fn vams(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(analyses::ac, m)?)?;
     m.add_function(wrap_pyfunction!(analyses::noise, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::dc, m)?)?;
+    m.add_function(wrap_pyfunction!(design_space::sweep, m)?)?;
     m.add_class::<diagnostic::Diagnostic>()?;
     m.add_class::<run::RunResult>()?;
     m.add_class::<run::Report>()?;
@@ -34,6 +36,7 @@ fn vams(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<analyses::AcResult>()?;
     m.add_class::<analyses::NoiseResult>()?;
     m.add_class::<sweep::DcResult>()?;
+    m.add_class::<design_space::SweepResult>()?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

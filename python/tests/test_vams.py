@@ -1,5 +1,5 @@
 """The Python package against the CLI: check, run (generics, the arrays against the CSV of the
-same run, reports, stats), op, dae, ac and noise, and the errors."""
+same run, reports, stats), op, dae, ac, noise, dc, the design-space sweep, and the errors."""
 
 import csv
 import math
@@ -232,3 +232,72 @@ def test_dc_sweep_stops_where_there_is_no_quiescent_point(root):
     partial = caught.value.result
     assert list(partial.values) == [1.0, 0.75, 0.5, 0.25, 0.0]
     assert np.allclose(partial["x"] ** 2, partial.values, atol=1e-6)
+
+
+# tests/sweep/decay.vhd over a 3 x 2 grid: x' = -x / tau, and an assertion of severity failure
+# (a failed run) where tau exceeds tau_max.
+SWEEP = """\
+[design]
+files = ["{model}"]
+top = "tb_decay"
+
+[grid.parameters]
+tau = [0.5e-3, 1.0e-3, 2.0e-3]
+tau_max = [1.0, 1.5e-3]
+
+[metrics]
+fall = {{ kind = "cross", of = "x", value = 0.36787944117144233, edge = "falling" }}
+mean = {{ kind = "mean", of = "x" }}
+"""
+
+
+def sweep_spec(root, tmp_path):
+    spec = tmp_path / "decay.toml"
+    spec.write_text(SWEEP.format(model=(root / "tests" / "sweep" / "decay.vhd").as_posix()))
+    return spec
+
+
+def test_sweep_columns_equal_its_result_table(root, tmp_path):
+    out = tmp_path / "out"
+    result = vams.sweep(sweep_spec(root, tmp_path), out, jobs=2)
+    assert result.dir == out
+    assert len(result) == 6
+    assert "6 runs: 5 ok, 1 failed" in result.summary
+    with open(out / "results.csv", newline="") as f:
+        rows = list(csv.reader(line for line in f if not line.startswith("#")))
+    header, cells = rows[0], rows[1:]
+    assert result.columns == header
+    assert len(cells) == 6
+    for k, name in enumerate(header):
+        column = result[name]
+        if name in ("run", "tau", "tau_max", "fall", "mean"):
+            assert isinstance(column, np.ndarray) and column.dtype == np.float64
+            expected = np.array([float(r[k]) if r[k] else math.nan for r in cells])
+            assert np.array_equal(column, expected, equal_nan=True), name
+        else:
+            assert column == [r[k] for r in cells], name
+    ok = np.array(result["status"]) == "ok"
+    assert np.isfinite(result["mean"][ok]).all()
+    assert np.isnan(result["fall"][~ok]).all()
+    assert all("tau beyond tau_max" in m for m in np.array(result["message"])[~ok])
+    frame = result.to_pandas()
+    assert list(frame.columns) == header and len(frame) == 6
+    # The finished table is kept: resuming runs nothing and gives the same columns.
+    again = vams.sweep(sweep_spec(root, tmp_path), out, resume=True)
+    assert np.array_equal(again["mean"], result["mean"], equal_nan=True)
+    with pytest.raises(KeyError):
+        result["no_such_column"]
+
+
+def test_a_bad_sweep_spec_raises_with_the_diagnostic_text(root, tmp_path):
+    with pytest.raises(vams.VamsError, match="cannot read the sweep spec"):
+        vams.sweep(tmp_path / "missing.toml", tmp_path / "out")
+    spec = sweep_spec(root, tmp_path)
+    spec.write_text(spec.read_text().replace("tau_max = [", "tau_mux = ["))
+    with pytest.raises(vams.VamsError, match="decay.toml:7: the design has no") as caught:
+        vams.sweep(spec, tmp_path / "out")
+    assert "tau_mux = [1.0, 1.5e-3]" in str(caught.value)
+    assert "its generics are `tau`, `tau_max` and `steps`" in str(caught.value)
+    spec.write_text("[design\n")
+    with pytest.raises(vams.VamsError, match="unclosed table"):
+        vams.sweep(spec, tmp_path / "out")

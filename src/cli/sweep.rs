@@ -28,6 +28,7 @@ use miette::{Diagnostic, Report};
 use thiserror::Error;
 
 use crate::elaborate::ElabError;
+use crate::kernel::Cancel;
 use crate::output::sweep_plot::{EnvelopeBuilder, Histogram, TornadoBar};
 
 use super::compile::{DesignArgs, Prepared, prepare, unknown_probe_help};
@@ -186,8 +187,26 @@ pub enum SweepError {
 
 /// Runs `vams sweep`.
 pub fn run(args: &SweepArgs) -> Result<(), Report> {
+    sweep(args, None).map(drop)
+}
+
+/// What a local sweep (or shard) leaves behind.
+#[derive(Debug)]
+pub struct Swept {
+    /// The output folder (`--out` or its default).
+    pub dir: PathBuf,
+    /// The result table in it: `results.csv`, or the shard's table.
+    pub table: PathBuf,
+    /// The summary it printed (runs, failures, yield, metric statistics).
+    pub summary: String,
+}
+
+/// `vams sweep` as a library function: `cancel` stops the runs (`None`: Ctrl-C's flag, whose
+/// handler it installs). A local sweep gives back its folder, table and summary; `collect`
+/// and `--slurm` give `None`.
+pub fn sweep(args: &SweepArgs, cancel: Option<Cancel>) -> Result<Option<Swept>, Report> {
     if let Some(SweepAction::Collect { dir }) = &args.action {
-        return collect(dir);
+        return collect(dir).map(|()| None);
     }
     // Required by clap unless a subcommand is given.
     let Some(spec_path) = &args.spec else {
@@ -204,7 +223,7 @@ pub fn run(args: &SweepArgs) -> Result<(), Report> {
         reason: e.to_string(),
     })?;
     if args.slurm {
-        return submit(args, spec_path, &out, total);
+        return submit(args, spec_path, &out, total).map(|()| None);
     }
     let (range, table_path) = match args.shard {
         Some((k, n)) => (
@@ -236,7 +255,7 @@ pub fn run(args: &SweepArgs) -> Result<(), Report> {
         reltol: spec.design.reltol,
         abstol: spec.design.abstol,
         max_step: spec.design.max_step,
-        cancel: super::interrupt::cancel_on_ctrl_c(),
+        cancel: cancel.unwrap_or_else(super::interrupt::cancel_on_ctrl_c),
     };
     eprintln!(
         "sweeping {} ({} runs{}, {} to do) into {}",
@@ -321,7 +340,8 @@ pub fn run(args: &SweepArgs) -> Result<(), Report> {
         .into());
     }
     drop(writer);
-    eprint!("{}", summary::summary(plan, &spec.metrics, &rows));
+    let summary = summary::summary(plan, &spec.metrics, &rows);
+    eprint!("{summary}");
     let mut written = vec![table_path.display().to_string()];
     if args.shard.is_none() {
         written.extend(draw(&spec, &rows, envelopes, &out)?);
@@ -333,7 +353,11 @@ pub fn run(args: &SweepArgs) -> Result<(), Report> {
         jobs,
         written.join(", ")
     );
-    Ok(())
+    Ok(Some(Swept {
+        dir: out,
+        table: table_path,
+        summary,
+    }))
 }
 
 /// `--slurm`: the job array of the sweep's shards, written, then submitted (or printed).
