@@ -15,7 +15,7 @@ fn main() {
 
     let root = Path::new(&env::var("CARGO_MANIFEST_DIR").expect("cargo sets it")).join("stdlib");
     let mut entries = Vec::new();
-    for lib in ["std", "ieee"] {
+    for lib in ["std", "ieee", "vams"] {
         let dir = root.join(lib);
         let mut files: Vec<_> = fs::read_dir(&dir)
             .expect("stdlib/<library> exists")

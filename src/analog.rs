@@ -114,6 +114,9 @@ pub struct AnalogSystem {
     options: AnalogOptions,
     /// The quantities last asked for ([`AnalogSystem::select_quantities`]).
     wanted: Option<Vec<bool>>,
+    /// The points of the tables of `now` the residuals read (`pwl(drive, now)`), in order:
+    /// the integrator steps to each, as a SPICE simulator does to a PWL source's corners.
+    table_times: Vec<f64>,
 }
 
 /// The incidence of the assembled residuals (the unknowns each one names).
@@ -656,13 +659,20 @@ impl AnalogSystem {
         debug_assert_eq!(residual_section, RESIDUALS);
         let linear = residuals.iter().all(Sym::is_affine);
         let mut eb = TapeBuilder::default();
+        let mut table_times = Vec::new();
         for r in &residuals {
-            r.visit(&mut |e| {
-                if let Sym::Un(sym::Un::Exp, a) = e {
+            r.visit(&mut |e| match e {
+                Sym::Un(sym::Un::Exp, a) => {
                     eb.push(a);
                 }
+                Sym::Table(f, a) if !f.slope && **a == Sym::Now => {
+                    table_times.extend_from_slice(f.table.xs());
+                }
+                _ => {}
             });
         }
+        table_times.sort_by(f64::total_cmp);
+        table_times.dedup();
         let exp_tape = eb.finish();
         drop(residuals);
         let mut jac_dx = Vec::with_capacity(pattern.len());
@@ -791,6 +801,7 @@ impl AnalogSystem {
             signal_partials,
             options: options.clone(),
             wanted: None,
+            table_times,
         };
         Ok(system)
     }
@@ -1079,6 +1090,12 @@ impl AnalogSystem {
     }
 
     /// True when some equation reads signal `s` (a change is then a discontinuity).
+    /// The corners of the tables of time the equations read, in increasing order
+    /// (breakpoints of the integration).
+    pub fn table_times(&self) -> &[f64] {
+        &self.table_times
+    }
+
     pub fn reads_signal(&self, s: SignalId) -> bool {
         self.reads.get(s.index()).copied().unwrap_or(false)
     }

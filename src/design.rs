@@ -1000,6 +1000,9 @@ pub enum Builtin {
     /// length and what the target is ("variable `v`"); the value itself, or an error
     /// naming the target and both lengths.
     CheckLength,
+    /// `vams.tables.pwl(table, x)`: arguments the flat table `(x0, y0, x1, y1, ...)` (a
+    /// constant in equations) and `x`; linear between points, constant beyond ([`crate::pwl`]).
+    Pwl,
 }
 
 impl Builtin {
@@ -1018,6 +1021,7 @@ impl Builtin {
                 | Builtin::Restring
                 | Builtin::Length
                 | Builtin::CheckLength
+                | Builtin::Pwl
         )
     }
 }
@@ -1069,11 +1073,26 @@ pub fn value_builtin(f: Builtin, args: &[Value]) -> Result<Value, String> {
             Ok(aggregate_value(elements, matches!(a, Value::String(_))))
         }
         (Builtin::ValueOf, [text, kind]) => value_of(text, kind),
+        (Builtin::Pwl, [Value::Array(table), x]) => pwl_value(table, x),
         (Builtin::Restring, [a, Value::Boolean(string)]) => {
             Ok(aggregate_value(a.elements(), *string))
         }
         _ => scalar_attribute(f, args),
     }
+}
+
+/// `pwl(table, x)` on values: the table checked, then looked up.
+fn pwl_value(table: &[Value], x: &Value) -> Result<Value, String> {
+    let at = |k: usize| table[k].as_f64().unwrap_or(f64::NAN);
+    crate::pwl::check(table.len(), at).map_err(|e| e.to_string())?;
+    let x = x
+        .as_f64()
+        .ok_or_else(|| "pwl's x must be a real".to_string())?;
+    let (y, _) = crate::pwl::lookup(table.len() / 2, |k| (at(2 * k), at(2 * k + 1)), x);
+    if y.is_nan() {
+        return Err("pwl of x = NaN".into());
+    }
+    Ok(Value::Real(y))
 }
 
 /// `Ok` when array value `v` has `n` elements, else the error of an assignment of it to
@@ -1378,6 +1397,11 @@ impl Expr {
             Expr::Binary(op, a, b) => {
                 *op != BinaryOp::Concat && !op.is_shift() && a.is_analog() && b.is_analog()
             }
+            // A table is a constant array (elaboration checked it).
+            Expr::Call(Builtin::Pwl, args) => match args.as_slice() {
+                [Expr::Const(Value::Array(_)), x] => x.is_analog(),
+                _ => false,
+            },
             Expr::Call(_, args) => args.iter().all(Expr::is_analog),
             Expr::If(c, a, b) => c.is_analog() && a.is_analog() && b.is_analog(),
         }

@@ -628,7 +628,7 @@ impl<'a> Elab<'a> {
             );
             return Err(self.error(err));
         }
-        let stdlib = matches!(key.0.as_str(), "std" | "ieee");
+        let stdlib = matches!(key.0.as_str(), "std" | "ieee" | "vams");
         let body = self.lib.bodies.get(&unit.index).cloned();
         let saved = (
             self.quiet,

@@ -20,6 +20,7 @@ pub mod lexer;
 pub mod lsp;
 pub mod output;
 pub mod parser;
+pub mod pwl;
 pub mod solver;
 pub mod source;
 pub mod stdlib;

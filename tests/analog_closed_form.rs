@@ -452,3 +452,53 @@ fn diode_operating_point_solves_shockley() {
         get("d.i")
     );
 }
+
+/// The response of an RC low-pass (time constant `tau`) at `t` to a unit-slope ramp that
+/// starts at 0.
+fn rc_ramp(t: f64, tau: f64) -> f64 {
+    if t <= 0.0 {
+        0.0
+    } else {
+        t - tau * (1.0 - (-t / tau).exp())
+    }
+}
+
+#[test]
+fn an_rc_driven_by_a_pwl_table_follows_the_closed_form() {
+    let result = run("pwl_rc", &[], 8e-3);
+    let tau = 1e-3;
+    // The drive is a sum of ramps starting at its corners, each with the change of slope.
+    let corners = [(1.0e-3, 1e4), (1.5e-3, -1e4), (4.0e-3, -3e3), (5.0e-3, 3e3)];
+    let exact = |t: f64| {
+        corners
+            .iter()
+            .map(|(t0, ds)| ds * rc_ramp(t - t0, tau))
+            .sum::<f64>()
+    };
+    check(&result, "vc", 2e-5, exact);
+    // The table of the capacitor's voltage: 2 V/V up to 1 V, then 0.5 V/V, flat from 3 V.
+    let shape = |v: f64| {
+        if v <= 1.0 {
+            2.0 * v.max(0.0)
+        } else {
+            (2.0 + 0.5 * (v - 1.0)).min(3.0)
+        }
+    };
+    check(&result, "shaped", 1e-4, |t| shape(exact(t)));
+    // The integrator stepped to every corner of the drive.
+    let w = &result.waveforms;
+    for (t0, _) in corners {
+        assert!(
+            w.times.iter().any(|&t| (t - t0).abs() < 1e-15),
+            "no step ends at {t0}"
+        );
+    }
+    // The process read the same table every 250 us.
+    let sampled = w.column("sampled").expect("sampled recorded");
+    let at = |t: f64| sampled.values[w.times.iter().rposition(|&x| x <= t).unwrap()];
+    assert_eq!(at(1.1e-3), 0.0);
+    assert!((at(1.3e-3) - 2.5).abs() < 1e-9, "{}", at(1.3e-3));
+    assert_eq!(at(2.6e-3), 5.0);
+    assert!((at(4.6e-3) - 3.5).abs() < 1e-9, "{}", at(4.6e-3));
+    assert_eq!(at(7.9e-3), 2.0);
+}

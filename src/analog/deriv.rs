@@ -50,6 +50,16 @@ pub fn derivative(e: &Sym, var: Var) -> Sym {
             binary(*op, a, b, e, da, db)
         }
         Sym::If(cond, a, b) => Sym::cond((**cond).clone(), derivative(a, var), derivative(b, var)),
+        Sym::Table(f, a) => match f.derivative() {
+            None => c(0.0),
+            Some(slope) => {
+                let da = derivative(a, var);
+                if da.as_const() == Some(0.0) {
+                    return c(0.0);
+                }
+                Sym::mul(Sym::table(slope, (**a).clone()), da)
+            }
+        },
     }
 }
 

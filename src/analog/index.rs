@@ -81,6 +81,7 @@ fn over_variables(e: &Sym, first_derivative: &[Option<usize>]) -> Sym {
         Sym::Dot(j) => Sym::X(first_derivative[*j].unwrap_or(usize::MAX)),
         Sym::Const(_) | Sym::Signal(_) | Sym::Now => e.clone(),
         Sym::Un(op, a) => Sym::Un(*op, Box::new(over_variables(a, first_derivative))),
+        Sym::Table(f, a) => Sym::Table(f.clone(), Box::new(over_variables(a, first_derivative))),
         Sym::Bin(op, a, b) => Sym::Bin(
             *op,
             Box::new(over_variables(a, first_derivative)),
@@ -113,6 +114,8 @@ fn matched_at_highest_derivatives(residuals: &[Sym], first_derivative: &[Option<
             Sym::X(_) | Sym::Const(_) | Sym::Signal(_) | Sym::Now => {}
             Sym::Un(Un::Not | Un::Floor | Un::Ceil | Un::Round | Un::Trunc | Un::Sign, _) => {}
             Sym::Un(_, a) => highest(a, has_dot, out),
+            Sym::Table(f, _) if f.slope => {}
+            Sym::Table(_, a) => highest(a, has_dot, out),
             Sym::Bin(op, _, _) if op.is_logical() => {}
             Sym::Bin(_, a, b) | Sym::If(_, a, b) => {
                 highest(a, has_dot, out);
@@ -139,6 +142,7 @@ fn substitute(e: &Sym, rep: &dyn Fn(usize) -> Sym) -> Sym {
         Sym::X(v) => rep(*v),
         Sym::Const(_) | Sym::Signal(_) | Sym::Now | Sym::Dot(_) => e.clone(),
         Sym::Un(op, a) => Sym::un(*op, substitute(a, rep)),
+        Sym::Table(f, a) => Sym::table(f.clone(), substitute(a, rep)),
         Sym::Bin(op, a, b) => Sym::bin(*op, substitute(a, rep), substitute(b, rep)),
         Sym::If(c, a, b) => Sym::cond(substitute(c, rep), substitute(a, rep), substitute(b, rep)),
     }

@@ -377,6 +377,13 @@ impl Printer<'_> {
                 self.print(a, 0, out);
                 out.push(')');
             }
+            Sym::Table(f, a) => {
+                let n = f.table.len();
+                let name = if f.slope { "pwl_slope" } else { "pwl" };
+                out.push_str(&format!("{name}(<table of {n} points>, "));
+                self.print(a, 0, out);
+                out.push(')');
+            }
             Sym::Bin(op @ (Bin::Atan2 | Bin::Max | Bin::Min), a, b) => {
                 out.push_str(bin_name(*op));
                 out.push('(');

@@ -1,7 +1,7 @@
 //! Lowering of the design's [`Expr`] to [`Sym`]: quantities to unknown slots, calls to their
 //! numeric operations, folding constants on the way.
 
-use super::sym::{Bin, Sym, Un};
+use super::sym::{Bin, Sym, TableFn, Un};
 use crate::design::{BinaryOp, Builtin, Expr, UnaryOp};
 
 /// Why an expression cannot be an analog residual (the elaborator should have refused it).
@@ -108,6 +108,18 @@ fn lower_call(
         Builtin::Sign => one(Un::Sign),
         Builtin::Realmax => two(Bin::Max),
         Builtin::Realmin => two(Bin::Min),
+        Builtin::Pwl => {
+            let Some(Expr::Const(crate::design::Value::Array(items))) = args.first() else {
+                return Err(NotAnalog("a table that is not a constant"));
+            };
+            let flat: Vec<f64> = items
+                .iter()
+                .map(|v| v.as_f64().unwrap_or(f64::NAN))
+                .collect();
+            let table =
+                crate::pwl::Table::new(&flat).map_err(|_| NotAnalog("a malformed table"))?;
+            Ok(Sym::table(TableFn::new(table), arg(1)?))
+        }
         Builtin::ToReal => arg(0),
         // Equations hold enumeration values and booleans as their positions, and time in
         // seconds: `time'pos(now)` (femtoseconds) is a common time-to-number idiom.

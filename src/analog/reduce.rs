@@ -157,6 +157,7 @@ fn substitute(e: &Sym, lookup: &mut dyn FnMut(usize) -> Option<Sym>) -> Sym {
         },
         Sym::Const(_) | Sym::Signal(_) | Sym::Now => e.clone(),
         Sym::Un(op, a) => Sym::un(*op, substitute(a, lookup)),
+        Sym::Table(f, a) => Sym::table(f.clone(), substitute(a, lookup)),
         Sym::Bin(op, a, b) => {
             let a = substitute(a, lookup);
             Sym::bin(*op, a, substitute(b, lookup))
@@ -348,6 +349,7 @@ fn substitute_zero(e: &Sym, j: usize) -> Sym {
         Sym::X(k) if *k == j => Sym::Const(0.0),
         Sym::Const(_) | Sym::X(_) | Sym::Dot(_) | Sym::Signal(_) | Sym::Now => e.clone(),
         Sym::Un(op, a) => Sym::un(*op, substitute_zero(a, j)),
+        Sym::Table(f, a) => Sym::table(f.clone(), substitute_zero(a, j)),
         Sym::Bin(op, a, b) => Sym::bin(*op, substitute_zero(a, j), substitute_zero(b, j)),
         Sym::If(c, a, b) => Sym::cond(
             substitute_zero(c, j),
@@ -489,6 +491,7 @@ pub fn merge_terms(e: Sym) -> Sym {
     }
     match e {
         Sym::Un(op, a) => Sym::un(op, merge_terms(*a)),
+        Sym::Table(f, a) => Sym::table(f, merge_terms(*a)),
         Sym::Bin(op, a, b) => Sym::bin(op, merge_terms(*a), merge_terms(*b)),
         Sym::If(c, a, b) => Sym::cond(merge_terms(*c), merge_terms(*a), merge_terms(*b)),
         other => other,
@@ -511,7 +514,7 @@ pub fn renumber_in_place(e: &mut Sym, map: &dyn Fn(usize) -> usize) {
     match e {
         Sym::X(k) | Sym::Dot(k) => *k = map(*k),
         Sym::Const(_) | Sym::Signal(_) | Sym::Now => {}
-        Sym::Un(_, a) => renumber_in_place(a, map),
+        Sym::Un(_, a) | Sym::Table(_, a) => renumber_in_place(a, map),
         Sym::Bin(_, a, b) => {
             renumber_in_place(a, map);
             renumber_in_place(b, map);

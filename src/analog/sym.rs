@@ -6,6 +6,10 @@
 //! small trees. [`apply_unary`] and [`apply_binary`] are the one definition of every operator's
 //! value, shared by constant folding and the tape.
 
+use std::sync::Arc;
+
+use crate::pwl::Table;
+
 /// One-argument operations.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Un {
@@ -81,6 +85,48 @@ impl Bin {
     }
 }
 
+/// A piecewise-linear table's value or slope as a function of one argument
+/// ([`crate::pwl`]). Tables are shared: a residual and its derivatives point at one copy.
+#[derive(Clone, Debug)]
+pub struct TableFn {
+    pub table: Arc<Table>,
+    /// The slope instead of the value (the derivative of the value; itself piecewise
+    /// constant, zero derivative).
+    pub slope: bool,
+}
+
+impl TableFn {
+    pub fn new(table: Table) -> TableFn {
+        TableFn {
+            table: Arc::new(table),
+            slope: false,
+        }
+    }
+
+    /// The function's derivative (`None`: zero).
+    pub fn derivative(&self) -> Option<TableFn> {
+        (!self.slope).then(|| TableFn {
+            table: self.table.clone(),
+            slope: true,
+        })
+    }
+
+    pub fn apply(&self, x: f64) -> f64 {
+        if self.slope {
+            self.table.slope(x)
+        } else {
+            self.table.value(x)
+        }
+    }
+}
+
+impl PartialEq for TableFn {
+    fn eq(&self, other: &TableFn) -> bool {
+        self.slope == other.slope
+            && (Arc::ptr_eq(&self.table, &other.table) || self.table == other.table)
+    }
+}
+
 /// A residual expression over solver slots.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Sym {
@@ -96,6 +142,8 @@ pub enum Sym {
     Bin(Bin, Box<Sym>, Box<Sym>),
     /// Nonzero condition selects the first branch.
     If(Box<Sym>, Box<Sym>, Box<Sym>),
+    /// A table of one argument.
+    Table(TableFn, Box<Sym>),
 }
 
 fn truth(v: f64) -> bool {
@@ -210,6 +258,14 @@ impl Sym {
         }
     }
 
+    /// `f(a)`, folded when `a` is constant.
+    pub fn table(f: TableFn, a: Sym) -> Sym {
+        match a {
+            Sym::Const(v) => Sym::Const(f.apply(v)),
+            a => Sym::Table(f, Box::new(a)),
+        }
+    }
+
     pub fn neg(a: Sym) -> Sym {
         Sym::un(Un::Neg, a)
     }
@@ -306,6 +362,8 @@ impl Sym {
             Sym::Const(_) | Sym::Signal(_) | Sym::Now => {}
             Sym::Un(Un::Not | Un::Floor | Un::Ceil | Un::Round | Un::Trunc | Un::Sign, _) => {}
             Sym::Un(_, a) => a.structural_unknowns(out),
+            Sym::Table(f, _) if f.slope => {}
+            Sym::Table(_, a) => a.structural_unknowns(out),
             Sym::Bin(op, _, _) if op.is_logical() => {}
             Sym::Bin(_, a, b) => {
                 a.structural_unknowns(out);
@@ -336,7 +394,7 @@ impl Sym {
         f(self);
         match self {
             Sym::Const(_) | Sym::X(_) | Sym::Dot(_) | Sym::Signal(_) | Sym::Now => {}
-            Sym::Un(_, a) => a.visit(f),
+            Sym::Un(_, a) | Sym::Table(_, a) => a.visit(f),
             Sym::Bin(_, a, b) => {
                 a.visit(f);
                 b.visit(f);
@@ -359,6 +417,7 @@ impl Sym {
             Sym::Signal(s) => signals[*s],
             Sym::Now => t,
             Sym::Un(op, a) => apply_unary(*op, a.eval(t, x, xdot, signals)),
+            Sym::Table(f, a) => f.apply(a.eval(t, x, xdot, signals)),
             Sym::Bin(op, a, b) => apply_binary(
                 *op,
                 a.eval(t, x, xdot, signals),

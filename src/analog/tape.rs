@@ -22,7 +22,10 @@
 
 use rustc_hash::FxHashMap;
 
+use std::sync::Arc;
+
 use super::sym::{Bin, Sym, Un, apply_binary, apply_unary};
+use crate::pwl::Table;
 
 /// An instruction while compiling: loads are instructions too, so they are hash-consed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -34,6 +37,8 @@ enum Op {
     Un(Un, u32),
     Bin(Bin, u32, u32),
     Select(u32, u32, u32),
+    /// Table `k` of the builder's tables (its slope when true) of an operand.
+    Table(u32, bool, u32),
 }
 
 /// An instruction of the finished tape, operands as register numbers. The arithmetic that
@@ -52,6 +57,9 @@ enum Instr {
     IfZero(u32, u32),
     /// Jumps to the given position.
     Goto(u32),
+    /// The value of table `k` of the tape's tables at a register, and its slope.
+    Table(u32, u32),
+    TableSlope(u32, u32),
 }
 
 /// A compiled set of expressions; output `i` is the value of the `i`-th compiled root.
@@ -73,6 +81,8 @@ pub struct Tape {
     signal_loads: Vec<u32>,
     reads_now: bool,
     outputs: Vec<u32>,
+    /// The tables the instructions look up.
+    tables: Vec<Arc<Table>>,
 }
 
 /// Compiles roots one after another into a shared tape.
@@ -85,6 +95,8 @@ pub struct TapeBuilder {
     outputs: Vec<u32>,
     /// Number of outputs at the end of each section.
     section_marks: Vec<usize>,
+    /// The tables compiled, each once (a residual and its Jacobian entries share theirs).
+    tables: Vec<Arc<Table>>,
 }
 
 /// Register reference before constants are counted: constants and instructions are numbered
@@ -183,6 +195,17 @@ impl TapeBuilder {
                 let b = self.compile(b);
                 self.emit(Op::Bin(*op, encode(a), encode(b)))
             }
+            Sym::Table(f, a) => {
+                let a = self.compile(a);
+                let k = match self.tables.iter().position(|t| Arc::ptr_eq(t, &f.table)) {
+                    Some(k) => k,
+                    None => {
+                        self.tables.push(f.table.clone());
+                        self.tables.len() - 1
+                    }
+                };
+                self.emit(Op::Table(k as u32, f.slope, encode(a)))
+            }
             Sym::If(c, a, b) => {
                 let c = self.compile(c);
                 let a = self.compile(a);
@@ -260,6 +283,8 @@ impl TapeBuilder {
                     Op::Bin(Bin::Div, a, b) => Instr::Div(fix(a), fix(b)),
                     Op::Bin(b, x, y) => Instr::Bin(b, fix(x), fix(y)),
                     Op::Select(c, a, b) => Instr::Select(fix(c), fix(a), fix(b)),
+                    Op::Table(k, false, a) => Instr::Table(k, fix(a)),
+                    Op::Table(k, true, a) => Instr::TableSlope(k, fix(a)),
                     Op::X(_) | Op::Dot(_) | Op::Signal(_) | Op::Now => {
                         unreachable!("loads are in the input block, never in the order")
                     }
@@ -300,6 +325,7 @@ impl TapeBuilder {
             dot_loads,
             signal_loads,
             reads_now,
+            tables: self.tables,
         }
     }
 }
@@ -330,7 +356,7 @@ fn liveness(ops: &[Op], outputs: &[u32]) -> Vec<bool> {
 fn operands(op: Op) -> [u32; 3] {
     const NONE: u32 = CONST_TAG;
     match op {
-        Op::Un(_, a) => [a, NONE, NONE],
+        Op::Un(_, a) | Op::Table(_, _, a) => [a, NONE, NONE],
         Op::Bin(_, a, b) => [a, b, NONE],
         Op::Select(c, a, b) => [c, a, b],
         Op::X(_) | Op::Dot(_) | Op::Signal(_) | Op::Now => [NONE; 3],
@@ -579,6 +605,8 @@ impl Tape {
                 Instr::Div(a, b) => r[a as usize] / r[b as usize],
                 Instr::Neg(a) => -r[a as usize],
                 Instr::Un(op, a) => apply_unary(op, r[a as usize]),
+                Instr::Table(k, a) => self.tables[k as usize].value(r[a as usize]),
+                Instr::TableSlope(k, a) => self.tables[k as usize].slope(r[a as usize]),
                 Instr::Bin(op, a, b) => apply_binary(op, r[a as usize], r[b as usize]),
                 Instr::Select(c, a, b) => {
                     if r[c as usize] != 0.0 {

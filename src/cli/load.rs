@@ -144,7 +144,10 @@ pub fn parse_library(text: &str) -> Result<LibrarySources, String> {
             "`{name}` is not a VHDL identifier (a library name)"
         ));
     }
-    if matches!(name.as_str(), "std" | "ieee" | "ieee_proposed" | "work") {
+    if matches!(
+        name.as_str(),
+        "std" | "ieee" | "ieee_proposed" | "vams" | "work"
+    ) {
         return Err(format!(
             "library `{name}` is {}; choose another name",
             if name == "work" {

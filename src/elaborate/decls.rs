@@ -97,6 +97,7 @@ pub(super) fn native(name: &str, arity: usize, is_function: bool) -> Native {
         ("sign", 1) => Sign,
         ("realmax", 2) => Realmax,
         ("realmin", 2) => Realmin,
+        ("pwl", 2) => Pwl,
         _ => return Native::Missing,
     };
     Native::Builtin(b)

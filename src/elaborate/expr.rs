@@ -1059,6 +1059,19 @@ impl<'a> Elab<'a> {
         let name = &sub.name;
         let ret = sub.ret.clone().unwrap_or(Ty::Real);
         Ok(match native {
+            Native::Builtin(Builtin::Pwl) => {
+                if let Some(Expr::Const(Value::Array(items))) = args.first() {
+                    let at = |k: usize| items[k].as_f64().unwrap_or(f64::NAN);
+                    if let Err(e) = crate::pwl::check(items.len(), at) {
+                        return Err(self.error(ElabError::invalid(
+                            span,
+                            e.to_string(),
+                            Some(crate::pwl::TableError::HELP.into()),
+                        )));
+                    }
+                }
+                Expr::Call(Builtin::Pwl, args)
+            }
             Native::Builtin(b) => Expr::Call(b, args),
             Native::Log2 => Expr::Binary(
                 BinaryOp::Div,

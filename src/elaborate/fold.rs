@@ -325,7 +325,8 @@ fn call(f: Builtin, args: &[Value]) -> Result<Value, NoFold> {
         | Builtin::ValueOf
         | Builtin::Restring
         | Builtin::Length
-        | Builtin::CheckLength => {
+        | Builtin::CheckLength
+        | Builtin::Pwl => {
             unreachable!("handled above")
         }
     };

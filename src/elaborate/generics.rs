@@ -14,6 +14,10 @@ pub(super) fn parse_literal(
     ty: &Ty,
     time_unit: impl Fn(&str) -> Option<f64>,
 ) -> Option<Value> {
+    literal(text, ty, &time_unit)
+}
+
+fn literal(text: &str, ty: &Ty, time_unit: &dyn Fn(&str) -> Option<f64>) -> Option<Value> {
     let t = text.trim();
     match ty {
         Ty::Real => number(t).map(Value::Real),
@@ -61,7 +65,23 @@ pub(super) fn parse_literal(
                 .unwrap_or(t);
             Some(Value::String(s.to_string()))
         }
-        Ty::Array(_) | Ty::Record(_) | Ty::Access(_) | Ty::File(_) | Ty::Protected(_) => None,
+        // An array of scalars as a positional aggregate, `(0.0, 1.5, 2.0)`: a table for
+        // `vams.tables.pwl`, a list of thresholds.
+        Ty::Array(a) => {
+            let inner = t.strip_prefix('(')?.strip_suffix(')')?.trim();
+            if inner.is_empty() {
+                return Some(Value::Array(Vec::new()));
+            }
+            inner
+                .split(',')
+                .map(|item| match &a.element {
+                    Ty::Array(_) | Ty::Record(_) => None,
+                    element => literal(item, element, time_unit),
+                })
+                .collect::<Option<Vec<Value>>>()
+                .map(Value::Array)
+        }
+        Ty::Record(_) | Ty::Access(_) | Ty::File(_) | Ty::Protected(_) => None,
     }
 }
 

@@ -1518,8 +1518,12 @@ fn literal_help(ty: &Ty) -> String {
         ),
         Ty::Boolean => "write `true` or `false`".into(),
         Ty::Enum(e) => format!("write one of {}", list_names(&e.literals)),
+        Ty::Array(a) if !matches!(a.element, Ty::Array(_) | Ty::Record(_)) => {
+            "write the elements in parentheses, separated by commas: `-g NAME=\"(0.0, 1.0, 2.5)\"`"
+                .into()
+        }
         Ty::Array(_) | Ty::Record(_) | Ty::Access(_) | Ty::File(_) | Ty::Protected(_) => {
-            "composite generics cannot be set from the command line".into()
+            "generics of arrays of composites, records and access types cannot be set from the command line".into()
         }
     }
 }

@@ -29,6 +29,10 @@ pub(crate) trait AnalogModel: DaeSystem {
     }
     fn set_signal(&mut self, s: SignalId, value: f64);
     fn reads_signal(&self, s: SignalId) -> bool;
+    /// Times the integrator must step to (the corners of tables of `now`), increasing.
+    fn table_times(&self) -> &[f64] {
+        &[]
+    }
     fn above_signals(&self) -> &[SignalId];
     fn abstol(&self, default: f64) -> Vec<f64>;
     /// What equation `row` is and where it comes from, for failure messages.
@@ -89,6 +93,9 @@ impl AnalogModel for AnalogSystem {
     }
     fn reads_signal(&self, s: SignalId) -> bool {
         AnalogSystem::reads_signal(self, s)
+    }
+    fn table_times(&self) -> &[f64] {
+        AnalogSystem::table_times(self)
     }
     fn above_signals(&self) -> &[SignalId] {
         AnalogSystem::above_signals(self)

@@ -237,6 +237,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         };
         let integ = Transient::new(&mut sys, 0.0, &x, topts.clone());
         let mut integ = integ.map_err(|e| solve_error(e, 0.0, &sys, &slots, design))?;
+        integ.add_breakpoints(sys.table_times());
         for (i, (&s, &band)) in above.iter().zip(&root_band).enumerate() {
             let now = matches!(self.kernel.value(s), Value::Boolean(true));
             integ.set_root_offset(i, hysteresis(now, band));
@@ -776,6 +777,7 @@ impl<'d, A: AnalogModel> Simulation<'d, A> {
         topts.abstol = (topts.abstol_per_unknown.iter().copied()).fold(DEFAULT_ABSTOL, f64::min);
         let mut integ = Transient::new(&mut a.sys, t, &x, topts)
             .map_err(|e| solve_error(e, t, &a.sys, &a.slots, design))?;
+        integ.add_breakpoints(a.sys.table_times());
         for i in 0..a.above.len() {
             integ.set_root_offset(i, a.integ.root_offset(i));
         }

@@ -372,6 +372,8 @@ pub(crate) fn builtin(f: Builtin, args: &[Value]) -> Result<Value, EvalError> {
             "'value reads one literal of the type, as 'image writes it"
         } else if f == CheckLength {
             LENGTH_HELP
+        } else if f == Pwl {
+            crate::pwl::TableError::HELP
         } else {
             "keep the argument within the type's range (T'low to T'high)"
         };
@@ -485,7 +487,7 @@ pub(crate) fn real_builtin(f: Builtin, x: f64, y: f64) -> f64 {
         ToInteger => x.round(),
         // Not real-valued: `builtin` handles them before it reaches here; NaN otherwise.
         Pos | TimePos | EnumVal | TimeVal | Slice | Splice | ValueOf | Restring | Length
-        | CheckLength => f64::NAN,
+        | CheckLength | Pwl => f64::NAN,
     }
 }
 

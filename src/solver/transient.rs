@@ -274,6 +274,18 @@ impl Transient {
         }
     }
 
+    /// Demands that steps end exactly at each of `times` (increasing) that lies ahead.
+    pub fn add_breakpoints(&mut self, times: &[f64]) {
+        let ahead = times
+            .iter()
+            .copied()
+            .filter(|t| t.is_finite() && *t > self.t);
+        self.breakpoints.extend(ahead);
+        // Kept in decreasing order: the next one is the last.
+        self.breakpoints.sort_by(|a, b| b.total_cmp(a));
+        self.breakpoints.dedup();
+    }
+
     pub fn time(&self) -> f64 {
         self.t
     }
