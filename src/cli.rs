@@ -121,6 +121,15 @@ pub fn run() -> ExitCode {
                 {
                     ExitCode::from(130)
                 }
+                // A fit that ran but did not converge: its result is written, and marked.
+                _ if matches!(
+                    report.downcast_ref::<fit::FitCliError>(),
+                    Some(fit::FitCliError::NotConverged { .. })
+                ) =>
+                {
+                    // 2 is clap's, for a command line it cannot parse.
+                    ExitCode::from(3)
+                }
                 _ => ExitCode::from(1),
             }
         }

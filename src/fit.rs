@@ -14,6 +14,7 @@
 //! about one. Then [`uncertainty`] turns the residual into intervals. It never prints, never
 //! reads files, and knows nothing of VHDL: the caller simulates.
 
+pub mod drive;
 pub mod lm;
 pub mod param;
 pub mod series;
@@ -94,6 +95,28 @@ pub struct Fitted {
     /// Simulations run (each point evaluates every experiment).
     pub simulations: usize,
     pub ending: Ending,
+    /// The experiments whose cost (the sum of their series' squared misfits, each weighed
+    /// by its misfit) the fit's end made at least four times its start's. A fit that bends
+    /// that far from one capture to follow the others has found an experiment the model
+    /// does not reproduce: it is not reported, the start is ([`Fitted::start_reported`]).
+    pub worse_than_start: Vec<usize>,
+    /// The experiments the fit ended worse on than its start, but not far ([`Fitted::run`]'s
+    /// rule), each with the ratio of its weighted RMS misfit at the end to the start's.
+    pub traded: Vec<(usize, f64)>,
+    /// The values, intervals (none) and series are the start's, not the fit's end.
+    pub start_reported: bool,
+}
+
+impl Fitted {
+    /// Whether the result can be trusted as a least-squares estimate: the iteration ended
+    /// by converging (or at a minimum to the simulations' precision), no parameter at a
+    /// bound, and no capture worse than at the start. Otherwise the intervals are not
+    /// reliable.
+    pub fn converged(&self) -> bool {
+        self.ending != Ending::IterationLimit
+            && !self.estimates.iter().any(|e| e.at_bound)
+            && self.worse_than_start.is_empty()
+    }
 }
 
 /// The failure of a fit.
@@ -426,6 +449,45 @@ impl<S: Simulate> Fit<'_, S> {
             .map_err(|e| self.lm_error(e))?;
         let end_sims = second.unweigh(&pass2.residual);
         let rms = rms_per_series(self.series, &end_sims);
+        // Each experiment's cost at the start and at the end, at the final weights (each
+        // series' own misfit: about one per sample at the end), and its samples.
+        let experiment_cost = |rms: &[f64]| -> Vec<f64> {
+            let mut cost = vec![0.0; self.experiments];
+            for ((s, r), w) in self.series.iter().zip(rms).zip(&second.sigma) {
+                if let Some(c) = cost.get_mut(s.experiment) {
+                    *c += s.measured.len() as f64 * (r / w).powi(2);
+                }
+            }
+            cost
+        };
+        let (cost_start, cost_end) = (experiment_cost(&rms_start), experiment_cost(&rms));
+        let mut samples = vec![0usize; self.experiments];
+        for s in self.series {
+            if let Some(n) = samples.get_mut(s.experiment) {
+                *n += s.measured.len();
+            }
+        }
+        // Worse: the capture's misfit at least doubled (its cost four times the start's),
+        // beyond what the noise explains (three standard deviations of a chi-square of that
+        // many samples). A start fitted to one capture alone (the paper's method reads the
+        // motor's friction from the constant-speed capture) is better there than a joint fit
+        // that must also follow the other captures with a model a little off: that trade is a
+        // warning ([`Fitted::traded`]); a fit that bends the model far from one capture to
+        // reach the others has found an experiment the model does not reproduce.
+        let margin = |e: usize| 3.0 * (2.0 * samples[e] as f64).sqrt();
+        let worse_than_start: Vec<usize> = (0..self.experiments)
+            .filter(|&e| cost_end[e] > 4.0 * cost_start[e] + margin(e))
+            .collect();
+        let traded: Vec<(usize, f64)> = (0..self.experiments)
+            .filter(|&e| !worse_than_start.contains(&e) && cost_end[e] > cost_start[e] + margin(e))
+            .map(|e| {
+                (
+                    e,
+                    (cost_end[e] / cost_start[e].max(f64::MIN_POSITIVE)).sqrt(),
+                )
+            })
+            .collect();
+        let start_reported = !worse_than_start.is_empty();
         let u = uncertainty::analyse(
             &pass2.jacobian,
             &pass2.residual,
@@ -437,7 +499,11 @@ impl<S: Simulate> Fit<'_, S> {
         let offsets = (0..offsets)
             .map(|k| {
                 let (x, unit) = (pass2.x[np + k], second.units[k]);
-                let (interval, robust) = intervals(&u, np + k, x, |x| x * unit);
+                let (x, (interval, robust)) = if start_reported {
+                    (0.0, (None, None))
+                } else {
+                    (x, intervals(&u, np + k, x, |x| x * unit))
+                };
                 Estimate {
                     value: x * unit,
                     interval,
@@ -453,7 +519,7 @@ impl<S: Simulate> Fit<'_, S> {
             .enumerate()
             .map(|(k, p)| {
                 let x = pass2.x[k];
-                let (interval, robust) = if pass2.at_bound[k] {
+                let (interval, robust) = if pass2.at_bound[k] || start_reported {
                     (None, None)
                 } else {
                     intervals(&u, k, x, |x| p.from_x(x))
@@ -474,6 +540,7 @@ impl<S: Simulate> Fit<'_, S> {
                 // the logarithm.
                 let (lo, hi) = bounds[k];
                 let value = match (p.lower, p.upper) {
+                    _ if start_reported => p.guess,
                     (Some(b), _) if x <= lo => b,
                     (_, Some(b)) if x >= hi => b,
                     _ => p.from_x(x),
@@ -487,13 +554,18 @@ impl<S: Simulate> Fit<'_, S> {
                 }
             })
             .collect();
-        let series = end_sims
+        let reported_sims = if start_reported {
+            first.unweigh(&pass1.start_residual)
+        } else {
+            end_sims
+        };
+        let series = reported_sims
             .into_iter()
-            .zip(rms)
-            .zip(rms_start)
+            .zip(if start_reported { &rms_start } else { &rms })
+            .zip(&rms_start)
             .map(|((simulated, rms), rms_start)| SeriesFit {
-                rms_start,
-                rms,
+                rms_start: *rms_start,
+                rms: *rms,
                 simulated,
             })
             .collect();
@@ -505,6 +577,9 @@ impl<S: Simulate> Fit<'_, S> {
             iterations: pass1.iterations + pass2.iterations,
             simulations: (pass1.evaluations + pass2.evaluations) * self.experiments,
             ending: pass2.ending,
+            worse_than_start,
+            traded,
+            start_reported,
         })
     }
 }

@@ -1,8 +1,13 @@
 -- tb_motor_bench: the bench of the paper's four motor experiments (PAPER.md section 3), the
 -- testbench that `vams extract` fits to the four captures. The motor is `dc_motor` with
--- `constant_friction` on its shaft (the motor's own friction only); it is fed from a supply
--- `vs` behind the source resistance `rs` (supply, wiring, switch) through a switch that
--- closes at `t_on` (closed from the start when `t_on <= 0`) and opens at `t_off`.
+-- `constant_friction` on its shaft (the motor's own friction only); it is fed through a
+-- switch that closes at `t_on` (closed from the start when `t_on <= 0`) and opens at `t_off`
+-- from a supply `vs` behind the source resistance `rs` (supply, wiring, switch), or, when
+-- `driven`, from the table `drive` of time (`vams.tables.pwl`): `vams extract` drives each
+-- experiment with its capture's own terminal voltage (a blocked rotor at 3 V beside runs at
+-- 12 V, a supply that sags during the inrush), less the voltage probe's offset `v_offset`,
+-- and compares `v_probe`, what that probe reads, where the voltage is the motor's own (at
+-- rest before the switch closes, coasting after it opens).
 --   inrush:   t_on = the step's time           current and voltage from rest
 --   blocked:  t_on = the step's time, blocked  the rotor held: R and L alone
 --   speed:    closed from the start            run up, then the capture at constant speed
@@ -15,6 +20,8 @@
 library ieee;
 use ieee.electrical_systems.all;
 use ieee.mechanical_systems.all;
+library vams;
+use vams.tables.all;
 
 entity tb_motor_bench is
   generic (
@@ -30,6 +37,9 @@ entity tb_motor_bench is
     t_off      : real := 1.0e9;    -- [s] the switch opens
     blocked    : boolean := false; -- the rotor held
     w_s        : real := 0.5;      -- [rad/s] velocity scale of the friction's smoothing
+    driven     : boolean := false; -- the supply is the table `drive`, not `vs`
+    drive      : real_vector := (0.0, 0.0); -- [s, V] (t0, v0, t1, v1, ...) when driven
+    v_offset   : real := 0.0;      -- [V] the voltage probe's offset (drive and v_probe)
     self_check : boolean := true   -- assert the no-load speed at 290 ms (off while fitting)
   );
 end entity tb_motor_bench;
@@ -39,6 +49,9 @@ architecture bench of tb_motor_bench is
   terminal shaft : rotational_v;
   quantity vsup across isup through supply to electrical_ref;
   quantity vsw across isw through supply to p;
+  quantity vm across p to electrical_ref;
+  -- What the voltage probe reads.
+  quantity v_probe : real;
   quantity speed across shaft to rotational_v_ref;
   -- The rotor's angle since t = 0: `vams extract` reads the commutation ripple's phase from it.
   quantity angle : real;
@@ -48,7 +61,13 @@ architecture bench of tb_motor_bench is
   -- the captures' pre-trigger shows), or nothing when the switch is closed from the start.
   constant i_start : real := real(boolean'pos(t_on > 0.0)) * vs / (r_open + r);
 begin
-  vsup == vs;
+  from_table : if driven generate
+    vsup == pwl(drive, now) - v_offset;
+  end generate;
+  from_vs : if not driven generate
+    vsup == vs;
+  end generate;
+  v_probe == vm + v_offset;
   if closed use
     vsw == rs * isw;
   else

@@ -112,7 +112,7 @@ pub fn run(args: &ExtractArgs) -> miette::Result<()> {
     )?;
     let seconds = started.elapsed().as_secs_f64();
     if args.json {
-        println!("{}", json(&x, &fit));
+        println!("{}", json(&x, &fit, seconds));
     } else {
         print!("{}", table(&x, &fit, args.commutations, seconds));
     }
@@ -134,6 +134,15 @@ pub fn run(args: &ExtractArgs) -> miette::Result<()> {
         };
         let captures: Vec<String> = motor::ROLES.iter().map(|r| r.to_string()).collect();
         crate::cli::fit::plot::plots(dir, ext, &fit.fitted, &fit.series, &captures)?;
+    }
+    if !fit.fitted.converged() {
+        return Err(crate::cli::fit::FitCliError::NotConverged {
+            reasons: crate::cli::fit::report::unconverged_reasons(
+                &fit.fitted,
+                &context(&fit, seconds),
+            ),
+        }
+        .into());
     }
     Ok(())
 }
@@ -211,18 +220,21 @@ pub fn table(x: &Extraction, fit: &MotorFit, commutations: u32, seconds: f64) ->
             UNITS[k]
         );
     }
-    let bench = |name: &str| {
+    let bench = |name: &str, e: usize| {
         fit.params
             .iter()
-            .position(|p| p.name == name)
-            .map_or(f64::NAN, |k| fit.fitted.estimates[k].value)
+            .position(|p| p.name == name && p.experiment == Some(e))
+            .map(|k| fit.fitted.estimates[k].value)
     };
-    let _ = writeln!(
-        s,
-        "\nbench: supply {:.4} V behind {:.4} ohm (fitted with the motor)",
-        bench("vs"),
-        bench("rs")
-    );
+    let _ = writeln!(s, "\nbench supplies (fitted with the motor)");
+    for (e, role) in ROLES.iter().enumerate() {
+        let vs = bench("vs", e).unwrap_or(f64::NAN);
+        let rs = match bench("rs", e) {
+            Some(rs) => format!("behind {rs:.4} ohm"),
+            None => "(its current is constant: vs is its terminal voltage)".into(),
+        };
+        let _ = writeln!(s, "{role:<11} {vs:.4} V {rs}");
+    }
     let _ = writeln!(s, "\nRMS residual of the simulated capture");
     let _ = writeln!(
         s,
@@ -253,11 +265,17 @@ pub fn table(x: &Extraction, fit: &MotorFit, commutations: u32, seconds: f64) ->
         "joint fit: {} iterations, {} simulations of models/fit/tb_motor_bench.vhd, {:.2} s",
         fit.fitted.iterations, fit.fitted.simulations, seconds
     );
+    let _ = writeln!(
+        s,
+        "{}",
+        crate::cli::fit::report::status_line(&fit.fitted, &context(fit, seconds))
+    );
     s
 }
 
-/// The JSON for tools: fitted values at the top level, SI units.
-pub fn json(x: &Extraction, fit: &MotorFit) -> String {
+/// The JSON for tools: fitted values at the top level, SI units (the paper's where the fit
+/// ended worse than them: `start_reported`), and the fit's status (`converged`, ...).
+pub fn json(x: &Extraction, fit: &MotorFit, seconds: f64) -> String {
     let names = MotorParams::NAMES;
     let fitted = fit.motor.values();
     let se = fit.se();
@@ -311,8 +329,14 @@ pub fn json(x: &Extraction, fit: &MotorFit) -> String {
         .iter()
         .zip(&fit.fitted.estimates)
         .skip(6)
-        .filter(|(p, _)| p.experiment.is_none())
-        .map(|(p, e)| (p.name.clone(), num(e.value)))
+        .map(|(p, e)| {
+            // `v_offset` (the speed and coast captures'), `v_offset@inrush`, `t_on@blocked`.
+            let key = match p.experiment {
+                Some(k) => format!("{}@{}", p.name, ROLES[k]),
+                None => p.name.clone(),
+            };
+            (key, num(e.value))
+        })
         .collect();
     top.insert("bench".into(), serde_json::Value::Object(bench));
     top.insert("speed_rad_s".into(), num(x.prepared.w_cst.value));
@@ -325,6 +349,10 @@ pub fn json(x: &Extraction, fit: &MotorFit) -> String {
         "simulations".into(),
         serde_json::json!(fit.fitted.simulations),
     );
+    top.extend(crate::cli::fit::report::status_json(
+        &fit.fitted,
+        &context(fit, seconds),
+    ));
     serde_json::Value::Object(top).to_string()
 }
 

@@ -318,5 +318,11 @@ pub fn run(args: &FitArgs) -> Result<(), Report> {
             eprintln!("wrote {}", path.display());
         }
     }
+    if !fitted.converged() {
+        return Err(FitCliError::NotConverged {
+            reasons: report::unconverged_reasons(&fitted, &context),
+        }
+        .into());
+    }
     Ok(())
 }

@@ -38,25 +38,30 @@ impl Series {
     /// sqrt 2`, which a smooth signal sampled densely hardly affects), floored at a
     /// millionth of its range so a noise-free series weighs finitely.
     pub fn noise(&self) -> f64 {
-        if let Some(sigma) = self.sigma {
-            return sigma;
+        match self.sigma {
+            Some(sigma) => sigma,
+            None => noise(&self.measured),
         }
-        let mut d: Vec<f64> = self.measured.windows(2).map(|w| w[1] - w[0]).collect();
-        let range = self
-            .measured
-            .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
-                (lo.min(*v), hi.max(*v))
-            });
-        let floor = ((range.1 - range.0).abs() * 1e-6).max(1e-300);
-        if d.len() < 2 {
-            return floor.max(1.0);
-        }
-        let m = median(&mut d);
-        let mut dev: Vec<f64> = d.iter().map(|v| (v - m).abs()).collect();
-        let mad = median(&mut dev);
-        (1.4826 * mad / std::f64::consts::SQRT_2).max(floor)
     }
+}
+
+/// The noise of samples `values`, estimated robustly from their first differences (`1.4826
+/// MAD / sqrt 2`), floored at a millionth of their range (1 for fewer than three samples).
+pub fn noise(values: &[f64]) -> f64 {
+    let mut d: Vec<f64> = values.windows(2).map(|w| w[1] - w[0]).collect();
+    let range = values
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+            (lo.min(*v), hi.max(*v))
+        });
+    let floor = ((range.1 - range.0).abs() * 1e-6).max(1e-300);
+    if d.len() < 2 {
+        return floor.max(1.0);
+    }
+    let m = median(&mut d);
+    let mut dev: Vec<f64> = d.iter().map(|v| (v - m).abs()).collect();
+    let mad = median(&mut dev);
+    (1.4826 * mad / std::f64::consts::SQRT_2).max(floor)
 }
 
 fn median(v: &mut [f64]) -> f64 {

@@ -7,6 +7,17 @@ use thiserror::Error;
 
 #[derive(Debug, Error, Diagnostic)]
 pub enum FitCliError {
+    /// The fit ran and its result was written, but it is not a converged estimate (exit
+    /// status 3: the numbers are there, and a script must not take them as the answer).
+    #[error("the fit did not converge: {}", reasons.join("; "))]
+    #[diagnostic(
+        code(vams::fit::not_converged),
+        help(
+            "the values and intervals above are not reliable; see the warnings: start nearer, widen a bound, or check each capture's experiment"
+        )
+    )]
+    NotConverged { reasons: Vec<String> },
+
     /// A `--measured` argument that does not parse.
     #[error("`--measured {arg}`: {why}")]
     #[diagnostic(

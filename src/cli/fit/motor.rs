@@ -7,11 +7,17 @@
 //! switch closed is a nuisance parameter of each, fitted too: half a sample of error in it is
 //! a percent of the electrical time constant), the constant speed and the coast after the
 //! bench has run the motor up to speed (a settling time of 25 mechanical time constants at the
-//! paper's values) and the coast's cut at its captured time. Compared: the current and the
-//! terminal voltage of each capture (the voltage makes the supply `vs` and its resistance
-//! `rs` identifiable, which the current alone confuses with R), and the speed read from the
-//! ripple of the constant-speed capture (a value with its standard error: without a speed,
-//! scaling Ke, J, D and Tcst together leaves every current unchanged).
+//! paper's values) and the coast's cut at its captured time. Each experiment has its own
+//! supply `vs` and source resistance `rs`: labs take the blocked rotor at a few volts beside
+//! runs at the full supply, each on its own bench supply, and one supply for all four bends
+//! every motor parameter to fit them. The inrush and the blocked rotor draw a changing
+//! current, so their sag makes `rs` identifiable; the constant-speed and coasting captures
+//! draw a constant one before the cut, which only `vs - rs i` shows: there `rs` is 0 and `vs`
+//! is the terminal voltage. Compared: the current and the terminal voltage of each capture
+//! (the voltage makes the supply identifiable, which the current alone confuses with R), and
+//! the speed read from the ripple of the constant-speed capture (a value with its standard
+//! error: without a speed, scaling Ke, J, D and Tcst together leaves every current
+//! unchanged).
 
 use crate::capture::{Capture, Channel};
 use crate::cli::compile::{Prepared, prepare_loaded};
@@ -318,17 +324,37 @@ pub fn fit(
         ("t_off".into(), crate::output::csv::format_number(t_cut)),
     ]);
 
-    // The bench's supply and source resistance, from the constant-speed capture's voltage.
+    // Each experiment's supply, from its capture's voltage while the switch is closed (the
+    // samples after the step; the coast's before the cut), and the source resistance of the
+    // two whose current changes.
     let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len().max(1) as f64;
-    let (v_speed, i_speed) = (mean(&speed.v), mean(&speed.i));
-    params.push(FreeParam {
-        name: "rs".into(),
-        guess: 0.1,
-        lower: Some(0.0),
-        upper: Some(10.0),
-        experiment: None,
-    });
-    params.push(positive("vs", v_speed + 0.1 * i_speed));
+    let closed = [
+        (inrush, caps.inrush_step, inrush.len()),
+        (blocked, caps.blocked_step, blocked.len()),
+        (speed, 0, speed.len()),
+        (coast, 0, cut.saturating_sub(1).max(1)),
+    ];
+    for (e, (cap, from, to)) in closed.into_iter().enumerate() {
+        let to = to.clamp(1, cap.len());
+        let from = from.min(to - 1);
+        let (v, i) = (mean(&cap.v[from..to]), mean(&cap.i[from..to]));
+        let rs_guess = 0.1;
+        params.push(FreeParam {
+            experiment: Some(e),
+            ..positive("vs", v + rs_guess * i)
+        });
+        if e < 2 {
+            params.push(FreeParam {
+                name: "rs".into(),
+                guess: rs_guess,
+                lower: Some(0.0),
+                upper: Some(10.0),
+                experiment: Some(e),
+            });
+        } else {
+            setups_generics[e].push(("rs".into(), "0.0".into()));
+        }
+    }
 
     let mut setups: Vec<Setup> = setups_generics
         .into_iter()

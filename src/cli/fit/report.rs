@@ -137,7 +137,93 @@ pub fn warnings(f: &Fitted, c: &Context) -> Vec<String> {
             "the fit stopped at its iteration limit before converging: the values may not be the best; start nearer".to_string(),
         );
     }
+    for (e, ratio) in &f.traded {
+        w.push(format!(
+            "the fit follows `{}` less closely than its start did (weighted RMS misfit {:.2} times the start's): it trades that capture's agreement for the others', which the model cannot follow all at once exactly; check that capture's experiment, or that the model has what it shows",
+            c.captures.get(*e).map_or("?", String::as_str),
+            ratio
+        ));
+    }
+    if f.start_reported {
+        w.push(format!(
+            "the fit ended worse than its start on {}: the model cannot follow these captures together (an experiment the testbench does not reproduce: a supply, a load, a switching time), so the start is reported, not the fit; check each capture's setup against its experiment",
+            worse_captures(f, c)
+        ));
+    }
     w
+}
+
+/// The captures the fit made worse, quoted and joined.
+fn worse_captures(f: &Fitted, c: &Context) -> String {
+    f.worse_than_start
+        .iter()
+        .map(|&e| format!("`{}`", c.captures.get(e).map_or("?", String::as_str)))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// Why a fit's result is not a converged least-squares estimate (empty: it is): one short
+/// reason each, for the table's status line and the JSON.
+pub fn unconverged_reasons(f: &Fitted, c: &Context) -> Vec<String> {
+    let mut reasons = Vec::new();
+    if f.ending == crate::fit::Ending::IterationLimit {
+        reasons.push("stopped at the iteration limit".to_string());
+    }
+    let bound: Vec<String> = (f.estimates.iter().enumerate())
+        .filter(|(_, e)| e.at_bound)
+        .map(|(k, _)| format!("`{}`", c.label(k)))
+        .collect();
+    if !bound.is_empty() {
+        reasons.push(format!("at a bound: {}", bound.join(", ")));
+    }
+    if f.start_reported {
+        reasons.push(format!(
+            "worse than the start on {} (the start is reported)",
+            worse_captures(f, c)
+        ));
+    }
+    reasons
+}
+
+/// The status line of a table: converged, or why not and that the intervals are not
+/// reliable.
+pub fn status_line(f: &Fitted, c: &Context) -> String {
+    let reasons = unconverged_reasons(f, c);
+    if reasons.is_empty() {
+        "status: converged".to_string()
+    } else {
+        format!(
+            "status: NOT CONVERGED ({}): the intervals are not reliable",
+            reasons.join("; ")
+        )
+    }
+}
+
+/// The JSON fields of the fit's status: `converged`, `ending`, `bound_hits`,
+/// `worse_than_start` (captures), `start_reported`, `intervals_reliable`, `reasons`.
+pub fn status_json(f: &Fitted, c: &Context) -> serde_json::Map<String, serde_json::Value> {
+    use serde_json::json;
+    let ending = match f.ending {
+        crate::fit::Ending::Converged => "converged",
+        crate::fit::Ending::NoBetterStep => "no better step",
+        crate::fit::Ending::IterationLimit => "iteration limit",
+    };
+    let bound_hits: Vec<String> = (f.estimates.iter().enumerate())
+        .filter(|(_, e)| e.at_bound)
+        .map(|(k, _)| c.label(k))
+        .collect();
+    let worse: Vec<&str> = (f.worse_than_start.iter())
+        .filter_map(|&e| c.captures.get(e).map(String::as_str))
+        .collect();
+    let mut m = serde_json::Map::new();
+    m.insert("converged".into(), json!(f.converged()));
+    m.insert("ending".into(), json!(ending));
+    m.insert("bound_hits".into(), json!(bound_hits));
+    m.insert("worse_than_start".into(), json!(worse));
+    m.insert("start_reported".into(), json!(f.start_reported));
+    m.insert("intervals_reliable".into(), json!(f.converged()));
+    m.insert("reasons".into(), json!(unconverged_reasons(f, c)));
+    m
 }
 
 /// The table for people.
@@ -154,6 +240,7 @@ pub fn table(f: &Fitted, c: &Context) -> String {
         f.simulations,
         c.seconds
     );
+    let _ = writeln!(s, "{}\n", status_line(f, c));
     let labels: Vec<String> = (0..c.params.len()).map(|k| c.label(k)).collect();
     let w = labels
         .iter()
@@ -267,7 +354,7 @@ pub fn json(f: &Fitted, c: &Context) -> String {
             })
         })
         .collect();
-    let out = json!({
+    let mut out = json!({
         "parameters": Value::Object(params),
         "names": (0..c.params.len()).map(|k| c.label(k)).collect::<Vec<_>>(),
         "correlation": correlation,
@@ -277,6 +364,9 @@ pub fn json(f: &Fitted, c: &Context) -> String {
         "seconds": json_num(c.seconds),
         "warnings": warnings(f, c),
     });
+    if let Value::Object(m) = &mut out {
+        m.extend(status_json(f, c));
+    }
     serde_json::to_string_pretty(&out).unwrap_or_default()
 }
 
