@@ -66,7 +66,8 @@ pub struct ExtractArgs {
     /// Simulations run at once (default: the machine's cores).
     #[arg(short = 'j', long = "jobs", value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1024))]
     pub jobs: Option<u32>,
-    /// Write four example captures (a simulated 12 V actuator motor) into DIR and stop.
+    /// Write four example captures (a simulated 10.5 V actuator motor, the blocked rotor
+    /// taken at 3 V) into DIR and stop.
     #[arg(long, value_name = "DIR", conflicts_with_all = ["inrush", "blocked", "speed", "coast"])]
     pub demo: Option<PathBuf>,
 }
@@ -74,7 +75,7 @@ pub struct ExtractArgs {
 /// Runs `vams extract`.
 pub fn run(args: &ExtractArgs) -> miette::Result<()> {
     if let Some(dir) = &args.demo {
-        let caps = synth::generate(&MotorParams::example(), &SynthOptions::default());
+        let caps = synth::generate(&MotorParams::example(), &SynthOptions::lab());
         synth::write_captures(dir, &caps).map_err(|e| ExtractError::Write {
             path: dir.clone(),
             what: e.to_string(),

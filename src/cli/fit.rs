@@ -61,6 +61,13 @@ pub struct FitArgs {
     /// (repeatable): `dut.i=current`.
     #[arg(long = "match", value_name = "QUANTITY=COLUMN", required = true)]
     pub matches: Vec<String>,
+    /// Drive an input of the testbench from a column of each capture (repeatable): the
+    /// `real_vector` generic GENERIC gets the column as a `vams.tables.pwl` table of time
+    /// (`drive=voltage`, with `vsup == pwl(drive, now);` in the testbench): every edge kept,
+    /// the noise averaged where the column is flat. For an input the experiment measured
+    /// rather than set: a supply that sagged, a stimulus of unknown shape.
+    #[arg(long, value_name = "GENERIC=COLUMN")]
+    pub drive: Vec<String>,
     /// Multiply a column of the captures (repeatable): `current=0.1` for a 100 mV/A probe.
     #[arg(long, value_name = "COLUMN=FACTOR")]
     pub scale: Vec<String>,
@@ -104,6 +111,7 @@ pub struct FitArgs {
 struct Parsed {
     params: Vec<FreeParam>,
     measured: Vec<Measured>,
+    drives: Vec<(String, String)>,
     matches: Vec<Match>,
     read: ReadOptions,
 }
@@ -153,9 +161,24 @@ fn parse(args: &FitArgs) -> Result<Parsed, FitCliError> {
         .iter()
         .map(|s| experiment::parse_scale(s))
         .collect::<Result<Vec<_>, _>>()?;
+    let drives = args
+        .drive
+        .iter()
+        .map(|d| experiment::parse_drive(d))
+        .collect::<Result<Vec<_>, _>>()?;
+    if let Some((g, _)) = drives
+        .iter()
+        .find(|(g, _)| params.iter().any(|p| &p.name == g))
+    {
+        return Err(FitCliError::FreeAndFixed {
+            name: g.clone(),
+            capture: "--drive".into(),
+        });
+    }
     Ok(Parsed {
         params,
         measured,
+        drives,
         matches,
         read: ReadOptions {
             time_column: args.time_col.clone(),
@@ -165,16 +188,27 @@ fn parse(args: &FitArgs) -> Result<Parsed, FitCliError> {
     })
 }
 
-/// The captures read, their warnings printed, and their series.
-fn load_series(p: &Parsed, points: usize) -> Result<Vec<Series>, Report> {
+/// The captures read, their warnings printed, their series, and per experiment the
+/// generics of its `--drive` tables.
+#[allow(clippy::type_complexity)]
+fn load_series(
+    p: &Parsed,
+    points: usize,
+) -> Result<(Vec<Series>, Vec<Vec<(String, String)>>), Report> {
     let mut series = Vec::new();
     let mut loaded = Vec::new();
+    let mut driven = Vec::new();
     for (e, m) in p.measured.iter().enumerate() {
         let l = experiment::load(m, &p.read, points)?;
         for w in &l.capture.warnings {
             eprintln!("{:?}", Report::new(w.clone()));
         }
         series.extend(experiment::series(e, m, &l, &p.matches)?);
+        driven.push(
+            (p.drives.iter())
+                .map(|d| experiment::drive_generic(&l, m, d))
+                .collect::<Result<Vec<_>, _>>()?,
+        );
         loaded.push(l);
     }
     // Every matched column must be in some capture.
@@ -200,7 +234,7 @@ fn load_series(p: &Parsed, points: usize) -> Result<Vec<Series>, Report> {
             .into());
         }
     }
-    Ok(series)
+    Ok((series, driven))
 }
 
 /// Elaborates each experiment at the guesses: a generic the design lacks or a matched quantity
@@ -242,16 +276,18 @@ fn check_design(sim: &DesignSimulator, p: &Parsed) -> Result<(), Report> {
 pub fn run(args: &FitArgs) -> Result<(), Report> {
     let started = Instant::now();
     let parsed = parse(args)?;
-    let series = load_series(&parsed, args.points as usize)?;
+    let (series, driven) = load_series(&parsed, args.points as usize)?;
     let prepared: Prepared = prepare(&args.design)?;
     let setups: Vec<Setup> = parsed
         .measured
         .iter()
         .enumerate()
         .map(|(e, m)| {
+            let mut generics = m.generics.clone();
+            generics.extend(driven[e].iter().cloned());
             Setup::new(
                 m.top.clone().unwrap_or_else(|| prepared.top.clone()),
-                m.generics.clone(),
+                generics,
                 e,
                 &series,
             )

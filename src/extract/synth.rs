@@ -23,6 +23,9 @@ pub struct SynthOptions {
     pub supply: f64,
     /// Source (supply + wiring) resistance, ohm: the terminal voltage sags with current.
     pub source_r: f64,
+    /// The blocked rotor's own supply, V (labs take it at a few volts, so that the stalled
+    /// current stays within the probe's range); `None`: `supply`.
+    pub blocked_supply: Option<f64>,
     /// Current commutations per revolution.
     pub commutations: u32,
     /// Relative depth of the current ripple.
@@ -47,6 +50,7 @@ impl Default for SynthOptions {
         SynthOptions {
             supply: 10.5,
             source_r: 0.3,
+            blocked_supply: None,
             commutations: 4,
             ripple_depth: 0.08,
             emf_ripple: 0.01,
@@ -55,6 +59,17 @@ impl Default for SynthOptions {
             voltage_offset: 0.02,
             seed: 1,
             samples: None,
+        }
+    }
+}
+
+impl SynthOptions {
+    /// The bench as labs set it up (`vams extract --demo`): the blocked rotor at 3 V beside
+    /// the other three at the full supply.
+    pub fn lab() -> SynthOptions {
+        SynthOptions {
+            blocked_supply: Some(3.0),
+            ..SynthOptions::default()
         }
     }
 }
@@ -211,12 +226,17 @@ pub fn generate(p: &MotorParams, o: &SynthOptions) -> Captures {
     let pre = n / 10;
     let (mut t, mut v, mut i) = (Vec::new(), Vec::new(), Vec::new());
     let mut x: State = [0.0, 0.0, 0.0];
+    let vs_blocked = o.blocked_supply.unwrap_or(vs);
     for k in 0..n {
         if k > pre {
-            x = step_driven(p, x, vs, rs, dt, true);
+            x = step_driven(p, x, vs_blocked, rs, dt, true);
         }
         t.push((k as f64 - pre as f64) * dt);
-        v.push(if k >= pre { vs - rs * x[0] } else { 0.0 });
+        v.push(if k >= pre {
+            vs_blocked - rs * x[0]
+        } else {
+            0.0
+        });
         i.push(x[0]);
     }
     let blocked = capture("blocked", t, v, i, o, &mut rng);

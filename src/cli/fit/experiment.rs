@@ -153,6 +153,46 @@ pub fn parse_match(arg: &str) -> Result<Match, FitCliError> {
     }
 }
 
+/// `--drive GENERIC=COLUMN`: the generic and the column, which must be a table generic of
+/// the testbench (a `real_vector` that an equation reads with `vams.tables.pwl`).
+pub fn parse_drive(arg: &str) -> Result<(String, String), FitCliError> {
+    match arg.split_once('=') {
+        Some((g, c)) if !g.trim().is_empty() && !c.trim().is_empty() => {
+            Ok((g.trim().to_ascii_lowercase(), c.trim().to_string()))
+        }
+        _ => Err(FitCliError::Argument {
+            flag: "drive",
+            arg: arg.into(),
+            expected: "GENERIC=COLUMN, e.g. `drive=voltage` (a real_vector generic the testbench reads with `pwl(drive, now)`, and a column of the captures)",
+        }),
+    }
+}
+
+/// The table text of generic `generic` from column `column` of a loaded capture: every
+/// sample at simulation time, reduced by [`crate::fit::drive::table`].
+pub fn drive_generic(
+    loaded: &Loaded,
+    m: &Measured,
+    (generic, column): &(String, String),
+) -> Result<(String, String), FitCliError> {
+    let cap = &loaded.aligned;
+    let Some(ch) = cap.channel(column) else {
+        let available: Vec<&str> = cap.channels.iter().map(|c| c.name.as_str()).collect();
+        return Err(FitCliError::NoColumn {
+            quantity: format!("--drive {generic}"),
+            column: column.clone(),
+            help: format!(
+                "`{}` has the columns {}",
+                m.path.display(),
+                available.join(", ")
+            ),
+        });
+    };
+    // Blocks of at most 2 % of the record where the column is a line within its noise.
+    let table = crate::fit::drive::table(&cap.time, &ch.values, 50);
+    Ok((generic.clone(), crate::fit::drive::literal(&table)))
+}
+
 pub fn parse_scale(arg: &str) -> Result<(String, f64), FitCliError> {
     let bad = || FitCliError::Argument {
         flag: "scale",
@@ -170,6 +210,9 @@ pub fn parse_scale(arg: &str) -> Result<(String, f64), FitCliError> {
 /// A capture read, aligned and reduced for its experiment.
 pub struct Loaded {
     pub capture: Capture,
+    /// Every sample, aligned (simulation time), not reduced: what a `--drive` table is made
+    /// of.
+    pub aligned: Capture,
     /// The duration of each reduced sample's block (empty: the samples as read).
     pub widths: Vec<f64>,
     /// The interval of the samples as read.
@@ -214,9 +257,11 @@ pub fn load(m: &Measured, read: &ReadOptions, points: usize) -> Result<Loaded, m
     };
     let widths = crate::fit::series::block_widths(&capture.time, points);
     let sample_interval = crate::fit::series::sample_interval(&capture.time);
-    let capture = capture.shifted(shift).decimated(points);
+    let aligned = capture.shifted(shift);
+    let capture = aligned.clone().decimated(points);
     Ok(Loaded {
         capture,
+        aligned,
         widths,
         sample_interval,
         shift,
