@@ -6,7 +6,8 @@
 //! errors, the intervals' coverage and the wall time per extraction.
 //!
 //! A plain program, not criterion: `cargo bench --bench extract_lab` (`LAB_SETS=N` labs,
-//! default 20; `LAB_SEED=S` the first seed, default 1; `LAB_SHARED=1` puts all four captures
+//! default 20; `LAB_SEED=S` the first seed, default 1; `LAB_KEEP=DIR` keeps the captures;
+//! `LAB_SHARED=1` puts all four captures
 //! of each lab on one 12 V bench, the control). Exits with 1 when a lab misses a goal (R, L
 //! and Ke within 1 %, J, D and Tcst within 5 %) or the extraction fails.
 
@@ -54,9 +55,12 @@ fn yes_no(h: Option<bool>) -> &'static str {
 fn run(seed: u64, shared: Option<Bench>) -> (Duration, Option<Outcome>) {
     let lab = Lab::random_on(seed, shared);
     let dir = tempfile::tempdir().expect("a temporary folder");
-    let paths = lab
-        .write(dir.path())
-        .expect("the temporary folder is writable");
+    // `LAB_KEEP=DIR` keeps each lab's captures in DIR/lab<seed>, to look into one.
+    let folder = match std::env::var_os("LAB_KEEP") {
+        Some(keep) => std::path::PathBuf::from(keep).join(format!("lab{seed}")),
+        None => dir.path().to_path_buf(),
+    };
+    let paths = lab.write(&folder).expect("the folder is writable");
     let start = Instant::now();
     let out = Command::new(VAMS)
         .args(Lab::extract_args(&paths))

@@ -45,6 +45,7 @@ fn interval(v: &serde_json::Value, key: &str, name: &str) -> (f64, f64) {
 
 fn check_json(stdout: &[u8], truth: &MotorParams) {
     let v: serde_json::Value = serde_json::from_slice(stdout).expect("--json prints JSON");
+    assert_eq!(v["converged"], true, "{}", v["reasons"]);
     // The goals: R, L and Ke within 1 %, J, D and Tcst within 5 %.
     let tol = [0.01, 0.01, 0.01, 0.01, 0.05, 0.05, 0.05];
     for ((name, t), tol) in MotorParams::NAMES.iter().zip(truth.values()).zip(tol) {

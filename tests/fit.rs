@@ -84,6 +84,18 @@ fn picoscope(dir: &Path, sd: f64, seed: u64) -> PathBuf {
 
 /// `vams fit --json` of both captures; returns the parsed JSON and stderr.
 fn fit(dir: &Path, sd: f64, seed: u64, extra: &[&str]) -> (serde_json::Value, String) {
+    let (json, stderr, code) = fit_status(dir, sd, seed, extra);
+    assert_eq!(code, Some(0), "vams fit did not succeed: {stderr}");
+    (json, stderr)
+}
+
+/// [`fit`] whatever its exit status: the JSON, standard error and the status.
+fn fit_status(
+    dir: &Path,
+    sd: f64,
+    seed: u64,
+    extra: &[&str],
+) -> (serde_json::Value, String, Option<i32>) {
     let charge = keysight(dir, sd, seed);
     let discharge = picoscope(dir, sd, seed);
     let out = vams()
@@ -99,9 +111,9 @@ fn fit(dir: &Path, sd: f64, seed: u64, extra: &[&str]) -> (serde_json::Value, St
         .output()
         .unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
-    assert!(out.status.success(), "vams fit failed: {stderr}");
-    let json = serde_json::from_slice(&out.stdout).expect("--json prints JSON");
-    (json, stderr)
+    let json = serde_json::from_slice(&out.stdout)
+        .unwrap_or_else(|e| panic!("--json prints JSON ({e}): {stderr}"));
+    (json, stderr, out.status.code())
 }
 
 fn value(j: &serde_json::Value, name: &str) -> (f64, (f64, f64), (f64, f64)) {
@@ -209,12 +221,45 @@ use predicates::prelude::PredicateBooleanExt;
 #[test]
 fn a_bound_holds_and_is_reported() {
     let dir = tempfile::tempdir().unwrap();
-    let (j, stderr) = fit(dir.path(), 0.02, 5, &["--free", "c=1e-6:6e-7:2e-6"]);
+    let (j, stderr, code) = fit_status(dir.path(), 0.02, 5, &["--free", "c=1e-6:6e-7:2e-6"]);
     let p = &j["parameters"]["c"];
     assert_eq!(p["value"].as_f64().unwrap(), 6e-7, "{p}");
     assert_eq!(p["at_bound"], true);
     assert!(p["ci95"].is_null());
     assert!(stderr.contains("`c` ended at its bound"), "{stderr}");
+    // Not a converged estimate: said in the JSON, on standard error and by the exit status.
+    assert_eq!(code, Some(3), "{stderr}");
+    assert_eq!(j["converged"], false);
+    assert_eq!(j["intervals_reliable"], false);
+    assert_eq!(j["bound_hits"], serde_json::json!(["c"]));
+    assert!(stderr.contains("did not converge"), "{stderr}");
+}
+
+#[test]
+fn a_table_says_whether_the_fit_converged() {
+    let dir = tempfile::tempdir().unwrap();
+    let charge = keysight(dir.path(), 0.02, 5);
+    let run = |free: &str| {
+        vams()
+            .arg("fit")
+            .arg(RC)
+            .args(["--top", "tb_rc", "-g", "r=2.2e3", "--match", "vc=1"])
+            .arg("--measured")
+            .arg(format!("{}:mode=0,shift=1ms", charge.display()))
+            .args(["--free", free, "--free", "v_step=4"])
+            .output()
+            .unwrap()
+    };
+    let ok = run("c=1e-6:1e-9:1e-3");
+    assert_eq!(ok.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&ok.stdout).contains("status: converged"));
+    let bound = run("c=1e-6:6e-7:2e-6");
+    assert_eq!(bound.status.code(), Some(3));
+    let table = String::from_utf8_lossy(&bound.stdout);
+    assert!(
+        table.contains("status: NOT CONVERGED (at a bound: `c`)"),
+        "{table}"
+    );
 }
 
 /// Reduced coverage check (the full one, 100 draws, is `coverage_of_100_noise_draws`):

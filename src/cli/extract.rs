@@ -236,12 +236,11 @@ pub fn table(x: &Extraction, fit: &MotorFit, commutations: u32, seconds: f64) ->
         };
         let _ = writeln!(s, "{role:<11} {vs:.4} V {rs}");
     }
-    let _ = writeln!(s, "\nRMS residual of the simulated capture");
     let _ = writeln!(
         s,
-        "{:<11} {:>14} {:>14}",
-        "capture", "paper's values", "joint fit"
+        "\nRMS residual of the simulated capture (start: the paper's values, R and L from the blocked rotor fitted alone)"
     );
+    let _ = writeln!(s, "{:<11} {:>14} {:>14}", "capture", "start", "joint fit");
     for k in 0..4 {
         let f = &fit.fitted.series[fit.main_series[k]];
         let _ = writeln!(
@@ -323,7 +322,9 @@ pub fn json(x: &Extraction, fit: &MotorFit, seconds: f64) -> String {
     top.insert("paper_se".into(), obj(&|k| num(paper[k].se)));
     top.insert(
         "rms_residual".into(),
-        serde_json::json!({ "paper": rms(true), "refined": rms(false) }),
+        // `start`: the joint fit's start (the paper's values, R and L from the blocked rotor
+        // fitted alone); `paper`, its former name, kept for scripts that read it.
+        serde_json::json!({ "start": rms(true), "paper": rms(true), "refined": rms(false) }),
     );
     let bench: serde_json::Map<String, serde_json::Value> = fit
         .params
