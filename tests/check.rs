@@ -60,7 +60,7 @@ fn semantic_and_structural_errors_match_their_snapshots() {
         .filter(|p| p.extension().is_some_and(|e| e == "vhd"))
         .collect();
     files.sort();
-    assert_eq!(files.len(), 7);
+    assert_eq!(files.len(), 8);
     for path in files {
         let name = path.file_stem().unwrap().to_str().unwrap().to_string();
         let output = vams().arg("check").arg(&path).output().unwrap();

@@ -278,7 +278,7 @@ fn the_repository_testbenches_pass_by_default() {
         // tests/noise/: so do the noise models (noise sources are zero there too).
         .stdout(contains("test tb_rc_thermal ... ok"))
         .stdout(contains("test tb_divider ... ok"))
-        .stdout(contains("155 passed, 0 failed"));
+        .stdout(contains("156 passed, 0 failed"));
 }
 
 /// A testbench fails with the analysis errors of the units it reaches (here a package it
