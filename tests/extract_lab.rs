@@ -24,8 +24,18 @@ struct Extracted {
     holds: [[Option<bool>; 2]; 7],
 }
 
-/// Extracts lab `seed`'s motor, on its own four benches or on one `shared` bench.
+/// Extracts lab `seed`'s motor, on its own four benches or on one `shared` bench; it must
+/// succeed and converge.
 fn extract(seed: u64, shared: Option<Bench>) -> (Lab, Extracted) {
+    match try_extract(seed, shared) {
+        (lab, Ok(e)) => (lab, e),
+        (_, Err(why)) => panic!("lab {seed}: {why}"),
+    }
+}
+
+/// [`extract`], or why the extraction gave no converged result (its diagnostic, or the
+/// fit's reasons).
+fn try_extract(seed: u64, shared: Option<Bench>) -> (Lab, Result<Extracted, String>) {
     let lab = Lab::random_on(seed, shared);
     let dir = tempfile::tempdir().unwrap();
     let paths = lab.write(dir.path()).unwrap();
@@ -33,11 +43,15 @@ fn extract(seed: u64, shared: Option<Bench>) -> (Lab, Extracted) {
         .expect("the vams binary is built for tests")
         .env("NO_COLOR", "1")
         .args(&Lab::extract_args(&paths)[..])
-        .assert()
-        .success();
-    let v: serde_json::Value =
-        serde_json::from_slice(&out.get_output().stdout).expect("--json prints JSON");
-    assert_eq!(v["converged"], true, "lab {seed}: {}", v["reasons"]);
+        .output()
+        .expect("vams runs");
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    let Ok(v) = serde_json::from_slice::<serde_json::Value>(&out.stdout) else {
+        return (lab, Err(format!("no result: {stderr}")));
+    };
+    if v["converged"] != true || !out.status.success() {
+        return (lab, Err(format!("not converged: {}", v["reasons"])));
+    }
     let truth = lab.motor.values();
     let get =
         |obj: &serde_json::Value, k: usize| obj[LabMotor::NAMES[k]].as_f64().unwrap_or(f64::NAN);
@@ -69,7 +83,7 @@ fn extract(seed: u64, shared: Option<Bench>) -> (Lab, Extracted) {
             mark(e.holds[k][1]),
         );
     }
-    (lab, e)
+    (lab, Ok(e))
 }
 
 /// Whether a relative error `err` meets `goal` (NaN, a key missing, does not).
@@ -131,7 +145,15 @@ fn the_intervals_hold_the_truth_in_most_labs() {
     let mut held = [[0usize; 2]; 7];
     let mut missed = Vec::new();
     for seed in 100..100 + labs {
-        let (lab, e) = extract(seed, None);
+        // A lab without a converged result counts as missed by every interval (two of these
+        // 24 end so, with a diagnostic or exit status 3: benches/README.md).
+        let (lab, e) = match try_extract(seed, None) {
+            (lab, Ok(e)) => (lab, e),
+            (_, Err(why)) => {
+                missed.push(format!("lab {seed}: {why}"));
+                continue;
+            }
+        };
         for (h, got) in held.iter_mut().zip(&e.holds) {
             for (count, g) in h.iter_mut().zip(got) {
                 *count += usize::from(*g == Some(true));
@@ -149,7 +171,9 @@ fn the_intervals_hold_the_truth_in_most_labs() {
     // The 95 % interval with model error should hold the truth in at least 80 % of the labs
     // (a margin for the small number of labs). The covariance's assumes the model exact:
     // against this generator's stick and varying ripple it held Ke, J, D and Tcst in about
-    // half the labs (benches/README.md), and is only printed.
+    // half the labs (benches/README.md), and is only printed. Measured 2026-12-07: the second
+    // interval of Ke held the truth in 17 of these 24 labs (the others in 19-22), so this test
+    // fails on Ke: the goal, not yet the state.
     let least = (labs as usize * 4).div_ceil(5);
     let mut short = Vec::new();
     for (name, counts) in LabMotor::NAMES.iter().zip(held) {
