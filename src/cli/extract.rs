@@ -332,7 +332,7 @@ pub fn json(x: &Extraction, fit: &MotorFit, seconds: f64) -> String {
         .zip(&fit.fitted.estimates)
         .skip(6)
         .map(|(p, e)| {
-            // `v_offset` (the speed and coast captures'), `v_offset@inrush`, `t_on@blocked`.
+            // Each experiment's own: `vs@speed`, `rs@blocked`, `t_on@inrush`.
             let key = match p.experiment {
                 Some(k) => format!("{}@{}", p.name, ROLES[k]),
                 None => p.name.clone(),

@@ -206,7 +206,7 @@ fn load_series(
         series.extend(experiment::series(e, m, &l, &p.matches)?);
         driven.push(
             (p.drives.iter())
-                .map(|d| experiment::drive_generic(&l, m, d))
+                .map(|d| experiment::drive_generic(&l, d))
                 .collect::<Result<Vec<_>, _>>()?,
         );
         loaded.push(l);

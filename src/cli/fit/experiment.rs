@@ -172,22 +172,10 @@ pub fn parse_drive(arg: &str) -> Result<(String, String), FitCliError> {
 /// sample at simulation time, reduced by [`crate::fit::drive::table`].
 pub fn drive_generic(
     loaded: &Loaded,
-    m: &Measured,
     (generic, column): &(String, String),
-) -> Result<(String, String), FitCliError> {
+) -> Result<(String, String), crate::capture::CaptureError> {
     let cap = &loaded.aligned;
-    let Some(ch) = cap.channel(column) else {
-        let available: Vec<&str> = cap.channels.iter().map(|c| c.name.as_str()).collect();
-        return Err(FitCliError::NoColumn {
-            quantity: format!("--drive {generic}"),
-            column: column.clone(),
-            help: format!(
-                "`{}` has the columns {}",
-                m.path.display(),
-                available.join(", ")
-            ),
-        });
-    };
+    let ch = cap.channel_or_error(column)?;
     // Blocks of at most 2 % of the record where the column is a line within its noise.
     let table = crate::fit::drive::table(&cap.time, &ch.values, 50);
     Ok((generic.clone(), crate::fit::drive::literal(&table)))

@@ -162,6 +162,14 @@ fn worse_captures(f: &Fitted, c: &Context) -> String {
         .join(", ")
 }
 
+/// The labels of the parameters that ended at a bound.
+fn bound_hits(f: &Fitted, c: &Context) -> Vec<String> {
+    (f.estimates.iter().enumerate())
+        .filter(|(_, e)| e.at_bound)
+        .map(|(k, _)| c.label(k))
+        .collect()
+}
+
 /// Why a fit's result is not a converged least-squares estimate (empty: it is): one short
 /// reason each, for the table's status line and the JSON.
 pub fn unconverged_reasons(f: &Fitted, c: &Context) -> Vec<String> {
@@ -169,9 +177,9 @@ pub fn unconverged_reasons(f: &Fitted, c: &Context) -> Vec<String> {
     if f.ending == crate::fit::Ending::IterationLimit {
         reasons.push("stopped at the iteration limit".to_string());
     }
-    let bound: Vec<String> = (f.estimates.iter().enumerate())
-        .filter(|(_, e)| e.at_bound)
-        .map(|(k, _)| format!("`{}`", c.label(k)))
+    let bound: Vec<String> = bound_hits(f, c)
+        .iter()
+        .map(|label| format!("`{label}`"))
         .collect();
     if !bound.is_empty() {
         reasons.push(format!("at a bound: {}", bound.join(", ")));
@@ -208,17 +216,13 @@ pub fn status_json(f: &Fitted, c: &Context) -> serde_json::Map<String, serde_jso
         crate::fit::Ending::NoBetterStep => "no better step",
         crate::fit::Ending::IterationLimit => "iteration limit",
     };
-    let bound_hits: Vec<String> = (f.estimates.iter().enumerate())
-        .filter(|(_, e)| e.at_bound)
-        .map(|(k, _)| c.label(k))
-        .collect();
     let worse: Vec<&str> = (f.worse_than_start.iter())
         .filter_map(|&e| c.captures.get(e).map(String::as_str))
         .collect();
     let mut m = serde_json::Map::new();
     m.insert("converged".into(), json!(f.converged()));
     m.insert("ending".into(), json!(ending));
-    m.insert("bound_hits".into(), json!(bound_hits));
+    m.insert("bound_hits".into(), json!(bound_hits(f, c)));
     m.insert("worse_than_start".into(), json!(worse));
     m.insert("start_reported".into(), json!(f.start_reported));
     m.insert("intervals_reliable".into(), json!(f.converged()));
