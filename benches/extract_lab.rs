@@ -1,6 +1,6 @@
 //! `vams extract` on captures taken as a lab takes them: random motors, each capture on its
 //! own bench (the blocked rotor at 2-4 V, the others at 10-14 V, each with its own source
-//! resistance), timebase, ranges, trigger, from `tests/support/lab_motor.rs`, a generator that
+//! resistance), timebase, ranges, trigger, from `tests/it/support/lab_motor.rs`, a generator that
 //! shares no code with vams. Per lab: the truth, the fitted value, its error, the paper's
 //! method's error, and whether `ci95` and `ci95_bootstrap` hold the truth; then the largest
 //! errors, the intervals' coverage and the wall time per extraction.
@@ -11,7 +11,7 @@
 //! of each lab on one 12 V bench, the control). Exits with 1 when a lab misses a goal (R, L
 //! and Ke within 1 %, J, D and Tcst within 5 %) or the extraction fails.
 
-#[path = "../tests/support/lab_motor.rs"]
+#[path = "../tests/it/support/lab_motor.rs"]
 mod lab_motor;
 
 use std::process::Command;

@@ -13,7 +13,7 @@ use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
-use vams::cli::load::{Loaded, load};
+use vams::app::load::{Loaded, load};
 use vams::design::Design;
 use vams::elaborate::{ElabOptions, elaborate};
 use vams::kernel::{SimOptions, simulate};

@@ -8,7 +8,7 @@
 //! A plain program, not criterion: `cargo bench --bench lsp` (`LSP_BENCH_EDITS=N` edits,
 //! default 40).
 
-#[path = "../tests/support/lsp_client.rs"]
+#[path = "../tests/it/support/lsp_client.rs"]
 mod lsp_client;
 
 use std::time::{Duration, Instant};

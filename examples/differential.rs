@@ -1,9 +1,9 @@
-//! Many random circuits against ngspice (the differential test of `tests/differential.rs` at
+//! Many random circuits against ngspice (the differential test of `tests/it/differential.rs` at
 //! scale): `cargo run --release --example differential -- [COUNT] [FIRST_SEED] [RELTOL]`.
 //! Prints one line per circuit that does not agree, and the counts; writes the VHDL-AMS and
 //! SPICE files of each such circuit to `target/differential/` to become a regression test.
 
-#[path = "../tests/differential/circuit.rs"]
+#[path = "../tests/it/support/circuit.rs"]
 mod circuit;
 
 use circuit::{Circuit, Verdict, compare, ngspice_available};

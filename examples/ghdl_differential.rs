@@ -1,14 +1,14 @@
 //! Many random digital testbenches against GHDL (the differential test of
-//! `tests/ghdl_differential.rs` at scale):
+//! `tests/it/ghdl_differential.rs` at scale):
 //! `cargo build --release && cargo run --release --example ghdl_differential -- [COUNT] [FIRST_SEED]`.
 //! Runs the `vams` binary beside the example's directory (`target/release/vams`; `VAMS=PATH`
 //! chooses another) on two threads, prints one line per program that does not agree and the
 //! counts, and writes each such program to `target/ghdl_differential/seed_N.vhd` to be reduced
 //! into a regression test.
 
-#[path = "../tests/ghdl_differential/compare.rs"]
+#[path = "../tests/it/ghdl_differential/compare.rs"]
 mod compare;
-#[path = "../tests/ghdl_differential/program.rs"]
+#[path = "../tests/it/ghdl_differential/program.rs"]
 mod program;
 
 use compare::{Verdict, compare, ghdl_available};

@@ -1,6 +1,6 @@
 #!/usr/bin/env sh
 # A one-node Slurm cluster on this machine, for trying `vams sweep --slurm` and for the tests
-# (tests/support/slurm.rs) that submit real job arrays.
+# (tests/it/support/slurm.rs) that submit real job arrays.
 #
 #   eval "$(scripts/slurm-local.sh start)"   # prints `export SLURM_CONF=...` to eval
 #   sbatch --array=0-3 --wrap 'echo $SLURM_ARRAY_TASK_ID'

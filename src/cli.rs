@@ -1,39 +1,36 @@
 //! The command line: parses arguments with clap and dispatches to one subcommand.
 //!
 //! Takes argv; gives an exit code: 0 on success, 1 on a diagnosed error (rendered by miette,
-//! plain when stderr is not a terminal), 2 on a usage error (clap's). Each subcommand keeps its
-//! arguments and its run function in `cli/<name>.rs`; the shared steps (loading sources,
-//! elaborating, stop times, printing diagnostics and reports) have modules of their own.
+//! plain when stderr is not a terminal), 2 on a usage error (clap's), 3 for a fit that did not
+//! converge, 130 when interrupted. Each subcommand has `cli/<name>.rs`: its clap arguments,
+//! turned into the application layer's options (`crate::app`), and a `run` that calls the
+//! layer and prints what it gives back. Shared arguments are in `args`, the printing of
+//! compile failures in `compile`, Ctrl-C in `interrupt`, the progress bar in `progress`.
 
 pub mod ac;
-pub mod ac_assert;
+pub mod args;
 pub mod check;
 pub mod compile;
 pub mod dae;
 pub mod dc;
-pub mod error;
 pub mod extract;
 pub mod fit;
 pub mod interrupt;
-pub mod load;
 pub mod lsp;
 pub mod noise;
 pub mod op;
-pub mod parallel;
-pub mod params;
+pub mod output;
 pub mod poles;
 pub mod progress;
-pub mod render;
 pub mod run;
-pub mod stop;
 pub mod sweep;
 pub mod test;
-pub mod time;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
-use error::CliError;
+use crate::app::error::CliError;
+use crate::app::render;
 
 /// vams: a compiler and simulator for a practical subset of VHDL-AMS (IEEE 1076.1).
 #[derive(Debug, Parser)]
@@ -115,16 +112,16 @@ pub fn run() -> ExitCode {
                 // The shell's convention for a program stopped by SIGINT.
                 Some(CliError::Interrupted { .. }) => ExitCode::from(130),
                 _ if matches!(
-                    report.downcast_ref::<sweep::SweepError>(),
-                    Some(sweep::SweepError::Interrupted { .. })
+                    report.downcast_ref::<crate::app::study::StudyError>(),
+                    Some(crate::app::study::StudyError::Interrupted { .. })
                 ) =>
                 {
                     ExitCode::from(130)
                 }
                 // A fit that ran but did not converge: its result is written, and marked.
                 _ if matches!(
-                    report.downcast_ref::<fit::FitCliError>(),
-                    Some(fit::FitCliError::NotConverged { .. })
+                    report.downcast_ref::<crate::app::fit::FitCliError>(),
+                    Some(crate::app::fit::FitCliError::NotConverged { .. })
                 ) =>
                 {
                     // 2 is clap's, for a command line it cannot parse.

@@ -470,7 +470,15 @@ pub struct Signal {
     /// `std_logic`'s is built into the kernel.
     pub resolution: Option<Resolution>,
     /// `bus` or `register` (LRM 4.3.1.2): its drivers can be disconnected.
-    pub guarded: Option<crate::ast::GuardedKind>,
+    pub guarded: Option<GuardedKind>,
+}
+
+/// The kind of a guarded signal (LRM 4.3.1.2): with every driver disconnected, a `bus`
+/// takes its resolution function's value for no drivers, a `register` keeps its value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GuardedKind {
+    Bus,
+    Register,
 }
 
 /// A signal's resolution function, applied to the values of its connected drivers each time

@@ -156,7 +156,7 @@ mod tests {
             x.prepared.first_rev_events, x.prepared.ripple_hz
         );
         // The paper's method alone (the joint fit is `vams extract`'s, tested end to end in
-        // tests/extract.rs): R within 5 %, the rest within its own stated reach.
+        // tests/it/extract.rs): R within 5 %, the rest within its own stated reach.
         let errs: Vec<f64> = [
             (truth.r, p.r),
             (truth.l, p.l),

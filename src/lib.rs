@@ -5,23 +5,23 @@
 //! beside it, [`capture`] (oscilloscope exports), [`extract`] (motor parameters from scope
 //! captures) and [`output`] (plots).
 
+// The syntax stage is its own crate (`crates/syntax`): re-exported under its old paths.
+pub use vams_syntax::{ast, diagnostics, lexer, parser, source};
+// So is the numerical core (`crates/solver`).
+pub use vams_solver as solver;
+
 pub mod analog;
 pub mod analysis;
-pub mod ast;
+pub mod app;
 pub mod capture;
 pub mod cli;
 pub mod design;
-pub mod diagnostics;
 pub mod elaborate;
 pub mod extract;
 pub mod fit;
 pub mod kernel;
-pub mod lexer;
 pub mod lsp;
 pub mod output;
-pub mod parser;
 pub mod pwl;
-pub mod solver;
-pub mod source;
 pub mod stdlib;
 pub mod waveform;

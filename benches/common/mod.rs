@@ -11,7 +11,7 @@ use std::path::PathBuf;
 use std::process::Command;
 use std::time::{Duration, Instant};
 
-use vams::cli::load::{Loaded, load};
+use vams::app::load::{Loaded, load};
 use vams::design::Design;
 use vams::elaborate::{ElabOptions, elaborate};
 

@@ -1,5 +1,5 @@
 -- hbridge_pwm: a behavioural H-bridge driving a DC motor with PWM, the small-system speed
--- benchmark of issue 3 (benches/hbridge.rs) and its integration test (tests/hbridge_pwm.rs).
+-- benchmark of issue 3 (benches/hbridge.rs) and its integration test (tests/it/hbridge_pwm.rs).
 --
 -- Supply vs (v_supply) -> bridge -> motor between out1 and out2 -> ground.  Four switches,
 -- each a conductance (1/r_on when on, 1/r_off when off) set by a boolean signal; freewheel

@@ -1,7 +1,7 @@
 //! What `vams check` does, on arbitrary bytes taken as one source file: parse, analyse,
 //! elaborate every top candidate and build its analog system. Any input must end in
 //! diagnostics or a design, never a panic, an abort or a hang (no simulation here: the
-//! bounded mutation test, `tests/mutation.rs`, runs short simulations of mutated models).
+//! bounded mutation test, `tests/it/mutation.rs`, runs short simulations of mutated models).
 //! Seed corpus: `fuzz/seed.sh` copies the repository's models and tests into
 //! `fuzz/corpus/check/`.
 
@@ -10,7 +10,7 @@
 use libfuzzer_sys::fuzz_target;
 use vams::analog::AnalogSystem;
 use vams::analysis::analyse;
-use vams::cli::load::load_text;
+use vams::app::load::load_text;
 use vams::elaborate::{ElabOptions, elaborate_analysed, top_candidates};
 
 fuzz_target!(|data: &[u8]| {

@@ -7,11 +7,11 @@ use pyo3::exceptions::PyKeyError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use vams::analog::{AnalogSystem, DaeEquation};
-use vams::cli::ac::{SweepArgs, linearise_quietly, parse_frequency, probes, respond};
-use vams::cli::compile::Compiled;
-use vams::cli::error::CliError;
-use vams::cli::noise::{analyse, input_source};
-use vams::cli::render::render_sim_error;
+use vams::app::ac::{FrequencyGrid, linearise, parse_frequency, probes, respond};
+use vams::app::compile::Compiled;
+use vams::app::error::CliError;
+use vams::app::noise::{analyse, input_source};
+use vams::app::render::render_sim_error;
 use vams::diagnostics::{Finding, Level};
 use vams::kernel::{SimOptions, operating_point};
 
@@ -205,7 +205,7 @@ fn grid(
             "points_per_decade is at least 1 and linear at least 2",
         ));
     }
-    let sweep = SweepArgs {
+    let sweep = FrequencyGrid {
         from: frequency(start)?,
         to: frequency(stop)?,
         points_per_decade,
@@ -282,7 +282,7 @@ pub fn ac(
             return Err(CliError::NoSpectralSource { top }.into());
         }
         let probes = self::probes(design, &names)?;
-        let mut linearised = linearise_quietly(design, &c.loaded.sources)?;
+        let mut linearised = linearise(design, &c.loaded.sources)?;
         let response = respond(&design.top, &mut linearised, &probes, frequencies)?;
         let columns: Vec<(String, Vec<Complex64>)> = (probes.iter().zip(response.values))
             .map(|(q, values)| {

@@ -2,7 +2,7 @@
 
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use vams::cli::check::diagnose;
+use vams::app::check::diagnose;
 
 use crate::design::DesignSpec;
 use crate::diagnostic::{Diagnostic, diagnostics};

@@ -6,10 +6,10 @@ use std::path::PathBuf;
 
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyString};
-use vams::cli::compile::{Compiled, Prepared, compile_quietly, prepare_quietly};
-use vams::cli::load::{LibrarySources, load_with_libraries, parse_library};
-use vams::cli::params::parse_generic;
-use vams::cli::time::parse_positive_time;
+use vams::app::compile::{Compiled, Prepared, compile_loaded, prepare_loaded};
+use vams::app::load::{LibrarySources, load_with_libraries, parse_library};
+use vams::app::params::parse_generic;
+use vams::app::time::parse_positive_time;
 use vams::diagnostics::Finding;
 
 use crate::error::{Failure, bad_argument};
@@ -55,17 +55,15 @@ impl DesignSpec {
     /// and its elaboration warnings.
     pub fn compile(&self) -> Result<(Compiled, Vec<Finding>), Failure> {
         let loaded = load_with_libraries(&self.paths, &self.libraries)?;
-        Ok(compile_quietly(
-            loaded,
-            self.top.as_deref(),
-            self.generics.clone(),
-        )?)
+        let mut compiled = compile_loaded(loaded, self.top.as_deref(), self.generics.clone())?;
+        let warnings = std::mem::take(&mut compiled.warnings);
+        Ok((compiled, warnings))
     }
 
     /// Loads, parses and analyses, the top chosen, for elaborating several times (a sweep).
     pub fn prepare(&self) -> Result<Prepared, Failure> {
         let loaded = load_with_libraries(&self.paths, &self.libraries)?;
-        Ok(prepare_quietly(
+        Ok(prepare_loaded(
             loaded,
             self.top.as_deref(),
             self.generics.clone(),

@@ -8,8 +8,8 @@ use numpy::PyArray1;
 use pyo3::IntoPyObjectExt;
 use pyo3::exceptions::{PyKeyError, PyKeyboardInterrupt};
 use pyo3::prelude::*;
-use vams::cli::sweep::table::read_table;
-use vams::cli::sweep::{SweepArgs, SweepError, Swept, sweep as run_sweep};
+use vams::app::study::table::read_table;
+use vams::app::study::{StudyOptions, StudyError, StudyOutcome, run_study};
 use vams::kernel::Cancel;
 
 use crate::error::{Failure, bad_argument};
@@ -106,9 +106,8 @@ pub fn sweep(
     if resume && overwrite {
         return Err(bad_argument("resume and overwrite exclude each other"));
     }
-    let args = SweepArgs {
-        action: None,
-        spec: Some(spec),
+    let args = StudyOptions {
+        spec,
         out,
         jobs,
         resume,
@@ -137,11 +136,11 @@ pub fn sweep(
         Err(e) => return Err(Failure::summary(e).into_pyerr(py, None)),
     };
     let table = (read_table(&swept.table))
-        .map_err(|e| Failure::summary(SweepError::from(e)).into_pyerr(py, None))?;
+        .map_err(|e| Failure::summary(StudyError::from(e)).into_pyerr(py, None))?;
     let (names, rows) = (table.header, table.rows);
     // `run,case,` parameters and metrics `,pass,status,message`.
     let middle = names.len() - 5;
-    let strings = |cell: &dyn Fn(&vams::cli::sweep::table::Row) -> String| {
+    let strings = |cell: &dyn Fn(&vams::app::study::table::Row) -> String| {
         rows.iter()
             .map(cell)
             .collect::<Vec<String>>()
@@ -175,7 +174,7 @@ pub fn sweep(
     })?);
     values.push(strings(&|r| r.status.name().to_string())?);
     values.push(strings(&|r| r.message.clone())?);
-    let Swept { dir, summary, .. } = swept;
+    let StudyOutcome { dir, summary, .. } = swept;
     Ok(SweepResult {
         dir,
         summary,
@@ -188,7 +187,7 @@ pub fn sweep(
 /// Runs the sweep on a thread of its own while this (the main) thread asks Python for
 /// pending signals every 50 ms; a KeyboardInterrupt cancels the runs. Also whether it was
 /// interrupted.
-fn sweep_watching_signals(args: &SweepArgs) -> (miette::Result<Option<Swept>>, bool) {
+fn sweep_watching_signals(args: &StudyOptions) -> (miette::Result<Option<StudyOutcome>>, bool) {
     let cancel = Cancel::new();
     let mut interrupted = false;
     let swept = std::thread::scope(|scope| {
@@ -196,7 +195,7 @@ fn sweep_watching_signals(args: &SweepArgs) -> (miette::Result<Option<Swept>>, b
         // The spec's sources are parsed on this thread: a main thread's stack.
         let worker = std::thread::Builder::new()
             .stack_size(64 << 20)
-            .spawn_scoped(scope, move || run_sweep(args, Some(flag)));
+            .spawn_scoped(scope, move || run_study(args, flag));
         let worker = match worker {
             Ok(worker) => worker,
             Err(e) => return Err(miette::miette!("cannot start the sweep: {e}")),

@@ -5,10 +5,10 @@ use miette::Report;
 use pyo3::create_exception;
 use pyo3::exceptions::PyException;
 use pyo3::prelude::*;
-use vams::cli::ac::NotLinearised;
-use vams::cli::compile::NotCompiled;
-use vams::cli::error::CliError;
-use vams::cli::load::InputError;
+use vams::app::ac::NotLinearised;
+use vams::app::compile::NotCompiled;
+use vams::app::error::CliError;
+use vams::app::load::InputError;
 use vams::diagnostics::{Finding, Level};
 
 use crate::diagnostic::diagnostics;

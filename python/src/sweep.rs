@@ -5,7 +5,7 @@ use numpy::PyArray1;
 use pyo3::exceptions::PyKeyError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use vams::cli::dc::{Sweep, sweep_points};
+use vams::app::dc::{GenericSweep, sweep_points};
 use vams::kernel::Cancel;
 
 use crate::design::DesignSpec;
@@ -86,7 +86,7 @@ pub fn dc(
         format!("{to:?}"),
         format!("{step:?}"),
     ];
-    let sweep = Sweep::parse(&words).map_err(|e| bad_argument(e.to_string()))?;
+    let sweep = GenericSweep::parse(&words).map_err(|e| bad_argument(e.to_string()))?;
     let probes = probes.unwrap_or_default();
     let computed = py.detach(|| {
         let prepared = spec.prepare()?;

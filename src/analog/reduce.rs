@@ -29,7 +29,7 @@
 //! cancellation is exact rather than rounding at the scale of the cancelled terms
 //! ([`merge_terms`]).
 //!
-//! A property test (`tests/elimination.rs`) runs random circuits both ways.
+//! A property test (`tests/it/elimination.rs`) runs random circuits both ways.
 //!
 //! Preference: quantities before terminal potentials (so node potentials, not branch
 //! quantities, remain), algebraic before differential.

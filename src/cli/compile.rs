@@ -1,313 +1,75 @@
-//! What `run`, `op` and `dae` share: the design arguments (sources, `--top`, generics) and the
-//! way from them to an elaborated [`Design`] (parse, analyse every unit, elaborate the top),
-//! printing each stage's diagnostics on the way.
+//! The design arguments to an elaborated design, as every subcommand does it: the
+//! application layer compiles ([`crate::app::compile`]); this prints its findings on stderr.
 
-use std::path::PathBuf;
-
-use clap::Args;
 use miette::Report;
 
-use crate::analysis::{Analysis, analyse};
+use crate::app::ac::NotLinearised;
+use crate::app::compile::{self, Compiled, NotCompiled, Prepared};
+use crate::app::render::render;
 use crate::design::Design;
-use crate::diagnostics::{Finding, Level, Located};
-use crate::elaborate::{ElabError, ElabOptions, ElabWarning, elaborate_analysed, find_tops};
-use crate::source::SourceMap;
+use crate::diagnostics::Finding;
 
-use super::error::CliError;
-use super::load::{Loaded, load_with_libraries};
-use super::params::{merge_generics, parse_generic, read_params};
-use super::render::render;
+use super::args::DesignArgs;
 
-/// Sources, top entity and generic overrides.
-#[derive(Debug, Args)]
-pub struct DesignArgs {
-    /// Source files or directories (directories are searched for .vhd, .vhdl and .ams files).
-    #[arg(required = true, value_name = "FILES|DIRS")]
-    pub paths: Vec<PathBuf>,
-    /// Analyse the sources under PATH into library NAME (repeatable): `--lib util=../util`
-    /// for files that say `library util;`.
-    #[arg(long = "lib", value_name = "NAME=PATH", value_parser = super::load::parse_library)]
-    pub libraries: Vec<super::load::LibrarySources>,
-    /// The entity to elaborate; default: the only entity that nothing instantiates.
-    #[arg(long, value_name = "ENTITY")]
-    pub top: Option<String>,
-    /// Override a generic of the top entity, e.g. `-g r=8.0` or `-g t_step="10 ms"`
-    /// (repeatable; wins over --params).
-    #[arg(short = 'g', long = "generic", value_name = "NAME=VALUE", value_parser = parse_generic)]
-    pub generics: Vec<(String, String)>,
-    /// Read generic overrides from a file of `name=value` lines (`#` or `--` comments).
-    #[arg(long, value_name = "FILE")]
-    pub params: Option<PathBuf>,
+/// Syntax errors printed per file: a file that is not VHDL at all would fill the screen.
+const SYNTAX_ERRORS_PER_FILE: usize = 20;
+
+/// Prints findings (errors or warnings) on stderr.
+pub fn print_findings(findings: &[Finding]) {
+    for f in findings {
+        eprint!("{}", render(f.report.as_ref()));
+    }
 }
 
-/// Sources and the design elaborated from them.
-pub struct Compiled {
-    pub loaded: Loaded,
-    pub design: Design,
+/// Prints why the sources gave no design (syntax errors at most 20 a file) and gives the
+/// summary error.
+pub fn fail(not: NotCompiled) -> Report {
+    if not.is_syntax() {
+        print_capped(&not.findings, SYNTAX_ERRORS_PER_FILE);
+    } else {
+        print_findings(&not.findings);
+    }
+    not.error
 }
 
-/// Why sources did not give a design: the diagnostics of the stage that failed, and the
-/// summary error (for a library user to show or raise; the commands print them).
-#[derive(Debug)]
-pub struct NotCompiled {
-    pub findings: Vec<Finding>,
-    pub error: Report,
-}
-
-impl NotCompiled {
-    fn new<D: Located>(errors: &[D], sources: &SourceMap, error: CliError) -> NotCompiled {
-        NotCompiled {
-            findings: located(errors, sources, Level::Error),
-            error: error.into(),
+/// Prints at most `max_per_file` findings of each file, then how many more there are.
+pub fn print_capped(findings: &[Finding], max_per_file: usize) {
+    let mut start = 0;
+    while start < findings.len() {
+        let file = &findings[start].file;
+        let end = start
+            + (findings[start..].iter())
+                .take_while(|f| &f.file == file)
+                .count();
+        print_findings(&findings[start..end.min(start + max_per_file)]);
+        if end - start > max_per_file {
+            eprintln!("  ... and {} more in {file}\n", end - start - max_per_file);
         }
-    }
-
-    /// Prints the diagnostics on stderr and gives the summary error.
-    pub fn print(self) -> Report {
-        for f in &self.findings {
-            eprint!("{}", render(f.report.as_ref()));
-        }
-        self.error
+        start = end;
     }
 }
 
-/// Each of `diagnostics` as a [`Finding`] of `level`.
-fn located<D: Located>(diagnostics: &[D], sources: &SourceMap, level: Level) -> Vec<Finding> {
-    (diagnostics.iter())
-        .map(|d| Finding::located(d, sources, level))
-        .collect()
-}
-
-/// The top entity: the one given, or the single candidate.
-pub fn choose_top(given: Option<&str>, candidates: Vec<String>) -> Result<String, CliError> {
-    if let Some(top) = given {
-        return Ok(top.to_ascii_lowercase());
-    }
-    match candidates.len() {
-        0 => Err(CliError::NoTop),
-        1 => Ok(candidates.into_iter().next().unwrap_or_default()),
-        _ => Err(CliError::AmbiguousTop { candidates }),
-    }
-}
-
-/// Sources parsed and analysed, the top chosen: what elaborating once per parameter set
-/// (`vams dc`'s sweep) reuses, so that a sweep re-parameterises the design without parsing
-/// it again.
-pub struct Prepared {
-    pub loaded: Loaded,
-    pub analysis: Analysis,
-    pub top: String,
-    /// The overrides of `-g` and `--params`, merged.
-    pub generics: Vec<(String, String)>,
-}
-
-impl Prepared {
-    /// Elaborates the top with the command's generics and then `extra` (which win), giving
-    /// the errors to the caller (`vams sweep` records them per run).
-    pub fn try_elaborate(&self, extra: &[(String, String)]) -> Result<Design, Vec<ElabError>> {
-        self.try_elaborate_top(&self.top, extra)
-    }
-
-    /// [`Prepared::try_elaborate`] of another entity of the same sources (`vams fit`'s
-    /// experiments may each have their testbench).
-    pub fn try_elaborate_top(
-        &self,
-        top: &str,
-        extra: &[(String, String)],
-    ) -> Result<Design, Vec<ElabError>> {
-        let options = ElabOptions {
-            top: top.to_string(),
-            generics: merge_generics(self.generics.clone(), extra),
-        };
-        let loaded = &self.loaded;
-        elaborate_analysed(&self.analysis, &loaded.sources, &loaded.files, &options)
-    }
-
-    /// [`Prepared::try_elaborate`] with the errors as [`Finding`]s.
-    pub fn elaborate_quietly(&self, extra: &[(String, String)]) -> Result<Design, NotCompiled> {
-        self.try_elaborate(extra).map_err(|errors| {
-            let count = errors.len();
-            NotCompiled::new(
-                &errors,
-                &self.loaded.sources,
-                CliError::Elaboration { count },
-            )
-        })
-    }
-
-    /// [`Prepared::try_elaborate`] with the errors printed (the warnings are the caller's:
-    /// [`Prepared::print_warnings`]).
-    pub fn elaborate(&self, extra: &[(String, String)]) -> Result<Design, Report> {
-        self.elaborate_quietly(extra).map_err(NotCompiled::print)
-    }
-
-    /// The elaboration warnings of `design`.
-    pub fn warnings(&self, design: &Design) -> Vec<Finding> {
-        let warnings: Vec<ElabWarning> = design.warnings.iter().map(ElabWarning::from).collect();
-        located(&warnings, &self.loaded.sources, Level::Warning)
-    }
-
-    /// Prints the elaboration warnings of `design`.
-    pub fn print_warnings(&self, design: &Design) {
-        for w in self.warnings(design) {
-            eprint!("{}", render(w.report.as_ref()));
-        }
-    }
-}
-
-/// Loads, parses and analyses every unit and chooses the top; every diagnostic is printed
-/// before the summary error.
+/// Loads, parses and analyses the sources and chooses the top, printing what fails.
 pub fn prepare(args: &DesignArgs) -> Result<Prepared, Report> {
-    let from_file = match &args.params {
-        Some(path) => read_params(path)?,
-        None => Vec::new(),
-    };
-    let generics = merge_generics(from_file, &args.generics);
-    let loaded = load_with_libraries(&args.paths, &args.libraries)?;
-    prepare_loaded(loaded, args.top.as_deref(), generics)
+    compile::prepare(&args.options()).map_err(fail)
 }
 
-/// [`prepare`] of sources already loaded (a preset's bundled models).
-pub fn prepare_loaded(
-    loaded: Loaded,
-    top: Option<&str>,
-    generics: Vec<(String, String)>,
-) -> Result<Prepared, Report> {
-    if !loaded.syntax_errors.is_empty() {
-        // At most 20 a file on a terminal.
-        loaded.print_syntax_errors(20);
-        return Err(CliError::Syntax {
-            count: loaded.error_count(),
-        }
-        .into());
-    }
-    prepare_quietly(loaded, top, generics).map_err(NotCompiled::print)
+/// Elaborates a prepared design with `extra` generics, printing errors and warnings.
+pub fn elaborate(prepared: &Prepared, extra: &[(String, String)]) -> Result<Design, Report> {
+    let design = prepared.elaborate(extra).map_err(fail)?;
+    print_findings(&prepared.warnings(&design));
+    Ok(design)
 }
 
-/// [`prepare_loaded`] with the diagnostics as [`Finding`]s instead of printed.
-pub fn prepare_quietly(
-    loaded: Loaded,
-    top: Option<&str>,
-    generics: Vec<(String, String)>,
-) -> Result<Prepared, NotCompiled> {
-    if !loaded.syntax_errors.is_empty() {
-        let errors: Vec<_> = (loaded.syntax_errors.iter())
-            .flat_map(|(_, errors)| errors.iter().cloned())
-            .collect();
-        let count = errors.len();
-        return Err(NotCompiled::new(
-            &errors,
-            &loaded.sources,
-            CliError::Syntax { count },
-        ));
-    }
-    // Every unit of every file is analysed, as a VHDL tool analyses each file before it
-    // elaborates: an error in a unit the top does not reach still fails the run.
-    let analysis = analyse(&loaded.sources, &loaded.files);
-    let errors: Vec<_> = analysis.errors().cloned().collect();
-    if !errors.is_empty() {
-        let count = errors.len();
-        return Err(NotCompiled::new(
-            &errors,
-            &loaded.sources,
-            CliError::Analysis { count },
-        ));
-    }
-    let candidates = match top {
-        Some(_) => Vec::new(),
-        None => find_tops(&analysis, &loaded.files),
-    };
-    let top = choose_top(top, candidates).map_err(|e| NotCompiled {
-        findings: Vec::new(),
-        error: e.into(),
-    })?;
-    Ok(Prepared {
-        loaded,
-        analysis,
-        top,
-        generics,
-    })
-}
-
-/// The help for `name` when `design` records no quantity or signal of that name (a sweep's
-/// metric column, a fit's matched quantity): the closest name, or how names are written;
-/// `None` when it has one.
-pub fn unknown_probe_help(design: &Design, name: &str) -> Option<String> {
-    let names = (design.quantities.iter().map(|q| q.name.as_str()))
-        .chain(design.signals.iter().map(|s| s.name.as_str()));
-    unknown_name_help(names, name)
-}
-
-/// [`unknown_probe_help`] among the recorded `names` (a run's columns).
-pub fn unknown_name_help<'a>(
-    names: impl Iterator<Item = &'a str> + Clone,
-    name: &str,
-) -> Option<String> {
-    if names.clone().any(|n| n == name) {
-        return None;
-    }
-    let closest = names
-        .map(|n| (strsim::levenshtein(name, n), n))
-        .min_by_key(|&(d, _)| d);
-    Some(match closest {
-        Some((d, n)) if d <= name.len().max(3) / 2 + 1 => format!("did you mean `{n}`?"),
-        _ => "columns are quantities and signals by their hierarchical name, e.g. \
-              `dut.u_motor.i` (`vams run` records them all)"
-            .to_string(),
-    })
-}
-
-/// Loads, parses and elaborates; every diagnostic is printed before the summary error.
+/// Loads, parses and elaborates, printing every diagnostic (the warnings too).
 pub fn compile(args: &DesignArgs) -> Result<Compiled, Report> {
-    let prepared = prepare(args)?;
-    let design = prepared.elaborate(&[])?;
-    prepared.print_warnings(&design);
-    Ok(Compiled {
-        loaded: prepared.loaded,
-        design,
-    })
+    let compiled = compile::compile(&args.options()).map_err(fail)?;
+    print_findings(&compiled.warnings);
+    Ok(compiled)
 }
 
-/// Parses, analyses and elaborates sources already loaded, the diagnostics as [`Finding`]s
-/// instead of printed: the design and its elaboration warnings, or why there is none.
-pub fn compile_quietly(
-    loaded: Loaded,
-    top: Option<&str>,
-    generics: Vec<(String, String)>,
-) -> Result<(Compiled, Vec<Finding>), NotCompiled> {
-    let prepared = prepare_quietly(loaded, top, generics)?;
-    let design = prepared.elaborate_quietly(&[])?;
-    let warnings = prepared.warnings(&design);
-    let compiled = Compiled {
-        loaded: prepared.loaded,
-        design,
-    };
-    Ok((compiled, warnings))
-}
-
-/// Ends the life of what a one-shot command built without dropping it: the process exits
-/// right after the command returns and the OS takes the memory back at once, whereas dropping
-/// a large design (or its analog system, or its waveforms) frees millions of small allocations
-/// one by one (0.5 s for an RC ladder of 100 000 sections). Only for the last step of `run`,
-/// `op` and `dae`: never where more work follows (`vams test` runs many designs in one
-/// process).
-pub fn discard_at_exit<T>(value: T) {
-    std::mem::forget(value);
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn top_is_given_or_the_single_candidate() {
-        assert_eq!(choose_top(Some("TB_Servo"), vec![]).unwrap(), "tb_servo");
-        assert_eq!(choose_top(None, vec!["tb".into()]).unwrap(), "tb");
-        assert!(matches!(choose_top(None, vec![]), Err(CliError::NoTop)));
-        let err = choose_top(None, vec!["tb_a".into(), "tb_b".into()]).unwrap_err();
-        assert_eq!(
-            err.to_string(),
-            "several entities could be the top: tb_a, tb_b"
-        );
-    }
+/// Prints why a design could not be linearised and gives the summary error.
+pub fn not_linearised(not: NotLinearised) -> Report {
+    eprint!("{}", not.diagnostics);
+    not.error.into()
 }

@@ -6,9 +6,11 @@ use miette::Report;
 
 use crate::analog::AnalogSystem;
 
-use super::compile::{DesignArgs, compile, discard_at_exit};
-use super::error::CliError;
-use super::render::render_located;
+use super::args::DesignArgs;
+use super::compile::compile;
+use crate::app::compile::discard_at_exit;
+use crate::app::error::CliError;
+use crate::app::render::render_located;
 
 /// Arguments of `vams dae`.
 #[derive(Debug, Args)]

@@ -1,34 +1,20 @@
-//! `vams fit`: estimate generics of the user's own testbench from measured waveforms.
-//!
-//! Each `--measured FILE[:KEY=VALUE,...]` is one experiment: a capture, the testbench that
-//! reproduces it (`top=`, else `--top`) and the generics that select the experiment. The
-//! free generics (`--free NAME=GUESS[:MIN:MAX]`) are fitted jointly to every matched column
-//! (`--match QUANTITY=COLUMN`) of every capture by [`crate::fit`]. Everything the fit needs
-//! is checked before the first simulation: the captures, the columns, the generics' names and
-//! the quantities, each with its own diagnostic.
+//! `vams fit`: the command line of [`crate::app::fit`]: its arguments, and the results
+//! printed.
 
-mod error;
-mod experiment;
-pub mod motor;
-pub mod plot;
-pub mod report;
-mod simulate;
-
-use std::path::PathBuf;
-use std::time::Instant;
-
+use crate::app::compile::{Prepared, unknown_probe_help};
+use crate::app::fit::experiment::{Match, Measured};
+use crate::app::fit::simulate::{DesignSimulator, Setup};
+use crate::app::fit::*;
+use crate::app::render::render_located;
+use crate::capture::ReadOptions;
+use crate::cli::args::DesignArgs;
+use crate::cli::args::PlotFormat;
+use crate::cli::compile::prepare;
+use crate::fit::{Fit, FreeParam, Series, Settings};
 use clap::Args;
 use miette::Report;
-
-use crate::capture::ReadOptions;
-use crate::cli::compile::{DesignArgs, Prepared, prepare, unknown_probe_help};
-use crate::cli::extract::PlotFormat;
-use crate::cli::render::render_located;
-use crate::fit::{Fit, FreeParam, Series, Settings};
-
-pub use error::FitCliError;
-use experiment::{Match, Measured};
-use simulate::{DesignSimulator, Setup};
+use std::path::PathBuf;
+use std::time::Instant;
 
 /// Arguments of `vams fit`.
 #[derive(Debug, Args)]
@@ -85,7 +71,7 @@ pub struct FitArgs {
     #[arg(long)]
     pub abstol: Option<f64>,
     /// The simulations' largest time step, e.g. `1us`.
-    #[arg(long, value_name = "TIME", value_parser = crate::cli::time::parse_time)]
+    #[arg(long, value_name = "TIME", value_parser = crate::app::time::parse_time)]
     pub max_step: Option<f64>,
     /// Simulations run at once (default: the machine's cores).
     #[arg(short = 'j', long = "jobs", value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1024))]
@@ -105,6 +91,97 @@ pub struct FitArgs {
     /// Picture format of --plot.
     #[arg(long, value_enum, default_value = "svg")]
     pub plot_format: PlotFormat,
+}
+
+/// Runs `vams fit`.
+pub fn run(args: &FitArgs) -> Result<(), Report> {
+    let started = Instant::now();
+    let parsed = parse(args)?;
+    let (series, driven) = load_series(&parsed, args.points as usize)?;
+    let prepared: Prepared = prepare(&args.design)?;
+    let setups: Vec<Setup> = parsed
+        .measured
+        .iter()
+        .enumerate()
+        .map(|(e, m)| {
+            let mut generics = m.generics.clone();
+            generics.extend(driven[e].iter().cloned());
+            Setup::new(
+                m.top.clone().unwrap_or_else(|| prepared.top.clone()),
+                generics,
+                e,
+                &series,
+            )
+        })
+        .collect();
+    let jobs = crate::app::parallel::threads(args.jobs);
+    let sim = DesignSimulator {
+        prepared: &prepared,
+        setups,
+        names: parsed
+            .params
+            .iter()
+            .map(|p| (p.name.clone(), p.experiment))
+            .collect(),
+        reltol: args.reltol,
+        abstol: args.abstol,
+        max_step: args.max_step,
+        jobs,
+    };
+    check_design(&sim, &parsed)?;
+    let fit = Fit {
+        simulator: &sim,
+        params: &parsed.params,
+        series: &series,
+        experiments: parsed.measured.len(),
+        settings: Settings::default(),
+        seed: args.seed,
+    };
+    let fitted = fit.run().map_err(|e| FitCliError::Failed {
+        message: e.to_string(),
+    })?;
+    let captures: Vec<String> = parsed.measured.iter().map(Measured::name).collect();
+    let context = report::Context {
+        params: &parsed.params,
+        series: &series,
+        captures: &captures,
+        seconds: started.elapsed().as_secs_f64(),
+    };
+    if args.json {
+        println!("{}", report::json(&fitted, &context));
+    } else {
+        print!("{}", report::table(&fitted, &context));
+    }
+    // The table first, then what to beware of (both go to a terminal in this order).
+    use std::io::Write as _;
+    let _ = std::io::stdout().flush();
+    for w in report::warnings(&fitted, &context) {
+        eprintln!("\nwarning: {w}");
+    }
+    if let Some(path) = &args.write_params {
+        std::fs::write(path, report::params_file(&fitted, &context)).map_err(|e| {
+            FitCliError::Write {
+                path: path.clone(),
+                what: e.to_string(),
+            }
+        })?;
+    }
+    if let Some(dir) = &args.plot {
+        let ext = match args.plot_format {
+            PlotFormat::Svg => "svg",
+            PlotFormat::Png => "png",
+        };
+        for path in plot::plots(dir, ext, &fitted, &series, &captures)? {
+            eprintln!("wrote {}", path.display());
+        }
+    }
+    if !fitted.converged() {
+        return Err(FitCliError::NotConverged {
+            reasons: report::unconverged_reasons(&fitted, &context),
+        }
+        .into());
+    }
+    Ok(())
 }
 
 /// The arguments checked and parsed.
@@ -251,7 +328,7 @@ fn check_design(sim: &DesignSimulator, p: &Parsed) -> Result<(), Report> {
                 for err in &errors {
                     eprint!("{}", render_located(err, &sim.prepared.loaded.sources));
                 }
-                return Err(crate::cli::error::CliError::Elaboration {
+                return Err(crate::app::error::CliError::Elaboration {
                     count: errors.len(),
                 }
                 .into());
@@ -268,97 +345,6 @@ fn check_design(sim: &DesignSimulator, p: &Parsed) -> Result<(), Report> {
             }
             .into());
         }
-    }
-    Ok(())
-}
-
-/// Runs `vams fit`.
-pub fn run(args: &FitArgs) -> Result<(), Report> {
-    let started = Instant::now();
-    let parsed = parse(args)?;
-    let (series, driven) = load_series(&parsed, args.points as usize)?;
-    let prepared: Prepared = prepare(&args.design)?;
-    let setups: Vec<Setup> = parsed
-        .measured
-        .iter()
-        .enumerate()
-        .map(|(e, m)| {
-            let mut generics = m.generics.clone();
-            generics.extend(driven[e].iter().cloned());
-            Setup::new(
-                m.top.clone().unwrap_or_else(|| prepared.top.clone()),
-                generics,
-                e,
-                &series,
-            )
-        })
-        .collect();
-    let jobs = crate::cli::parallel::threads(args.jobs);
-    let sim = DesignSimulator {
-        prepared: &prepared,
-        setups,
-        names: parsed
-            .params
-            .iter()
-            .map(|p| (p.name.clone(), p.experiment))
-            .collect(),
-        reltol: args.reltol,
-        abstol: args.abstol,
-        max_step: args.max_step,
-        jobs,
-    };
-    check_design(&sim, &parsed)?;
-    let fit = Fit {
-        simulator: &sim,
-        params: &parsed.params,
-        series: &series,
-        experiments: parsed.measured.len(),
-        settings: Settings::default(),
-        seed: args.seed,
-    };
-    let fitted = fit.run().map_err(|e| FitCliError::Failed {
-        message: e.to_string(),
-    })?;
-    let captures: Vec<String> = parsed.measured.iter().map(Measured::name).collect();
-    let context = report::Context {
-        params: &parsed.params,
-        series: &series,
-        captures: &captures,
-        seconds: started.elapsed().as_secs_f64(),
-    };
-    if args.json {
-        println!("{}", report::json(&fitted, &context));
-    } else {
-        print!("{}", report::table(&fitted, &context));
-    }
-    // The table first, then what to beware of (both go to a terminal in this order).
-    use std::io::Write as _;
-    let _ = std::io::stdout().flush();
-    for w in report::warnings(&fitted, &context) {
-        eprintln!("\nwarning: {w}");
-    }
-    if let Some(path) = &args.write_params {
-        std::fs::write(path, report::params_file(&fitted, &context)).map_err(|e| {
-            FitCliError::Write {
-                path: path.clone(),
-                what: e.to_string(),
-            }
-        })?;
-    }
-    if let Some(dir) = &args.plot {
-        let ext = match args.plot_format {
-            PlotFormat::Svg => "svg",
-            PlotFormat::Png => "png",
-        };
-        for path in plot::plots(dir, ext, &fitted, &series, &captures)? {
-            eprintln!("wrote {}", path.display());
-        }
-    }
-    if !fitted.converged() {
-        return Err(FitCliError::NotConverged {
-            reasons: report::unconverged_reasons(&fitted, &context),
-        }
-        .into());
     }
     Ok(())
 }

@@ -1,22 +1,22 @@
-//! `vams run`: elaborate, simulate to the stop time, print reports as they happen, stream the
-//! waveform files and the plot's data as the run goes (`output::stream`), and close with a
-//! summary line.
+//! `vams run`: the command line of [`crate::app::run`]: its arguments, and the results
+//! printed.
 
-use std::path::PathBuf;
-use std::time::Instant;
-
+use crate::app::compile::discard_at_exit;
+use crate::app::error::CliError;
+use crate::app::render::{format_report, render_sim_error};
+use crate::app::run::*;
+use crate::app::stop::{declaring_file, panel_comments, stop_time};
+use crate::app::time::{format_time, parse_positive_time};
+use crate::cli::args::DesignArgs;
+use crate::cli::args::{output_path, plot_path, positive_number};
+use crate::cli::compile::{compile, fail};
+use crate::cli::progress::ProgressBar;
+use crate::kernel::{Outcome, SimError, SimOptions, simulate_into};
+use crate::output::stream::{PlotRequest, Request, StreamError, Streams};
 use clap::Args;
 use miette::Report;
-
-use crate::kernel::{Outcome, SimEnd, SimError, SimOptions, SimStats, simulate_into};
-use crate::output::stream::{PlotRequest, Request, StreamError, Streams};
-
-use super::compile::{DesignArgs, NotCompiled, compile, discard_at_exit};
-use super::error::CliError;
-use super::progress::ProgressBar;
-use super::render::{format_report, render_sim_error};
-use super::stop::{declaring_file, panel_comments, stop_time};
-use super::time::{format_time, parse_positive_time};
+use std::path::PathBuf;
+use std::time::Instant;
 
 /// Arguments of `vams run`.
 #[derive(Debug, Args)]
@@ -79,27 +79,6 @@ pub struct RunArgs {
     pub stats: bool,
 }
 
-/// `--accuracy`: relative tolerances by name.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Accuracy {
-    /// 1e-2: a first look.
-    Draft,
-    /// 1e-3, as without the option.
-    Default,
-    /// 1e-6: for results to compare or publish.
-    Fine,
-}
-
-impl Accuracy {
-    pub fn reltol(self) -> f64 {
-        match self {
-            Accuracy::Draft => 1e-2,
-            Accuracy::Default => 1e-3,
-            Accuracy::Fine => 1e-6,
-        }
-    }
-}
-
 /// The `--panel` groups: each argument is one panel of comma-separated names.
 fn panel_groups(raw: &[String]) -> Vec<Vec<String>> {
     raw.iter()
@@ -114,63 +93,12 @@ fn panel_groups(raw: &[String]) -> Vec<Vec<String>> {
         .collect()
 }
 
-/// Accepts `.csv` and `.vcd` paths.
-pub fn output_path(text: &str) -> Result<PathBuf, String> {
-    with_extension(text, &["csv", "vcd"])
-}
-
-/// Accepts `.svg` and `.png` paths.
-pub fn plot_path(text: &str) -> Result<PathBuf, String> {
-    with_extension(text, &["svg", "png"])
-}
-
-fn with_extension(text: &str, allowed: &[&str]) -> Result<PathBuf, String> {
-    let path = PathBuf::from(text);
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    match ext {
-        Some(e) if allowed.contains(&e.as_str()) => Ok(path),
-        _ => Err(format!(
-            "`{text}` has an unknown extension; name the file with .{}",
-            allowed.join(" or .")
-        )),
-    }
-}
-
-fn positive_number(text: &str) -> Result<f64, String> {
-    match text.trim().parse::<f64>() {
-        Ok(v) if v.is_finite() && v > 0.0 => Ok(v),
-        _ => Err(format!("`{text}` is not a positive number (e.g. 1e-3)")),
-    }
-}
-
-/// The probes to record: `--probe` names plus the `--panel` names, each once; empty (record
-/// everything) when no `--probe` is given.
-fn probe_list(probes: &[String], panels: &[Vec<String>]) -> Vec<String> {
-    let mut out: Vec<String> = Vec::new();
-    if probes.is_empty() {
-        return out;
-    }
-    for name in probes
-        .iter()
-        .map(|p| p.trim().to_ascii_lowercase())
-        .chain(panels.iter().flatten().cloned())
-    {
-        if !out.contains(&name) {
-            out.push(name);
-        }
-    }
-    out
-}
-
 /// Runs `vams run`.
 pub fn run(args: &RunArgs) -> Result<(), Report> {
     let started = Instant::now();
     let compiled = compile(&args.design)?;
     let (loaded, design) = (&compiled.loaded, &compiled.design);
-    let stop = stop_time(loaded, &design.top, args.stop).map_err(NotCompiled::print)?;
+    let stop = stop_time(loaded, &design.top, args.stop).map_err(fail)?;
     let panels = panel_groups(&args.panel);
     let bar = ProgressBar::for_stderr(stop);
     let options = SimOptions {
@@ -182,7 +110,7 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
         probes: probe_list(&args.probe, &panels),
         progress: bar.as_ref().map(ProgressBar::hook),
         keep_unknowns: args.keep_unknowns,
-        cancel: Some(super::interrupt::cancel_on_ctrl_c()),
+        cancel: Some(crate::cli::interrupt::cancel_on_ctrl_c()),
     };
     let mut print = |r: &crate::kernel::Report| {
         if let Some(bar) = &bar {
@@ -207,7 +135,7 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
     // Every output is created (as its temporary) before the run: a path that cannot be
     // written fails now, not after the simulation.
     let mut streams = Streams::create(&request).map_err(stream_error)?;
-    super::interrupt::remove_on_exit(streams.temporaries());
+    crate::cli::interrupt::remove_on_exit(streams.temporaries());
     let result = simulate_into(design, &options, &mut streams, &mut print);
     if let Some(bar) = &bar {
         bar.clear();
@@ -245,7 +173,7 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
                 }
                 None => streams.abandon(),
             }
-            super::interrupt::remove_on_exit(Vec::new());
+            crate::cli::interrupt::remove_on_exit(Vec::new());
             let top = design.top.clone();
             return Err(match error {
                 SimError::Interrupted { .. } => CliError::Interrupted { top },
@@ -264,7 +192,7 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
     let written = streams
         .finish(ending.as_deref(), &title(ending.as_deref()))
         .map_err(stream_error)?;
-    super::interrupt::remove_on_exit(Vec::new());
+    crate::cli::interrupt::remove_on_exit(Vec::new());
     let written: Vec<String> = written.iter().map(|p| p.display().to_string()).collect();
     eprintln!(
         "{}",
@@ -298,6 +226,27 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
     Ok(())
 }
 
+/// `--accuracy`: relative tolerances by name.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Accuracy {
+    /// 1e-2: a first look.
+    Draft,
+    /// 1e-3, as without the option.
+    Default,
+    /// 1e-6: for results to compare or publish.
+    Fine,
+}
+
+impl Accuracy {
+    pub fn reltol(self) -> f64 {
+        match self {
+            Accuracy::Draft => 1e-2,
+            Accuracy::Default => 1e-3,
+            Accuracy::Fine => 1e-6,
+        }
+    }
+}
+
 /// Paths for a message, comma separated.
 fn names(paths: &[PathBuf]) -> String {
     let names: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
@@ -317,41 +266,6 @@ fn stream_error(e: StreamError) -> Report {
         }
         StreamError::Plot(e) => e.into(),
     }
-}
-
-/// The closing line: simulated and wall time, steps, Newton iterations, files written.
-pub fn summary(top: &str, stop: f64, result: &SimEnd, wall: f64, written: &[String]) -> String {
-    let ended = match result.outcome {
-        Outcome::Finished => format!("simulated {top} to {}", format_time(stop)),
-        Outcome::Stopped { time } => format!(
-            "simulated {top} to {} (stopped by the design)",
-            format_time(time)
-        ),
-        Outcome::Failed { time } => format!("simulated {top} to {} (FAILED)", format_time(time)),
-    };
-    let files = if written.is_empty() {
-        String::new()
-    } else {
-        format!("; wrote {}", written.join(", "))
-    };
-    format!(
-        "{ended} in {wall:.2} s wall time: {} accepted steps, {} Newton iterations{files}",
-        result.stats.accepted_steps, result.stats.newton_iterations
-    )
-}
-
-/// Every counter of [`SimStats`], one per line.
-pub fn stats_table(stats: &SimStats) -> String {
-    (stats.named().iter())
-        .map(|&(name, n)| {
-            // Newton failures are a part of the rejected steps above them.
-            let name = match name {
-                "Newton failures" => "  Newton failures",
-                other => other,
-            };
-            format!("  {name:<18} {n:>10}\n")
-        })
-        .collect()
 }
 
 #[cfg(test)]
@@ -376,27 +290,5 @@ mod tests {
             ["vfb", "ov", "vref", "i_motor"]
         );
         assert!(probe_list(&[], &groups).is_empty());
-    }
-
-    #[test]
-    fn summary_and_stats_name_every_figure() {
-        let result = SimEnd {
-            reports: vec![],
-            outcome: Outcome::Finished,
-            stats: SimStats {
-                accepted_steps: 1234,
-                newton_iterations: 5678,
-                breaks: 3,
-                ..SimStats::default()
-            },
-        };
-        let line = summary("tb", 6.0, &result, 0.5, &["a.csv".into(), "p.svg".into()]);
-        assert_eq!(
-            line,
-            "simulated tb to 6 s in 0.50 s wall time: 1234 accepted steps, 5678 Newton iterations; wrote a.csv, p.svg"
-        );
-        let table = stats_table(&result.stats);
-        assert_eq!(table.lines().count(), 10);
-        assert!(table.contains("breaks") && table.contains("5678"));
     }
 }

@@ -1,34 +1,21 @@
-//! `vams test`: finds the testbenches under the given paths, runs each to its stop time on
-//! N threads, prints one line per testbench in name order and a closing count, and optionally
-//! writes JUnit XML. A testbench fails on any report of severity error or failure, and on any
-//! error that keeps it from running to its end.
+//! `vams test`: the command line of [`crate::app::testbench`]: its arguments, and the results
+//! printed.
 
-pub mod discover;
-pub mod junit;
-
-use std::path::{Path, PathBuf};
-use std::time::Instant;
-
-use clap::Args;
-use miette::Report;
-
-use crate::analysis::{Analysis, UnitKind, analyse};
+use crate::analysis::analyse;
+use crate::app::error::CliError;
+use crate::app::load::load_with_libraries;
+use crate::app::parallel::run_in_order;
+use crate::app::testbench::*;
+use crate::app::time::parse_positive_time;
 use crate::ast::DesignFile;
-use crate::elaborate::{ElabOptions, ElabWarning, elaborate_analysed};
-use crate::kernel::{Severity, SimError, SimOptions, SimResult, simulate};
 use crate::output::atomic::write_atomically;
-use crate::source::{FileId, SourceMap};
-
-use super::ac::linearise_quietly;
-use super::ac_assert::{AcAssertion, AcVerdict, assertion_probes, check_assertions};
-use super::error::CliError;
-use super::load::{Loaded, load_with_libraries};
-use super::parallel::run_in_order;
-use super::render::{format_report, render, render_located, render_sim_error};
-use super::stop::{assert_comments, stop_comment};
-use super::time::parse_positive_time;
-use discover::{Testbench, discover};
+use crate::source::FileId;
+use clap::Args;
+use discover::discover;
 use junit::{Case, Problem, junit_xml};
+use miette::Report;
+use std::path::PathBuf;
+use std::time::Instant;
 
 /// Arguments of `vams test`.
 #[derive(Debug, Args)]
@@ -46,8 +33,8 @@ pub struct TestArgs {
     pub paths: Vec<PathBuf>,
     /// Analyse the sources under PATH into library NAME (repeatable): `--lib util=../util`
     /// for files that say `library util;`.
-    #[arg(long = "lib", value_name = "NAME=PATH", value_parser = super::load::parse_library)]
-    pub libraries: Vec<super::load::LibrarySources>,
+    #[arg(long = "lib", value_name = "NAME=PATH", value_parser = crate::app::load::parse_library)]
+    pub libraries: Vec<crate::app::load::LibrarySources>,
     /// Run only the testbenches whose name contains TEXT.
     #[arg(long, value_name = "TEXT")]
     pub filter: Option<String>,
@@ -60,196 +47,6 @@ pub struct TestArgs {
     /// Testbenches run at once; default: the number of CPUs.
     #[arg(short = 'j', long = "jobs", value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1024))]
     pub jobs: Option<u32>,
-}
-
-/// How one testbench went.
-#[derive(Clone, Debug)]
-pub struct Verdict {
-    pub seconds: f64,
-    /// `None` when it passed; else the kind and the text (report lines or diagnostics).
-    pub problem: Option<(Problem, String)>,
-    /// Elaboration warnings (an unbound component instance), shown under the verdict line.
-    pub warnings: String,
-}
-
-/// The search paths: those given, or those of `tests/` and `models/` that exist.
-pub fn default_paths(given: &[PathBuf], root: &Path) -> Vec<PathBuf> {
-    if !given.is_empty() {
-        return given.to_vec();
-    }
-    ["tests", "models"]
-        .iter()
-        .map(|d| root.join(d))
-        .filter(|p| p.is_dir())
-        .map(|p| p.strip_prefix(root).map(Path::to_path_buf).unwrap_or(p))
-        .collect()
-}
-
-/// Runs one testbench to its end and judges it: `None` when it passed.
-fn run_bench(
-    loaded: &Loaded,
-    (analysis, files): (&Analysis, &[(FileId, DesignFile)]),
-    bench: &Testbench,
-    default_stop: Option<f64>,
-    warnings: &mut String,
-) -> Option<(Problem, String)> {
-    let sources = &loaded.sources;
-    if let Some((_, errors)) = loaded.syntax_errors.iter().find(|(f, _)| *f == bench.file) {
-        let text: String = errors.iter().map(|e| render_located(e, sources)).collect();
-        return Some((Problem::Error, text));
-    }
-    // The analysis errors of every unit the bench reaches (not those of other benches).
-    let entity = analysis
-        .units
-        .iter()
-        .position(|u| u.kind == UnitKind::Entity && u.file == bench.file && u.name == bench.name);
-    if let Some(entity) = entity {
-        let text: String = analysis
-            .reached_from(entity)
-            .into_iter()
-            .flat_map(|u| &analysis.units[u].errors)
-            .map(|e| render_located(e, sources))
-            .collect();
-        if !text.is_empty() {
-            return Some((Problem::Error, text));
-        }
-    }
-    let assertions = match assert_comments(sources, bench.file) {
-        Ok(a) => a,
-        Err(e) => return Some((Problem::Error, render_located(&e, sources))),
-    };
-    // A testbench with assertions on its small-signal response and no stop time is an AC
-    // test only.
-    let stop = match (stop_comment(sources, bench.file), default_stop) {
-        (Some(Ok(t)), _) | (None, Some(t)) => Some(t),
-        (Some(Err(e)), _) => return Some((Problem::Error, render_located(&e, sources))),
-        (None, None) if !assertions.is_empty() => None,
-        (None, None) => {
-            let e = CliError::NoStop {
-                top: bench.name.clone(),
-            };
-            return Some((Problem::Error, render(&e)));
-        }
-    };
-    let options = ElabOptions {
-        top: bench.name.clone(),
-        generics: Vec::new(),
-    };
-    let design = match elaborate_analysed(analysis, sources, files, &options) {
-        Ok(d) => d,
-        Err(errors) => {
-            let text = errors.iter().map(|e| render_located(e, sources)).collect();
-            return Some((Problem::Error, text));
-        }
-    };
-    for u in &design.warnings {
-        warnings.push_str(&render_located(&ElabWarning::from(u), sources));
-    }
-    if let Some(stop) = stop {
-        let sim = SimOptions {
-            stop,
-            ..SimOptions::default()
-        };
-        // Reports from no process are the simulator's own warnings (an implicit through
-        // quantity); the model's own reports judge the run.
-        let mut own_warning = |r: &crate::kernel::Report| {
-            if r.process.is_empty() && r.severity == Severity::Warning {
-                warnings.push_str(&format_report(r, sources));
-                warnings.push('\n');
-            }
-        };
-        if let Some(problem) = judge(simulate(&design, &sim, &mut own_warning), sources) {
-            return Some(problem);
-        }
-    }
-    if assertions.is_empty() {
-        return None;
-    }
-    judge_response(&design, sources, &assertions)
-}
-
-/// Checks the small-signal assertions of a testbench: `None` when every one holds.
-fn judge_response(
-    design: &crate::design::Design,
-    sources: &SourceMap,
-    assertions: &[AcAssertion],
-) -> Option<(Problem, String)> {
-    if design.spectral_sources.is_empty() {
-        let e = CliError::NoSpectralSource {
-            top: design.top.clone(),
-        };
-        return Some((Problem::Error, render(&e)));
-    }
-    let probes = match assertion_probes(design, assertions) {
-        Ok(p) => p,
-        Err(e) => return Some((Problem::Error, render(&e))),
-    };
-    let mut linearised = match linearise_quietly(design, sources) {
-        Ok(l) => l,
-        Err(failure) => {
-            let text = format!("{}{}", failure.diagnostics, render(&failure.error));
-            return Some((Problem::Error, text));
-        }
-    };
-    match check_assertions(&design.top, &mut linearised, assertions, &probes) {
-        Err(e) => Some((Problem::Error, render(&e))),
-        Ok(verdicts) if verdicts.iter().all(|v| v.holds) => None,
-        Ok(verdicts) => {
-            let lines: Vec<String> = (verdicts.iter())
-                .filter(|v| !v.holds)
-                .map(AcVerdict::line)
-                .collect();
-            Some((Problem::Failure, lines.join("\n")))
-        }
-    }
-}
-
-/// The verdict on a finished (or failed) run: reports of severity error or failure, or the
-/// simulation error; `None` when it passed.
-pub fn judge(run: Result<SimResult, SimError>, sources: &SourceMap) -> Option<(Problem, String)> {
-    match run {
-        Err(e) => Some((Problem::Error, render_sim_error(&e, sources))),
-        Ok(result) => {
-            let failing: Vec<String> = result
-                .reports
-                .iter()
-                .filter(|r| r.severity >= Severity::Error)
-                .map(|r| format_report(r, sources))
-                .collect();
-            (!failing.is_empty()).then(|| (Problem::Failure, failing.join("\n")))
-        }
-    }
-}
-
-/// The one-line gist of a failure text: the message of its first rendered diagnostic (the
-/// line miette marks with `×`), else its first non-empty line.
-pub fn headline(text: &str) -> String {
-    let lines = || text.lines().map(str::trim).filter(|l| !l.is_empty());
-    lines()
-        .find_map(|l| l.strip_prefix('×'))
-        .map(|l| l.trim().to_string())
-        .or_else(|| lines().next().map(str::to_string))
-        .unwrap_or_default()
-}
-
-/// The line for one testbench, its indented warnings, and its indented failure text.
-pub fn verdict_lines(name: &str, verdict: &Verdict) -> String {
-    let (mut out, text) = match &verdict.problem {
-        None => (
-            format!("test {name} ... ok ({:.2} s)\n", verdict.seconds),
-            "",
-        ),
-        Some((_, text)) => (
-            format!("test {name} ... FAILED ({:.2} s)\n", verdict.seconds),
-            text.as_str(),
-        ),
-    };
-    for line in verdict.warnings.lines().chain(text.lines()) {
-        out.push_str("    ");
-        out.push_str(line);
-        out.push('\n');
-    }
-    out
 }
 
 /// Runs `vams test`.
@@ -291,7 +88,7 @@ pub fn run(args: &TestArgs) -> Result<(), Report> {
         .cloned()
         .collect();
     let analysis = analyse(&loaded.sources, &files);
-    let jobs = crate::cli::parallel::threads(args.jobs);
+    let jobs = crate::app::parallel::threads(args.jobs);
     println!(
         "running {} testbench(es) on {jobs} thread(s)",
         benches.len()
@@ -360,100 +157,4 @@ pub fn run(args: &TestArgs) -> Result<(), Report> {
         .into());
     }
     Ok(())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::kernel::Outcome;
-
-    #[test]
-    fn lines_for_passing_and_failing_testbenches() {
-        let ok = Verdict {
-            seconds: 0.081,
-            problem: None,
-            warnings: String::new(),
-        };
-        assert_eq!(
-            verdict_lines("tb_tracking", &ok),
-            "test tb_tracking ... ok (0.08 s)\n"
-        );
-        let bad = Verdict {
-            seconds: 0.1,
-            problem: Some((Problem::Failure, "600 ms: error: a\n2 s: error: b".into())),
-            warnings: String::new(),
-        };
-        assert_eq!(
-            verdict_lines("tb_x", &bad),
-            "test tb_x ... FAILED (0.10 s)\n    600 ms: error: a\n    2 s: error: b\n"
-        );
-    }
-
-    fn result(severities: &[Severity], outcome: Outcome) -> SimResult {
-        SimResult {
-            waveforms: Default::default(),
-            reports: severities
-                .iter()
-                .enumerate()
-                .map(|(k, &severity)| crate::kernel::Report {
-                    time: 1e-3 * (k + 1) as f64,
-                    severity,
-                    message: format!("report {k}"),
-                    process: "check".into(),
-                    span: Default::default(),
-                })
-                .collect(),
-            outcome,
-            stats: Default::default(),
-        }
-    }
-
-    #[test]
-    fn errors_and_failures_fail_notes_and_warnings_do_not() {
-        let sources = SourceMap::new();
-        let quiet = result(&[Severity::Note, Severity::Warning], Outcome::Finished);
-        assert_eq!(judge(Ok(quiet), &sources), None);
-        let noisy = result(
-            &[Severity::Note, Severity::Error, Severity::Failure],
-            Outcome::Failed { time: 3e-3 },
-        );
-        let (kind, text) = judge(Ok(noisy), &sources).unwrap();
-        assert_eq!(kind, Problem::Failure);
-        assert_eq!(
-            text,
-            "2 ms: error: report 1 (process check)\n3 ms: failure: report 2 (process check)"
-        );
-        let broken = Err(SimError::Analog { errors: vec![] });
-        let (kind, text) = judge(broken, &sources).unwrap();
-        assert_eq!(kind, Problem::Error);
-        assert!(text.contains("vams::sim::analog"), "{text}");
-    }
-
-    #[test]
-    fn headline_is_the_diagnostic_message_or_the_first_line() {
-        assert_eq!(
-            headline("vams::cli::no_stop\n\n  × no stop time for `tb`\n  help: pass --stop"),
-            "no stop time for `tb`"
-        );
-        assert_eq!(
-            headline("\n1 ms: error: a\n2 ms: error: b"),
-            "1 ms: error: a"
-        );
-        assert_eq!(headline(""), "");
-    }
-
-    #[test]
-    fn default_paths_are_the_existing_of_tests_and_models() {
-        let dir = tempfile::tempdir().unwrap();
-        assert!(default_paths(&[], dir.path()).is_empty());
-        std::fs::create_dir(dir.path().join("models")).unwrap();
-        assert_eq!(default_paths(&[], dir.path()), [PathBuf::from("models")]);
-        std::fs::create_dir(dir.path().join("tests")).unwrap();
-        assert_eq!(
-            default_paths(&[], dir.path()),
-            [PathBuf::from("tests"), PathBuf::from("models")]
-        );
-        let given = [PathBuf::from("x.vhd")];
-        assert_eq!(default_paths(&given, dir.path()), given);
-    }
 }

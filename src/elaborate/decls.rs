@@ -6,7 +6,7 @@ use std::rc::Rc;
 use crate::ast::{
     self, Decl, DeclKind, Designator, EntityNames, EnumLiteral, IndexDef, SubprogramSpec, TypeDef,
 };
-use crate::design::{Builtin, Signal, SignalId, SignalKind, Value};
+use crate::design::{Builtin, GuardedKind, Signal, SignalId, SignalKind, Value};
 
 use super::error::ElabError;
 use super::expr::constrain;
@@ -211,7 +211,10 @@ impl<'a> Elab<'a> {
                 }
                 for n in names {
                     let id = self.new_signal(&n.name, &sub, init.clone(), n.span);
-                    self.design.signals[id.index()].guarded = *guarded;
+                    self.design.signals[id.index()].guarded = guarded.map(|g| match g {
+                        ast::GuardedKind::Bus => GuardedKind::Bus,
+                        ast::GuardedKind::Register => GuardedKind::Register,
+                    });
                     self.declare(
                         sc,
                         n,

@@ -890,7 +890,8 @@ impl<'a> Elab<'a> {
                                 if decl.bus {
                                     let root = self.view_root(*id);
                                     let signal = &mut self.design.signals[root.index()];
-                                    signal.guarded = signal.guarded.or(Some(ast::GuardedKind::Bus));
+                                    signal.guarded =
+                                        signal.guarded.or(Some(design::GuardedKind::Bus));
                                 }
                                 Item::Signal { id: *id, ty }
                             }
@@ -906,7 +907,8 @@ impl<'a> Elab<'a> {
                         };
                         let id = self.new_signal(&name.name, &sub, init, name.span);
                         if decl.bus {
-                            self.design.signals[id.index()].guarded = Some(ast::GuardedKind::Bus);
+                            self.design.signals[id.index()].guarded =
+                                Some(design::GuardedKind::Bus);
                         }
                         Item::Signal {
                             id,

@@ -13,7 +13,7 @@ use std::collections::VecDeque;
 
 use rustc_hash::FxHashMap;
 
-use crate::ast::GuardedKind;
+use crate::design::GuardedKind;
 use crate::design::{Design, Expr, Resolution, SignalId, SignalKind, Type, Value};
 
 use super::error::SimError;

@@ -12,8 +12,8 @@ use lsp_server::{Message, Notification};
 use lsp_types::notification::{Notification as _, ShowMessage};
 use lsp_types::{CodeLens, Command as LspCommand, MessageType, ShowMessageParams};
 
+use crate::app::testbench::discover::is_testbench_name;
 use crate::ast::{DesignFile, LibraryUnit};
-use crate::cli::test::discover::is_testbench_name;
 
 use super::position::LineIndex;
 

@@ -1,7 +1,7 @@
 -- diode_stage: a diode biased at about 4.3 mA through 1 kOhm from 5 V, with 10 nF across it;
 -- the spectral source rides on the bias. The small-signal response is that of the diode's
 -- conductance at the quiescent point, g = Is/vt exp(v/vt) + 1e-12, in parallel with C:
--- H = (1/R) / (1/R + g + jwC). The SPICE twin is in tests/ac.rs (300 K, Is 1e-14, GMIN 1e-12).
+-- H = (1/R) / (1/R + g + jwC). The SPICE twin is in tests/it/ac.rs (300 K, Is 1e-14, GMIN 1e-12).
 -- vams: stop 1 ms
 library ieee;
 use ieee.electrical_systems.all;

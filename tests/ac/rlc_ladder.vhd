@@ -1,5 +1,5 @@
 -- rlc_ladder: n sections of a series R-L and a shunt C (a lumped transmission line), driven
--- by a spectral source; compared with ngspice's `.ac` of the same ladder in tests/ac.rs.
+-- by a spectral source; compared with ngspice's `.ac` of the same ladder in tests/it/ac.rs.
 -- vams: stop 1 ms
 library ieee;
 use ieee.electrical_systems.all;

@@ -1,5 +1,5 @@
 -- sampled: the frequency-domain meaning of the sampled-data attributes, each against its
--- closed form in tests/ac.rs (T = 1 ms):
+-- closed form in tests/it/ac.rs (T = 1 ms):
 --   held     = vin'zoh(T)                    (1 - e^{-jwT}) / (jwT)
 --   filtered = vin'ztf((0.2), (1, -0.8), T)  0.2 / (1 - 0.8 e^{-jwT})
 --   loop_out = k (vin - loop_out'zoh(T))     k / (1 + k (1 - e^{-jwT}) / (jwT))

@@ -5,7 +5,7 @@
 -- `--top cfg_mixed`: r1 to the ideal resistor (1 Ohm), r2 to one of twice its generic
 -- (2 Ohm), so the midpoint of the 1 V divider sits at 2/3 V. The testbench alone (default
 -- binding: the last architecture, `doubled`, for both) puts it at 1/2 V, which its own check
--- expects; tests/run.rs checks the configured midpoint.
+-- expects; tests/it/run.rs checks the configured midpoint.
 
 LIBRARY IEEE;
 USE IEEE.ELECTRICAL_SYSTEMS.ALL;

@@ -1,6 +1,6 @@
 -- vams: stop 100 ns
 --
--- Disagreements with GHDL that the differential test (tests/ghdl_differential.rs) found,
+-- Disagreements with GHDL that the differential test (tests/it/ghdl_differential.rs) found,
 -- reduced to their cause; each testbench checks the LRM's answer, which GHDL 2.0 gives.
 
 -- The logical operators and `not` on static arrays (qualified literals), folded at

@@ -1,6 +1,6 @@
 -- diode_iv: a diode behind 1 kOhm from a source of level vs; `vams dc --sweep vs` traces
 -- its I-V curve. The current solves id = is_sat (exp((vs - r id)/vt) - 1) + 1e-12 (vs - r id)
--- (tests/dc.rs checks it point by point, and against ngspice's `.dc` of the SPICE twin).
+-- (tests/it/dc.rs checks it point by point, and against ngspice's `.dc` of the SPICE twin).
 -- vams: stop 1 ms
 library ieee;
 use ieee.electrical_systems.all;

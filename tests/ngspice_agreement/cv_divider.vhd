@@ -1,4 +1,4 @@
--- Reproduction from the analog-correctness issue, kept as a regression test (tests/ngspice_agreement.rs); the
+-- Reproduction from the analog-correctness issue, kept as a regression test (tests/it/ngspice_agreement.rs); the
 -- lines below describe the behaviour before the fix.
 -- A voltage source feeding a capacitive divider (a loop of a source and capacitors, which every
 -- SPICE simulates): vams stops at t = 0 with "time step fell to 1.7e-18".

@@ -1,4 +1,4 @@
--- Reproduction from the analog-correctness issue, kept as a regression test (tests/ngspice_agreement.rs); the
+-- Reproduction from the analog-correctness issue, kept as a regression test (tests/it/ngspice_agreement.rs); the
 -- lines below describe the behaviour before the fix.
 -- R, C, series R-L and two diodes. Accepted points break the source equation: v1 is off amp*sin(2 pi f now) by 9x the amplitude at the default tolerance, 13 % at --reltol 1e-6; ngspice and --keep-unknowns (5e-4) do not.
 -- Simulate: vams run diode_net.vhd --top tb_diode_net --stop 0.0003680100459236776 --reltol 1e-6; the SPICE twin is diode_net.cir.

@@ -1,4 +1,4 @@
--- Reproduction from the analog-correctness issue, kept as a regression test (tests/ngspice_agreement.rs); the
+-- Reproduction from the analog-correctness issue, kept as a regression test (tests/it/ngspice_agreement.rs); the
 -- lines below describe the behaviour before the fix.
 -- `vams op` prints vs = 0.0256 V although the source equation gives 0 at t = 0, and KCL at n1 is off by about 6 uA; no warning. ngspice's .op satisfies both.
 -- Simulate: vams run op_not_solution.vhd --top tb_op_not_solution --stop 3.252962352320038e-05 --reltol 1e-6; the SPICE twin is op_not_solution.cir.

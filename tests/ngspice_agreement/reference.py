@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes NAME.ref.csv, ngspice's answer for NAME.cir, for tests/ngspice_agreement.rs.
+"""Writes NAME.ref.csv, ngspice's answer for NAME.cir, for tests/it/ngspice_agreement.rs.
 
     python3 tests/ngspice_agreement/reference.py NAME [NAME ...]
 

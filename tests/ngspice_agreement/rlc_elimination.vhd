@@ -1,4 +1,4 @@
--- Reproduction from the analog-correctness issue, kept as a regression test (tests/ngspice_agreement.rs); the
+-- Reproduction from the analog-correctness issue, kept as a regression test (tests/it/ngspice_agreement.rs); the
 -- lines below describe the behaviour before the fix.
 -- A linear RLC network. Default run and --keep-unknowns differ by 0.086 V (10 % of the 0.88 V swing) on v2 and v4 at any --reltol; --keep-unknowns agrees with ngspice to 7e-6 V.
 -- Simulate: vams run rlc_elimination.vhd --top tb_rlc_elimination --stop 0.0005973208538396804 --reltol 1e-6; the SPICE twin is rlc_elimination.cir.
