@@ -17,6 +17,7 @@ pub mod extract;
 pub mod fit;
 pub mod load;
 pub mod noise;
+pub mod notes;
 pub mod op;
 pub mod parallel;
 pub mod params;

@@ -18,6 +18,7 @@ pub mod fit;
 pub mod interrupt;
 pub mod lsp;
 pub mod noise;
+pub mod notes;
 pub mod op;
 pub mod output;
 pub mod poles;

@@ -9,6 +9,7 @@ use pyo3::IntoPyObjectExt;
 use pyo3::exceptions::{PyKeyError, PyKeyboardInterrupt};
 use pyo3::prelude::*;
 use vams::app::study::table::read_table;
+use vams::app::notes::Notes;
 use vams::app::study::{StudyOptions, StudyError, StudyOutcome, run_study};
 use vams::kernel::Cancel;
 
@@ -195,7 +196,7 @@ fn sweep_watching_signals(args: &StudyOptions) -> (miette::Result<Option<StudyOu
         // The spec's sources are parsed on this thread: a main thread's stack.
         let worker = std::thread::Builder::new()
             .stack_size(64 << 20)
-            .spawn_scoped(scope, move || run_study(args, flag));
+            .spawn_scoped(scope, move || run_study(args, flag, &StderrNotes));
         let worker = match worker {
             Ok(worker) => worker,
             Err(e) => return Err(miette::miette!("cannot start the sweep: {e}")),
@@ -212,4 +213,18 @@ fn sweep_watching_signals(args: &StudyOptions) -> (miette::Result<Option<StudyOu
             .unwrap_or_else(|_| Err(miette::miette!("internal error: the sweep panicked")))
     });
     (swept, interrupted)
+}
+
+/// The sweep's progress lines and diagnostics on the process's stderr, where a script or a
+/// notebook's log shows them (as `vams sweep` prints them); no progress bar.
+struct StderrNotes;
+
+impl Notes for StderrNotes {
+    fn note(&self, text: &str) {
+        eprint!("{text}");
+    }
+
+    fn output(&self, text: &str) {
+        print!("{text}");
+    }
 }

@@ -90,7 +90,7 @@ pub fn dc(
     let probes = probes.unwrap_or_default();
     let computed = py.detach(|| {
         let prepared = spec.prepare()?;
-        let swept = sweep_points(&prepared, &sweep, both_ways, &Cancel::new(), false)?;
+        let swept = sweep_points(&prepared, &sweep, both_ways, &Cancel::new(), None)?;
         let curves = swept.curves(&probes)?;
         let failure = (swept.ending).map(|(_, error)| Failure {
             findings: Vec::new(),

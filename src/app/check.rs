@@ -25,11 +25,19 @@ use crate::elaborate::{
 use crate::source::{FileId, Span};
 
 use super::load::{InputError, LibrarySources, Loaded, load_with_libraries};
+use super::notes::Notes;
 use super::render::render;
 
+/// Diagnostics shown as they are found: at most `max` of a file or a top, to `notes`.
+#[derive(Clone, Copy)]
+pub struct Echo<'a> {
+    pub max: usize,
+    pub notes: &'a dyn Notes,
+}
+
 /// What the check found, stage by stage.
-#[derive(Debug, Default)]
-struct Tally {
+#[derive(Default)]
+struct Tally<'a> {
     syntax: usize,
     analysis: usize,
     elaboration: usize,
@@ -39,9 +47,8 @@ struct Tally {
     analog_checked: usize,
     /// Rendered diagnostics already found (tops share instantiated entities).
     seen: HashSet<String>,
-    /// At most how many diagnostics of a file or a top to print on stderr as they are
-    /// found; `None`: print nothing.
-    echo: Option<usize>,
+    /// Where diagnostics go as they are found; `None`: nowhere.
+    echo: Option<Echo<'a>>,
     /// Every diagnostic, once, in the order found.
     found: Vec<Finding>,
     /// Why some candidates were not elaborated or checked alone.
@@ -51,7 +58,7 @@ struct Tally {
     analysed_spans: Vec<Span>,
 }
 
-impl Tally {
+impl Tally<'_> {
     fn errors(&self) -> usize {
         self.syntax + self.analysis + self.elaboration + self.analog
     }
@@ -74,30 +81,31 @@ impl Tally {
     /// returns how many were new.
     fn keep<D: Located>(&mut self, errors: &[D], loaded: &Loaded, level: Level) -> usize {
         let mut new = 0;
-        let max = self.echo.unwrap_or(0);
+        let max = self.echo.map_or(0, |e| e.max);
         for e in errors {
             if self.already_analysed(e.primary_span()) {
                 continue;
             }
             let finding = Finding::located(e, &loaded.sources, level);
             if self.seen.insert(finding.render_plain()) {
-                if new < max {
-                    eprint!("{}", render(finding.report.as_ref()));
+                if let Some(echo) = self.echo.filter(|_| new < max) {
+                    echo.notes.note(&render(finding.report.as_ref()));
                 }
                 new += 1;
                 self.found.push(finding);
             }
         }
-        if self.echo.is_some() && new > max {
-            eprintln!("  ... and {} more\n", new - max);
+        if let Some(echo) = self.echo.filter(|_| new > max) {
+            echo.notes
+                .note(&format!("  ... and {} more\n\n", new - max));
         }
         new
     }
 
     /// A note on what was not checked, printed when echoing.
     fn note(&mut self, text: String) {
-        if self.echo.is_some() {
-            eprintln!("note: {text}");
+        if let Some(echo) = self.echo {
+            echo.notes.note(&format!("note: {text}\n"));
         }
         self.notes.push(text);
     }
@@ -118,23 +126,25 @@ pub struct Checked {
 }
 
 /// Checks the sources under `paths` (library `work`) and `libraries` as `vams check` does,
-/// printing at most `echo` diagnostics per file or top on stderr as they are found (nothing
-/// when `None`) and giving them all back.
+/// showing at most `echo.max` diagnostics per file or top to `echo.notes` as they are found
+/// (nothing when `None`) and giving them all back.
 pub fn diagnose(
     paths: &[PathBuf],
     libraries: &[LibrarySources],
-    echo: Option<usize>,
+    echo: Option<Echo<'_>>,
 ) -> Result<Checked, InputError> {
     let loaded = load_with_libraries(paths, libraries)?;
-    if let Some(max) = echo {
-        // Echoed as found, for the command; the caller gets them all back.
+    if let Some(Echo { max, notes }) = echo {
         for (id, errors) in &loaded.syntax_errors {
             for e in errors.iter().take(max) {
-                eprint!("{}", crate::diagnostics::render_plain(e, &loaded.sources));
+                notes.note(&crate::diagnostics::render_plain(e, &loaded.sources));
             }
             if errors.len() > max {
                 let name = &loaded.sources.file(*id).name;
-                eprintln!("  ... and {} more in {name}\n", errors.len() - max);
+                notes.note(&format!(
+                    "  ... and {} more in {name}\n\n",
+                    errors.len() - max
+                ));
             }
         }
     }
@@ -194,7 +204,7 @@ fn check_top(
     analysis: &Analysis,
     loaded: &Loaded,
     files: &[(FileId, DesignFile)],
-    tally: &mut Tally,
+    tally: &mut Tally<'_>,
 ) {
     if !top.has_architecture && top.configurations.is_empty() {
         tally.note(format!(
@@ -231,7 +241,7 @@ fn check_elaborated(
     analysis: &Analysis,
     loaded: &Loaded,
     files: &[(FileId, DesignFile)],
-    tally: &mut Tally,
+    tally: &mut Tally<'_>,
 ) {
     let options = ElabOptions {
         top: name.to_string(),
@@ -278,7 +288,7 @@ fn quoted(names: &[String]) -> String {
 }
 
 /// The closing line: what was checked and the error counts by stage.
-fn summary(loaded: &Loaded, tally: &Tally) -> String {
+fn summary(loaded: &Loaded, tally: &Tally<'_>) -> String {
     let checked = format!(
         "checked {} file(s), {} design unit(s), {} top(s) elaborated, {} analog system(s) built",
         loaded.sources.len(),

@@ -15,6 +15,7 @@ use crate::output::plot::{Panel, Trace};
 
 use super::compile::{NotCompiled, Prepared};
 use super::error::CliError;
+use super::notes::Notes;
 use super::render::{render, render_sim_error};
 
 /// Most points one sweep computes (a typing slip in STEP should not run for hours).
@@ -132,8 +133,8 @@ struct PointSolver<'a> {
     sweep: &'a GenericSweep,
     /// The elaboration warnings, once the first point is elaborated (not per point).
     warnings: Option<Vec<Finding>>,
-    /// Print the warnings as they are found.
-    echo: bool,
+    /// Where the warnings go as they are found.
+    echo: Option<&'a dyn Notes>,
 }
 
 impl PointSolver<'_> {
@@ -145,9 +146,9 @@ impl PointSolver<'_> {
             .map_err(PointError::Elaboration)?;
         if self.warnings.is_none() {
             let warnings = self.prepared.warnings(&design);
-            if self.echo {
+            if let Some(notes) = self.echo {
                 for w in &warnings {
-                    eprint!("{}", render(w.report.as_ref()));
+                    notes.note(&render(w.report.as_ref()));
                 }
             }
             self.warnings = Some(warnings);
@@ -387,13 +388,13 @@ impl TransferCurve {
 
 /// Sweeps `sweep` over the design of `prepared` (up to TO and back with `both_ways`) until
 /// the end, a point without a quiescent point or `cancel`; with `echo`, the warnings and the
-/// failed point's diagnostic are printed as they are found. An elaboration error ends it.
+/// failed point's diagnostic go there as they are found. An elaboration error ends it.
 pub fn sweep_points(
     prepared: &Prepared,
     sweep: &GenericSweep,
     both_ways: bool,
     cancel: &Cancel,
-    echo: bool,
+    echo: Option<&dyn Notes>,
 ) -> Result<TransferCurve, NotCompiled> {
     let mut values: Vec<(f64, f64)> = sweep.values.iter().map(|&v| (v, 1.0)).collect();
     if both_ways {
@@ -431,8 +432,8 @@ pub fn sweep_points(
             Err(PointError::Elaboration(errors)) => return Err(errors),
             Err(PointError::Solve(error)) => {
                 failure = render_sim_error(&error, &prepared.loaded.sources);
-                if echo {
-                    eprint!("{failure}");
+                if let Some(notes) = echo {
+                    notes.note(&failure);
                 }
                 ending = Some((
                     format!(

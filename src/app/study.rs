@@ -33,6 +33,7 @@ use crate::output::sweep_plot::{EnvelopeBuilder, Histogram, TornadoBar};
 use super::compile::{DesignOptions, Prepared, prepare, unknown_probe_help};
 use super::error::CliError;
 use super::load::LibrarySources;
+use super::notes::Notes;
 use super::render::{render, render_located};
 use super::stop::{declaring_file, stop_comment};
 use execute::Job;
@@ -138,20 +139,24 @@ pub struct StudyOptions {
 
 /// Runs a design-space study (`vams sweep`): `cancel` stops the runs. A local study gives
 /// back its folder, table and summary; `slurm` gives `None`.
-pub fn run_study(args: &StudyOptions, cancel: Cancel) -> Result<Option<StudyOutcome>, Report> {
+pub fn run_study(
+    args: &StudyOptions,
+    cancel: Cancel,
+    notes: &dyn Notes,
+) -> Result<Option<StudyOutcome>, Report> {
     let spec_path = &args.spec;
     let spec = read_spec(spec_path)?;
     let total = check_size(&spec, args.yes)?;
-    let prepared = prepare_design(&spec)?;
-    check_parameters(&spec, &prepared)?;
-    let stop = stop_time(&spec, &prepared)?;
+    let prepared = prepare_design(&spec, notes)?;
+    check_parameters(&spec, &prepared, notes)?;
+    let stop = stop_time(&spec, &prepared, notes)?;
     let out = args.out.clone().unwrap_or_else(|| default_out(spec_path));
     std::fs::create_dir_all(&out).map_err(|e| StudyError::Write {
         path: out.clone(),
         reason: e.to_string(),
     })?;
     if args.slurm {
-        return submit(args, spec_path, &out, total).map(|()| None);
+        return submit(args, spec_path, &out, total, notes).map(|()| None);
     }
     let (range, table_path) = match args.shard {
         Some((k, n)) => (
@@ -185,8 +190,8 @@ pub fn run_study(args: &StudyOptions, cancel: Cancel) -> Result<Option<StudyOutc
         max_step: spec.design.max_step,
         cancel,
     };
-    eprintln!(
-        "sweeping {} ({} runs{}, {} to do) into {}",
+    notes.note(&format!(
+        "sweeping {} ({} runs{}, {} to do) into {}\n",
         spec_path.display(),
         range.len(),
         match args.shard {
@@ -195,7 +200,7 @@ pub fn run_study(args: &StudyOptions, cancel: Cancel) -> Result<Option<StudyOutc
         },
         todo.len(),
         table_path.display()
-    );
+    ));
     let started = Instant::now();
     let mut envelopes: Vec<EnvelopeBuilder> = spec
         .envelope
@@ -204,7 +209,7 @@ pub fn run_study(args: &StudyOptions, cancel: Cancel) -> Result<Option<StudyOutc
         .collect();
     let mut rows = kept;
     let mut write_failure = None;
-    let bar = progress_bar(todo.len());
+    let bar = notes.progress(todo.len() as u64);
     let jobs = crate::app::parallel::threads(args.jobs);
     let plan = &spec.plan;
     let mut failures = 0;
@@ -260,7 +265,7 @@ pub fn run_study(args: &StudyOptions, cancel: Cancel) -> Result<Option<StudyOutc
     if finished < range.len() {
         let why = format!("interrupted after {finished} of {} runs", range.len());
         writer.finish_partial(&why).map_err(StudyError::from)?;
-        eprintln!("{why}; the table is {}", table_path.display());
+        notes.note(&format!("{why}; the table is {}\n", table_path.display()));
         return Err(StudyError::Interrupted {
             done: finished,
             total: range.len(),
@@ -269,18 +274,18 @@ pub fn run_study(args: &StudyOptions, cancel: Cancel) -> Result<Option<StudyOutc
     }
     drop(writer);
     let summary = summary::summary(plan, &spec.metrics, &rows);
-    eprint!("{summary}");
+    notes.note(&summary);
     let mut written = vec![table_path.display().to_string()];
     if args.shard.is_none() {
         written.extend(draw(&spec, &rows, envelopes, &out)?);
     }
-    eprintln!(
-        "swept {} runs in {:.2} s wall time ({} at once); wrote {}",
+    notes.note(&format!(
+        "swept {} runs in {:.2} s wall time ({} at once); wrote {}\n",
         todo.len(),
         started.elapsed().as_secs_f64(),
         jobs,
         written.join(", ")
-    );
+    ));
     Ok(Some(StudyOutcome {
         dir: out,
         table: table_path,
@@ -289,7 +294,13 @@ pub fn run_study(args: &StudyOptions, cancel: Cancel) -> Result<Option<StudyOutc
 }
 
 /// `--slurm`: the job array of the sweep's shards, written, then submitted (or printed).
-fn submit(args: &StudyOptions, spec_path: &Path, out: &Path, total: usize) -> Result<(), Report> {
+fn submit(
+    args: &StudyOptions,
+    spec_path: &Path,
+    out: &Path,
+    total: usize,
+    notes: &dyn Notes,
+) -> Result<(), Report> {
     let absolute = |p: &Path| std::path::absolute(p).unwrap_or_else(|_| p.to_path_buf());
     let write_error = |path: &Path, e: std::io::Error| StudyError::Write {
         path: path.to_path_buf(),
@@ -316,30 +327,30 @@ fn submit(args: &StudyOptions, spec_path: &Path, out: &Path, total: usize) -> Re
     };
     let script = slurm::write_script(&job).map_err(StudyError::from)?;
     if args.dry_run {
-        print!("{}", job.script());
-        eprintln!(
-            "wrote {} ({shards} tasks for {total} runs); submit it with `sbatch {}`",
+        notes.output(&job.script());
+        notes.note(&format!(
+            "wrote {} ({shards} tasks for {total} runs); submit it with `sbatch {}`\n",
             script.display(),
             script.display()
-        );
+        ));
         return Ok(());
     }
     let id = slurm::submit(&script, None).map_err(StudyError::from)?;
-    eprintln!(
-        "submitted job {id}: {shards} tasks for {total} runs, script {}",
+    notes.note(&format!(
+        "submitted job {id}: {shards} tasks for {total} runs, script {}\n",
         script.display()
-    );
+    ));
     if !args.wait {
-        eprintln!(
-            "when it has ended: vams sweep collect {}",
+        notes.note(&format!(
+            "when it has ended: vams sweep collect {}\n",
             job.out.display()
-        );
+        ));
         return Ok(());
     }
     // A sweep's tasks may queue for long on a busy cluster: wait up to a week.
     slurm::wait(&id, std::time::Duration::from_secs(7 * 24 * 3600)).map_err(StudyError::from)?;
-    eprintln!("job {id} has ended");
-    collect(&job.out)
+    notes.note(&format!("job {id} has ended\n"));
+    collect(&job.out, notes)
 }
 
 /// The plan's size, refused beyond [`LARGE_PLAN`] without `--yes`.
@@ -363,7 +374,7 @@ fn check_size(spec: &Spec, yes: bool) -> Result<usize, Report> {
 }
 
 /// Parses and analyses the spec's sources once.
-fn prepare_design(spec: &Spec) -> Result<Prepared, Report> {
+fn prepare_design(spec: &Spec, notes: &dyn Notes) -> Result<Prepared, Report> {
     let options = DesignOptions {
         paths: spec.design.files.clone(),
         libraries: spec
@@ -383,7 +394,7 @@ fn prepare_design(spec: &Spec) -> Result<Prepared, Report> {
     // would print them in its log).
     prepare(&options).map_err(|not| {
         for f in &not.findings {
-            eprint!("{}", render(f.report.as_ref()));
+            notes.note(&render(f.report.as_ref()));
         }
         not.error
     })
@@ -391,12 +402,12 @@ fn prepare_design(spec: &Spec) -> Result<Prepared, Report> {
 
 /// The design must elaborate with the spec's fixed generics, and every parameter must name
 /// a generic of it: a misspelt name is a spec error at its line, before any run.
-fn check_parameters(spec: &Spec, prepared: &Prepared) -> Result<(), Report> {
+fn check_parameters(spec: &Spec, prepared: &Prepared, notes: &dyn Notes) -> Result<(), Report> {
     // Run 0's values: a generic without a default that every run sets elaborates too.
     let errors = match prepared.try_elaborate(&spec.plan.run(0).generics(&spec.plan.names())) {
         Ok(design) => {
             for w in prepared.warnings(&design) {
-                eprint!("{}", render(w.report.as_ref()));
+                notes.note(&render(w.report.as_ref()));
             }
             return check_columns(spec, &design);
         }
@@ -428,7 +439,7 @@ fn check_parameters(spec: &Spec, prepared: &Prepared) -> Result<(), Report> {
     }
     if !unknown_fixed.is_empty() {
         for e in &unknown_fixed {
-            eprint!("{}", render_located(*e, &loaded.sources));
+            notes.note(&render_located(*e, &loaded.sources));
         }
         return Err(CliError::Elaboration {
             count: unknown_fixed.len(),
@@ -470,7 +481,7 @@ fn check_columns(spec: &Spec, design: &crate::design::Design) -> Result<(), Repo
 }
 
 /// The spec's stop time, or the testbench's `-- vams: stop` comment.
-fn stop_time(spec: &Spec, prepared: &Prepared) -> Result<f64, Report> {
+fn stop_time(spec: &Spec, prepared: &Prepared, notes: &dyn Notes) -> Result<f64, Report> {
     if let Some(t) = spec.design.stop {
         return Ok(t);
     }
@@ -478,7 +489,7 @@ fn stop_time(spec: &Spec, prepared: &Prepared) -> Result<f64, Report> {
     match declaring_file(loaded, &prepared.top).and_then(|f| stop_comment(&loaded.sources, f)) {
         Some(Ok(t)) => Ok(t),
         Some(Err(e)) => {
-            eprint!("{}", render_located(&e, &loaded.sources));
+            notes.note(&render_located(&e, &loaded.sources));
             Err(CliError::NoStop {
                 top: prepared.top.clone(),
             }
@@ -547,16 +558,6 @@ fn previous_rows(
     }
     table.resplit(parameters).map_err(other)?;
     Ok(table.rows)
-}
-
-fn progress_bar(total: usize) -> indicatif::ProgressBar {
-    let bar = indicatif::ProgressBar::new(total as u64);
-    if let Ok(style) = indicatif::ProgressStyle::with_template(
-        "{bar:30} {pos}/{len} runs, {msg}, {elapsed} elapsed, ETA {eta}",
-    ) {
-        bar.set_style(style);
-    }
-    bar
 }
 
 /// Draws the envelope, the histograms and the tornados; returns the files written.
@@ -659,7 +660,7 @@ fn spec_title(spec: &Spec) -> String {
 }
 
 /// `vams sweep collect DIR`.
-pub fn collect(dir: &Path) -> Result<(), Report> {
+pub fn collect(dir: &Path, notes: &dyn Notes) -> Result<(), Report> {
     let mut shards: Vec<(usize, usize, PathBuf)> = Vec::new();
     let entries = std::fs::read_dir(dir).map_err(|e| StudyError::Write {
         path: dir.to_path_buf(),
@@ -763,7 +764,7 @@ pub fn collect(dir: &Path) -> Result<(), Report> {
                 list.join(", ")
             )
         };
-        eprintln!("missing or partial shards: {}", list.join(", "));
+        notes.note(&format!("missing or partial shards: {}\n", list.join(", ")));
         return Err(StudyError::MissingShards {
             dir: dir.to_path_buf(),
             missing: missing.len(),
@@ -775,14 +776,14 @@ pub fn collect(dir: &Path) -> Result<(), Report> {
     rows.sort_by_key(|r| r.index);
     let path = dir.join("results.csv");
     drop(TableWriter::create(&path, &identity, &head, &rows).map_err(StudyError::from)?);
-    eprint!("{}", summary::summary(&spec.plan, &spec.metrics, &rows));
+    notes.note(&summary::summary(&spec.plan, &spec.metrics, &rows));
     let mut written = vec![path.display().to_string()];
     written.extend(draw(&spec, &rows, Vec::new(), dir)?);
-    eprintln!(
-        "collected {n} shards, {} runs; wrote {}",
+    notes.note(&format!(
+        "collected {n} shards, {} runs; wrote {}\n",
         rows.len(),
         written.join(", ")
-    );
+    ));
     Ok(())
 }
 

@@ -7,8 +7,9 @@ pub mod discover;
 pub mod junit;
 
 use std::path::{Path, PathBuf};
+use std::time::Instant;
 
-use crate::analysis::{Analysis, UnitKind};
+use crate::analysis::{Analysis, UnitKind, analyse};
 use crate::ast::DesignFile;
 use crate::elaborate::{ElabOptions, ElabWarning, elaborate_analysed};
 use crate::kernel::{Severity, SimError, SimOptions, SimResult, simulate};
@@ -17,11 +18,14 @@ use crate::source::{FileId, SourceMap};
 use super::ac::linearise;
 use super::ac_assert::{AcAssertion, AcVerdict, assertion_probes, check_assertions};
 use super::error::CliError;
-use super::load::Loaded;
+use super::load::{LibrarySources, Loaded, load_with_libraries};
+use super::notes::Notes;
+use super::parallel::run_in_order;
 use super::render::{format_report, render, render_located, render_sim_error};
 use super::stop::{assert_comments, stop_comment};
 use discover::Testbench;
-use junit::Problem;
+use discover::discover;
+use junit::{Case, Problem};
 
 /// How one testbench went.
 #[derive(Clone, Debug)]
@@ -211,6 +215,123 @@ pub fn verdict_lines(name: &str, verdict: &Verdict) -> String {
         out.push('\n');
     }
     out
+}
+
+/// What `vams test` runs: where its testbenches are, which, and how.
+#[derive(Debug, Clone, Default)]
+pub struct TestOptions {
+    /// Files or directories searched ([`default_paths`] gives the command's default).
+    pub paths: Vec<PathBuf>,
+    pub libraries: Vec<LibrarySources>,
+    /// Only the testbenches whose name contains this.
+    pub filter: Option<String>,
+    /// Stop time of testbenches whose file has no `-- vams: stop` comment.
+    pub stop: Option<f64>,
+    /// Testbenches run at once; `None`: the number of CPUs.
+    pub jobs: Option<u32>,
+}
+
+/// The testbenches run: one case each (for a JUnit report), and the wall time.
+#[derive(Debug)]
+pub struct Tested {
+    pub cases: Vec<junit::Case>,
+    pub seconds: f64,
+}
+
+/// Runs every testbench under `options.paths` on `options.jobs` threads: `verdict` is told
+/// each one's result in discovery order as it is known; notes say what was skipped and how
+/// many run. The cases, for a JUnit report, come back with the wall time.
+pub fn run_testbenches(
+    options: &TestOptions,
+    notes: &dyn Notes,
+    mut verdict: impl FnMut(&str, &Verdict),
+) -> Result<Tested, miette::Report> {
+    let started = Instant::now();
+    let paths = &options.paths;
+    let loaded = load_with_libraries(paths, &options.libraries)?;
+    let benches = discover(&loaded, options.filter.as_deref());
+    // Files that do not parse are left out of the compilation; their testbenches fail.
+    for (id, errors) in &loaded.syntax_errors {
+        if !benches.iter().any(|b| b.file == *id) {
+            let name = &loaded.sources.file(*id).name;
+            notes.note(&format!(
+                "warning: skipping {name}: {} syntax error(s) (`vams check {name}` shows them)\n",
+                errors.len()
+            ));
+        }
+    }
+    if benches.is_empty() {
+        let shown: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
+        return Err(CliError::NoTestbench {
+            paths: if shown.is_empty() {
+                "the current directory".into()
+            } else {
+                shown.join(", ")
+            },
+            filter: match &options.filter {
+                Some(f) => format!(" and, with --filter, contains `{f}`"),
+                None => String::new(),
+            },
+        }
+        .into());
+    }
+    let files: Vec<(FileId, DesignFile)> = loaded
+        .files
+        .iter()
+        .filter(|(id, _)| !loaded.has_errors(*id))
+        .cloned()
+        .collect();
+    let analysis = analyse(&loaded.sources, &files);
+    let jobs = super::parallel::threads(options.jobs);
+    notes.output(&format!(
+        "running {} testbench(es) on {jobs} thread(s)\n",
+        benches.len()
+    ));
+    let mut cases = Vec::with_capacity(benches.len());
+    run_in_order(
+        &benches,
+        jobs,
+        |bench| {
+            let start = Instant::now();
+            let mut warnings = String::new();
+            let problem = run_bench(
+                &loaded,
+                (&analysis, &files),
+                bench,
+                options.stop,
+                &mut warnings,
+            );
+            Verdict {
+                seconds: start.elapsed().as_secs_f64(),
+                problem,
+                warnings,
+            }
+        },
+        |k, result| {
+            let bench = &benches[k];
+            let result = result.unwrap_or_else(|panic| Verdict {
+                seconds: 0.0,
+                problem: Some((
+                    Problem::Error,
+                    format!("internal error: vams panicked: {panic}"),
+                )),
+                warnings: String::new(),
+            });
+            verdict(&bench.name, &result);
+            cases.push(Case {
+                name: bench.name.clone(),
+                classname: loaded.sources.file(bench.file).name.clone(),
+                seconds: result.seconds,
+                problem: result
+                    .problem
+                    .map(|(kind, text)| (kind, headline(&text), text)),
+            });
+        },
+    );
+    Ok(Tested {
+        cases,
+        seconds: started.elapsed().as_secs_f64(),
+    })
 }
 
 #[cfg(test)]

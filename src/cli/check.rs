@@ -3,6 +3,7 @@
 
 use crate::app::check::*;
 use crate::app::error::CliError;
+use crate::cli::notes::Printed;
 use clap::Args;
 use miette::Report;
 use std::path::PathBuf;
@@ -24,7 +25,14 @@ pub struct CheckArgs {
 
 /// Runs the check; every diagnostic goes to stderr.
 pub fn run(args: &CheckArgs) -> Result<(), Report> {
-    let checked = diagnose(&args.paths, &args.libraries, Some(args.max_errors))?;
+    let checked = diagnose(
+        &args.paths,
+        &args.libraries,
+        Some(Echo {
+            max: args.max_errors,
+            notes: &Printed,
+        }),
+    )?;
     eprintln!("{}", checked.summary);
     match checked.errors {
         0 => Ok(()),

@@ -9,6 +9,7 @@ use crate::cli::args::csv_path;
 use crate::cli::args::plot_path;
 use crate::cli::compile::{fail, prepare};
 use crate::cli::interrupt::{cancel_on_ctrl_c, remove_on_exit};
+use crate::cli::notes::Printed;
 use crate::output::atomic::{commit, temp_path};
 use crate::output::plot::plot_panels_over;
 use clap::Args;
@@ -72,10 +73,11 @@ pub fn run(args: &DcArgs) -> Result<(), Report> {
     let abandon = || pending.iter().for_each(|p| p.abandon());
 
     let cancel = cancel_on_ctrl_c();
-    let swept = sweep_points(&prepared, &sweep, args.both_ways, &cancel, true).map_err(|e| {
-        abandon();
-        fail(e)
-    })?;
+    let swept =
+        sweep_points(&prepared, &sweep, args.both_ways, &cancel, Some(&Printed)).map_err(|e| {
+            abandon();
+            fail(e)
+        })?;
     let ending = &swept.ending;
     // What was computed is written, whole or cut short.
     let curves = swept.curves(&args.probe).inspect_err(|_| abandon())?;

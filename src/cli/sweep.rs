@@ -4,6 +4,7 @@
 use crate::app::study::slurm;
 use crate::app::study::*;
 use crate::cli::interrupt::cancel_on_ctrl_c;
+use crate::cli::notes::Printed;
 use clap::{Args, Subcommand};
 use miette::Report;
 use std::path::PathBuf;
@@ -101,9 +102,9 @@ fn parse_shard(text: &str) -> Result<(usize, usize), String> {
 /// Runs `vams sweep`.
 pub fn run(args: &SweepArgs) -> Result<(), Report> {
     if let Some(SweepAction::Collect { dir }) = &args.action {
-        return collect(dir);
+        return collect(dir, &Printed);
     }
-    run_study(&args.options(), cancel_on_ctrl_c()).map(drop)
+    run_study(&args.options(), cancel_on_ctrl_c(), &Printed).map(drop)
 }
 
 impl SweepArgs {

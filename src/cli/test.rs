@@ -1,21 +1,15 @@
 //! `vams test`: the command line of [`crate::app::testbench`]: its arguments, and the results
 //! printed.
 
-use crate::analysis::analyse;
 use crate::app::error::CliError;
-use crate::app::load::load_with_libraries;
-use crate::app::parallel::run_in_order;
 use crate::app::testbench::*;
 use crate::app::time::parse_positive_time;
-use crate::ast::DesignFile;
+use crate::cli::notes::Printed;
 use crate::output::atomic::write_atomically;
-use crate::source::FileId;
 use clap::Args;
-use discover::discover;
-use junit::{Case, Problem, junit_xml};
+use junit::junit_xml;
 use miette::Report;
 use std::path::PathBuf;
-use std::time::Instant;
 
 /// Arguments of `vams test`.
 #[derive(Debug, Args)]
@@ -51,91 +45,19 @@ pub struct TestArgs {
 
 /// Runs `vams test`.
 pub fn run(args: &TestArgs) -> Result<(), Report> {
-    let started = Instant::now();
     let root = std::env::current_dir().unwrap_or_else(|_| PathBuf::from("."));
-    let paths = default_paths(&args.paths, &root);
-    let loaded = load_with_libraries(&paths, &args.libraries)?;
-    let benches = discover(&loaded, args.filter.as_deref());
-    // Files that do not parse are left out of the compilation; their testbenches fail.
-    for (id, errors) in &loaded.syntax_errors {
-        if !benches.iter().any(|b| b.file == *id) {
-            let name = &loaded.sources.file(*id).name;
-            eprintln!(
-                "warning: skipping {name}: {} syntax error(s) (`vams check {name}` shows them)",
-                errors.len()
-            );
-        }
-    }
-    if benches.is_empty() {
-        let shown: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
-        return Err(CliError::NoTestbench {
-            paths: if shown.is_empty() {
-                "the current directory".into()
-            } else {
-                shown.join(", ")
-            },
-            filter: match &args.filter {
-                Some(f) => format!(" and, with --filter, contains `{f}`"),
-                None => String::new(),
-            },
-        }
-        .into());
-    }
-    let files: Vec<(FileId, DesignFile)> = loaded
-        .files
-        .iter()
-        .filter(|(id, _)| !loaded.has_errors(*id))
-        .cloned()
-        .collect();
-    let analysis = analyse(&loaded.sources, &files);
-    let jobs = crate::app::parallel::threads(args.jobs);
-    println!(
-        "running {} testbench(es) on {jobs} thread(s)",
-        benches.len()
-    );
-    let mut cases = Vec::with_capacity(benches.len());
-    run_in_order(
-        &benches,
-        jobs,
-        |bench| {
-            let start = Instant::now();
-            let mut warnings = String::new();
-            let problem = run_bench(
-                &loaded,
-                (&analysis, &files),
-                bench,
-                args.stop,
-                &mut warnings,
-            );
-            Verdict {
-                seconds: start.elapsed().as_secs_f64(),
-                problem,
-                warnings,
-            }
-        },
-        |k, result| {
-            let bench = &benches[k];
-            let verdict = result.unwrap_or_else(|panic| Verdict {
-                seconds: 0.0,
-                problem: Some((
-                    Problem::Error,
-                    format!("internal error: vams panicked: {panic}"),
-                )),
-                warnings: String::new(),
-            });
-            print!("{}", verdict_lines(&bench.name, &verdict));
-            cases.push(Case {
-                name: bench.name.clone(),
-                classname: loaded.sources.file(bench.file).name.clone(),
-                seconds: verdict.seconds,
-                problem: verdict
-                    .problem
-                    .map(|(kind, text)| (kind, headline(&text), text)),
-            });
-        },
-    );
+    let options = TestOptions {
+        paths: default_paths(&args.paths, &root),
+        libraries: args.libraries.clone(),
+        filter: args.filter.clone(),
+        stop: args.stop,
+        jobs: args.jobs,
+    };
+    let tested = run_testbenches(&options, &Printed, |name, verdict| {
+        print!("{}", verdict_lines(name, verdict));
+    })?;
+    let (cases, total_seconds) = (tested.cases, tested.seconds);
     let failed = cases.iter().filter(|c| c.problem.is_some()).count();
-    let total_seconds = started.elapsed().as_secs_f64();
     println!(
         "\n{} passed, {failed} failed ({total_seconds:.2} s)",
         cases.len() - failed
