@@ -1,27 +1,21 @@
 //! vams: a compiler and simulator for a practical subset of VHDL-AMS (IEEE 1076.1).
 //!
-//! The pipeline, one module per stage (see ARCHITECTURE.md):
-//! source -> [`lexer`] -> [`parser`] ([`ast`]) -> analysis -> elaboration -> [`solver`];
-//! beside it, [`capture`] (oscilloscope exports), [`extract`] (motor parameters from scope
-//! captures) and [`output`] (plots).
+//! The pipeline is a crate per stage (see ARCHITECTURE.md), re-exported here under the paths
+//! users and the front ends know: source -> [`lexer`] -> [`parser`] ([`ast`]) -> [`analysis`]
+//! -> [`elaborate`] ([`design`]) -> [`analog`] and [`kernel`] over the [`solver`]; beside it,
+//! [`capture`] (oscilloscope exports), [`extract`] (motor parameters from scope captures),
+//! [`fit`] and [`output`] (waveforms and plots). This crate adds the application layer
+//! ([`app`]) and its front ends: the command line ([`cli`]) and the language server ([`lsp`]).
 
-// The syntax stage is its own crate (`crates/syntax`): re-exported under its old paths.
-pub use vams_syntax::{ast, diagnostics, lexer, parser, source};
-// So is the numerical core (`crates/solver`).
+pub use vams_design as design;
+pub use vams_design::pwl;
+pub use vams_elaboration as elaborate;
+pub use vams_semantics::{analysis, stdlib};
+pub use vams_simulation::{analog, kernel, waveform};
 pub use vams_solver as solver;
+pub use vams_syntax::{ast, diagnostics, lexer, parser, source};
+pub use vams_tools::{capture, extract, fit, output};
 
-pub mod analog;
-pub mod analysis;
 pub mod app;
-pub mod capture;
 pub mod cli;
-pub mod design;
-pub mod elaborate;
-pub mod extract;
-pub mod fit;
-pub mod kernel;
 pub mod lsp;
-pub mod output;
-pub mod pwl;
-pub mod stdlib;
-pub mod waveform;
