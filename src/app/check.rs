@@ -26,7 +26,7 @@ use crate::source::{FileId, Span};
 
 use super::load::{InputError, LibrarySources, Loaded, load_with_libraries};
 use super::notes::Notes;
-use super::render::render;
+use super::render::{render, render_capped};
 
 /// Diagnostics shown as they are found: at most `max` of a file or a top, to `notes`.
 #[derive(Clone, Copy)]
@@ -134,32 +134,21 @@ pub fn diagnose(
     echo: Option<Echo<'_>>,
 ) -> Result<Checked, InputError> {
     let loaded = load_with_libraries(paths, libraries)?;
-    if let Some(Echo { max, notes }) = echo {
-        for (id, errors) in &loaded.syntax_errors {
-            for e in errors.iter().take(max) {
-                notes.note(&crate::diagnostics::render_plain(e, &loaded.sources));
-            }
-            if errors.len() > max {
-                let name = &loaded.sources.file(*id).name;
-                notes.note(&format!(
-                    "  ... and {} more in {name}\n\n",
-                    errors.len() - max
-                ));
-            }
-        }
+    let syntax: Vec<Finding> = (loaded.syntax_errors.iter())
+        .flat_map(|(_, errors)| errors.iter())
+        .map(|e| Finding::located(e, &loaded.sources, Level::Error))
+        .collect();
+    if let Some(Echo { max, notes }) = echo
+        && !syntax.is_empty()
+    {
+        notes.note(&render_capped(&syntax, max));
     }
     let mut tally = Tally {
         syntax: loaded.error_count(),
         echo,
         ..Tally::default()
     };
-    for (_, errors) in &loaded.syntax_errors {
-        (tally.found).extend(
-            errors
-                .iter()
-                .map(|e| Finding::located(e, &loaded.sources, Level::Error)),
-        );
-    }
+    tally.found.extend(syntax);
     // A file with syntax errors is left out; the others are analysed and elaborated, so
     // that one broken file among many does not hide the rest's errors.
     let kept: Vec<(FileId, DesignFile)>;

@@ -11,6 +11,7 @@ pub mod error;
 pub mod experiment;
 pub mod motor;
 pub mod plot;
+pub mod problem;
 pub mod report;
 pub mod simulate;
 

@@ -7,6 +7,102 @@ use std::fmt::Write as _;
 
 use faer::c64;
 
+use crate::app::ac::{Linearised, probes};
+use crate::app::error::CliError;
+use crate::design::Design;
+use crate::solver::poles::{poles, zeros};
+
+/// The natural frequencies of a linearised design.
+pub struct Poles {
+    /// The finite poles (1/s).
+    pub finite: Vec<c64>,
+    /// How many are at infinity (the algebraic part).
+    pub infinite: usize,
+    /// The unknowns of the small-signal system.
+    pub unknowns: usize,
+}
+
+/// The transmission zeros from a spectral source to a quantity.
+pub struct Zeros {
+    /// The source and the output as the user named them, lower case.
+    pub input: String,
+    pub output: String,
+    pub finite: Vec<c64>,
+    pub infinite: usize,
+}
+
+/// The poles of `linearised`, the small-signal model of `design`.
+pub fn poles_of(design: &Design, linearised: &Linearised) -> Result<Poles, CliError> {
+    let system = &linearised.model.system;
+    let (finite, infinite) = poles(system).map_err(|e| CliError::Poles {
+        top: design.top.clone(),
+        reason: e.to_string(),
+    })?;
+    Ok(Poles {
+        finite,
+        infinite,
+        unknowns: system.n,
+    })
+}
+
+/// The zeros from the spectral source quantity `input` to the quantity `output`
+/// (hierarchical names); `poles` gives the scale below which a zero is taken as the origin.
+pub fn zeros_of(
+    design: &Design,
+    linearised: &Linearised,
+    poles: &Poles,
+    input: &str,
+    output: &str,
+) -> Result<Zeros, CliError> {
+    let (input_name, output_name) = (input.trim().to_ascii_lowercase(), output.trim());
+    let model = &linearised.model;
+    let source = (design.spectral_sources.iter())
+        .position(|s| design.quantities[s.quantity.index()].name == input_name);
+    let Some(injection) = source.and_then(|k| model.spectral_injection(k)) else {
+        let names: Vec<&str> = (design.spectral_sources.iter())
+            .map(|s| design.quantities[s.quantity.index()].name.as_str())
+            .collect();
+        return Err(CliError::ZerosInput {
+            name: input.to_string(),
+            sources: if names.is_empty() {
+                "none: declare one, e.g. `quantity ac_in : real spectrum 1.0, 0.0;`".into()
+            } else {
+                names.join(", ")
+            },
+        });
+    };
+    let probe = probes(design, &[output_name.to_string()])?;
+    let Linearised {
+        system, x, xdot, ..
+    } = linearised;
+    let terms = (probe.first())
+        .and_then(|&q| system.linear_output(q, x, xdot))
+        .unwrap_or_default();
+    let (found, infinite) =
+        zeros(&model.system, injection, &terms).map_err(|e| CliError::Poles {
+            top: design.top.clone(),
+            reason: e.to_string(),
+        })?;
+    // A zero at the origin (a differentiator) comes out of QZ as rounding around the poles'
+    // scale.
+    let scale = (poles.finite.iter()).fold(1.0_f64, |m, p| m.max(p.norm()));
+    let finite = (found.into_iter())
+        .map(|z| {
+            if z.norm() <= 1e-9 * scale {
+                c64::new(0.0, 0.0)
+            } else {
+                z
+            }
+        })
+        .collect();
+    Ok(Zeros {
+        input: input_name,
+        output: output_name.to_ascii_lowercase(),
+        finite,
+        infinite,
+    })
+}
+
 /// The table of poles: one line per real pole or conjugate pair.
 pub fn format_poles(top: &str, unknowns: usize, finite: &[c64], infinite: usize) -> String {
     let mut out = format!(

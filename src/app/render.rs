@@ -7,7 +7,7 @@ use std::io::IsTerminal;
 
 use miette::{Diagnostic, GraphicalReportHandler, GraphicalTheme, Report};
 
-use crate::diagnostics::{Located, to_report};
+use crate::diagnostics::{Finding, Located, to_report};
 use crate::kernel::{Report as SimReport, Severity, SimError};
 use crate::source::SourceMap;
 
@@ -25,6 +25,30 @@ pub fn render(diag: &dyn Diagnostic) -> String {
     let mut out = String::new();
     // Writing into a String cannot fail.
     let _ = handler.render_report(&mut out, diag);
+    out
+}
+
+/// Renders findings, at most `max_per_file` of each file (a file that is not VHDL at all would
+/// fill the screen with syntax errors), each file's followed by how many more it has.
+pub fn render_capped(findings: &[Finding], max_per_file: usize) -> String {
+    let mut out = String::new();
+    let mut start = 0;
+    while start < findings.len() {
+        let file = &findings[start].file;
+        let count = (findings[start..].iter())
+            .take_while(|f| &f.file == file)
+            .count();
+        for f in &findings[start..start + count.min(max_per_file)] {
+            out.push_str(&render(f.report.as_ref()));
+        }
+        if count > max_per_file {
+            out.push_str(&format!(
+                "  ... and {} more in {file}\n\n",
+                count - max_per_file
+            ));
+        }
+        start += count;
+    }
     out
 }
 

@@ -1,7 +1,7 @@
 //! `vams ac`: the command line of [`crate::app::ac`]: its arguments, and the results
 //! printed.
 
-use crate::app::ac::*;
+use crate::app::ac::{format_csv, linearise, probes, respond};
 use crate::app::ac_assert::{AcAssertion, assertion_probes, check_assertions};
 use crate::app::compile::discard_at_exit;
 use crate::app::error::CliError;

@@ -1,7 +1,7 @@
 //! `vams check`: the command line of [`crate::app::check`]: its arguments, and the results
 //! printed.
 
-use crate::app::check::*;
+use crate::app::check::{Echo, diagnose};
 use crate::app::error::CliError;
 use crate::cli::notes::Printed;
 use clap::Args;

@@ -5,7 +5,7 @@ use miette::Report;
 
 use crate::app::ac::NotLinearised;
 use crate::app::compile::{self, Compiled, NotCompiled, Prepared};
-use crate::app::render::render;
+use crate::app::render::{render, render_capped};
 use crate::design::Design;
 use crate::diagnostics::Finding;
 
@@ -25,28 +25,11 @@ pub fn print_findings(findings: &[Finding]) {
 /// summary error.
 pub fn fail(not: NotCompiled) -> Report {
     if not.is_syntax() {
-        print_capped(&not.findings, SYNTAX_ERRORS_PER_FILE);
+        eprint!("{}", render_capped(&not.findings, SYNTAX_ERRORS_PER_FILE));
     } else {
         print_findings(&not.findings);
     }
     not.error
-}
-
-/// Prints at most `max_per_file` findings of each file, then how many more there are.
-pub fn print_capped(findings: &[Finding], max_per_file: usize) {
-    let mut start = 0;
-    while start < findings.len() {
-        let file = &findings[start].file;
-        let end = start
-            + (findings[start..].iter())
-                .take_while(|f| &f.file == file)
-                .count();
-        print_findings(&findings[start..end.min(start + max_per_file)]);
-        if end - start > max_per_file {
-            eprintln!("  ... and {} more in {file}\n", end - start - max_per_file);
-        }
-        start = end;
-    }
 }
 
 /// Loads, parses and analyses the sources and chooses the top, printing what fails.

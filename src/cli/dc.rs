@@ -2,7 +2,7 @@
 //! printed.
 
 use crate::app::compile::discard_at_exit;
-use crate::app::dc::*;
+use crate::app::dc::{GenericSweep, format_csv, panels, sweep_points};
 use crate::app::error::CliError;
 use crate::cli::args::DesignArgs;
 use crate::cli::args::csv_path;

@@ -1,8 +1,8 @@
 //! `vams extract`: the command line of [`crate::app::extract`]: its arguments, and the results
 //! printed.
 
-use crate::app::extract::*;
-use crate::app::fit::motor::{self};
+use crate::app::extract::{context, json, params_file, table};
+use crate::app::fit::motor;
 use crate::cli::args::PlotFormat;
 use crate::extract::synth::{self, SynthOptions};
 use crate::extract::{Columns, ExtractError, MotorParams, extract_files};

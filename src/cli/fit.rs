@@ -1,16 +1,17 @@
 //! `vams fit`: the command line of [`crate::app::fit`]: its arguments, and the results
 //! printed.
 
-use crate::app::compile::{Prepared, unknown_probe_help};
-use crate::app::fit::experiment::{Match, Measured};
-use crate::app::fit::simulate::{DesignSimulator, Setup};
-use crate::app::fit::*;
-use crate::app::render::render_located;
-use crate::capture::ReadOptions;
+use crate::app::compile::Prepared;
+use crate::app::fit::experiment::Measured;
+use crate::app::fit::problem::{
+    FitSpec, Problem, SimulationSettings, check_design, load_series, simulator,
+};
+use crate::app::fit::{FitCliError, plot, report};
 use crate::cli::args::DesignArgs;
 use crate::cli::args::PlotFormat;
 use crate::cli::compile::prepare;
-use crate::fit::{Fit, FreeParam, Series, Settings};
+use crate::cli::notes::Printed;
+use crate::fit::{Fit, Settings};
 use clap::Args;
 use miette::Report;
 use std::path::PathBuf;
@@ -93,42 +94,35 @@ pub struct FitArgs {
     pub plot_format: PlotFormat,
 }
 
+impl FitArgs {
+    /// The problem's text, as the application layer takes it.
+    fn spec(&self) -> FitSpec {
+        FitSpec {
+            measured: self.measured.clone(),
+            free: self.free.clone(),
+            free_each: self.free_each.clone(),
+            matches: self.matches.clone(),
+            drive: self.drive.clone(),
+            scale: self.scale.clone(),
+            time_col: self.time_col.clone(),
+        }
+    }
+}
+
 /// Runs `vams fit`.
 pub fn run(args: &FitArgs) -> Result<(), Report> {
     let started = Instant::now();
-    let parsed = parse(args)?;
-    let (series, driven) = load_series(&parsed, args.points as usize)?;
+    let parsed = Problem::parse(&args.spec())?;
+    let (series, driven) = load_series(&parsed, args.points as usize, &Printed)?;
     let prepared: Prepared = prepare(&args.design)?;
-    let setups: Vec<Setup> = parsed
-        .measured
-        .iter()
-        .enumerate()
-        .map(|(e, m)| {
-            let mut generics = m.generics.clone();
-            generics.extend(driven[e].iter().cloned());
-            Setup::new(
-                m.top.clone().unwrap_or_else(|| prepared.top.clone()),
-                generics,
-                e,
-                &series,
-            )
-        })
-        .collect();
-    let jobs = crate::app::parallel::threads(args.jobs);
-    let sim = DesignSimulator {
-        prepared: &prepared,
-        setups,
-        names: parsed
-            .params
-            .iter()
-            .map(|p| (p.name.clone(), p.experiment))
-            .collect(),
+    let settings = SimulationSettings {
         reltol: args.reltol,
         abstol: args.abstol,
         max_step: args.max_step,
-        jobs,
+        jobs: crate::app::parallel::threads(args.jobs),
     };
-    check_design(&sim, &parsed)?;
+    let sim = simulator(&prepared, &parsed, &series, &driven, settings);
+    check_design(&sim, &parsed, &Printed)?;
     let fit = Fit {
         simulator: &sim,
         params: &parsed.params,
@@ -180,171 +174,6 @@ pub fn run(args: &FitArgs) -> Result<(), Report> {
             reasons: report::unconverged_reasons(&fitted, &context),
         }
         .into());
-    }
-    Ok(())
-}
-
-/// The arguments checked and parsed.
-struct Parsed {
-    params: Vec<FreeParam>,
-    measured: Vec<Measured>,
-    drives: Vec<(String, String)>,
-    matches: Vec<Match>,
-    read: ReadOptions,
-}
-
-fn parse(args: &FitArgs) -> Result<Parsed, FitCliError> {
-    let measured = args
-        .measured
-        .iter()
-        .map(|m| Measured::parse(m))
-        .collect::<Result<Vec<_>, _>>()?;
-    let mut params: Vec<FreeParam> = Vec::new();
-    let each = args.free_each.iter().map(|f| (f, true));
-    for (f, each) in args.free.iter().map(|f| (f, false)).chain(each) {
-        let p = FreeParam::parse(f).map_err(|e| FitCliError::Free(e.to_string()))?;
-        if params.iter().any(|q| q.name == p.name) {
-            return Err(FitCliError::Free(format!("`{}` is given twice", p.name)));
-        }
-        if each {
-            // One copy per experiment, each set only in its own simulations.
-            params.extend((0..measured.len()).map(|e| FreeParam {
-                experiment: Some(e),
-                ..p.clone()
-            }));
-        } else {
-            params.push(p);
-        }
-    }
-    for m in &measured {
-        if let Some((name, _)) = m
-            .generics
-            .iter()
-            .find(|(g, _)| params.iter().any(|p| &p.name == g))
-        {
-            return Err(FitCliError::FreeAndFixed {
-                name: name.clone(),
-                capture: m.name(),
-            });
-        }
-    }
-    let matches = args
-        .matches
-        .iter()
-        .map(|m| experiment::parse_match(m))
-        .collect::<Result<Vec<_>, _>>()?;
-    let scales = args
-        .scale
-        .iter()
-        .map(|s| experiment::parse_scale(s))
-        .collect::<Result<Vec<_>, _>>()?;
-    let drives = args
-        .drive
-        .iter()
-        .map(|d| experiment::parse_drive(d))
-        .collect::<Result<Vec<_>, _>>()?;
-    if let Some((g, _)) = drives
-        .iter()
-        .find(|(g, _)| params.iter().any(|p| &p.name == g))
-    {
-        return Err(FitCliError::FreeAndFixed {
-            name: g.clone(),
-            capture: "--drive".into(),
-        });
-    }
-    Ok(Parsed {
-        params,
-        measured,
-        drives,
-        matches,
-        read: ReadOptions {
-            time_column: args.time_col.clone(),
-            scales,
-            ..ReadOptions::default()
-        },
-    })
-}
-
-/// The captures read, their warnings printed, their series, and per experiment the
-/// generics of its `--drive` tables.
-#[allow(clippy::type_complexity)]
-fn load_series(
-    p: &Parsed,
-    points: usize,
-) -> Result<(Vec<Series>, Vec<Vec<(String, String)>>), Report> {
-    let mut series = Vec::new();
-    let mut loaded = Vec::new();
-    let mut driven = Vec::new();
-    for (e, m) in p.measured.iter().enumerate() {
-        let l = experiment::load(m, &p.read, points)?;
-        for w in &l.capture.warnings {
-            eprintln!("{:?}", Report::new(w.clone()));
-        }
-        series.extend(experiment::series(e, m, &l, &p.matches)?);
-        driven.push(
-            (p.drives.iter())
-                .map(|d| experiment::drive_generic(&l, d))
-                .collect::<Result<Vec<_>, _>>()?,
-        );
-        loaded.push(l);
-    }
-    // Every matched column must be in some capture.
-    for mt in &p.matches {
-        if !series.iter().any(|s| {
-            s.simulated == mt.quantity && loaded[s.experiment].capture.channel(&mt.column).is_some()
-        }) {
-            let available: Vec<String> = loaded
-                .iter()
-                .flat_map(|l| l.capture.channels.iter().map(|c| c.name.clone()))
-                .collect();
-            // Suggested by the rule that finds channels (`1` is `CH1`, `ch3` is not `ch1`).
-            let help =
-                match crate::capture::closest(&mt.column, available.iter().map(String::as_str)) {
-                    Some(n) => format!("did you mean `{n}`?"),
-                    None => format!("the captures' columns are {}", available.join(", ")),
-                };
-            return Err(FitCliError::NoColumn {
-                quantity: mt.quantity.clone(),
-                column: mt.column.clone(),
-                help,
-            }
-            .into());
-        }
-    }
-    Ok((series, driven))
-}
-
-/// Elaborates each experiment at the guesses: a generic the design lacks or a matched quantity
-/// it does not have is reported here, at its source, not as a failure of every simulation.
-fn check_design(sim: &DesignSimulator, p: &Parsed) -> Result<(), Report> {
-    let guesses: Vec<f64> = p.params.iter().map(|q| q.guess).collect();
-    for (e, setup) in sim.setups.iter().enumerate() {
-        let design = match sim
-            .prepared
-            .try_elaborate_top(&setup.top, &sim.generics(e, &guesses))
-        {
-            Ok(d) => d,
-            Err(errors) => {
-                for err in &errors {
-                    eprint!("{}", render_located(err, &sim.prepared.loaded.sources));
-                }
-                return Err(crate::app::error::CliError::Elaboration {
-                    count: errors.len(),
-                }
-                .into());
-            }
-        };
-        for probe in &setup.probes {
-            let Some(help) = unknown_probe_help(&design, probe) else {
-                continue;
-            };
-            return Err(FitCliError::NoQuantity {
-                top: setup.top.clone(),
-                name: probe.clone(),
-                help,
-            }
-            .into());
-        }
     }
     Ok(())
 }

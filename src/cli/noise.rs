@@ -4,7 +4,7 @@
 use crate::app::ac::probes;
 use crate::app::compile::discard_at_exit;
 use crate::app::error::CliError;
-use crate::app::noise::*;
+use crate::app::noise::{analyse, format_csv, format_summary, input_source};
 use crate::cli::args::{DesignArgs, FrequencyArgs, csv_path, plot_path};
 use crate::cli::compile::{compile, not_linearised};
 use crate::cli::output::write_text;

@@ -1,15 +1,12 @@
 //! `vams poles`: the command line of [`crate::app::poles`]: its arguments, and the results
 //! printed.
 
-use crate::app::ac::{Linearised, linearise, probes};
+use crate::app::ac::linearise;
 use crate::app::compile::discard_at_exit;
-use crate::app::error::CliError;
-use crate::app::poles::*;
+use crate::app::poles::{format_poles, format_zeros, poles_of, zeros_of};
 use crate::cli::args::DesignArgs;
 use crate::cli::compile::{compile, not_linearised};
-use crate::solver::poles::{poles, zeros};
 use clap::Args;
-use faer::c64;
 use miette::Report;
 
 #[derive(Debug, Args)]
@@ -38,66 +35,16 @@ pub fn run(args: &PolesArgs) -> Result<(), Report> {
     let compiled = compile(&args.design)?;
     let design = &compiled.design;
     let linearised = linearise(design, &compiled.loaded.sources).map_err(not_linearised)?;
-    let model = &linearised.model;
-    let (finite, infinite) = poles(&model.system).map_err(|e| CliError::Poles {
-        top: design.top.clone(),
-        reason: e.to_string(),
-    })?;
+    let poles = poles_of(design, &linearised)?;
     print!(
         "{}",
-        format_poles(&design.top, model.system.n, &finite, infinite)
+        format_poles(&design.top, poles.unknowns, &poles.finite, poles.infinite)
     );
     if let (Some(input), Some(output)) = (&args.input, &args.output) {
-        let (input_name, output_name) = (input.trim().to_ascii_lowercase(), output.trim());
-        let source = (design.spectral_sources.iter())
-            .position(|s| design.quantities[s.quantity.index()].name == input_name);
-        let injection = source.and_then(|k| model.spectral_injection(k));
-        let Some(injection) = injection else {
-            let names: Vec<&str> = (design.spectral_sources.iter())
-                .map(|s| design.quantities[s.quantity.index()].name.as_str())
-                .collect();
-            return Err(CliError::ZerosInput {
-                name: input.clone(),
-                sources: if names.is_empty() {
-                    "none: declare one, e.g. `quantity ac_in : real spectrum 1.0, 0.0;`".into()
-                } else {
-                    names.join(", ")
-                },
-            }
-            .into());
-        };
-        let probe = probes(design, &[output_name.to_string()])?;
-        let Linearised {
-            system, x, xdot, ..
-        } = &linearised;
-        let terms = (probe.first())
-            .and_then(|&q| system.linear_output(q, x, xdot))
-            .unwrap_or_default();
-        let (zeros, at_infinity) =
-            zeros(&linearised.model.system, injection, &terms).map_err(|e| CliError::Poles {
-                top: design.top.clone(),
-                reason: e.to_string(),
-            })?;
-        // A zero at the origin (a differentiator) comes out of QZ as rounding around the
-        // poles' scale.
-        let scale = finite.iter().fold(1.0_f64, |m, p| m.max(p.norm()));
-        let zeros: Vec<c64> = (zeros.into_iter())
-            .map(|z| {
-                if z.norm() <= 1e-9 * scale {
-                    c64::new(0.0, 0.0)
-                } else {
-                    z
-                }
-            })
-            .collect();
+        let zeros = zeros_of(design, &linearised, &poles, input, output)?;
         print!(
             "{}",
-            format_zeros(
-                &input_name,
-                &output_name.to_ascii_lowercase(),
-                &zeros,
-                at_infinity
-            )
+            format_zeros(&zeros.input, &zeros.output, &zeros.finite, zeros.infinite)
         );
     }
     discard_at_exit((compiled, linearised));

@@ -4,7 +4,7 @@
 use crate::app::compile::discard_at_exit;
 use crate::app::error::CliError;
 use crate::app::render::{format_report, render_sim_error};
-use crate::app::run::*;
+use crate::app::run::{probe_list, stats_table, summary};
 use crate::app::stop::{declaring_file, panel_comments, stop_time};
 use crate::app::time::{format_time, parse_positive_time};
 use crate::cli::args::DesignArgs;

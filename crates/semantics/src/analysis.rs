@@ -30,6 +30,7 @@ mod declare;
 mod error;
 mod expr;
 mod host;
+mod ids;
 mod operators;
 mod scope;
 mod statics;

@@ -16,6 +16,7 @@ use vams_design::{Design, Expr, Instr, QuantityId, SignalId, SignalKind};
 use vams_solver::{DaeSystem, OpOptions, SolveError};
 
 mod build;
+mod compile;
 mod delay;
 mod deriv;
 mod error;
@@ -466,344 +467,78 @@ impl AnalogSystem {
         design: &Design,
         options: &AnalogOptions,
     ) -> Result<AnalogSystem, Vec<AnalogError>> {
-        // Structural analysis on the system as written, so diagnostics name the model's own
-        // equations and quantities. A lone across quantity that an equation sets gets an
-        // implicit through quantity, one at a time (each changes the matching).
-        let mut implicit_flows = Vec::new();
-        let asm = loop {
-            let asm = build::assemble(design, &implicit_flows)?;
-            let inc = incidence(&asm);
-            let names = structure::Names {
-                design,
-                unknowns: &asm.unknowns,
-                origins: &asm.origins,
-            };
-            match structure::implicit_flow(&inc, &names) {
-                Some(q) => implicit_flows.push(q),
-                None => {
-                    structure::check(&inc, &names)?;
-                    break asm;
-                }
-            }
-        };
-        let (asm, reduction) = reduce_index(design, asm, options)?;
-        let n = asm.unknowns.len();
-
-        let mut reads = vec![false; design.signals.len()];
-        for r in &asm.residuals {
-            r.visit(&mut |e| {
-                // Slots past the design's signals are the scale and the delay histories.
-                if let Sym::Signal(s) = e
-                    && let Some(flag) = reads.get_mut(*s)
-                {
-                    *flag = true;
-                }
-            });
-        }
-
-        // Source scaling before elimination, so that a source's value keeps its scale factor
-        // wherever substitution carries it.
-        let scale = design.signals.len();
-        let scaled: Vec<Sym> = asm
-            .residuals
-            .into_iter()
-            .zip(&asm.origins)
-            .map(|(r, origin)| match origin {
-                Origin::User(_) => scale_sources(r, scale),
-                _ => r,
-            })
-            .collect();
-        let protected = if options.eliminate {
-            let mut protected = protected_unknowns(design, &asm.quantity_slot, n);
-            for r in &scaled {
-                reduce::mark_nonlinear(r, &mut protected);
-            }
-            protected
-        } else {
-            vec![true; n]
-        };
-        let potential: Vec<bool> = asm
-            .unknowns
-            .iter()
-            .map(|u| matches!(u, Unknown::Potential(_)))
-            .collect();
-        // Unknowns outside every tolerance group are judged on the voltage scale.
-        let full_abstol = tolerance::per_unknown(design, &asm.unknowns);
-        let pivot_scale: Vec<f64> = full_abstol.iter().map(|a| a.unwrap_or(1e-6)).collect();
-        let row_abstol: Vec<Option<f64>> = asm
-            .origins
-            .iter()
-            .map(|origin| match origin {
-                Origin::Conservation(t) => tolerance::through_abstol(design, *t),
-                _ => None,
-            })
-            .collect();
-        let mut elim = reduce::eliminate(
-            scaled,
-            &reduce::Candidates {
-                protected: &protected,
-                potential: &potential,
-                abstol: &pivot_scale,
-                row_abstol: &row_abstol,
-            },
-        );
-
-        // Survivors, renumbered in their original order.
-        let mut live = vec![usize::MAX; n];
-        let mut names = Vec::new();
-        let mut unknowns = Vec::new();
-        let all_unknowns = asm.unknowns.clone();
-        let mut all_names = Unknown::names(&all_unknowns, design);
-        for (j, unknown) in asm.unknowns.into_iter().enumerate() {
-            if elim.replacement[j].is_none() {
-                live[j] = unknowns.len();
-                names.push(std::mem::take(&mut all_names[j]));
-                unknowns.push(unknown);
-            }
-        }
-        let n = unknowns.len();
-        let mut reduction = reduction;
-        if let Some(r) = &mut reduction {
-            r.base_slot = (live[..r.base_unknowns].iter())
-                .map(|&k| (k != usize::MAX).then_some(k))
-                .collect();
-        }
-        let kept_rows: Vec<usize> = elim.kept.iter().map(|(row, _)| *row).collect();
-        let residuals: Vec<Sym> = std::mem::take(&mut elim.kept)
-            .into_iter()
-            .map(|(_, mut r)| {
-                reduce::renumber_in_place(&mut r, &|k| live[k]);
-                r
-            })
-            .collect();
-        let n_eq = residuals.len();
+        let (asm, implicit_flows) = compile::assemble_checked(design)?;
+        let (mut asm, mut reduction) = reduce_index(design, asm, options)?;
+        let reads = compile::signals_read(design, &asm.residuals);
+        let abstol = tolerance::per_unknown(design, &asm.unknowns);
+        let residuals = std::mem::take(&mut asm.residuals);
+        let mut elim = compile::scale_and_eliminate(design, residuals, &asm, &abstol, options);
+        let all_unknowns = std::mem::take(&mut asm.unknowns);
+        let survivors = compile::survivors(design, all_unknowns.clone(), &elim, &mut reduction);
+        let live = &survivors.live;
+        let n = survivors.unknowns.len();
+        let (kept_rows, residuals) = compile::kept_equations(&mut elim, live);
         let Derivatives {
             mut pattern,
             differential,
             exprs: jac_exprs,
         } = derivatives(&residuals, n);
-
-        // Solver row j is the equation matched to unknown j: the diagonal is then a structural
-        // nonzero (gmin stamps a real entry), and the sparse LU's fill-reducing order sees no
-        // spurious couplings between an unrelated equation and unknown that happen to share an
-        // index (on an RC ladder those made the fill grow with the square of the size).
-        let inc = structure::Incidence::new(n_eq, n, &pattern);
-        let index1_pattern: Vec<(usize, usize)> = pattern
-            .iter()
-            .zip(&jac_exprs)
-            .filter(|&(&(_, c), (dx, ddot))| {
-                if differential[c] {
-                    ddot.is_some()
-                } else {
-                    dx.is_some()
-                }
-            })
-            .map(|(&entry, _)| entry)
-            .collect();
-        let mut error_exempt = structure::higher_index_algebraic(
-            &structure::Incidence::new(n_eq, n, &index1_pattern),
+        let rows = compile::row_order(
+            &mut pattern,
+            &jac_exprs,
             &differential,
+            &survivors.unknowns,
+            &kept_rows,
         );
-        // A derivative made an unknown follows its state's accuracy (a constraint's
-        // derivative gives it); its own scale is not known to judge it on.
-        for (exempt, unknown) in error_exempt.iter_mut().zip(&unknowns) {
-            *exempt |= matches!(unknown, Unknown::Derivative { .. });
-        }
-        let matching = structure::maximum_matching(&inc);
-        let order: Vec<usize> = match matching.col_match.iter().copied().collect() {
-            Some(rows) if n == n_eq => rows,
-            // The full system passed `check`; keep this order if elimination lost the
-            // structure (the factorisation then reports the singular row).
-            _ => (0..n_eq).collect(),
-        };
-        let mut solver_row = vec![0; n_eq];
-        for (new, &old) in order.iter().enumerate() {
-            solver_row[old] = new;
-        }
-        for entry in &mut pattern {
-            entry.0 = solver_row[entry.0];
-        }
-        let row_source: Vec<usize> = order.iter().map(|&k| kept_rows[k]).collect();
-        // For the small-signal model: how each row depends on the signals of `'zoh` and
-        // `'ztf` (a transfer from their inputs in the frequency domain).
-        let mut signal_partials = Vec::new();
-        for sampled in &design.sampled {
-            let slot = sampled.signal.index();
-            for (row, &k) in order.iter().enumerate() {
-                if residuals[k].any(|e| matches!(e, Sym::Signal(s) if *s == slot)) {
-                    let d = derivative(&residuals[k], Var::Signal(slot));
-                    signal_partials.push((row, sampled.signal, d));
-                }
-            }
-        }
-
-        let mut nb = TapeBuilder::default();
-        for &k in &order {
-            nb.push(&residuals[k]);
-        }
-        // Each row's terms, in the residual section: they are the row's own subexpressions
-        // (hash-consed onto its instructions), so they cost outputs, not work.
-        let mut terms = Vec::new();
-        let mut term_start = Vec::with_capacity(order.len() + 1);
-        let mut row_terms = Vec::new();
-        for &k in &order {
-            term_start.push(terms.len());
-            row_terms.clear();
-            residuals[k].terms(&mut row_terms);
-            for term in &row_terms {
-                terms.push(nb.push(term));
-            }
-        }
-        term_start.push(terms.len());
-        let residual_section = nb.end_section();
-        debug_assert_eq!(residual_section, RESIDUALS);
-        let linear = residuals.iter().all(Sym::is_affine);
-        let mut eb = TapeBuilder::default();
-        let mut table_times = Vec::new();
-        for r in &residuals {
-            r.visit(&mut |e| match e {
-                Sym::Un(sym::Un::Exp, a) => {
-                    eb.push(a);
-                }
-                Sym::Table(f, a) if !f.slope && **a == Sym::Now => {
-                    table_times.extend_from_slice(f.table.xs());
-                }
-                _ => {}
-            });
-        }
-        table_times.sort_by(f64::total_cmp);
-        table_times.dedup();
-        let exp_tape = eb.finish();
-        drop(residuals);
-        let mut jac_dx = Vec::with_capacity(pattern.len());
-        let mut jac_ddot = Vec::with_capacity(pattern.len());
-        for (dx, ddot) in &jac_exprs {
-            jac_dx.push(dx.as_ref().map(|d| nb.push(d)));
-            jac_ddot.push(ddot.as_ref().map(|d| nb.push(d)));
-        }
-        drop(jac_exprs);
-
+        let signal_partials = compile::signal_partials(design, &rows.order, &residuals);
+        let tapes = compile::tapes(&rows.order, residuals, jac_exprs);
         // Eliminated quantities are evaluated from the survivors for output and processes.
-        let quantity_slot: Vec<Option<usize>> = asm
-            .quantity_slot
-            .iter()
+        let quantity_slot: Vec<Option<usize>> = (asm.quantity_slot.iter())
             .map(|&j| (live[j] != usize::MAX).then_some(live[j]))
             .collect();
-        let slot_of = |q: usize| asm.quantity_slot[q];
-        let mut above = Vec::new();
-        let mut roots = TapeBuilder::default();
-        let mut errors = Vec::new();
-        for (i, s) in design.signals.iter().enumerate() {
-            if let SignalKind::Above { quantity, level } = &s.kind {
-                match (lower(quantity, &slot_of), lower(level, &slot_of)) {
-                    (Ok(q), Ok(l)) => {
-                        let mut root = elim.apply(&Sym::sub(q, l));
-                        reduce::renumber_in_place(&mut root, &|k| live[k]);
-                        roots.push(&root);
-                        above.push(SignalId(i as u32));
-                    }
-                    (Err(e), _) | (_, Err(e)) => errors.push(AnalogError::NotAnalog {
-                        span: s.span,
-                        what: e.0.to_string(),
-                    }),
-                }
-            }
-        }
-        if !errors.is_empty() {
-            return Err(errors);
-        }
-
-        let signals = initial_signals(design);
+        let (above, roots_tape) = compile::above_roots(design, &asm.quantity_slot, &elim, live)?;
         // Delay inputs are protected, so they survive elimination.
-        let delay_lines = design
-            .delays
-            .iter()
+        let delay_lines = (design.delays.iter())
             .map(|d| delay::DelayLine::new(live[asm.quantity_slot[d.input.index()]], d.delay))
             .collect();
-        // An unknown that is a scaled alias of an eliminated quantity (`y = c * x`) inherits
-        // that quantity's absolute tolerance divided by `|c|`, so the error control stays as
-        // strict as it was on the quantity (a transfer function's internal state is often
-        // scaled far below its output).
-        let mut group_abstol: Vec<Option<f64>> = (0..all_unknowns.len())
-            .filter(|&j| live[j] != usize::MAX)
-            .map(|j| full_abstol[j])
-            .collect();
-        let mut alias_scale = vec![0.0_f64; n];
-        for (j, r) in elim.replacement.iter().enumerate() {
-            let Some(terms) = r.as_ref().and_then(reduce::affine) else {
-                continue;
-            };
-            let [(k, c)] = terms[..] else { continue };
-            let (k, c) = (live[k], c.abs());
-            if !(c.is_finite() && c > 0.0) {
-                continue;
-            }
-            match full_abstol[j] {
-                Some(a) => {
-                    let scaled = a / c;
-                    group_abstol[k] = Some(group_abstol[k].map_or(scaled, |own| own.min(scaled)));
-                }
-                None => alias_scale[k] = alias_scale[k].max(c),
-            }
-        }
-        let solved_from = elim.solved_from;
-        let eliminated: Vec<Eliminated> = elim
-            .replacement
-            .into_iter()
-            .enumerate()
-            .filter_map(|(j, r)| {
-                let mut replacement = r?;
-                reduce::renumber_in_place(&mut replacement, &|k| live[k]);
-                Some(Eliminated {
-                    unknown: j,
-                    quantity: match all_unknowns[j] {
-                        Unknown::Quantity(q) => Some(q),
-                        Unknown::Potential(_) | Unknown::Flow(_) | Unknown::Derivative { .. } => {
-                            None
-                        }
-                    },
-                    solved_from: solved_from[j].unwrap_or(usize::MAX),
-                    replacement,
-                })
-            })
-            .collect();
-        let system = AnalogSystem {
-            names,
-            unknowns,
+        let (group_abstol, alias_scale) = compile::survivor_tolerances(&elim, live, &abstol, n);
+        let eliminated = compile::eliminated(elim, live, &all_unknowns);
+        Ok(AnalogSystem {
+            names: survivors.names,
+            unknowns: survivors.unknowns,
             origins: asm.origins,
-            row_source,
+            row_source: rows.row_source,
             quantity_slot,
             fill: None,
             eliminated,
             differential,
-            error_exempt,
+            error_exempt: rows.error_exempt,
             pattern,
-            newton_tape: nb.finish(),
-            terms,
-            term_start,
-            jac_dx,
-            jac_ddot,
+            newton_tape: tapes.newton,
+            terms: tapes.terms,
+            term_start: tapes.term_start,
+            jac_dx: tapes.jac_dx,
+            jac_ddot: tapes.jac_ddot,
             outputs_tape: Tape::default(),
-            exp_before: vec![0.0; exp_tape.len()],
-            exp_tape,
+            exp_before: vec![0.0; tapes.exp.len()],
+            exp_tape: tapes.exp,
             x_trial: vec![0.0; n],
-            signals,
+            signals: initial_signals(design),
             reads,
             above,
-            roots_tape: roots.finish(),
+            roots_tape,
             group_abstol,
             alias_scale,
             delay_lines,
             design_signals: design.signals.len(),
-            linear,
+            linear: tapes.linear,
             implicit_flows,
             index_reduced: reduction,
             signal_partials,
             options: options.clone(),
             wanted: None,
-            table_times,
-        };
-        Ok(system)
+            table_times: tapes.table_times,
+        })
     }
 
     /// Chooses the quantities [`AnalogSystem::quantity_values`] fills (by `QuantityId`; all by

@@ -8,17 +8,12 @@ use vams_syntax::ast::{
 use vams_syntax::ast::{Designator, Expr, ExprKind, Ident};
 
 use super::AnalysisError;
-use super::scope::{DeclId, DeclKind, Nature, NatureId, Param, Purity, Signature, Staticness};
+use super::scope::{
+    DeclId, DeclKind, InterfaceRole, Nature, NatureId, Param, Purity, Signature, Staticness,
+    same_profile,
+};
 use super::types::{TypeId, TypeKind, UNKNOWN};
 use super::units::Analyzer;
-
-/// What an interface list declares.
-#[derive(Clone, Copy, PartialEq)]
-pub enum InterfaceRole {
-    Generic,
-    Port,
-    Parameter,
-}
 
 impl Analyzer<'_> {
     pub fn decls(&mut self, decls: &[Decl]) {
@@ -976,13 +971,6 @@ impl Analyzer<'_> {
                 .values()
                 .any(|ds| ds.contains(&d))
     }
-}
-
-/// Two signatures that declare the same subprogram (homographs).
-pub(super) fn same_profile(a: &Signature, b: &Signature) -> bool {
-    a.result == b.result
-        && a.params.len() == b.params.len()
-        && a.params.iter().zip(&b.params).all(|(x, y)| x.ty == y.ty)
 }
 
 /// The interface declaration of each parameter name, in order.

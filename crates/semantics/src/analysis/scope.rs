@@ -8,17 +8,7 @@ use vams_syntax::source::Span;
 
 use super::types::TypeId;
 
-/// Index of a declaration in [`Analysis::decls`](super::Analysis).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub struct DeclId(pub u32);
-
-/// Index of a declarative region.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct RegionId(pub u32);
-
-/// Index of a nature.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct NatureId(pub u32);
+pub use super::ids::{DeclId, NatureId, RegionId};
 
 /// A nature's across and through types (unknown for composite natures).
 #[derive(Clone, Debug, PartialEq)]
@@ -132,4 +122,19 @@ impl Region {
             .or_default()
             .insert(0, id);
     }
+}
+
+/// What an interface list declares.
+#[derive(Clone, Copy, PartialEq)]
+pub enum InterfaceRole {
+    Generic,
+    Port,
+    Parameter,
+}
+
+/// Two signatures that declare the same subprogram (homographs).
+pub(super) fn same_profile(a: &Signature, b: &Signature) -> bool {
+    a.result == b.result
+        && a.params.len() == b.params.len()
+        && a.params.iter().zip(&b.params).all(|(x, y)| x.ty == y.ty)
 }

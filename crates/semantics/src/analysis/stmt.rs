@@ -361,8 +361,8 @@ impl Analyzer<'_> {
                             },
                         );
                     }
-                    a.interfaces(&header.generics, super::declare::InterfaceRole::Generic);
-                    a.interfaces(&header.ports, super::declare::InterfaceRole::Port);
+                    a.interfaces(&header.generics, super::scope::InterfaceRole::Generic);
+                    a.interfaces(&header.ports, super::scope::InterfaceRole::Port);
                     a.decls(decls);
                     a.conc_stmts(stmts);
                 });

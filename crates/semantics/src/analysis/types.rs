@@ -46,7 +46,7 @@ pub enum TypeKind {
     Access(TypeId),
     File(TypeId),
     /// A protected type: its methods are declared in the region.
-    Protected(super::scope::RegionId),
+    Protected(super::ids::RegionId),
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -435,8 +435,8 @@ impl<'a> Analyzer<'a> {
                 // it, behind what the context clauses import.
                 let d = self.declare_unit(u, &e.name, DeclKind::Entity(own));
                 self.out.regions[uses.0 as usize].add_behind(&e.name.name, d);
-                self.interfaces(&e.generics, super::declare::InterfaceRole::Generic);
-                self.interfaces(&e.ports, super::declare::InterfaceRole::Port);
+                self.interfaces(&e.generics, super::scope::InterfaceRole::Generic);
+                self.interfaces(&e.ports, super::scope::InterfaceRole::Port);
                 self.decls(&e.decls);
                 self.conc_stmts(&e.stmts);
             }
@@ -969,7 +969,7 @@ impl<'a> Analyzer<'a> {
             return false;
         };
         inner.iter().any(|&i| {
-            matches!(&self.out.decl(i).kind, DeclKind::Subprogram(s) if super::declare::same_profile(s, sig))
+            matches!(&self.out.decl(i).kind, DeclKind::Subprogram(s) if super::scope::same_profile(s, sig))
         })
     }
 
