@@ -16,6 +16,7 @@ pub mod error;
 pub mod extract;
 pub mod fit;
 pub mod load;
+pub mod netlist;
 pub mod noise;
 pub mod notes;
 pub mod op;

@@ -13,7 +13,7 @@
 //! instantiates them. A diagnostic that several tops share is printed once.
 
 use std::collections::HashSet;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use crate::analog::AnalogSystem;
 use crate::analysis::{Analysis, analyse};
@@ -25,6 +25,7 @@ use crate::elaborate::{
 use crate::source::{FileId, Span};
 
 use super::load::{InputError, LibrarySources, Loaded, load_with_libraries};
+use super::netlist::{compile_netlist, single_deck};
 use super::notes::Notes;
 use super::render::{render, render_capped};
 
@@ -133,6 +134,9 @@ pub fn diagnose(
     libraries: &[LibrarySources],
     echo: Option<Echo<'_>>,
 ) -> Result<Checked, InputError> {
+    if let Some(deck) = single_deck(paths)? {
+        return Ok(check_netlist(deck, echo));
+    }
     let loaded = load_with_libraries(paths, libraries)?;
     let syntax: Vec<Finding> = (loaded.syntax_errors.iter())
         .flat_map(|(_, errors)| errors.iter())
@@ -264,6 +268,47 @@ fn check_elaborated(
             tally.keep(&system.warnings(&design), loaded, Level::Warning);
         }
         Err(errors) => tally.analog += tally.keep(&errors, loaded, Level::Error),
+    }
+}
+
+/// `vams check deck.cir`: the deck read, flattened and lowered, and its analog system built
+/// (a node with no DC path to ground, a loop of voltage sources).
+fn check_netlist(deck: &Path, echo: Option<Echo<'_>>) -> Checked {
+    let name = deck.display().to_string();
+    let findings = match compile_netlist(deck) {
+        Ok((compiled, _)) => {
+            let mut found = compiled.warnings;
+            match AnalogSystem::new(&compiled.design) {
+                Ok(system) => found.extend(
+                    (system.warnings(&compiled.design).iter())
+                        .map(|w| Finding::located(w, &compiled.loaded.sources, Level::Warning)),
+                ),
+                Err(errors) => found.extend(
+                    (errors.iter())
+                        .map(|e| Finding::located(e, &compiled.loaded.sources, Level::Error)),
+                ),
+            }
+            found
+        }
+        // A deck that cannot be read has no located diagnostic: its error is the finding.
+        Err(not) if not.findings.is_empty() => vec![Finding::unlocated(not.error, Level::Error)],
+        Err(not) => not.findings,
+    };
+    if let Some(echo) = echo {
+        echo.notes.note(&render_capped(&findings, echo.max));
+    }
+    let errors = (findings.iter())
+        .filter(|f| f.level == Level::Error)
+        .count();
+    let summary = match errors {
+        0 => format!("checked the SPICE deck {name}: no errors"),
+        n => format!("checked the SPICE deck {name}: {n} error(s)"),
+    };
+    Checked {
+        findings,
+        notes: Vec::new(),
+        summary,
+        errors,
     }
 }
 

@@ -15,6 +15,7 @@ use crate::source::SourceMap;
 
 use super::error::CliError;
 use super::load::{LibrarySources, Loaded, load_with_libraries};
+use super::netlist::{NetlistRun, compile_netlist, single_deck};
 use super::params::{merge_generics, read_params};
 
 /// Sources, top entity and generic overrides: what every command elaborates.
@@ -38,6 +39,8 @@ pub struct Compiled {
     pub design: Design,
     /// The elaboration's warnings (the design is usable).
     pub warnings: Vec<Finding>,
+    /// What a SPICE deck asks of a run (`None` for VHDL-AMS sources).
+    pub netlist: Option<NetlistRun>,
 }
 
 /// Why sources did not give a design: the diagnostics of the stage that failed, and the
@@ -229,7 +232,11 @@ pub fn unknown_name_help<'a>(
 
 /// Loads, parses, analyses and elaborates: the design and its elaboration warnings, or why
 /// there is none.
+/// A single SPICE deck among the paths is read by the SPICE frontend ([`super::netlist`]).
 pub fn compile(options: &DesignOptions) -> Result<Compiled, NotCompiled> {
+    if let Some(deck) = single_deck(&options.paths).map_err(NotCompiled::bare)? {
+        return compile_netlist(deck).map(|(compiled, _)| compiled);
+    }
     finish(prepare(options)?)
 }
 
@@ -250,6 +257,7 @@ fn finish(prepared: Prepared) -> Result<Compiled, NotCompiled> {
         loaded: prepared.loaded,
         design,
         warnings,
+        netlist: None,
     })
 }
 

@@ -69,6 +69,22 @@ pub enum CliError {
     #[diagnostic(code(vams::cli::interrupted))]
     Interrupted { top: String },
 
+    /// A SPICE deck with errors (each printed above).
+    #[error("{count} error(s) in the SPICE deck `{path}`")]
+    #[diagnostic(
+        code(vams::cli::netlist),
+        help("see the errors above: each names the line and how to fix it")
+    )]
+    Netlist { path: String, count: usize },
+
+    /// A SPICE deck without `.tran` run without `--stop`.
+    #[error("the SPICE deck `{top}` has no .tran")]
+    #[diagnostic(
+        code(vams::cli::no_tran),
+        help("add `.tran TSTEP TSTOP` to the deck, or pass --stop TIME")
+    )]
+    NoTran { top: String },
+
     /// Neither `--stop` nor a stop comment.
     #[error("no stop time for `{top}`")]
     #[diagnostic(

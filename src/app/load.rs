@@ -31,6 +31,14 @@ pub enum InputError {
         help("vams reads files ending in .vhd, .vhdl or .ams")
     )]
     NoSources { path: String },
+    #[error("the SPICE deck `{path}` comes with other sources")]
+    #[diagnostic(
+        code(vams::input::netlist_with_sources),
+        help(
+            "run a deck on its own (`vams run deck.cir`); SPICE subcircuits inside a VHDL-AMS design are not supported yet"
+        )
+    )]
+    NetlistWithSources { path: String },
 }
 
 /// A loaded and parsed compilation.
@@ -96,7 +104,7 @@ pub fn source_files(path: &Path) -> Result<Vec<PathBuf>, InputError> {
 }
 
 /// Reads a file as text; non-UTF-8 input is read as ISO 8859-1, VHDL's own character set.
-fn read_text(file: &Path) -> Result<String, InputError> {
+pub(crate) fn read_text(file: &Path) -> Result<String, InputError> {
     let bytes = std::fs::read(file).map_err(|e| InputError::Unreadable {
         path: file.display().to_string(),
         reason: e.to_string(),

@@ -32,7 +32,7 @@ pub struct RunArgs {
     #[command(flatten)]
     pub design: DesignArgs,
     /// Simulated time to stop at; default: the comment `-- vams: stop TIME` in the file that
-    /// declares the top entity.
+    /// declares the top entity (a SPICE deck's: its `.tran` TSTOP).
     #[arg(long, value_name = "TIME", value_parser = parse_positive_time)]
     pub stop: Option<f64>,
     /// Write the waveforms to FILE, by extension: .csv (time and one column per probe) or .vcd
@@ -43,18 +43,20 @@ pub struct RunArgs {
     #[arg(long, value_name = "FILE", value_parser = plot_path)]
     pub plot: Option<PathBuf>,
     /// Relative tolerance of the analog solver: the run's error, not each step's, stays
-    /// within a few times this fraction of each quantity's size.
-    #[arg(long, value_name = "X", default_value_t = 1e-3, value_parser = positive_number)]
-    pub reltol: f64,
+    /// within a few times this fraction of each quantity's size [default: 1e-3, or a SPICE
+    /// deck's `.options reltol`].
+    #[arg(long, value_name = "X", value_parser = positive_number)]
+    pub reltol: Option<f64>,
     /// A relative tolerance by name, instead of --reltol: draft (1e-2), default (1e-3) or
     /// fine (1e-6). On a mass-spring-damper over six periods the largest error is 1.9 %,
     /// 0.39 % and 6.9e-6 of the final displacement, with 126, 174 and 503 steps.
     #[arg(long, value_enum, conflicts_with = "reltol")]
     pub accuracy: Option<Accuracy>,
-    /// Absolute tolerance for every unknown (default: per tolerance group).
+    /// Absolute tolerance for every unknown (default: per tolerance group, or a SPICE deck's
+    /// `.options abstol` for its currents).
     #[arg(long, value_name = "X", value_parser = positive_number)]
     pub abstol: Option<f64>,
-    /// Largest analog time step.
+    /// Largest analog time step (default: a SPICE deck's `.tran` TMAX).
     #[arg(long, value_name = "TIME", value_parser = parse_positive_time)]
     pub max_step: Option<f64>,
     /// Highest order of the variable-order BDF integrator, 1 (backward Euler: first order,
@@ -65,8 +67,9 @@ pub struct RunArgs {
     /// explicitly (slower; to compare, or to debug a model).
     #[arg(long)]
     pub keep_unknowns: bool,
-    /// Record this quantity or signal (hierarchical name, e.g. dut.u_motor.i); repeatable.
-    /// Default: every quantity and explicit signal.
+    /// Record this quantity or signal (hierarchical name, e.g. dut.u_motor.i; in a SPICE
+    /// deck ngspice's vectors, v(2), i(vcc)); repeatable. Default: every quantity and
+    /// explicit signal (a deck's `.print` vectors).
     #[arg(long, value_name = "NAME")]
     pub probe: Vec<String>,
     /// Draw these names together in one plot panel (comma separated, repeatable, e.g.
@@ -98,16 +101,34 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
     let started = Instant::now();
     let compiled = compile(&args.design)?;
     let (loaded, design) = (&compiled.loaded, &compiled.design);
-    let stop = stop_time(loaded, &design.top, args.stop).map_err(fail)?;
+    let netlist = compiled.netlist.as_ref();
+    let stop = match (args.stop, netlist) {
+        (None, Some(deck)) => match &deck.transient {
+            Some(tran) => tran.tstop,
+            None => {
+                let top = design.top.clone();
+                return Err(CliError::NoTran { top }.into());
+            }
+        },
+        (given, _) => stop_time(loaded, &design.top, given).map_err(fail)?,
+    };
     let panels = panel_groups(&args.panel);
+    // A deck's `.print` vectors are its columns unless --probe names others.
+    let probes = match netlist {
+        Some(deck) if args.probe.is_empty() => probe_list(&deck.outputs, &panels),
+        _ => probe_list(&args.probe, &panels),
+    };
+    let reltol = (args.accuracy.map(Accuracy::reltol).or(args.reltol))
+        .or(netlist.and_then(|d| d.reltol))
+        .unwrap_or(DEFAULT_RELTOL);
     let bar = ProgressBar::for_stderr(stop);
     let options = SimOptions {
         stop,
-        reltol: args.accuracy.map_or(args.reltol, Accuracy::reltol),
-        abstol: args.abstol,
-        max_step: args.max_step,
+        reltol,
+        abstol: args.abstol.or(netlist.and_then(|d| d.abstol)),
+        max_step: (args.max_step).or(netlist.and_then(|d| d.transient.as_ref()?.tmax)),
         max_order: usize::from(args.max_order),
-        probes: probe_list(&args.probe, &panels),
+        probes,
         progress: bar.as_ref().map(ProgressBar::hook),
         keep_unknowns: args.keep_unknowns,
         cancel: Some(crate::cli::interrupt::cancel_on_ctrl_c()),
@@ -225,6 +246,9 @@ pub fn run(args: &RunArgs) -> Result<(), Report> {
     }
     Ok(())
 }
+
+/// `--reltol` when neither it, `--accuracy` nor a deck's `.options` sets it.
+const DEFAULT_RELTOL: f64 = 1e-3;
 
 /// `--accuracy`: relative tolerances by name.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]

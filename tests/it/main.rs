@@ -32,6 +32,7 @@ mod run;
 mod simulate;
 #[cfg(unix)]
 mod slurm;
+mod spice;
 mod stream;
 mod support;
 mod sweep;

@@ -459,6 +459,18 @@ pub enum SpiceError {
         help: &'static str,
     },
 
+    /// `q1 c b e npn1` when lowering to a design (an element kind, model parameter, option
+    /// or card the lowering does not handle yet)
+    #[error("{what} is not supported yet")]
+    #[diagnostic(code(vams::spice::not_supported), help("{help}"))]
+    NotSupported {
+        #[label("{label}")]
+        span: Span,
+        what: String,
+        label: String,
+        help: String,
+    },
+
     /// Subcircuits nested (instantiated within one another) deeper than the limit
     #[error("subcircuit instances nested more than {limit} deep")]
     #[diagnostic(
@@ -545,6 +557,7 @@ impl SpiceError {
             | UnknownReference { span, .. }
             | WrongReference { span, .. }
             | InvalidValue { span, .. }
+            | NotSupported { span, .. }
             | HierarchyTooDeep { span, .. }
             | ControlSkipped { span }
             | IgnoredCard { span, .. }

@@ -1,0 +1,81 @@
+//! SPICE decks end to end: `vams run deck.cir` writes the deck's `.print` vectors under
+//! ngspice's names, checked against the closed form of an RC step; a bad deck is a located
+//! diagnostic and exit code 1.
+
+use assert_cmd::Command;
+use predicates::str::contains;
+
+fn vams() -> Command {
+    Command::cargo_bin("vams").expect("the vams binary is built for integration tests")
+}
+
+/// The columns of a CSV file: the header's names and the rows of numbers.
+fn read_csv(path: &std::path::Path) -> (Vec<String>, Vec<Vec<f64>>) {
+    let text = std::fs::read_to_string(path).expect("the CSV was written");
+    let mut lines = text.lines();
+    let header = (lines.next().expect("a header").split(','))
+        .map(|s| s.trim().to_string())
+        .collect();
+    let rows = lines
+        .map(|l| {
+            l.split(',')
+                .map(|x| x.trim().parse().expect("a number"))
+                .collect()
+        })
+        .collect();
+    (header, rows)
+}
+
+#[test]
+fn an_rc_deck_runs_to_its_tran_stop_with_ngspice_names() {
+    let dir = tempfile::tempdir().expect("temporary directory");
+    let csv = dir.path().join("rc.csv");
+    vams()
+        .args(["run", "tests/spice/rc_step.cir", "-o"])
+        .arg(&csv)
+        .assert()
+        .success()
+        .stderr(contains("simulated rc_step to 5 ms"));
+    let (header, rows) = read_csv(&csv);
+    assert_eq!(header, ["time", "v(1)", "v(2)", "i(v1)"]);
+    let last = rows.last().expect("rows");
+    assert!((last[0] - 5e-3).abs() < 1e-12, "stops at the .tran TSTOP");
+    // The closed form after the edge at 0.1 ms, within 2e-3 of the step (the default
+    // tolerance; the step's 1 ns rise is far below tau).
+    let mut checked = 0;
+    for row in rows.iter().filter(|r| r[0] > 0.2e-3) {
+        let t = row[0] - 0.1e-3;
+        let want = 1.0 - (-t / 1e-3).exp();
+        assert!(
+            (row[2] - want).abs() < 2e-3,
+            "v(2) at {}: {} against {want}",
+            row[0],
+            row[2]
+        );
+        // ngspice's sign: the source's current flows from + to - inside it, so it is
+        // negative while the source charges the capacitor.
+        let i = -(1.0 - row[2]) / 1e3;
+        assert!((row[3] - i).abs() < 2e-6, "i(v1) at {}: {}", row[0], row[3]);
+        checked += 1;
+    }
+    assert!(checked > 10, "{checked} rows after the edge");
+}
+
+#[test]
+fn a_deck_with_a_missing_model_is_a_located_error() {
+    vams()
+        .args(["run", "tests/spice/bad_deck.cir"])
+        .assert()
+        .code(1)
+        .stderr(contains("nomodel"))
+        .stderr(contains("bad_deck.cir:3"));
+}
+
+#[test]
+fn a_deck_among_vhdl_sources_is_refused_with_a_help() {
+    vams()
+        .args(["run", "tests/spice/rc_step.cir", "tests/run/rc.vhd"])
+        .assert()
+        .code(1)
+        .stderr(contains("comes with other sources"));
+}
