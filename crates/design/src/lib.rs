@@ -20,6 +20,7 @@
 //! Names are hierarchical paths relative to the top, lower case, dot separated: `vref`,
 //! `dut.u_motor.i`, `dut.u_ic.up`.
 
+pub mod build;
 pub mod pwl;
 
 use std::sync::Arc;

@@ -1,9 +1,10 @@
 //! Building blocks for what elaboration generates behind the AMS attributes (`'ltf`, `'zoh`,
-//! `'ztf`, `'ramp`, `'slew`, `'delayed`): expression constructors, implicit signals, auxiliary
-//! quantities, equations and the attributes' static arguments.
+//! `'ztf`, `'ramp`, `'slew`, `'delayed`): implicit signals, auxiliary quantities, equations
+//! and the attributes' static arguments; the expression constructors are the design's
+//! (`vams_design::build`), re-exported here.
 
-use vams_design::{BinaryOp, Equation, Expr, QuantityId, Signal, SignalId, SignalKind, Type};
-use vams_design::{Builtin, UnaryOp, Value};
+use vams_design::Value;
+use vams_design::{Equation, Expr, QuantityId, Signal, SignalId, SignalKind, Type};
 use vams_syntax::ast;
 use vams_syntax::source::Span;
 
@@ -12,58 +13,9 @@ use crate::names::scope::Scope;
 use crate::names::types::Ty;
 use crate::{Elab, R};
 
-pub(crate) fn real(v: f64) -> Expr {
-    Expr::real(v)
-}
-
-pub(crate) fn bin(op: BinaryOp, a: Expr, b: Expr) -> Expr {
-    Expr::Binary(op, Box::new(a), Box::new(b))
-}
-
-pub(crate) fn add(a: Expr, b: Expr) -> Expr {
-    bin(BinaryOp::Add, a, b)
-}
-
-pub(crate) fn sub(a: Expr, b: Expr) -> Expr {
-    bin(BinaryOp::Sub, a, b)
-}
-
-pub(crate) fn mul(a: Expr, b: Expr) -> Expr {
-    bin(BinaryOp::Mul, a, b)
-}
-
-pub(crate) fn div(a: Expr, b: Expr) -> Expr {
-    bin(BinaryOp::Div, a, b)
-}
-
-pub(crate) fn abs(a: Expr) -> Expr {
-    Expr::Unary(UnaryOp::Abs, Box::new(a))
-}
-
-pub(crate) fn cond(c: Expr, a: Expr, b: Expr) -> Expr {
-    Expr::If(Box::new(c), Box::new(a), Box::new(b))
-}
-
-/// `now` as a real number of seconds: processes keep `time` and `real` apart.
-pub(crate) fn now_seconds() -> Expr {
-    Expr::Call(Builtin::ToReal, vec![Expr::Now])
-}
-
-/// `c0 * x0 + c1 * x1 + ...`, dropping zero coefficients (`0.0` when all are zero).
-pub(crate) fn linear(terms: impl IntoIterator<Item = (f64, Expr)>) -> Expr {
-    let mut sum: Option<Expr> = None;
-    for (c, x) in terms {
-        if c == 0.0 {
-            continue;
-        }
-        let term = if c == 1.0 { x } else { mul(real(c), x) };
-        sum = Some(match sum {
-            None => term,
-            Some(s) => add(s, term),
-        });
-    }
-    sum.unwrap_or_else(|| real(0.0))
-}
+pub(crate) use vams_design::build::{
+    abs, add, bin, cond, div, linear, mul, now_seconds, real, sub,
+};
 
 /// One positional argument of an attribute, if given.
 pub(crate) fn arg(args: &[ast::Assoc], i: usize) -> Option<&ast::Expr> {
