@@ -41,6 +41,8 @@ impl<'d> ValueFormats<'d> {
     /// A value as text: quantities with their unit symbol; signals by their type (booleans
     /// and enumeration literals by name).
     pub fn format(&self, name: &str, value: f64) -> String {
+        // A listing is read, not parsed back: a current of -0 A reads as 0 A.
+        let value = value + 0.0;
         let ty = match self.by_name.get(name) {
             Some(Kind::Quantity(Some(unit))) => return format!("{} {unit}", csv_number(value)),
             Some(Kind::Quantity(None)) => return csv_number(value),

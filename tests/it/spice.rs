@@ -79,3 +79,30 @@ fn a_deck_among_vhdl_sources_is_refused_with_a_help() {
         .code(1)
         .stderr(contains("comes with other sources"));
 }
+
+#[test]
+fn a_cmos_inverter_switches_where_ngspice_does() {
+    let dir = tempfile::tempdir().expect("temporary directory");
+    let csv = dir.path().join("inverter.csv");
+    vams()
+        .args(["run", "tests/spice/cmos_inverter.cir", "-o"])
+        .arg(&csv)
+        .assert()
+        .success();
+    let (header, rows) = read_csv(&csv);
+    assert_eq!(header, ["time", "v(in)", "v(out)", "i(vdd)"]);
+    let mut crossings = Vec::new();
+    for pair in rows.windows(2) {
+        let (a, b) = (pair[0][2] - 2.5, pair[1][2] - 2.5);
+        if a != 0.0 && a.signum() != b.signum() {
+            crossings.push(pair[0][0] + (pair[1][0] - pair[0][0]) * a / (a - b));
+        }
+    }
+    // ngspice 39 at `.options reltol=1e-7` (the deck's header): within 5 ps, a twentieth of
+    // the output's edge.
+    let reference = [2.8243e-9, 13.8586e-9, 26.8243e-9];
+    assert_eq!(crossings.len(), reference.len(), "{crossings:?}");
+    for (ours, theirs) in crossings.iter().zip(reference) {
+        assert!((ours - theirs).abs() < 5e-12, "{ours:e} against {theirs:e}");
+    }
+}

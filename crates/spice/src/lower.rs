@@ -13,16 +13,21 @@
 //! probe names) are ngspice's vector names, so a run's columns read like ngspice's; every
 //! other quantity is `element.v`, `element.i`, `element.vc` (a controlling voltage).
 //!
-//! Submodules: `sources` (the time functions of V and I), `diode` (the D element).
+//! Submodules: `sources` (the time functions of V and I), `diode` (the D element, with its
+//! junction charge), `mosfet` (the M element, level 1, and `mosfet::charge`), `switch` (S and
+//! W, a state signal driven by `'above` thresholds) and `coupling` (K, after every inductor).
 
+mod coupling;
 mod diode;
+mod mosfet;
 mod sources;
+mod switch;
 
 use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 
 use vams_design::{
-    BinaryOp, Design, Equation, Expr, Nature, NatureId, Quantity, QuantityId, QuantityKind, Signal,
+    Design, Equation, Expr, Nature, NatureId, Quantity, QuantityId, QuantityKind, Signal,
     SignalKind, Terminal, TerminalId, Type, Value,
 };
 use vams_syntax::source::Span;
@@ -222,6 +227,7 @@ impl<'c> Lowerer<'c> {
         for (k, el) in c.elements.iter().enumerate() {
             self.element(ElementId(k as u32), el);
         }
+        self.couplings();
         self.probes();
     }
 
@@ -676,19 +682,18 @@ impl<'c> Lowerer<'c> {
                 };
                 self.diode(id, el, p, m);
             }
-            K | S | W | Q | M | X => {
+            M => self.mosfet(id, el),
+            S | W => self.switch(id, el),
+            K => {} // after every inductor: `couplings`
+            Q | X => {
                 let what = match el.kind {
-                    K => "the coupled inductor (K)",
-                    S => "the voltage-controlled switch (S)",
-                    W => "the current-controlled switch (W)",
                     Q => "the bipolar transistor (Q)",
-                    M => "the MOSFET (M)",
                     _ => "a subcircuit instance left after flattening (X)",
                 };
                 self.not_supported(
                     el,
                     format!("{what} `{}`", el.name),
-                    "remove it, or model it with R, C, L, V, I, E, F, G, H and D elements, which are lowered",
+                    "remove it, or model it with the elements that are lowered: R, C, L, K, V, I, E, F, G, H, S, W, D and M",
                 );
             }
         }
@@ -713,21 +718,7 @@ fn top_name(title: &str) -> String {
         .map_or_else(|| "circuit".to_string(), str::to_ascii_lowercase)
 }
 
-pub(crate) fn bin(op: BinaryOp, a: Expr, b: Expr) -> Expr {
-    Expr::Binary(op, Box::new(a), Box::new(b))
-}
-
-pub(crate) fn add(a: Expr, b: Expr) -> Expr {
-    bin(BinaryOp::Add, a, b)
-}
-
-pub(crate) fn sub(a: Expr, b: Expr) -> Expr {
-    bin(BinaryOp::Sub, a, b)
-}
-
-pub(crate) fn mul(a: Expr, b: Expr) -> Expr {
-    bin(BinaryOp::Mul, a, b)
-}
+pub(crate) use vams_design::build::{add, bin, mul, sub};
 
 #[cfg(test)]
 mod tests {

@@ -1,17 +1,23 @@
-//! The diode `d n+ n- model [area]`: ngspice's junction at DC and in time without charge.
+//! The diode `d n+ n- model [area]`: ngspice's level 1 junction with its charge.
 //!
 //! Takes a D element and its `.model d`; gives the Shockley current
-//! `i == area*is*(exp(v/(n*vt)) - 1) + gmin*v` (`vt = k*T/q` at TEMP, 27 C by default, with
+//! `id == area*is*(exp(v/(n*vt)) - 1) + gmin*v` (`vt = k*T/q` at TEMP, 27 C by default, with
 //! ngspice's constants; `gmin` 1e-12 S unless `.options gmin=`), and for `rs > 0` the series
 //! resistance `rs/area` to an internal node `name#internal`, as ngspice names it. Above 40
 //! thermal voltages the exponential continues as its tangent, so that no Newton iterate
-//! overflows. Junction and diffusion charge (`cjo`, `tt`), breakdown (`bv`) and temperature
-//! scaling (TEMP other than TNOM) are refused as not supported yet, never ignored.
+//! overflows. With `cjo` (`cj0`, `cj`) or `tt`, the junction stores ngspice's charge
+//! `Q(v) = tt*(id - gmin*v) + Qdep(v)`: the depletion charge of `cjo*area`, `vj` (`pb`,
+//! default 1) and `m` (`mj`, default 0.5) below `fc*vj` (`fc` default 0.5) and ngspice's
+//! linear-capacitance extension above it (`dioload.c`; `m` limited to 0.9 and `fc` to 0.95
+//! as `diosetup.c` does). The charge is a quantity of its own, scaled to volts,
+//! `name.qv == Q(v)/cs`, and the branch current is `i == id + cs*name.qv'dot`, so the charge
+//! is conserved whatever the step. Breakdown (`bv`), sidewall charge and temperature scaling
+//! (TEMP other than TNOM) are refused as not supported yet, never ignored.
 
-use vams_design::{BinaryOp, Builtin, Expr, TerminalId};
+use vams_design::{BinaryOp, Builtin, Expr, Quantity, QuantityId, QuantityKind, TerminalId};
 
 use super::{Lowerer, add, bin, mul, sub};
-use crate::circuit::{ElementId, FlatElement, ModelId};
+use crate::circuit::{ElementId, FlatElement, FlatModel, ModelId};
 use crate::error::SpiceError;
 
 /// Boltzmann's constant and the elementary charge as ngspice 39 has them (`const.h`).
@@ -22,11 +28,13 @@ const CELSIUS_TO_KELVIN: f64 = 273.15;
 /// Where the exponential turns into its tangent, in thermal voltages.
 const EXP_LIMIT: f64 = 40.0;
 
-/// Model parameters that change nothing at TEMP = TNOM without junction capacitance.
-const INERT: [&str; 6] = ["eg", "xti", "tnom", "vj", "m", "fc"];
+/// Model parameters that change nothing at TEMP = TNOM.
+const INERT: [&str; 3] = ["eg", "xti", "tnom"];
 
-/// Model parameters that are inert at zero (their default).
-const ZERO_ONLY: [&str; 3] = ["cjo", "cj0", "tt"];
+/// The model parameters lowered, aliases included.
+const LOWERED: [&str; 12] = [
+    "is", "n", "rs", "cjo", "cj0", "cj", "vj", "pb", "m", "mj", "fc", "tt",
+];
 
 impl Lowerer<'_> {
     /// Whether a diode model has only parameters the lowering handles; the first diode that
@@ -49,16 +57,14 @@ impl Lowerer<'_> {
                 help,
             });
         };
-        for (name, value) in &model.params {
-            let fine = matches!(name.as_str(), "is" | "n" | "rs")
-                || INERT.contains(&name.as_str())
-                || (ZERO_ONLY.contains(&name.as_str()) && *value == 0.0);
+        for (name, _) in &model.params {
+            let fine = LOWERED.contains(&name.as_str()) || INERT.contains(&name.as_str());
             if !fine {
                 refuse(
                     &mut self.errors,
                     format!("the diode model parameter `{name}`"),
                     format!(
-                        "remove `{name}=`: the diode is lowered with is, n and rs (cjo and tt only at 0)"
+                        "remove `{name}=`: the diode is lowered with is, n, rs, cjo, vj, m, fc and tt"
                     ),
                 );
             }
@@ -146,16 +152,145 @@ impl Lowerer<'_> {
             Box::new(mul(c(EXP_LIMIT.exp()), add(c(1.0 - EXP_LIMIT), x.clone()))),
             Box::new(exp(x)),
         );
-        let current = add(
-            mul(c(is), sub(limited, c(1.0))),
-            mul(c(gmin), Expr::Quantity(v)),
-        );
-        let text = format!(
+        let junction = mul(c(is), sub(limited, c(1.0)));
+        let current = add(junction.clone(), mul(c(gmin), Expr::Quantity(v)));
+        let mut text = format!(
             "{} == {is:?} * (exp({} / {nvt:?}) - 1.0) + {gmin:?} * {}",
             self.qname(i),
             self.qname(v),
             self.qname(v)
         );
+        let charge = Charge::of(model, area);
+        if charge.czero != 0.0 && !(charge.vj > 0.0 && charge.czero > 0.0) {
+            self.not_supported(
+                el,
+                format!(
+                    "a junction capacitance cjo={} with vj={} in `{}`",
+                    charge.czero, charge.vj, model.name
+                ),
+                "give cjo >= 0 and a junction potential vj > 0",
+            );
+            return;
+        }
+        let current = match charge.expr(Expr::Quantity(v), junction) {
+            None => current,
+            Some(q) => {
+                let cs = charge.scale();
+                let qv = self.charge_quantity(format!("{}.qv", el.name), el);
+                let qtext = format!(
+                    "{} == (tt * id + qdep({})) / {cs:?}",
+                    self.qname(qv),
+                    self.qname(v)
+                );
+                self.equation(el, Expr::Quantity(qv), mul(c(1.0 / cs), q), qtext);
+                text = format!("{text} + {cs:?} * {}'dot", self.qname(qv));
+                add(current, mul(c(cs), Expr::Dot(qv)))
+            }
+        };
         self.equation(el, Expr::Quantity(i), current, text);
+    }
+
+    /// A free quantity in volts (the tolerance group `DEFAULT_VOLTAGE`).
+    fn charge_quantity(&mut self, name: String, el: &FlatElement) -> QuantityId {
+        self.design.quantities.push(Quantity {
+            name,
+            kind: QuantityKind::Free,
+            tolerance: Some(self.voltage.tolerance.clone()),
+            subtype: self.voltage.subtype.clone(),
+            unit: Some(self.voltage.unit.clone()),
+            initial_guess: None,
+            span: el.span,
+        });
+        QuantityId(self.design.quantities.len() as u32 - 1)
+    }
+}
+
+/// The charge parameters of a diode, as ngspice's `diosetup.c` limits them.
+struct Charge {
+    /// `cjo * area`.
+    czero: f64,
+    vj: f64,
+    m: f64,
+    fc: f64,
+    tt: f64,
+}
+
+impl Charge {
+    fn of(model: &FlatModel, area: f64) -> Charge {
+        let p = |names: &[&str]| names.iter().find_map(|n| model.param(n));
+        Charge {
+            czero: p(&["cjo", "cj0", "cj"]).unwrap_or(0.0) * area,
+            vj: p(&["vj", "pb"]).unwrap_or(1.0),
+            m: p(&["m", "mj"]).unwrap_or(0.5).min(0.9),
+            fc: p(&["fc"]).unwrap_or(0.5).min(0.95),
+            tt: p(&["tt"]).unwrap_or(0.0),
+        }
+    }
+
+    /// The charge's scale in farads: the quantity `qv` is `Q / scale` volts.
+    fn scale(&self) -> f64 {
+        if self.czero > 0.0 {
+            self.czero
+        } else {
+            // A transit time alone: `qv` is the current times 1 kOhm.
+            self.tt * 1e-3
+        }
+    }
+
+    /// `Q(v)` with `id` the junction current without gmin; `None` without charge (or with a
+    /// junction potential ngspice could not use).
+    fn expr(&self, v: Expr, id: Expr) -> Option<Expr> {
+        let c = Expr::real;
+        let Charge {
+            czero,
+            vj,
+            m,
+            fc,
+            tt,
+        } = *self;
+        let depletion = czero > 0.0 && vj > 0.0 && vj.is_finite();
+        let diffusion = tt > 0.0 && tt.is_finite();
+        let mut q = diffusion.then(|| mul(c(tt), id));
+        if depletion {
+            let fcvj = fc * vj;
+            // Below fc*vj: vj*czero*(1 - (1 - v/vj)^(1-m))/(1-m), the power's argument kept
+            // above 1 - fc so that the branch not taken stays finite.
+            let arg = Expr::Call(
+                Builtin::Realmax,
+                vec![sub(c(1.0), mul(c(1.0 / vj), v.clone())), c(1.0 - fc)],
+            );
+            let power = Expr::Call(
+                Builtin::Exp,
+                vec![mul(c(1.0 - m), Expr::Call(Builtin::Log, vec![arg]))],
+            );
+            let below = mul(c(vj * czero / (1.0 - m)), sub(c(1.0), power));
+            // Above: czero*F1 + czero/F2*(F3*(v - fc*vj) + m/(2*vj)*(v^2 - (fc*vj)^2)).
+            let f1 = vj * (1.0 - (1.0 - fc).powf(1.0 - m)) / (1.0 - m);
+            let f2 = (1.0 - fc).powf(1.0 + m);
+            let f3 = 1.0 - fc * (1.0 + m);
+            let above = add(
+                c(czero * f1),
+                mul(
+                    c(czero / f2),
+                    add(
+                        mul(c(f3), sub(v.clone(), c(fcvj))),
+                        mul(
+                            c(m / (2.0 * vj)),
+                            sub(mul(v.clone(), v.clone()), c(fcvj * fcvj)),
+                        ),
+                    ),
+                ),
+            );
+            let dep = Expr::If(
+                Box::new(bin(BinaryOp::Lt, v, c(fcvj))),
+                Box::new(below),
+                Box::new(above),
+            );
+            q = Some(match q {
+                Some(d) => add(d, dep),
+                None => dep,
+            });
+        }
+        q
     }
 }

@@ -305,6 +305,53 @@ fn steps(points: &[(f64, f64)]) -> Vec<(f64, f64)> {
     out
 }
 
+/// The x axis's label and tick text: an axis in seconds (`... (s)`) of a short run scaled to
+/// the SI prefix of its largest value, with as many decimals as its tick spacing needs.
+struct XAxis {
+    label: String,
+    factor: f64,
+    decimals: usize,
+}
+
+impl XAxis {
+    fn for_range(label: &str, x0: f64, x1: f64) -> XAxis {
+        const PREFIXES: [(f64, &str); 5] = [
+            (1e-3, "m"),
+            (1e-6, "\u{b5}"),
+            (1e-9, "n"),
+            (1e-12, "p"),
+            (1e-15, "f"),
+        ];
+        let largest = x0.abs().max(x1.abs());
+        let (factor, label) = match label.strip_suffix("(s)") {
+            // Seconds down to 0.1 s; below, the prefix of the largest value (50 ms, 30 ns).
+            Some(stem) if largest < 0.1 => PREFIXES
+                .iter()
+                .find(|(f, _)| largest >= *f)
+                .map_or((1.0, label.to_string()), |&(f, p)| {
+                    (f, format!("{stem}({p}s)"))
+                }),
+            _ => (1.0, label.to_string()),
+        };
+        // About ten ticks: their spacing's first significant digit needs these decimals.
+        let step = (x1 - x0) / factor / 10.0;
+        let decimals = if step > 0.0 && step.is_finite() {
+            (-step.log10().floor()).clamp(0.0, 12.0) as usize
+        } else {
+            0
+        };
+        XAxis {
+            label,
+            factor,
+            decimals,
+        }
+    }
+
+    fn tick(&self, v: f64) -> String {
+        format!("{:.*}", self.decimals, v / self.factor)
+    }
+}
+
 fn draw<DB: DrawingBackend>(
     root: DrawingArea<DB, Shift>,
     title: &str,
@@ -330,6 +377,9 @@ where
     if x1 <= x0 {
         x1 = x0 + 1.0;
     }
+    // An axis in seconds is labelled in the unit its values read best in (`time (ns)` for a
+    // run of 30 ns: plain seconds would print every tick as 0.0).
+    let axis = XAxis::for_range(x_label, x0, x1);
     let areas = root.split_evenly((panels.len(), 1));
     for (k, (area, panel)) in areas.iter().zip(panels).enumerate() {
         let last = k + 1 == panels.len();
@@ -358,14 +408,16 @@ where
             .y_label_area_size(80)
             .build_cartesian_2d(x0..x1, y0..y1)?;
         let label = panel.axis_label();
+        let tick = |v: &f64| axis.tick(*v);
         let mut mesh = chart.configure_mesh();
         mesh.y_desc(label.as_str())
             .label_style((FONT, 13))
             .axis_desc_style((FONT, 14))
             .light_line_style(RGBColor(235, 235, 235));
         if last {
-            mesh.x_desc(x_label);
+            mesh.x_desc(axis.label.as_str());
         }
+        mesh.x_label_formatter(&tick);
         if panel.is_logic() {
             mesh.y_labels(2).y_label_formatter(&|v| format!("{v:.0}"));
         }
@@ -451,6 +503,25 @@ mod tests {
             ),
             Panel::new("", vec![Trace::logic("enable", logic)]),
         ]
+    }
+
+    #[test]
+    fn a_short_time_axis_reads_in_its_own_unit() {
+        let axis = XAxis::for_range("time (s)", 0.0, 30e-9);
+        assert_eq!(axis.label, "time (ns)");
+        assert_eq!(axis.tick(15e-9), "15");
+        let axis = XAxis::for_range("time (s)", 0.0, 6.0);
+        assert_eq!(
+            (axis.label.as_str(), axis.tick(2.5).as_str()),
+            ("time (s)", "2.5")
+        );
+        let axis = XAxis::for_range("time (s)", 0.0, 5e-3);
+        assert_eq!(
+            (axis.label.as_str(), axis.tick(2.5e-3).as_str()),
+            ("time (ms)", "2.5")
+        );
+        let axis = XAxis::for_range("frequency (Hz)", 10.0, 1e6);
+        assert_eq!(axis.label, "frequency (Hz)");
     }
 
     #[test]
