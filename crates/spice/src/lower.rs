@@ -14,9 +14,11 @@
 //! other quantity is `element.v`, `element.i`, `element.vc` (a controlling voltage).
 //!
 //! Submodules: `sources` (the time functions of V and I), `diode` (the D element, with its
-//! junction charge), `mosfet` (the M element, level 1, and `mosfet::charge`), `switch` (S and
-//! W, a state signal driven by `'above` thresholds) and `coupling` (K, after every inductor).
+//! junction charge), `mosfet` (the M element, level 1, and `mosfet::charge`), `bjt` (the Q
+//! element, Gummel-Poon, and `bjt::charge`), `switch` (S and W, a state signal driven by
+//! `'above` thresholds) and `coupling` (K, after every inductor).
 
+mod bjt;
 mod coupling;
 mod diode;
 mod mosfet;
@@ -32,7 +34,9 @@ use vams_design::{
 };
 use vams_syntax::source::Span;
 
-use crate::circuit::{Analysis, Circuit, ElementId, FlatElement, ModelId, NodeId, Probe};
+use crate::circuit::{
+    Analysis, Circuit, ElementId, FlatElement, FlatModel, ModelId, NodeId, Probe,
+};
 use crate::deck::{ElementKind, OutputCard, Part, PrintAnalysis};
 use crate::error::SpiceError;
 
@@ -685,17 +689,42 @@ impl<'c> Lowerer<'c> {
             M => self.mosfet(id, el),
             S | W => self.switch(id, el),
             K => {} // after every inductor: `couplings`
-            Q | X => {
-                let what = match el.kind {
-                    Q => "the bipolar transistor (Q)",
-                    _ => "a subcircuit instance left after flattening (X)",
-                };
+            Q => self.bjt(id, el),
+            X => {
                 self.not_supported(
                     el,
-                    format!("{what} `{}`", el.name),
-                    "remove it, or model it with the elements that are lowered: R, C, L, K, V, I, E, F, G, H, S, W, D and M",
+                    format!("a subcircuit instance left after flattening (X) `{}`", el.name),
+                    "remove it, or model it with the elements that are lowered: R, C, L, K, V, I, E, F, G, H, S, W, D, M and Q",
                 );
             }
+        }
+    }
+}
+
+/// Errors on `.model` cards, which several instances share: each reported once.
+impl Lowerer<'_> {
+    /// Pushes a not-supported error on the `.model` card unless the same one is already
+    /// there (several instances share one model).
+    pub(super) fn refuse_model(&mut self, model: &FlatModel, what: String, help: String) {
+        let span = model.span;
+        let seen = self.errors.iter().any(|e| {
+            matches!(e, SpiceError::NotSupported { span: s, what: w, .. } if *s == span && *w == what)
+        });
+        if !seen {
+            self.errors.push(SpiceError::NotSupported {
+                span,
+                what,
+                label: format!("in `.model {}`", model.name),
+                help,
+            });
+        }
+    }
+
+    /// Pushes an error on a `.model` card unless an equal one is already there.
+    pub(super) fn push_once(&mut self, e: SpiceError) {
+        let text = e.to_string();
+        if !self.errors.iter().any(|x| x.to_string() == text) {
+            self.errors.push(e);
         }
     }
 }

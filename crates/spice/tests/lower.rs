@@ -449,13 +449,13 @@ fn render(text: &str) -> String {
 }
 
 #[test]
-fn unsupported_element() {
+fn unsupported_model_level() {
     insta::assert_snapshot!(render(
         "amplifier\n\
-         v1 c 0 5\n\
-         q1 c b 0 qmod\n\
-         r1 b 0 1k\n\
-         .model qmod npn(bf=100)\n\
+         v1 d 0 5\n\
+         m1 d g 0 0 nch\n\
+         r1 g 0 1k\n\
+         .model nch nmos(level=3 vto=0.7)\n\
          .end\n"
     ));
 }

@@ -79,31 +79,6 @@ struct Level1 {
 }
 
 impl Lowerer<'_> {
-    /// Pushes a not-supported error on the `.model` card unless the same one is already
-    /// there (several instances share one model).
-    fn refuse_model(&mut self, model: &FlatModel, what: String, help: String) {
-        let span = model.span;
-        let seen = self.errors.iter().any(|e| {
-            matches!(e, SpiceError::NotSupported { span: s, what: w, .. } if *s == span && *w == what)
-        });
-        if !seen {
-            self.errors.push(SpiceError::NotSupported {
-                span,
-                what,
-                label: format!("in `.model {}`", model.name),
-                help,
-            });
-        }
-    }
-
-    /// Pushes an error on a `.model` card unless an equal one is already there.
-    fn push_once(&mut self, e: SpiceError) {
-        let text = e.to_string();
-        if !self.errors.iter().any(|x| x.to_string() == text) {
-            self.errors.push(e);
-        }
-    }
-
     /// Whether a MOSFET model has only parameters the lowering handles; reports the others.
     fn mosfet_model_ok(&mut self, model: &FlatModel) -> bool {
         let mut ok = true;
