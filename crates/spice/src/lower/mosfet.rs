@@ -23,6 +23,9 @@
 //!   `cgso*w*m`, `cgdo*w*m`, `cgbo*leff*m`, as capacitances (`i == C(v)*v'dot`), as ngspice
 //!   has them (see `charge`).
 //!
+//! Level 2 (`level=2`, ngspice's mos2) shares all of this but the channel current and the
+//! `von`, `vdsat` of Meyer's capacitances, which come from `level2`.
+//!
 //! Refused, never ignored: `nsub`, `nss`, `tpg` and every other parameter not listed, other
 //! levels, `off`, initial conditions, TEMP other than TNOM, and values out of range (`pb`,
 //! `tox`, `fc`, `mj`, `mjsw`).
@@ -30,6 +33,7 @@
 use vams_design::{BinaryOp, Builtin, Expr, QuantityKind, TerminalId};
 
 mod charge;
+mod level2;
 
 use super::Lowerer;
 use crate::circuit::{ElementId, FlatElement, FlatModel, OptionValue};
@@ -84,17 +88,27 @@ impl Lowerer<'_> {
         let mut ok = true;
         for (name, _) in &model.params {
             let n = name.as_str();
-            if USED.contains(&n) || INERT.contains(&n) {
+            if USED.contains(&n)
+                || INERT.contains(&n)
+                || (model.level == Some(2) && level2::USED.contains(&n))
+            {
                 continue;
             }
             ok = false;
             self.refuse_model(
                 model,
                 format!("the MOSFET model parameter `{name}`"),
-                format!(
-                    "remove `{name}=`: the level 1 MOSFET is lowered with {}",
-                    USED.join(", ")
-                ),
+                match model.level {
+                    Some(2) => format!(
+                        "remove `{name}=`: the level 2 MOSFET is lowered with {}, {}",
+                        USED.join(", "),
+                        level2::USED.join(", ")
+                    ),
+                    _ => format!(
+                        "remove `{name}=`: the level 1 MOSFET is lowered with {}",
+                        USED.join(", ")
+                    ),
+                },
             );
         }
         let bad = |k: &'static str, default: f64, valid: fn(f64) -> bool| {
@@ -117,7 +131,7 @@ impl Lowerer<'_> {
                 "pb and tox must be positive, fc in [0, 1), mj and mjsw other than 1",
             ));
         }
-        if let Some(level) = model.level.filter(|&l| l != 1) {
+        if let Some(level) = model.level.filter(|&l| l != 1 && l != 2) {
             ok = false;
             self.refuse_model(
                 model,
@@ -320,8 +334,15 @@ impl Lowerer<'_> {
             );
             return;
         };
-        let Some(p) = self.level1(el, model) else {
+        let Some(mut p) = self.level1(el, model) else {
             return;
+        };
+        let level2 = match model.level {
+            Some(2) => match self.level2(el, model, &mut p) {
+                Some(l2) => Some(l2),
+                None => return,
+            },
+            _ => None,
         };
         let d = self.series_resistor(el, d, p.rd, "drain");
         let s = self.series_resistor(el, s, p.rs, "source");
@@ -341,18 +362,38 @@ impl Lowerer<'_> {
         let nvbd = sub(nvbs.clone(), nvds.clone());
         let nvgd = sub(nvgs.clone(), nvds.clone());
         let forward = bin(BinaryOp::Ge, nvds.clone(), c(0.0));
-        let channel = Expr::If(
-            Box::new(forward.clone()),
-            Box::new(p.drain_current(nvgs.clone(), nvbs.clone(), nvds.clone())),
-            Box::new(Expr::Unary(
-                vams_design::UnaryOp::Neg,
-                Box::new(p.drain_current(
-                    nvgd.clone(),
-                    nvbd.clone(),
-                    Expr::Unary(vams_design::UnaryOp::Neg, Box::new(nvds)),
+        let local = |a: &Expr, b: &Expr| cond(forward.clone(), a.clone(), b.clone());
+        let level2 = level2.map(|l2| {
+            let lvds = cond(
+                forward.clone(),
+                nvds.clone(),
+                Expr::Unary(vams_design::UnaryOp::Neg, Box::new(nvds.clone())),
+            );
+            let lvgs = local(&nvgs, &nvgd);
+            let (cd, von, vdsat) =
+                self.level2_channel(el, &l2, lvgs.clone(), local(&nvbs, &nvbd), lvds.clone());
+            (cd, von, vdsat, lvgs, lvds)
+        });
+        let channel = if let Some((cd, ..)) = &level2 {
+            cond(
+                forward.clone(),
+                cd.clone(),
+                Expr::Unary(vams_design::UnaryOp::Neg, Box::new(cd.clone())),
+            )
+        } else {
+            Expr::If(
+                Box::new(forward.clone()),
+                Box::new(p.drain_current(nvgs.clone(), nvbs.clone(), nvds.clone())),
+                Box::new(Expr::Unary(
+                    vams_design::UnaryOp::Neg,
+                    Box::new(p.drain_current(
+                        nvgd.clone(),
+                        nvbd.clone(),
+                        Expr::Unary(vams_design::UnaryOp::Neg, Box::new(nvds)),
+                    )),
                 )),
-            )),
-        );
+            )
+        };
         let (n_ids, n_vds, n_vgs, n_vbs) = (
             self.qname(ids).to_string(),
             self.qname(vds).to_string(),
@@ -361,8 +402,13 @@ impl Lowerer<'_> {
         );
         let kind = if t > 0.0 { "nmos" } else { "pmos" };
         let text = format!(
-            "{n_ids} == level1_{kind}({n_vgs}, {n_vds}, {n_vbs}; vto {:?}, beta {:?}, gamma {:?}, phi {:?}, lambda {:?})",
-            p.vto, p.beta, p.gamma, p.phi, p.lambda
+            "{n_ids} == level{}_{kind}({n_vgs}, {n_vds}, {n_vbs}; vto {:?}, beta {:?}, gamma {:?}, phi {:?}, lambda {:?})",
+            if level2.is_some() { 2 } else { 1 },
+            p.vto,
+            p.beta,
+            p.gamma,
+            p.phi,
+            p.lambda
         );
         self.equation(el, q(ids), mul(c(t), channel), text);
         let ch = p.charge;
@@ -397,28 +443,38 @@ impl Lowerer<'_> {
         if ch.cox > 0.0 || ch.cgs_overlap > 0.0 || ch.cgd_overlap > 0.0 || ch.cgb_overlap > 0.0 {
             let vgd = self.across(format!("{}.vgd", el.name), g, d, el.span);
             let vgb = self.across(format!("{}.vgb", el.name), g, b, el.span);
-            let (cgs, cgd, cgb) = if ch.cox > 0.0 {
-                let von_f = p.von(nvbs.clone());
-                let von_r = p.von(nvbd.clone());
-                let (fs, fd, fb) = ch.meyer(
-                    p.phi,
-                    nvgs.clone(),
-                    nvgd.clone(),
-                    von_f.clone(),
-                    sub(nvgs.clone(), von_f),
-                );
-                let (rd, rs, rb) = ch.meyer(
-                    p.phi,
-                    nvgd.clone(),
-                    nvgs.clone(),
-                    von_r.clone(),
-                    sub(nvgd.clone(), von_r),
-                );
-                let pick = |a: Expr, b: Expr| cond(forward.clone(), a, b);
-                (pick(fs, rs), pick(fd, rd), pick(fb, rb))
-            } else {
-                (c(0.0), c(0.0), c(0.0))
-            };
+            let (cgs, cgd, cgb) =
+                if let (true, Some((_, von, vdsat, lvgs, lvds))) = (ch.cox > 0.0, &level2) {
+                    let (a, b, cb) = ch.meyer(
+                        p.phi,
+                        lvgs.clone(),
+                        sub(lvgs.clone(), lvds.clone()),
+                        von.clone(),
+                        vdsat.clone(),
+                    );
+                    (local(&a, &b), local(&b, &a), cb)
+                } else if ch.cox > 0.0 {
+                    let von_f = p.von(nvbs.clone());
+                    let von_r = p.von(nvbd.clone());
+                    let (fs, fd, fb) = ch.meyer(
+                        p.phi,
+                        nvgs.clone(),
+                        nvgd.clone(),
+                        von_f.clone(),
+                        sub(nvgs.clone(), von_f),
+                    );
+                    let (rd, rs, rb) = ch.meyer(
+                        p.phi,
+                        nvgd.clone(),
+                        nvgs.clone(),
+                        von_r.clone(),
+                        sub(nvgd.clone(), von_r),
+                    );
+                    let pick = |a: Expr, b: Expr| cond(forward.clone(), a, b);
+                    (pick(fs, rs), pick(fd, rd), pick(fb, rb))
+                } else {
+                    (c(0.0), c(0.0), c(0.0))
+                };
             for (v, plus, minus, cap, overlap, key) in [
                 (vgs, g, s, cgs, ch.cgs_overlap, "gs"),
                 (vgd, g, d, cgd, ch.cgd_overlap, "gd"),
