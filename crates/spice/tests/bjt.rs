@@ -4,103 +4,12 @@
 //! of what the BJT lowering refuses (snapshots).
 
 use std::path::Path;
-use std::process::Command;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
-use vams_simulation::kernel::{SimOptions, operating_point, simulate};
-use vams_spice::{MemLoader, SourceMap, SpiceError, flatten, lower, outputs, read_deck, transient};
-use vams_syntax::diagnostics::render_plain;
+use vams_simulation::kernel::{SimOptions, simulate};
+use vams_spice::{outputs, transient};
 
-fn circuit(text: &str) -> vams_spice::circuit::Circuit {
-    let mut sources = SourceMap::new();
-    let id = sources.add("deck.cir", "work", text.to_string());
-    let (deck, errors) = read_deck(&mut sources, id, &mut MemLoader::new());
-    assert!(errors.is_empty(), "{errors:#?}");
-    match flatten(&deck) {
-        Ok(c) => c,
-        Err(e) => panic!("{e:#?}"),
-    }
-}
-
-/// The operating point of a deck, by quantity name.
-fn op(text: &str) -> Vec<(String, f64)> {
-    let d = match lower(&circuit(text)) {
-        Ok(d) => d,
-        Err(e) => panic!("{e:#?}"),
-    };
-    let options = SimOptions {
-        reltol: 1e-7,
-        ..SimOptions::default()
-    };
-    match operating_point(&d, &options) {
-        Ok(p) => p,
-        Err(e) => panic!("{e:?}"),
-    }
-}
-
-fn value(point: &[(String, f64)], name: &str) -> f64 {
-    match point.iter().find(|(n, _)| n == name) {
-        Some((_, v)) => *v,
-        None => panic!("no quantity {name} in {point:?}"),
-    }
-}
-
-/// ngspice's `.print dc` rows (sweep value, then the columns); `None` without ngspice.
-fn ngspice(deck: &str) -> Option<Vec<Vec<f64>>> {
-    if Command::new("ngspice").arg("--version").output().is_err() {
-        println!("skipped: ngspice is not installed");
-        return None;
-    }
-    let dir = std::env::temp_dir().join(format!("vams-spice-bjt-{}", std::process::id()));
-    if let Err(e) = std::fs::create_dir_all(&dir) {
-        println!("skipped: cannot make {}: {e}", dir.display());
-        return None;
-    }
-    static NEXT: AtomicUsize = AtomicUsize::new(0);
-    let path = dir.join(format!("deck{}.cir", NEXT.fetch_add(1, Ordering::Relaxed)));
-    if let Err(e) = std::fs::write(&path, deck) {
-        println!("skipped: cannot write {}: {e}", path.display());
-        return None;
-    }
-    let out = match Command::new("ngspice").arg("-b").arg(&path).output() {
-        Ok(o) => o,
-        Err(e) => {
-            println!("skipped: ngspice did not run: {e}");
-            return None;
-        }
-    };
-    let _ = std::fs::remove_file(&path);
-    let text = String::from_utf8_lossy(&out.stdout);
-    let rows = text
-        .lines()
-        .filter_map(|l| {
-            let mut f = l.split_whitespace();
-            f.next()?.parse::<u64>().ok()?;
-            f.map(|x| x.parse::<f64>().ok()).collect::<Option<Vec<_>>>()
-        })
-        .filter(|r: &Vec<f64>| r.len() >= 2)
-        .collect::<Vec<_>>();
-    // A wide `.print` comes as several tables of the same sweep: join them row by row.
-    let mut joined: Vec<Vec<f64>> = Vec::new();
-    let mut k = 0;
-    for r in rows {
-        if k < joined.len() && joined[k][0] == r[0] {
-            joined[k].extend_from_slice(&r[1..]);
-            k += 1;
-        } else if joined.is_empty() || k == 0 {
-            joined.push(r);
-        } else {
-            k = 0;
-            joined[k].extend_from_slice(&r[1..]);
-            k += 1;
-        }
-    }
-    Some(joined)
-}
-
-fn rel(a: f64, b: f64, floor: f64) -> f64 {
-    (a - b).abs() / b.abs().max(floor)
-}
+mod support;
+use support::{circuit, design, ngspice_joined, op, rel, render, value};
 
 /// Every DC parameter: Early voltages, roll-off, leakage, series and base resistances.
 const NPN: &str = ".model qn npn (is=2e-15 bf=150 br=3 nf=1.01 nr=1.02 vaf=60 var=8 ikf=20m ikr=5m
@@ -141,7 +50,7 @@ fn bias_deck(sign: f64) -> String {
 fn common_emitter_bias_point_matches_ngspice() {
     for sign in [1.0, -1.0] {
         let deck = bias_deck(sign);
-        let ours = op(&deck);
+        let ours = op(&deck, Some(1e-7));
         let names = ["v(c)", "v(b)", "v(e)", "i(vcc)"];
         let mine: Vec<f64> = names.iter().map(|n| value(&ours, n)).collect();
         println!("bjt bias (sign {sign}): {names:?} = {mine:?}");
@@ -150,7 +59,9 @@ fn common_emitter_bias_point_matches_ngspice() {
             sign * mine[2] > 0.5 && sign * mine[0] > sign * mine[1],
             "{mine:?}"
         );
-        let Some(rows) = ngspice(&deck) else { continue };
+        let Some(rows) = ngspice_joined(&deck) else {
+            continue;
+        };
         assert_eq!(rows.len(), 1, "{rows:?}");
         for (k, name) in names.iter().enumerate() {
             let ng = rows[0][k + 1];
@@ -194,12 +105,12 @@ fn output_curves_at_two_base_currents_match_ngspice() {
     let mut worst: f64 = 0.0;
     for sign in [1.0, -1.0] {
         for ib in [10e-6, 40e-6] {
-            let Some(rows) = ngspice(&output_deck(ib, 0.0, sign)) else {
+            let Some(rows) = ngspice_joined(&output_deck(ib, 0.0, sign)) else {
                 return;
             };
             assert_eq!(rows.len(), 21, "{rows:?}");
             for row in &rows {
-                let p = op(&output_deck(ib, row[0] * sign, sign));
+                let p = op(&output_deck(ib, row[0] * sign, sign), Some(1e-7));
                 for (name, ng, floor) in [("i(vce)", row[1], 1e-9), ("v(b)", row[2], 1e-6)] {
                     let ours = value(&p, name);
                     worst = worst.max(rel(ours, ng, floor));
@@ -236,10 +147,7 @@ fn colpitts_oscillates_at_the_reference_frequency_and_amplitude() {
         return;
     };
     let c = circuit(&text);
-    let d = match lower(&c) {
-        Ok(d) => d,
-        Err(e) => panic!("{e:#?}"),
-    };
+    let d = design(&c);
     let Some(t) = transient(&c) else {
         panic!("the deck has no .tran")
     };
@@ -285,28 +193,6 @@ fn colpitts_oscillates_at_the_reference_frequency_and_amplitude() {
     assert!(rel(f, 3.3425e6, 1.0) < 5e-3, "frequency {f}");
     assert!((hi - lo - 5.08).abs() < 0.1, "peak-to-peak {}", hi - lo);
     assert!((mean - 5.0).abs() < 0.05, "mean {mean}");
-}
-
-/// Every diagnostic of reading, flattening and lowering a deck, rendered.
-fn render(text: &str) -> String {
-    let mut sources = SourceMap::new();
-    let id = sources.add("bad.cir", "work", text.to_string());
-    let (deck, errors) = read_deck(&mut sources, id, &mut MemLoader::new());
-    let mut all: Vec<SpiceError> = errors;
-    if all.is_empty() {
-        match flatten(&deck) {
-            Ok(c) => {
-                if let Err(e) = lower(&c) {
-                    all.extend(e);
-                }
-            }
-            Err(e) => all.extend(e),
-        }
-    }
-    all.iter()
-        .map(|d| render_plain(d, &sources))
-        .collect::<Vec<_>>()
-        .join("\n")
 }
 
 #[test]

@@ -2,79 +2,10 @@
 //! tolerance), against ngspice where it is installed (skipped with a printed reason where
 //! not), and the diagnostics of what the lowering refuses (snapshots).
 
-use std::path::Path;
-use std::process::Command;
-use std::sync::atomic::{AtomicUsize, Ordering};
+use vams_spice::{MemLoader, SourceMap, flatten, lower, outputs, read_deck};
 
-use vams_design::Design;
-use vams_simulation::kernel::{SimOptions, operating_point, simulate};
-use vams_simulation::waveform::Waveforms;
-use vams_spice::circuit::Circuit;
-use vams_spice::{MemLoader, SourceMap, SpiceError, flatten, lower, outputs, read_deck, transient};
-use vams_syntax::diagnostics::render_plain;
-
-/// Reads and flattens a deck, asserting no error.
-fn circuit(text: &str) -> Circuit {
-    let mut sources = SourceMap::new();
-    let id = sources.add("deck.cir", "work", text.to_string());
-    let (deck, errors) = read_deck(&mut sources, id, &mut MemLoader::new());
-    assert!(errors.is_empty(), "{errors:#?}");
-    match flatten(&deck) {
-        Ok(c) => c,
-        Err(e) => panic!("{e:#?}"),
-    }
-}
-
-fn design(c: &Circuit) -> Design {
-    match lower(c) {
-        Ok(d) => d,
-        Err(e) => panic!("{e:#?}"),
-    }
-}
-
-/// The deck's `.tran`, run with the largest step TSTEP and a tight reltol.
-fn run(text: &str) -> Waveforms {
-    let c = circuit(text);
-    let d = design(&c);
-    let Some(t) = transient(&c) else {
-        panic!("the deck has no .tran")
-    };
-    let options = SimOptions {
-        stop: t.tstop,
-        reltol: 1e-5,
-        max_step: Some(t.tmax.unwrap_or(t.tstep)),
-        probes: outputs(&c),
-        ..SimOptions::default()
-    };
-    match simulate(&d, &options, &mut |_| {}) {
-        Ok(r) => r.waveforms,
-        Err(e) => panic!("{e:?}"),
-    }
-}
-
-fn at(w: &Waveforms, name: &str, t: f64) -> f64 {
-    match w.value_at(name, t) {
-        Some(v) => v,
-        None => panic!("no column {name}"),
-    }
-}
-
-/// The operating point by quantity name.
-fn op(text: &str) -> Vec<(String, f64)> {
-    let c = circuit(text);
-    let d = design(&c);
-    match operating_point(&d, &SimOptions::default()) {
-        Ok(p) => p,
-        Err(e) => panic!("{e:?}"),
-    }
-}
-
-fn value(point: &[(String, f64)], name: &str) -> f64 {
-    match point.iter().find(|(n, _)| n == name) {
-        Some((_, v)) => *v,
-        None => panic!("no quantity {name} in {point:?}"),
-    }
-}
+mod support;
+use support::{at, circuit, design, ngspice, op, render, run, value};
 
 #[test]
 fn rc_step_follows_one_minus_exp() {
@@ -137,7 +68,8 @@ fn rlc_rings_at_its_damped_frequency() {
 fn controlled_sources_at_dc_are_exact() {
     // Signs as ngspice 39 gives them (`.op` on this deck): v(4) 1, v(8) 2, v(9) 0.5,
     // i(v1) -1 mA, i(vs) +1 mA.
-    let p = op("controlled\n\
+    let p = op(
+        "controlled\n\
          v1 1 0 dc 2\n\
          r1 1 2 1k\n\
          r2 2 0 1k\n\
@@ -153,7 +85,9 @@ fn controlled_sources_at_dc_are_exact() {
          h1 9 0 vs 500\n\
          r7 9 0 1k\n\
          .op\n\
-         .end\n");
+         .end\n",
+        None,
+    );
     for (name, exact) in [
         ("v(2)", 1.0),
         ("v(3)", 3.0),
@@ -184,7 +118,8 @@ fn shockley(i: f64, is: f64, nvt: f64, gmin: f64) -> f64 {
 
 #[test]
 fn diode_forward_voltage_at_one_milliamp() {
-    let p = op("diode\n\
+    let p = op(
+        "diode\n\
          i1 0 1 1m\n\
          d1 1 0 dmod\n\
          i2 0 2 1m\n\
@@ -192,7 +127,9 @@ fn diode_forward_voltage_at_one_milliamp() {
          .model dmod d(is=1e-14 n=1)\n\
          .model dmod2 d(is=1e-14 n=1.5 rs=10)\n\
          .op\n\
-         .end\n");
+         .end\n",
+        None,
+    );
     let vt = 1.380_648_52e-23 * 300.15 / 1.602_176_620_8e-19;
     let plain = shockley(1e-3, 1e-14, vt, 1e-12);
     let series = shockley(1e-3, 1e-14, 1.5 * vt, 1e-12) + 10.0 * 1e-3;
@@ -318,50 +255,6 @@ fn output_names_are_ngspice_vectors() {
     assert_eq!(outputs(&none), ["v(1)", "v(2)"]);
 }
 
-/// ngspice's `.print tran` rows of a deck: times and the columns' values.
-fn ngspice(deck: &str) -> Option<Vec<Vec<f64>>> {
-    let found = Command::new("ngspice").arg("--version").output();
-    if found.is_err() {
-        println!("skipped: ngspice is not installed");
-        return None;
-    }
-    let dir = std::env::temp_dir().join(format!("vams-spice-lower-{}", std::process::id()));
-    if let Err(e) = std::fs::create_dir_all(&dir) {
-        println!("skipped: cannot make {}: {e}", dir.display());
-        return None;
-    }
-    // Tests run in parallel in one process: each deck gets its own file.
-    static NEXT: AtomicUsize = AtomicUsize::new(0);
-    let path = dir.join(format!("deck{}.cir", NEXT.fetch_add(1, Ordering::Relaxed)));
-    if let Err(e) = std::fs::write(&path, deck) {
-        println!("skipped: cannot write {}: {e}", path.display());
-        return None;
-    }
-    let out = match Command::new("ngspice")
-        .arg("-b")
-        .arg(Path::new(&path))
-        .output()
-    {
-        Ok(o) => o,
-        Err(e) => {
-            println!("skipped: ngspice did not run: {e}");
-            return None;
-        }
-    };
-    let _ = std::fs::remove_file(&path);
-    let text = String::from_utf8_lossy(&out.stdout);
-    let rows: Vec<Vec<f64>> = text
-        .lines()
-        .filter_map(|l| {
-            let mut f = l.split_whitespace();
-            f.next()?.parse::<u64>().ok()?;
-            f.map(|x| x.parse::<f64>().ok()).collect::<Option<Vec<_>>>()
-        })
-        .filter(|r| r.len() >= 2)
-        .collect();
-    Some(rows)
-}
-
 /// The largest difference of `v(out)` from ngspice's at `times` (linear between ngspice's
 /// printed points); `None` when ngspice is absent.
 fn versus_ngspice(deck: &str, times: &[f64]) -> Option<f64> {
@@ -424,28 +317,6 @@ fn agrees_with_ngspice_on_sin_and_exp_sources() {
     if let Some(worst) = versus_ngspice(deck, &times) {
         println!("ngspice, sin and exp: worst difference {worst:e} V");
     }
-}
-
-/// Every diagnostic of reading, flattening and lowering a deck, rendered.
-fn render(text: &str) -> String {
-    let mut sources = SourceMap::new();
-    let id = sources.add("bad.cir", "work", text.to_string());
-    let (deck, errors) = read_deck(&mut sources, id, &mut MemLoader::new());
-    let mut all: Vec<SpiceError> = errors;
-    if all.is_empty() {
-        match flatten(&deck) {
-            Ok(c) => {
-                if let Err(e) = lower(&c) {
-                    all.extend(e);
-                }
-            }
-            Err(e) => all.extend(e),
-        }
-    }
-    all.iter()
-        .map(|d| render_plain(d, &sources))
-        .collect::<Vec<_>>()
-        .join("\n")
 }
 
 #[test]

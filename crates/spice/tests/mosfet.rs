@@ -3,83 +3,11 @@
 //! `ngspice -b` where it is installed (skipped with a printed reason where not); and the
 //! diagnostics of what the MOSFET lowering refuses (snapshots).
 
-use std::process::Command;
-use std::sync::atomic::{AtomicUsize, Ordering};
-
 use vams_simulation::kernel::{SimOptions, operating_point, simulate};
-use vams_spice::{MemLoader, SourceMap, SpiceError, flatten, lower, outputs, read_deck};
-use vams_syntax::diagnostics::render_plain;
+use vams_spice::{MemLoader, SourceMap, flatten, lower, outputs, read_deck};
 
-/// The operating point of a deck, by quantity name.
-fn op(text: &str) -> Vec<(String, f64)> {
-    let mut sources = SourceMap::new();
-    let id = sources.add("deck.cir", "work", text.to_string());
-    let (deck, errors) = read_deck(&mut sources, id, &mut MemLoader::new());
-    assert!(errors.is_empty(), "{errors:#?}");
-    let c = match flatten(&deck) {
-        Ok(c) => c,
-        Err(e) => panic!("{e:#?}"),
-    };
-    let d = match lower(&c) {
-        Ok(d) => d,
-        Err(e) => panic!("{e:#?}"),
-    };
-    match operating_point(&d, &SimOptions::default()) {
-        Ok(p) => p,
-        Err(e) => panic!("{e:?}"),
-    }
-}
-
-fn value(point: &[(String, f64)], name: &str) -> f64 {
-    match point.iter().find(|(n, _)| n == name) {
-        Some((_, v)) => *v,
-        None => panic!("no quantity {name} in {point:?}"),
-    }
-}
-
-/// ngspice's `.print dc` rows of a deck (sweep value, then the columns); `None` when
-/// ngspice is absent.
-fn ngspice(deck: &str) -> Option<Vec<Vec<f64>>> {
-    if Command::new("ngspice").arg("--version").output().is_err() {
-        println!("skipped: ngspice is not installed");
-        return None;
-    }
-    let dir = std::env::temp_dir().join(format!("vams-spice-mosfet-{}", std::process::id()));
-    if let Err(e) = std::fs::create_dir_all(&dir) {
-        println!("skipped: cannot make {}: {e}", dir.display());
-        return None;
-    }
-    static NEXT: AtomicUsize = AtomicUsize::new(0);
-    let path = dir.join(format!("deck{}.cir", NEXT.fetch_add(1, Ordering::Relaxed)));
-    if let Err(e) = std::fs::write(&path, deck) {
-        println!("skipped: cannot write {}: {e}", path.display());
-        return None;
-    }
-    let out = match Command::new("ngspice").arg("-b").arg(&path).output() {
-        Ok(o) => o,
-        Err(e) => {
-            println!("skipped: ngspice did not run: {e}");
-            return None;
-        }
-    };
-    let _ = std::fs::remove_file(&path);
-    let text = String::from_utf8_lossy(&out.stdout);
-    let rows = text
-        .lines()
-        .filter_map(|l| {
-            let mut f = l.split_whitespace();
-            f.next()?.parse::<u64>().ok()?;
-            f.map(|x| x.parse::<f64>().ok()).collect::<Option<Vec<_>>>()
-        })
-        .filter(|r| r.len() >= 2)
-        .collect();
-    Some(rows)
-}
-
-/// Relative difference, with a floor for values near zero.
-fn rel(a: f64, b: f64, floor: f64) -> f64 {
-    (a - b).abs() / b.abs().max(floor)
-}
+mod support;
+use support::{crossings, ngspice, op, rel, render, value};
 
 /// Shichman-Hodges as a textbook writes it (nmos sense, `vds >= 0`), with the body effect.
 /// `[vto, beta, gamma, phi, lambda]` in `model`.
@@ -128,7 +56,7 @@ fn bias_points_in_every_region_match_the_closed_form_and_ngspice() {
     let mut worst_exact: f64 = 0.0;
     let mut worst_ng: f64 = 0.0;
     for (k, &vd) in sweep.iter().enumerate() {
-        let ours = value(&op(&bias_deck("nmos", vd, 1.0, "")), "i(vd)");
+        let ours = value(&op(&bias_deck("nmos", vd, 1.0, ""), None), "i(vd)");
         // The channel current into the drain; in reverse mode drain and source swap.
         let ids = if vd >= 0.0 {
             shichman_hodges(2.0, vd, -3.0, [0.7, beta, 0.5, 0.7, 0.02])
@@ -142,7 +70,7 @@ fn bias_points_in_every_region_match_the_closed_form_and_ngspice() {
         worst_exact = worst_exact.max(rel(ours, exact, 1e-9));
         assert!(rel(ours, exact, 1e-9) < 1e-6, "vd {vd}: {ours} vs {exact}");
         // pmos: every voltage and current negated.
-        let ours_p = value(&op(&bias_deck("pmos", -vd, -1.0, "")), "i(vd)");
+        let ours_p = value(&op(&bias_deck("pmos", -vd, -1.0, ""), None), "i(vd)");
         assert!(
             rel(-ours_p, ours, 1e-9) < 1e-9,
             "pmos at {vd}: {ours_p} vs {ours}"
@@ -189,7 +117,7 @@ fn series_resistances_multiplier_and_kp_from_tox_agree_with_ngspice() {
     assert_eq!(rows.len(), 19, "{rows:?}");
     let mut worst: f64 = 0.0;
     for row in &rows {
-        let p = op(&deck(row[0]));
+        let p = op(&deck(row[0]), None);
         for (name, ng) in [("i(vd)", row[1]), ("i(vd2)", row[2])] {
             let ours = value(&p, name);
             worst = worst.max(rel(ours, ng, 1e-9));
@@ -225,7 +153,7 @@ fn inverter_transfer_curve_matches_the_closed_form_and_ngspice() {
     let mut worst: f64 = 0.0;
     for k in 0..=20 {
         let vin = 0.25 * f64::from(k);
-        let ours = value(&op(&inverter(vin)), "v(out)");
+        let ours = value(&op(&inverter(vin), None), "v(out)");
         // (5 - vout)/10k == ids(vin, vout) + the drain junction, by bisection.
         let f = |v: f64| {
             (5.0 - v) / 10e3
@@ -254,28 +182,6 @@ fn inverter_transfer_curve_matches_the_closed_form_and_ngspice() {
     println!("inverter: worst relative difference from ngspice {worst:e}");
 }
 
-/// Every diagnostic of reading, flattening and lowering a deck, rendered.
-fn render(text: &str) -> String {
-    let mut sources = SourceMap::new();
-    let id = sources.add("bad.cir", "work", text.to_string());
-    let (deck, errors) = read_deck(&mut sources, id, &mut MemLoader::new());
-    let mut all: Vec<SpiceError> = errors;
-    if all.is_empty() {
-        match flatten(&deck) {
-            Ok(c) => {
-                if let Err(e) = lower(&c) {
-                    all.extend(e);
-                }
-            }
-            Err(e) => all.extend(e),
-        }
-    }
-    all.iter()
-        .map(|d| render_plain(d, &sources))
-        .collect::<Vec<_>>()
-        .join("\n")
-}
-
 const CMOS: &str = "cmos inverter
 vdd dd 0 5
 vin in 0 pulse(0 5 2n 1n 1n 10n 24n)
@@ -290,18 +196,6 @@ cl out 0 50f
 .print tran v(out)
 .end
 ";
-
-/// The times `v` crosses `level`, linear between samples.
-fn crossings(times: &[f64], v: &[f64], level: f64) -> Vec<f64> {
-    let mut out = Vec::new();
-    for k in 1..times.len().min(v.len()) {
-        let (a, b) = (v[k - 1] - level, v[k] - level);
-        if a != 0.0 && a.signum() != b.signum() {
-            out.push(times[k - 1] + (times[k] - times[k - 1]) * a / (a - b));
-        }
-    }
-    out
-}
 
 #[test]
 fn cmos_inverter_transient_agrees_with_ngspice() {

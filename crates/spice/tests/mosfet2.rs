@@ -6,87 +6,12 @@
 //! ngspice's run of the same deck.
 
 use std::path::Path;
-use std::process::Command;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
-use vams_simulation::kernel::{SimOptions, operating_point, simulate};
-use vams_spice::{MemLoader, SourceMap, flatten, lower, outputs, read_deck, transient};
+use vams_simulation::kernel::{SimOptions, simulate};
+use vams_spice::{lower, outputs, transient};
 
-fn circuit(text: &str) -> vams_spice::circuit::Circuit {
-    let mut sources = SourceMap::new();
-    let id = sources.add("deck.cir", "work", text.to_string());
-    let (deck, errors) = read_deck(&mut sources, id, &mut MemLoader::new());
-    assert!(errors.is_empty(), "{errors:#?}");
-    match flatten(&deck) {
-        Ok(c) => c,
-        Err(e) => panic!("{e:#?}"),
-    }
-}
-
-/// The operating point of a deck, by quantity name.
-fn op(text: &str) -> Vec<(String, f64)> {
-    let d = match lower(&circuit(text)) {
-        Ok(d) => d,
-        Err(e) => panic!("{e:#?}"),
-    };
-    let options = SimOptions {
-        reltol: 1e-7,
-        ..SimOptions::default()
-    };
-    match operating_point(&d, &options) {
-        Ok(p) => p,
-        Err(e) => panic!("{e:?}"),
-    }
-}
-
-fn value(point: &[(String, f64)], name: &str) -> f64 {
-    match point.iter().find(|(n, _)| n == name) {
-        Some((_, v)) => *v,
-        None => panic!("no quantity {name} in {point:?}"),
-    }
-}
-
-/// ngspice's `.print dc` rows of a deck; `None` when ngspice is absent.
-fn ngspice(deck: &str) -> Option<Vec<Vec<f64>>> {
-    if Command::new("ngspice").arg("--version").output().is_err() {
-        println!("skipped: ngspice is not installed");
-        return None;
-    }
-    let dir = std::env::temp_dir().join(format!("vams-spice-mosfet2-{}", std::process::id()));
-    if let Err(e) = std::fs::create_dir_all(&dir) {
-        println!("skipped: cannot make {}: {e}", dir.display());
-        return None;
-    }
-    static NEXT: AtomicUsize = AtomicUsize::new(0);
-    let path = dir.join(format!("deck{}.cir", NEXT.fetch_add(1, Ordering::Relaxed)));
-    if let Err(e) = std::fs::write(&path, deck) {
-        println!("skipped: cannot write {}: {e}", path.display());
-        return None;
-    }
-    let out = match Command::new("ngspice").arg("-b").arg(&path).output() {
-        Ok(o) => o,
-        Err(e) => {
-            println!("skipped: ngspice did not run: {e}");
-            return None;
-        }
-    };
-    let _ = std::fs::remove_file(&path);
-    let text = String::from_utf8_lossy(&out.stdout);
-    let rows = text
-        .lines()
-        .filter_map(|l| {
-            let mut f = l.split_whitespace();
-            f.next()?.parse::<u64>().ok()?;
-            f.map(|x| x.parse::<f64>().ok()).collect::<Option<Vec<_>>>()
-        })
-        .filter(|r| r.len() >= 2)
-        .collect();
-    Some(rows)
-}
-
-fn rel(a: f64, b: f64, floor: f64) -> f64 {
-    (a - b).abs() / b.abs().max(floor)
-}
+mod support;
+use support::{circuit, crossings, design, ngspice, op, rel, value};
 
 /// The Schmitt deck's models (no rd/rs, no vmax), and one without `vmax`/`nfs`/`lambda` (the
 /// channel-length modulation from `nsub`), with `delta` and `tox`-derived kp.
@@ -134,7 +59,10 @@ fn level2_curves_agree_with_ngspice() {
             assert_eq!(rows.len(), 21, "{model} {vg} {vb}: {rows:?}");
             for row in &rows {
                 let vd = row[0];
-                let ours = value(&op(&curve_deck(model, sign, vg, vb, vd * sign)), "i(vd)");
+                let ours = value(
+                    &op(&curve_deck(model, sign, vg, vb, vd * sign), Some(1e-7)),
+                    "i(vd)",
+                );
                 let ng = row[1];
                 let e = rel(ours, ng, 1e-12);
                 worst = worst.max(e);
@@ -154,18 +82,6 @@ fn level2_curves_agree_with_ngspice() {
         bad.join("\n")
     );
     println!("mosfet level 2: {points} bias points, worst relative error {worst:e} (ngspice)");
-}
-
-/// Where `v` crosses `level`, linearly interpolated.
-fn crossings(times: &[f64], v: &[f64], level: f64) -> Vec<f64> {
-    let mut out = Vec::new();
-    for k in 1..times.len().min(v.len()) {
-        let (a, b) = (v[k - 1] - level, v[k] - level);
-        if a != 0.0 && a.signum() != b.signum() {
-            out.push(times[k - 1] + (times[k] - times[k - 1]) * a / (a - b));
-        }
-    }
-    out
 }
 
 /// The deck's v(6) crossings of 2.5 V and the input there (v(7), a 0 -> 5 -> 0 V triangle
@@ -199,10 +115,7 @@ fn cmos_schmitt_is_refused_for_vmax_and_agrees_with_ngspice_without_it() {
     // The same deck without velocity saturation.
     let text = text.replace("Vmax=177269", "").replace("Vmax=637449", "");
     let c = circuit(&text);
-    let d = match lower(&c) {
-        Ok(d) => d,
-        Err(e) => panic!("{e:#?}"),
-    };
+    let d = design(&c);
     let Some(t) = transient(&c) else {
         panic!("the deck has no .tran")
     };
@@ -233,7 +146,7 @@ fn cmos_schmitt_is_refused_for_vmax_and_agrees_with_ngspice_without_it() {
     let reference = text
         .replace(".tran 10n 20u", ".options reltol=1e-4\n.tran 10n 20u 0 10n")
         .replace(".print tran v(7) v(6) v(2) v(4)", ".print tran v(6)");
-    let Some(rows) = ngspice_tran(&reference) else {
+    let Some(rows) = ngspice(&reference) else {
         return;
     };
     let times: Vec<f64> = rows.iter().map(|r| r[0]).collect();
@@ -260,9 +173,4 @@ fn cmos_schmitt_is_refused_for_vmax_and_agrees_with_ngspice_without_it() {
             "edge at {ours:e}, ngspice {ng:e}"
         );
     }
-}
-
-/// ngspice's `.print tran` rows (time, then the columns); `None` when ngspice is absent.
-fn ngspice_tran(deck: &str) -> Option<Vec<Vec<f64>>> {
-    ngspice(deck)
 }

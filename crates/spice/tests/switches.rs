@@ -2,92 +2,12 @@
 //! against ngspice's reference figures and closed forms (each with its tolerance).
 
 use std::path::Path;
-use std::process::Command;
 
-use vams_design::Design;
-use vams_simulation::kernel::{SimOptions, operating_point, simulate};
-use vams_simulation::waveform::Waveforms;
-use vams_spice::circuit::Circuit;
-use vams_spice::{MemLoader, SourceMap, flatten, lower, outputs, read_deck, transient};
+use vams_simulation::kernel::{SimOptions, simulate};
+use vams_spice::{MemLoader, SourceMap, flatten, lower, read_deck};
 
-/// Reads and flattens a deck, asserting no error.
-fn circuit(text: &str) -> Circuit {
-    let mut sources = SourceMap::new();
-    let id = sources.add("deck.cir", "work", text.to_string());
-    let (deck, errors) = read_deck(&mut sources, id, &mut MemLoader::new());
-    assert!(errors.is_empty(), "{errors:#?}");
-    match flatten(&deck) {
-        Ok(c) => c,
-        Err(e) => panic!("{e:#?}"),
-    }
-}
-
-fn design(c: &Circuit) -> Design {
-    match lower(c) {
-        Ok(d) => d,
-        Err(e) => panic!("{e:#?}"),
-    }
-}
-
-/// The deck's `.tran`, run with the largest step TSTEP and a tight reltol.
-fn run(text: &str) -> Waveforms {
-    let c = circuit(text);
-    let d = design(&c);
-    let Some(t) = transient(&c) else {
-        panic!("the deck has no .tran")
-    };
-    let options = SimOptions {
-        stop: t.tstop,
-        reltol: 1e-5,
-        max_step: Some(t.tmax.unwrap_or(t.tstep)),
-        probes: outputs(&c),
-        ..SimOptions::default()
-    };
-    match simulate(&d, &options, &mut |_| {}) {
-        Ok(r) => r.waveforms,
-        Err(e) => panic!("{e:?}"),
-    }
-}
-
-/// The operating point by quantity name.
-fn op(text: &str) -> Vec<(String, f64)> {
-    let c = circuit(text);
-    let d = design(&c);
-    match operating_point(&d, &SimOptions::default()) {
-        Ok(p) => p,
-        Err(e) => panic!("{e:?}"),
-    }
-}
-
-fn value(point: &[(String, f64)], name: &str) -> f64 {
-    match point.iter().find(|(n, _)| n == name) {
-        Some((_, v)) => *v,
-        None => panic!("no quantity {name} in {point:?}"),
-    }
-}
-
-fn at(w: &Waveforms, name: &str, t: f64) -> f64 {
-    match w.value_at(name, t) {
-        Some(v) => v,
-        None => panic!("no column {name}"),
-    }
-}
-
-/// The times where column `name` crosses `level`, interpolated.
-fn crossings(w: &Waveforms, name: &str, level: f64) -> Vec<f64> {
-    let Some(col) = w.column(name) else {
-        panic!("no column {name}")
-    };
-    let mut out = Vec::new();
-    for k in 1..w.times.len() {
-        let (a, b) = (col.values[k - 1] - level, col.values[k] - level);
-        if a != 0.0 && a.signum() != b.signum() {
-            let (t0, t1) = (w.times[k - 1], w.times[k]);
-            out.push(t0 + (t1 - t0) * a / (a - b));
-        }
-    }
-    out
-}
+mod support;
+use support::{at, circuit, column_crossings, design, ngspice, op, run, value};
 
 #[test]
 fn switches_follow_the_shared_hysteresis_case() {
@@ -107,7 +27,7 @@ fn switches_follow_the_shared_hysteresis_case() {
         ("v(40)", 0.59, &[1.2e-3, 3.2e-3]),
     ];
     for (name, level, expected) in cases {
-        let got = crossings(&w, name, level);
+        let got = column_crossings(&w, name, level);
         println!("{name}: switches at {got:?} (ngspice {expected:?})");
         assert_eq!(got.len(), expected.len(), "{name}: {got:?} vs {expected:?}");
         for (g, e) in got.iter().zip(expected) {
@@ -204,7 +124,7 @@ fn reverse_biased_diode_discharges_through_its_depletion_charge() {
     for u in [4.0, 3.0, 2.0, 1.0, 0.5, 0.1] {
         // The 1 ns fall delays the discharge by about half its length.
         let exact = r * cjo * (big_l(5.0) - big_l(u)) + 0.5e-9;
-        let got = crossings(&w, "v(a)", u);
+        let got = column_crossings(&w, "v(a)", u);
         let Some(t) = got.first() else {
             panic!("v(a) never falls to {u}")
         };
@@ -217,53 +137,17 @@ fn reverse_biased_diode_discharges_through_its_depletion_charge() {
 
 #[test]
 fn diode_without_charge_has_no_charge_quantity() {
-    let p = op("plain\n\
+    let p = op(
+        "plain\n\
          i1 0 1 1m\n\
          d1 1 0 dmod\n\
          .model dmod d(is=1e-14 vj=0.7 m=0.3 fc=0.6)\n\
          .op\n\
-         .end\n");
+         .end\n",
+        None,
+    );
     assert!(p.iter().all(|(n, _)| !n.ends_with(".qv")), "{p:?}");
     assert!(value(&p, "v(1)") > 0.5);
-}
-
-/// ngspice's `.print tran` rows of a deck: times and the columns' values; `None` (with the
-/// reason printed) when ngspice is absent or does not run.
-fn ngspice(deck: &str) -> Option<Vec<Vec<f64>>> {
-    if Command::new("ngspice").arg("--version").output().is_err() {
-        println!("skipped: ngspice is not installed");
-        return None;
-    }
-    let dir = std::env::temp_dir().join(format!("vams-spice-switches-{}", std::process::id()));
-    if let Err(e) = std::fs::create_dir_all(&dir) {
-        println!("skipped: cannot make {}: {e}", dir.display());
-        return None;
-    }
-    let path = dir.join("deck.cir");
-    if let Err(e) = std::fs::write(&path, deck) {
-        println!("skipped: cannot write {}: {e}", path.display());
-        return None;
-    }
-    let out = Command::new("ngspice").arg("-b").arg(&path).output();
-    let _ = std::fs::remove_file(&path);
-    let out = match out {
-        Ok(o) => o,
-        Err(e) => {
-            println!("skipped: ngspice did not run: {e}");
-            return None;
-        }
-    };
-    let text = String::from_utf8_lossy(&out.stdout);
-    let rows: Vec<Vec<f64>> = text
-        .lines()
-        .filter_map(|l| {
-            let mut f = l.split_whitespace();
-            f.next()?.parse::<u64>().ok()?;
-            f.map(|x| x.parse::<f64>().ok()).collect::<Option<Vec<_>>>()
-        })
-        .filter(|r| r.len() >= 2)
-        .collect();
-    Some(rows)
 }
 
 #[test]
@@ -305,7 +189,7 @@ fn diode_charge_agrees_with_ngspice_through_reverse_recovery() {
         worst = worst.max(d);
     }
     // Recovery ends where the diode's voltage falls through 0 on the first falling edge.
-    let ours = crossings(&w, "v(out)", 0.0);
+    let ours = column_crossings(&w, "v(out)", 0.0);
     println!("diode charge vs ngspice: worst difference {worst:e} V; our zero crossings {ours:?}");
     assert!(worst < 5e-3, "worst difference {worst:e} V");
 }
