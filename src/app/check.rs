@@ -24,6 +24,7 @@ use crate::elaborate::{
 };
 use crate::source::{FileId, Span};
 
+use super::compile::located;
 use super::load::{InputError, LibrarySources, Loaded, load_with_libraries};
 use super::netlist::{compile_netlist, single_deck};
 use super::notes::Notes;
@@ -278,15 +279,14 @@ fn check_netlist(deck: &Path, echo: Option<Echo<'_>>) -> Checked {
     let findings = match compile_netlist(deck) {
         Ok((compiled, _)) => {
             let mut found = compiled.warnings;
+            let sources = &compiled.loaded.sources;
             match AnalogSystem::new(&compiled.design) {
-                Ok(system) => found.extend(
-                    (system.warnings(&compiled.design).iter())
-                        .map(|w| Finding::located(w, &compiled.loaded.sources, Level::Warning)),
-                ),
-                Err(errors) => found.extend(
-                    (errors.iter())
-                        .map(|e| Finding::located(e, &compiled.loaded.sources, Level::Error)),
-                ),
+                Ok(system) => found.extend(located(
+                    &system.warnings(&compiled.design),
+                    sources,
+                    Level::Warning,
+                )),
+                Err(errors) => found.extend(located(&errors, sources, Level::Error)),
             }
             found
         }

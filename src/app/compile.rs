@@ -77,7 +77,11 @@ impl NotCompiled {
 }
 
 /// Each of `diagnostics` as a [`Finding`] of `level`.
-fn located<D: Located>(diagnostics: &[D], sources: &SourceMap, level: Level) -> Vec<Finding> {
+pub(super) fn located<D: Located>(
+    diagnostics: &[D],
+    sources: &SourceMap,
+    level: Level,
+) -> Vec<Finding> {
     (diagnostics.iter())
         .map(|d| Finding::located(d, sources, level))
         .collect()

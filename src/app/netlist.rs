@@ -7,11 +7,11 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::diagnostics::{Finding, Level};
+use crate::diagnostics::Level;
 use crate::source::SourceMap;
 use vams_spice::{FsLoader, SpiceError, TranSpec, flatten, lower, read_deck};
 
-use super::compile::{Compiled, NotCompiled};
+use super::compile::{Compiled, NotCompiled, located};
 use super::error::CliError;
 use super::load::{InputError, Loaded, read_text};
 
@@ -43,14 +43,9 @@ pub fn compile_netlist(path: &Path) -> Result<(Compiled, NetlistRun), NotCompile
     let text = read_text(path).map_err(NotCompiled::bare)?;
     let mut sources = SourceMap::new();
     let file = sources.add(path.display().to_string(), "work", text);
-    let (deck, mut errors) = read_deck(&mut sources, file, &mut FsLoader);
-    let mut warnings = located(&deck.warnings, &sources, Level::Warning);
-    errors.retain(|e| {
-        if e.is_warning() {
-            warnings.push(Finding::located(e, &sources, Level::Warning));
-        }
-        !e.is_warning()
-    });
+    // The reader keeps its warnings (a skipped `.control`) in the deck, apart from errors.
+    let (deck, errors) = read_deck(&mut sources, file, &mut FsLoader);
+    let warnings = located(&deck.warnings, &sources, Level::Warning);
     let failed = |errors: Vec<SpiceError>, sources: &SourceMap| NotCompiled {
         findings: located(&errors, sources, Level::Error),
         error: CliError::Netlist {
@@ -105,14 +100,4 @@ pub fn single_deck(paths: &[PathBuf]) -> Result<Option<&Path>, InputError> {
             None => Ok(None),
         },
     }
-}
-
-fn located<D: crate::diagnostics::Located>(
-    diagnostics: &[D],
-    sources: &SourceMap,
-    level: Level,
-) -> Vec<Finding> {
-    (diagnostics.iter())
-        .map(|d| Finding::located(d, sources, level))
-        .collect()
 }

@@ -21,6 +21,7 @@
 mod bjt;
 mod coupling;
 mod diode;
+mod junction;
 mod mosfet;
 mod sources;
 mod switch;
@@ -698,6 +699,50 @@ impl<'c> Lowerer<'c> {
                 );
             }
         }
+    }
+}
+
+/// The series resistances of the semiconductor devices (a diode's RS, a MOSFET's RD and RS, a
+/// BJT's RC, RE and RB), to internal nodes named as ngspice names them (`d1#internal`,
+/// `m1#drain`, `q1#collector`).
+impl Lowerer<'_> {
+    /// A branch from `outer` to a new internal node `element#suffix`, its quantities named
+    /// `element.key.v` and `element.key.i`: the node and the two quantities.
+    pub(super) fn internal_branch(
+        &mut self,
+        el: &FlatElement,
+        outer: TerminalId,
+        suffix: &str,
+        key: &str,
+    ) -> (TerminalId, QuantityId, QuantityId) {
+        let inner = self.internal_terminal(format!("{}#{suffix}", el.name), el.span);
+        let v = self.across(format!("{}.{key}.v", el.name), outer, inner, el.span);
+        let i = self.through(format!("{}.{key}.i", el.name), outer, inner, el.span);
+        (inner, v, i)
+    }
+
+    /// A resistance `r` in series with `outer` ([`Lowerer::internal_branch`] with `v == r*i`):
+    /// the internal node, or `outer` itself when `r` is 0.
+    pub(super) fn series_resistor(
+        &mut self,
+        el: &FlatElement,
+        outer: TerminalId,
+        r: f64,
+        suffix: &str,
+        key: &str,
+    ) -> TerminalId {
+        if r <= 0.0 {
+            return outer;
+        }
+        let (inner, v, i) = self.internal_branch(el, outer, suffix, key);
+        let text = format!("{} == {r:?} * {}", self.qname(v), self.qname(i));
+        self.equation(
+            el,
+            Expr::Quantity(v),
+            mul(Expr::real(r), Expr::Quantity(i)),
+            text,
+        );
+        inner
     }
 }
 

@@ -26,7 +26,7 @@
 //! (`xtb`, `eg`, `xti`, `kf`, `af` are accepted: they change nothing at TNOM or in a
 //! transient), and values out of range.
 
-use vams_design::{BinaryOp, Builtin, Expr, QuantityId, QuantityKind, TerminalId};
+use vams_design::{BinaryOp, Builtin, Expr, QuantityKind, TerminalId};
 
 mod charge;
 
@@ -333,20 +333,6 @@ impl Lowerer<'_> {
         mul(c(cs), Expr::Dot(qv))
     }
 
-    /// A resistor `outer` to a new node `name#suffix` with `v == r*i`; the node and `i`.
-    fn bjt_resistor(
-        &mut self,
-        el: &FlatElement,
-        outer: TerminalId,
-        suffix: &str,
-        key: &str,
-    ) -> (TerminalId, QuantityId, QuantityId) {
-        let inner = self.internal_terminal(format!("{}#{suffix}", el.name), el.span);
-        let v = self.across(format!("{}.{key}.v", el.name), outer, inner, el.span);
-        let i = self.through(format!("{}.{key}.i", el.name), outer, inner, el.span);
-        (inner, v, i)
-    }
-
     pub(super) fn bjt(&mut self, _id: ElementId, el: &FlatElement) {
         let circuit = self.circuit;
         if el.nodes.len() != 3 && el.nodes.len() != 4 {
@@ -380,23 +366,10 @@ impl Lowerer<'_> {
         let q = Expr::Quantity;
         let t = p.sign;
         let vt = p.vt;
-        let ci = if p.rc > 0.0 {
-            let (inner, v, i) = self.bjt_resistor(el, cn, "collector", "rc");
-            let text = format!("{} == {:?} * {}", self.qname(v), p.rc, self.qname(i));
-            self.equation(el, q(v), mul(c(p.rc), q(i)), text);
-            inner
-        } else {
-            cn
-        };
-        let ei = if p.re > 0.0 {
-            let (inner, v, i) = self.bjt_resistor(el, en, "emitter", "re");
-            let text = format!("{} == {:?} * {}", self.qname(v), p.re, self.qname(i));
-            self.equation(el, q(v), mul(c(p.re), q(i)), text);
-            inner
-        } else {
-            en
-        };
-        let base_resistor = (p.rb > 0.0).then(|| self.bjt_resistor(el, bn, "base", "rb"));
+        let ci = self.series_resistor(el, cn, p.rc, "collector", "rc");
+        let ei = self.series_resistor(el, en, p.re, "emitter", "re");
+        // The base resistance depends on the base current (RBM, IRB): its own equation below.
+        let base_resistor = (p.rb > 0.0).then(|| self.internal_branch(el, bn, "base", "rb"));
         let bi = base_resistor.map_or(bn, |(inner, _, _)| inner);
 
         let vbe = self.across(format!("{}.vbe", el.name), bi, ei, el.span);

@@ -16,7 +16,7 @@
 
 use vams_design::{BinaryOp, Builtin, Expr, Quantity, QuantityId, QuantityKind, TerminalId};
 
-use super::{Lowerer, add, bin, mul, sub};
+use super::{Lowerer, add, bin, junction, mul, sub};
 use crate::circuit::{ElementId, FlatElement, FlatModel, ModelId};
 use crate::error::SpiceError;
 
@@ -127,21 +127,7 @@ impl Lowerer<'_> {
         let vt = BOLTZMANN * (temp + CELSIUS_TO_KELVIN) / CHARGE;
         let nvt = n * vt;
 
-        let junction_anode = if rs > 0.0 {
-            let inner = self.internal_terminal(format!("{}#internal", el.name), el.span);
-            let v = self.across(format!("{}.rs.v", el.name), anode, inner, el.span);
-            let i = self.through(format!("{}.rs.i", el.name), anode, inner, el.span);
-            let text = format!("{} == {rs:?} * {}", self.qname(v), self.qname(i));
-            self.equation(
-                el,
-                Expr::Quantity(v),
-                mul(Expr::real(rs), Expr::Quantity(i)),
-                text,
-            );
-            inner
-        } else {
-            anode
-        };
+        let junction_anode = self.series_resistor(el, anode, rs, "internal", "rs");
         let (v, i) = self.branch(id, el, junction_anode, cathode);
         let c = Expr::real;
         let x = mul(c(1.0 / nvt), Expr::Quantity(v));
@@ -251,41 +237,7 @@ impl Charge {
         let depletion = czero > 0.0 && vj > 0.0 && vj.is_finite();
         let diffusion = tt > 0.0 && tt.is_finite();
         let mut q = diffusion.then(|| mul(c(tt), id));
-        if depletion {
-            let fcvj = fc * vj;
-            // Below fc*vj: vj*czero*(1 - (1 - v/vj)^(1-m))/(1-m), the power's argument kept
-            // above 1 - fc so that the branch not taken stays finite.
-            let arg = Expr::Call(
-                Builtin::Realmax,
-                vec![sub(c(1.0), mul(c(1.0 / vj), v.clone())), c(1.0 - fc)],
-            );
-            let power = Expr::Call(
-                Builtin::Exp,
-                vec![mul(c(1.0 - m), Expr::Call(Builtin::Log, vec![arg]))],
-            );
-            let below = mul(c(vj * czero / (1.0 - m)), sub(c(1.0), power));
-            // Above: czero*F1 + czero/F2*(F3*(v - fc*vj) + m/(2*vj)*(v^2 - (fc*vj)^2)).
-            let f1 = vj * (1.0 - (1.0 - fc).powf(1.0 - m)) / (1.0 - m);
-            let f2 = (1.0 - fc).powf(1.0 + m);
-            let f3 = 1.0 - fc * (1.0 + m);
-            let above = add(
-                c(czero * f1),
-                mul(
-                    c(czero / f2),
-                    add(
-                        mul(c(f3), sub(v.clone(), c(fcvj))),
-                        mul(
-                            c(m / (2.0 * vj)),
-                            sub(mul(v.clone(), v.clone()), c(fcvj * fcvj)),
-                        ),
-                    ),
-                ),
-            );
-            let dep = Expr::If(
-                Box::new(bin(BinaryOp::Lt, v, c(fcvj))),
-                Box::new(below),
-                Box::new(above),
-            );
+        if depletion && let Some(dep) = junction::depletion(czero, vj, m, fc, v) {
             q = Some(match q {
                 Some(d) => add(d, dep),
                 None => dep,

@@ -30,7 +30,7 @@
 //! levels, `off`, initial conditions, TEMP other than TNOM, and values out of range (`pb`,
 //! `tox`, `fc`, `mj`, `mjsw`).
 
-use vams_design::{BinaryOp, Builtin, Expr, QuantityKind, TerminalId};
+use vams_design::{BinaryOp, Builtin, Expr, QuantityKind};
 
 mod charge;
 mod level2;
@@ -287,31 +287,6 @@ impl Lowerer<'_> {
         })
     }
 
-    /// A series resistor `r` from `outer` to a new internal node `name#suffix`; the node.
-    fn series_resistor(
-        &mut self,
-        el: &FlatElement,
-        outer: TerminalId,
-        r: f64,
-        suffix: &str,
-    ) -> TerminalId {
-        if r <= 0.0 {
-            return outer;
-        }
-        let inner = self.internal_terminal(format!("{}#{suffix}", el.name), el.span);
-        let key = if suffix == "drain" { "rd" } else { "rs" };
-        let v = self.across(format!("{}.{key}.v", el.name), outer, inner, el.span);
-        let i = self.through(format!("{}.{key}.i", el.name), outer, inner, el.span);
-        let text = format!("{} == {r:?} * {}", self.qname(v), self.qname(i));
-        self.equation(
-            el,
-            Expr::Quantity(v),
-            mul(Expr::real(r), Expr::Quantity(i)),
-            text,
-        );
-        inner
-    }
-
     pub(super) fn mosfet(&mut self, id: ElementId, el: &FlatElement) {
         let circuit = self.circuit;
         if el.nodes.len() != 4 {
@@ -344,8 +319,8 @@ impl Lowerer<'_> {
             },
             _ => None,
         };
-        let d = self.series_resistor(el, d, p.rd, "drain");
-        let s = self.series_resistor(el, s, p.rs, "source");
+        let d = self.series_resistor(el, d, p.rd, "drain", "rd");
+        let s = self.series_resistor(el, s, p.rs, "source", "rs");
         let q = Expr::Quantity;
         let c = Expr::real;
         let vds = self.across(format!("{}.vds", el.name), d, s, el.span);

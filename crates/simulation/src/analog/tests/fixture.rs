@@ -186,21 +186,7 @@ pub fn c(v: f64) -> Expr {
     Expr::real(v)
 }
 
-pub fn bin(op: BinaryOp, a: Expr, b: Expr) -> Expr {
-    Expr::Binary(op, Box::new(a), Box::new(b))
-}
-
-pub fn add(a: Expr, b: Expr) -> Expr {
-    bin(BinaryOp::Add, a, b)
-}
-
-pub fn sub(a: Expr, b: Expr) -> Expr {
-    bin(BinaryOp::Sub, a, b)
-}
-
-pub fn mul(a: Expr, b: Expr) -> Expr {
-    bin(BinaryOp::Mul, a, b)
-}
+pub use vams_design::build::{add, bin, mul, sub};
 
 pub fn call(f: Builtin, a: Expr) -> Expr {
     Expr::Call(f, vec![a])

@@ -9,9 +9,11 @@
 //! capacitances, not of charges: as in ngspice the gate currents are `C(v)*v'dot`, which
 //! does not conserve charge exactly (nor does ngspice's).
 
-use vams_design::{BinaryOp, Builtin, Expr};
+use vams_design::{BinaryOp, Expr};
 
 use vams_design::build::{add, bin, cond, div, mul, sub};
+
+use crate::lower::junction::power;
 
 /// The charge numbers of one instance (nmos sense, multiplier applied).
 #[derive(Clone, Copy, Debug, Default)]
@@ -35,14 +37,6 @@ pub(super) struct Charges {
 
 fn c(x: f64) -> Expr {
     Expr::real(x)
-}
-
-/// `x^p` for `x > 0`, as `exp(p*log(x))`.
-fn power(x: Expr, p: f64) -> Expr {
-    Expr::Call(
-        Builtin::Exp,
-        vec![mul(c(p), Expr::Call(Builtin::Log, vec![x]))],
-    )
 }
 
 impl Charges {
