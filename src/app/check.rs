@@ -277,7 +277,7 @@ fn check_elaborated(
 fn check_netlist(deck: &Path, echo: Option<Echo<'_>>) -> Checked {
     let name = deck.display().to_string();
     let findings = match compile_netlist(deck) {
-        Ok((compiled, _)) => {
+        Ok(compiled) => {
             let mut found = compiled.warnings;
             let sources = &compiled.loaded.sources;
             match AnalogSystem::new(&compiled.design) {

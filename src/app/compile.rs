@@ -239,7 +239,7 @@ pub fn unknown_name_help<'a>(
 /// A single SPICE deck among the paths is read by the SPICE frontend ([`super::netlist`]).
 pub fn compile(options: &DesignOptions) -> Result<Compiled, NotCompiled> {
     if let Some(deck) = single_deck(&options.paths).map_err(NotCompiled::bare)? {
-        return compile_netlist(deck).map(|(compiled, _)| compiled);
+        return compile_netlist(deck);
     }
     finish(prepare(options)?)
 }

@@ -38,8 +38,9 @@ pub struct NetlistRun {
 }
 
 /// Reads, flattens and lowers the deck at `path`: the design, with the sources it was read
-/// from (the deck and its includes) for diagnostics, and what the deck asks of a run.
-pub fn compile_netlist(path: &Path) -> Result<(Compiled, NetlistRun), NotCompiled> {
+/// from (the deck and its includes) for diagnostics and what the deck asks of a run
+/// ([`Compiled::netlist`]).
+pub fn compile_netlist(path: &Path) -> Result<Compiled, NotCompiled> {
     let text = read_text(path).map_err(NotCompiled::bare)?;
     let mut sources = SourceMap::new();
     let file = sources.add(path.display().to_string(), "work", text);
@@ -71,15 +72,12 @@ pub fn compile_netlist(path: &Path) -> Result<(Compiled, NetlistRun), NotCompile
         files: Vec::new(),
         syntax_errors: Vec::new(),
     };
-    Ok((
-        Compiled {
-            loaded,
-            design,
-            warnings,
-            netlist: Some(run.clone()),
-        },
-        run,
-    ))
+    Ok(Compiled {
+        loaded,
+        design,
+        warnings,
+        netlist: Some(run),
+    })
 }
 
 /// The design's name: the deck's file name without its extension.
